@@ -1,0 +1,11 @@
+# GMP and MPFR: CGAL finds them, but exbsp also calls them directly (correctly rounded output).
+find_package(PkgConfig QUIET)
+find_path(GMP_INCLUDE_DIR gmp.h)
+find_library(GMP_LIBRARY gmp)
+find_library(MPFR_LIBRARY mpfr)
+if(NOT GMP_LIBRARY OR NOT MPFR_LIBRARY)
+  message(FATAL_ERROR "GMP/MPFR not found: run scripts/setup (apt-get install libgmp-dev libmpfr-dev)")
+endif()
+add_library(exbsp_gmp INTERFACE)
+target_include_directories(exbsp_gmp INTERFACE ${GMP_INCLUDE_DIR})
+target_link_libraries(exbsp_gmp INTERFACE ${MPFR_LIBRARY} ${GMP_LIBRARY})

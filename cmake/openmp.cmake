@@ -1,0 +1,2 @@
+# OpenMP parallelises candidate evaluation in the min-split heuristic (2 cores here).
+find_package(OpenMP REQUIRED COMPONENTS CXX)

@@ -1,0 +1,11 @@
+# Project-wide compile settings: warnings, reproducible doubles, optional strictness and sanitizers.
+add_library(exbsp_options INTERFACE)
+target_compile_features(exbsp_options INTERFACE cxx_std_17)
+target_compile_options(exbsp_options INTERFACE -Wall -Wextra -ffp-contract=off)
+if(EXBSP_STRICT)
+  target_compile_options(exbsp_options INTERFACE -Werror)
+endif()
+if(EXBSP_SANITIZE)
+  target_compile_options(exbsp_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  target_link_options(exbsp_options INTERFACE -fsanitize=address,undefined)
+endif()

@@ -1,0 +1,272 @@
+// exbsp command line (DESIGN.md section 4): glue only. Library exceptions become messages
+// "exbsp: error: ..." on stderr and exit codes: 2 bad input, 3 resource limit.
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "bsp/engine.h"
+#include "mesh/errors.h"
+#include "mesh/mesh_io.h"
+#include "scene/render.h"
+
+namespace {
+
+using exbsp::vec3d;
+
+/// Parses "X,Y,Z" into three finite doubles (nearest to the decimal text).
+vec3d parse_triple(const std::string& text, const std::string& option) {
+  vec3d v{};
+  const char* p = text.data();
+  const char* end = text.data() + text.size();
+  for (int k = 0; k < 3; ++k) {
+    const auto r = std::from_chars(p, end, v[k]);
+    if (r.ec != std::errc() || !std::isfinite(v[k]))
+      throw exbsp::usage_error(option + " expects three finite numbers X,Y,Z, got '" + text + "'");
+    p = r.ptr;
+    if (k < 2) {
+      if (p == end || *p != ',')
+        throw exbsp::usage_error(option + " expects three numbers separated by commas, got '" + text + "'");
+      ++p;
+    }
+  }
+  if (p != end) throw exbsp::usage_error(option + " expects exactly three numbers, got '" + text + "'");
+  return v;
+}
+
+std::string format_double(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+/// Writes `content` to `path` through a temporary file and a rename: never a partial file.
+void write_atomically(const std::string& path, const std::string& content) {
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!out) throw exbsp::input_error(path, 0, "cannot open for writing");
+    out << content;
+    out.flush();
+    if (!out) {
+      std::remove(tmp.c_str());
+      throw exbsp::input_error(path, 0, "write failed");
+    }
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw exbsp::input_error(path, 0, "cannot replace the file");
+  }
+}
+
+struct build_cli {
+  std::string mesh;
+  std::string kernel = "epeck";
+  std::string heuristic = exbsp::default_heuristic();
+  std::uint64_t seed = 0;
+  std::size_t max_fragments = 0;
+  unsigned threads = 0;
+};
+
+void add_build_options(CLI::App* cmd, build_cli& o) {
+  cmd->add_option("MESH", o.mesh, "mesh file: .off, .obj, .ply or .stl")->required();
+  cmd->add_option("--kernel", o.kernel,
+                  "number type: epeck (lazy exact, default), gmpq (plain exact rationals), "
+                  "epick (exact predicates, rounded splits), double (plain double)")
+      ->check(CLI::IsMember({"epeck", "epick", "double", "gmpq"}))
+      ->capture_default_str();
+  cmd->add_option("--heuristic", o.heuristic,
+                  "splitter choice: naive (first triangle), min-split (fewest straddlers), "
+                  "sampled (16 seeded candidates, split/balance score), random (seeded)")
+      ->check(CLI::IsMember(exbsp::heuristic_names()))
+      ->capture_default_str();
+  cmd->add_option("--seed", o.seed, "seed of the randomised heuristics")->capture_default_str();
+  cmd->add_option("--max-fragments", o.max_fragments,
+                  "stop with exit status 3 when the tree would need more fragments (0: no limit)");
+  cmd->add_option("--threads", o.threads, "threads for candidate evaluation (0: all cores)");
+}
+
+/// Progress line on a terminal for builds that run longer than a second.
+struct progress_line {
+  bool tty = ::isatty(2) != 0;
+  bool shown = false;
+  void operator()(const exbsp::build_progress& p) {
+    if (!tty || p.seconds < 1.0) return;
+    std::fprintf(stderr, "\r\033[Kexbsp: building: %zu of %zu fragments placed, %zu nodes, %.1f s",
+                 p.fragments_placed, p.fragments_total, p.nodes, p.seconds);
+    std::fflush(stderr);
+    shown = true;
+  }
+  void finish() {
+    if (shown) std::fprintf(stderr, "\r\033[K");
+  }
+};
+
+exbsp::bsp build_tree(const build_cli& o, progress_line& progress) {
+  const exbsp::triangle_soup soup = exbsp::read_mesh(o.mesh);
+  exbsp::build_options options;
+  options.kernel = exbsp::parse_kernel(o.kernel);
+  options.heuristic = o.heuristic;
+  options.seed = o.seed;
+  options.max_fragments = o.max_fragments;
+  options.threads = o.threads;
+  options.progress = [&progress](const exbsp::build_progress& p) { progress(p); };
+  try {
+    exbsp::bsp tree = exbsp::bsp::build(soup, options);
+    progress.finish();
+    return tree;
+  } catch (...) {
+    progress.finish();
+    throw;
+  }
+}
+
+nlohmann::json stats_json(const exbsp::build_stats& s) {
+  return {{"input_triangles", s.input_triangles}, {"degenerate_input", s.degenerate_input},
+          {"fragments", s.fragments},             {"splits", s.splits},
+          {"nodes", s.nodes},                     {"depth", s.depth},
+          {"build_seconds", s.build_seconds},     {"peak_rss_bytes", s.peak_rss_bytes},
+          {"kernel", s.kernel},                   {"heuristic", s.heuristic}};
+}
+
+int run_build(const build_cli& o, bool json) {
+  progress_line progress;
+  const exbsp::bsp tree = build_tree(o, progress);
+  const auto& s = tree.stats();
+  if (json) {
+    nlohmann::json j = stats_json(s);
+    j["mesh"] = o.mesh;
+    j["seed"] = o.seed;
+    std::cout << j.dump() << "\n";
+  } else {
+    std::cout << o.mesh << ": " << s.input_triangles << " input triangles (" << s.degenerate_input
+              << " degenerate, skipped) -> " << s.fragments << " fragments, " << s.splits
+              << " splits, " << s.nodes << " nodes, depth " << s.depth << "; " << s.kernel << ", "
+              << s.heuristic << ", " << s.build_seconds << " s\n";
+  }
+  return 0;
+}
+
+int run_order(const build_cli& o, const std::string& eye, const std::string& direction,
+              const std::string& out_path) {
+  const bool use_eye = !eye.empty();
+  const vec3d where = use_eye ? parse_triple(eye, "--eye") : parse_triple(direction, "--direction");
+  progress_line progress;
+  const exbsp::bsp tree = build_tree(o, progress);
+  const auto order = use_eye ? tree.order_from_eye(where) : tree.order_for_direction(where);
+  const bool exact = exbsp::is_exact(tree.kernel());
+
+  std::string out;
+  out.reserve(order.size() * (exact ? 400 : 200) + 64);
+  out += use_eye ? "{\"eye\": [" : "{\"direction\": [";
+  for (int k = 0; k < 3; ++k) out += (k ? ", " : "") + format_double(where[k]);
+  out += "],\n \"kernel\": \"" + exbsp::to_string(tree.kernel()) + "\", \"heuristic\": \"" +
+         o.heuristic + "\",\n \"fragments\": [";
+  for (std::size_t n = 0; n < order.size(); ++n) {
+    const exbsp::fragment_d f = tree.fragment(order[n]);
+    out += n ? ",\n  {\"face\": " : "\n  {\"face\": ";
+    out += std::to_string(f.face) + ", \"v\": [";
+    for (int i = 0; i < 3; ++i) {
+      out += i ? ", [" : "[";
+      for (int k = 0; k < 3; ++k) out += (k ? ", " : "") + format_double(f.v[i][k]);
+      out += "]";
+    }
+    out += "]";
+    if (exact) {
+      const exbsp::exact_triangle e = tree.fragment_exact(order[n]);
+      out += ", \"exact\": [";
+      for (int i = 0; i < 3; ++i) {
+        out += i ? ", [" : "[";
+        for (int k = 0; k < 3; ++k) out += std::string(k ? ", \"" : "\"") + e[i][k] + "\"";
+        out += "]";
+      }
+      out += "]";
+    }
+    out += "}";
+  }
+  out += "\n ]}\n";
+  if (out_path.empty())
+    std::cout << out;
+  else
+    write_atomically(out_path, out);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "exbsp: exact-predicate BSP trees of triangle meshes, back-to-front orders and rendering.\n"
+      "Classification and splitting are exact (CGAL Epeck by default), so trees and orders are\n"
+      "the same on every machine."};
+  app.require_subcommand(1);
+
+  build_cli build_opts, order_opts;
+  bool json = false;
+  auto* build = app.add_subcommand("build", "build the BSP tree of MESH and print its statistics");
+  add_build_options(build, build_opts);
+  build->add_flag("--json", json,
+                  "print one JSON object: input_triangles, degenerate_input, fragments, splits, "
+                  "nodes, depth, build_seconds, kernel, heuristic, ...");
+
+  std::string eye, direction, order_out;
+  auto* order = app.add_subcommand(
+      "order", "write the back-to-front fragment order of MESH for an eye point or a direction");
+  add_build_options(order, order_opts);
+  auto* eye_opt = order->add_option("--eye", eye, "eye point X,Y,Z (perspective view)");
+  auto* dir_opt = order->add_option("--direction", direction,
+                                    "direction of projection X,Y,Z, from the eye into the scene "
+                                    "(parallel view)");
+  eye_opt->excludes(dir_opt);
+  order->add_option("-o,--output", order_out, "output JSON file (default: standard output)");
+
+  std::string scene_path, render_out = "exbsp.png";
+  bool verbose = false;
+  auto* render = app.add_subcommand(
+      "render", "render SCENE.json (or the built-in demo scene) to PNG or SVG");
+  render->add_option("SCENE", scene_path, "scene file (JSON); omit for the built-in demo");
+  render->add_option("-o,--output", render_out, "output .png or .svg")->capture_default_str();
+  render->add_flag("-v,--verbose", verbose, "print the pipeline stages that ran and their timings");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "exbsp: error: " << e.what() << "\n" << "run 'exbsp --help' for usage\n";
+    return 2;
+  }
+
+  try {
+    if (*build) return run_build(build_opts, json);
+    if (*order) {
+      if (eye.empty() && direction.empty())
+        throw exbsp::usage_error("order needs --eye X,Y,Z or --direction X,Y,Z");
+      return run_order(order_opts, eye, direction, order_out);
+    }
+    if (*render) {
+      exbsp::render_command({scene_path, render_out, verbose}, std::cerr);
+      return 0;
+    }
+  } catch (const exbsp::limit_error& e) {
+    std::cerr << "exbsp: error: " << e.what() << "\n";
+    return 3;
+  } catch (const exbsp::error& e) {
+    std::cerr << "exbsp: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "exbsp: error: out of memory\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "exbsp: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

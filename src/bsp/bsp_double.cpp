@@ -1,0 +1,5 @@
+// Explicit instantiation of the BSP for the double kernel (one object per CGAL header set).
+#include "bsp/kernel_double.h"
+#include "bsp/bsp_tree_impl.h"
+
+EXBSP_INSTANTIATE_BSP(exbsp::double_kernel, double)

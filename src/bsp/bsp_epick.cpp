@@ -1,0 +1,5 @@
+// Explicit instantiation of the BSP for the epick kernel (one object per CGAL header set).
+#include "bsp/kernel_epick.h"
+#include "bsp/bsp_tree_impl.h"
+
+EXBSP_INSTANTIATE_BSP(exbsp::epick_kernel, epick)

@@ -1,0 +1,5 @@
+// Explicit instantiation of the BSP for the gmpq kernel (one object per CGAL header set).
+#include "bsp/kernel_gmpq.h"
+#include "bsp/bsp_tree_impl.h"
+
+EXBSP_INSTANTIATE_BSP(exbsp::gmpq_kernel, gmpq)

@@ -1,0 +1,28 @@
+// Private: the type-erased tree behind exbsp::bsp, one implementation per kernel.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "bsp/engine.h"
+
+namespace exbsp {
+
+class bsp_impl {
+public:
+  virtual ~bsp_impl() = default;
+  virtual const build_stats& stats() const = 0;
+  virtual kernel_id kernel() const = 0;
+  virtual std::size_t fragment_count() const = 0;
+  virtual fragment_d fragment(std::size_t i) const = 0;
+  virtual exact_triangle fragment_exact(std::size_t i) const = 0;
+  virtual std::vector<std::uint32_t> order_from_eye(const vec3d& eye, bool back_to_front) const = 0;
+  virtual std::vector<std::uint32_t> order_for_direction(const vec3d& d, bool back_to_front) const = 0;
+  virtual std::vector<bsp::ancestor> ancestors(std::size_t i) const = 0;
+};
+
+std::unique_ptr<bsp_impl> make_bsp_epeck(const triangle_soup&, const build_options&);
+std::unique_ptr<bsp_impl> make_bsp_epick(const triangle_soup&, const build_options&);
+std::unique_ptr<bsp_impl> make_bsp_double(const triangle_soup&, const build_options&);
+std::unique_ptr<bsp_impl> make_bsp_gmpq(const triangle_soup&, const build_options&);
+
+}  // namespace exbsp

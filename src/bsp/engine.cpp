@@ -1,0 +1,103 @@
+// exbsp::bsp facade: kernel dispatch, names, and the kernel-independent helpers.
+#include "bsp/engine.h"
+
+#include <cmath>
+
+#include "bsp/bsp_impl.h"
+#include "bsp/bsp_tree.h"
+#include "mesh/errors.h"
+
+namespace exbsp {
+
+std::string to_string(kernel_id k) {
+  switch (k) {
+    case kernel_id::epeck: return "epeck";
+    case kernel_id::epick: return "epick";
+    case kernel_id::double_: return "double";
+    case kernel_id::gmpq: return "gmpq";
+  }
+  return "unknown";
+}
+
+kernel_id parse_kernel(const std::string& name) {
+  for (kernel_id k : {kernel_id::epeck, kernel_id::epick, kernel_id::double_, kernel_id::gmpq})
+    if (to_string(k) == name) return k;
+  throw usage_error("unknown kernel '" + name + "' (expected epeck, epick, double or gmpq)");
+}
+
+bool is_exact(kernel_id k) { return k == kernel_id::epeck || k == kernel_id::gmpq; }
+
+const std::vector<std::string>& heuristic_names() {
+  static const std::vector<std::string> names{"naive", "min-split", "sampled", "random"};
+  return names;
+}
+
+const char* default_heuristic() { return "min-split"; }
+
+namespace detail {
+int heuristic_index(const std::string& name) {
+  const auto& names = heuristic_names();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return static_cast<int>(i);
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  throw usage_error("unknown heuristic '" + name + "' (expected one of: " + list + ")");
+}
+}  // namespace detail
+
+classification classify_signs(const std::array<int, 3>& s) {
+  const bool any_pos = s[0] > 0 || s[1] > 0 || s[2] > 0;
+  const bool any_neg = s[0] < 0 || s[1] < 0 || s[2] < 0;
+  if (any_pos && any_neg) return classification::straddling;
+  if (any_pos) return classification::positive;
+  if (any_neg) return classification::negative;
+  return classification::coplanar;
+}
+
+bsp bsp::build(const triangle_soup& soup, const build_options& options) {
+  detail::heuristic_index(options.heuristic);  // fail fast on a bad name
+  switch (options.kernel) {
+    case kernel_id::epeck: return bsp(make_bsp_epeck(soup, options));
+    case kernel_id::epick: return bsp(make_bsp_epick(soup, options));
+    case kernel_id::double_: return bsp(make_bsp_double(soup, options));
+    case kernel_id::gmpq: return bsp(make_bsp_gmpq(soup, options));
+  }
+  throw usage_error("unknown kernel");
+}
+
+bsp::bsp(std::unique_ptr<bsp_impl> impl) : impl_(std::move(impl)) {}
+bsp::bsp(bsp&&) noexcept = default;
+bsp& bsp::operator=(bsp&&) noexcept = default;
+bsp::~bsp() = default;
+
+const build_stats& bsp::stats() const { return impl_->stats(); }
+kernel_id bsp::kernel() const { return impl_->kernel(); }
+std::size_t bsp::fragment_count() const { return impl_->fragment_count(); }
+fragment_d bsp::fragment(std::size_t i) const { return impl_->fragment(i); }
+
+std::vector<fragment_d> bsp::fragments_double() const {
+  std::vector<fragment_d> out;
+  out.reserve(fragment_count());
+  for (std::size_t i = 0; i < fragment_count(); ++i) out.push_back(impl_->fragment(i));
+  return out;
+}
+
+exact_triangle bsp::fragment_exact(std::size_t i) const { return impl_->fragment_exact(i); }
+
+std::vector<std::uint32_t> bsp::order_from_eye(const vec3d& eye, bool back_to_front) const {
+  for (double x : eye)
+    if (!std::isfinite(x)) throw usage_error("order_from_eye: the eye must be finite");
+  return impl_->order_from_eye(eye, back_to_front);
+}
+
+std::vector<std::uint32_t> bsp::order_for_direction(const vec3d& d, bool back_to_front) const {
+  for (double x : d)
+    if (!std::isfinite(x)) throw usage_error("order_for_direction: the direction must be finite");
+  if (d[0] == 0 && d[1] == 0 && d[2] == 0)
+    throw usage_error("order_for_direction: the direction must not be zero");
+  return impl_->order_for_direction(d, back_to_front);
+}
+
+std::vector<bsp::ancestor> bsp::ancestors(std::size_t i) const { return impl_->ancestors(i); }
+
+}  // namespace exbsp

@@ -1,0 +1,125 @@
+// exbsp public API: build an exact BSP tree of a triangle soup and read back-to-front orders.
+//
+// This header hides CGAL: the kernel is chosen at run time and the tree is one of four
+// explicit instantiations (src/bsp/bsp_<kernel>.cpp). Fragments are the triangles stored in
+// the tree (input triangles and the pieces of split ones); each keeps its source face id.
+//
+// Typical use (a CAD viewer):
+//   exbsp::triangle_soup soup = exbsp::read_mesh("part.off");
+//   exbsp::bsp tree = exbsp::bsp::build(soup, {});          // Epeck, default heuristic
+//   auto frags = tree.fragments_double();                    // convert once
+//   for (auto i : tree.order_from_eye({0, 0, 10})) draw(frags[i]);
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mesh/soup.h"
+
+namespace exbsp {
+
+/// The number type behind classification and splitting.
+enum class kernel_id {
+  epeck,   ///< CGAL Epeck: lazy exact (filtered intervals, GMP rationals on demand). Default.
+  epick,   ///< CGAL Epick: exact predicates, rounded (double) constructions.
+  double_, ///< Simple_cartesian<double>: plain double, no filter, no epsilon.
+  gmpq     ///< Simple_cartesian<CGAL::Gmpq>: exact rationals, no filter.
+};
+
+/// "epeck", "epick", "double", "gmpq".
+std::string to_string(kernel_id k);
+/// Parses a kernel name; throws usage_error for an unknown name.
+kernel_id parse_kernel(const std::string& name);
+/// True for kernels whose constructions are exact (epeck, gmpq).
+bool is_exact(kernel_id k);
+
+/// Names of the splitter heuristics: "naive", "min-split", "sampled", "random".
+const std::vector<std::string>& heuristic_names();
+/// The default heuristic (the best one the benchmarks found; see bench/RESULTS.md).
+const char* default_heuristic();
+
+/// Progress of a running build, reported to build_options::progress.
+struct build_progress {
+  std::size_t fragments_placed;  ///< fragments already stored at nodes
+  std::size_t fragments_total;   ///< current total (grows with splits)
+  std::size_t nodes;
+  double seconds;
+};
+
+struct build_options {
+  kernel_id kernel = kernel_id::epeck;
+  std::string heuristic = default_heuristic();
+  std::uint64_t seed = 0;          ///< for randomised heuristics; same seed, same tree
+  std::size_t max_fragments = 0;   ///< 0: no limit; otherwise throw limit_error beyond it
+  unsigned threads = 0;            ///< worker threads for candidate evaluation (0: all cores)
+  /// Called every few thousand fragments; may be empty.
+  std::function<void(const build_progress&)> progress;
+};
+
+/// Statistics of a build (names follow `exbsp build --json`).
+struct build_stats {
+  std::size_t input_triangles = 0;   ///< triangles after fan triangulation, degenerate ones included
+  std::size_t degenerate_input = 0;  ///< exactly collinear triangles skipped (no plane)
+  std::size_t fragments = 0;         ///< triangles stored in the tree
+  std::size_t splits = 0;            ///< split events (one per straddling triangle split)
+  std::size_t nodes = 0;
+  std::size_t depth = 0;             ///< nodes on the longest root-to-leaf path (root alone: 1)
+  double build_seconds = 0;
+  std::size_t peak_rss_bytes = 0;    ///< process peak resident set after the build (Linux), 0 if unknown
+  std::string kernel, heuristic;
+};
+
+/// A fragment converted to doubles (each coordinate correctly rounded from its exact value).
+struct fragment_d {
+  std::uint32_t face;
+  std::array<vec3d, 3> v;
+};
+
+/// Exact coordinates of a fragment as reduced rationals "p/q" (or "p").
+using exact_triangle = std::array<std::array<std::string, 3>, 3>;
+
+class bsp_impl;
+
+/// A built BSP tree. Movable, not copyable. Thread-safe for concurrent const use.
+class bsp {
+public:
+  /// Builds the tree of `soup`. Throws usage_error for an unknown heuristic,
+  /// limit_error when options.max_fragments is exceeded. Degenerate triangles are skipped
+  /// and counted in stats().degenerate_input.
+  static bsp build(const triangle_soup& soup, const build_options& options = {});
+
+  bsp(bsp&&) noexcept;
+  bsp& operator=(bsp&&) noexcept;
+  ~bsp();
+
+  const build_stats& stats() const;
+  kernel_id kernel() const;
+
+  /// Fragments in storage order (node by node); indices below refer to this order.
+  std::size_t fragment_count() const;
+  fragment_d fragment(std::size_t i) const;
+  std::vector<fragment_d> fragments_double() const;
+  /// Exact coordinates; throws usage_error on an inexact kernel.
+  exact_triangle fragment_exact(std::size_t i) const;
+
+  /// Fragment indices back to front (or front to back) for a perspective eye point
+  /// (DESIGN.md section 3).
+  std::vector<std::uint32_t> order_from_eye(const vec3d& eye, bool back_to_front = true) const;
+  /// Same for a parallel projection with direction of projection d (eye into the scene).
+  /// Throws usage_error for a zero or non-finite d.
+  std::vector<std::uint32_t> order_for_direction(const vec3d& d, bool back_to_front = true) const;
+
+  /// Structure for checks: for fragment i, the fragment indices of the splitter plane of each
+  /// ancestor node and the side (+1 / -1) it lies on, root first. Empty for fragments at the root.
+  struct ancestor { std::uint32_t plane_face; int side; };
+  std::vector<ancestor> ancestors(std::size_t i) const;
+
+private:
+  explicit bsp(std::unique_ptr<bsp_impl> impl);
+  std::unique_ptr<bsp_impl> impl_;
+};
+
+}  // namespace exbsp

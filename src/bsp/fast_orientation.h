@@ -1,0 +1,70 @@
+// Certified fast orientation of double points against a plane through three double points.
+//
+// Notation: plane points a, b, c (doubles); e1 = b - a, e2 = c - a; n = e1 x e2;
+// for a point p, q = p - a and f(p) = n . q = orientation(a, b, c, p).
+// Everything is computed in double together with an upper bound on its rounding error
+// (u = 2^-53, generous constant factors); when |f^| exceeds the bound, its sign is the exact
+// sign. Otherwise (or when magnitudes leave [1e-80, 1e80], where underflow or overflow
+// would void the bound) the caller falls back to the exact predicate. The answer, when
+// given, is therefore identical to the exact one: this is a pure speed-up.
+#pragma once
+#include <cmath>
+
+#include "mesh/soup.h"
+
+namespace exbsp {
+
+struct fast_plane {
+  vec3d a{}, n{}, err{};  ///< base point, rounded normal, error bound per normal component
+  bool valid = false;
+};
+
+namespace detail {
+inline bool safe_magnitude(double x) {
+  const double m = std::fabs(x);
+  return m == 0 || (m >= 1e-80 && m <= 1e80);
+}
+}  // namespace detail
+
+inline fast_plane make_fast_plane(const vec3d& a, const vec3d& b, const vec3d& c) {
+  constexpr double u = 1.1102230246251565e-16;  // 2^-53
+  fast_plane p;
+  p.a = a;
+  const vec3d e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const vec3d e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  for (int k = 0; k < 3; ++k)
+    if (!detail::safe_magnitude(e1[k]) || !detail::safe_magnitude(e2[k]) ||
+        !detail::safe_magnitude(a[k]))
+      return p;
+  const double t[6] = {e1[1] * e2[2], e1[2] * e2[1], e1[2] * e2[0],
+                       e1[0] * e2[2], e1[0] * e2[1], e1[1] * e2[0]};
+  for (int k = 0; k < 3; ++k) {
+    p.n[k] = t[2 * k] - t[2 * k + 1];
+    // e1, e2 carry a relative error <= u each, products <= 3u, the difference u more.
+    p.err[k] = 8 * u * (std::fabs(t[2 * k]) + std::fabs(t[2 * k + 1]));
+    if (!detail::safe_magnitude(p.n[k]) && p.n[k] != 0) return p;
+  }
+  p.valid = true;
+  return p;
+}
+
+/// Sign of orientation(a, b, c, point) for a point with exact double coordinates:
+/// -1, 0 or +1 when certified, 2 when the caller must use the exact predicate.
+inline int fast_sign(const fast_plane& p, const vec3d& point) {
+  constexpr double u = 1.1102230246251565e-16;
+  if (!p.valid) return 2;
+  const double q0 = point[0] - p.a[0], q1 = point[1] - p.a[1], q2 = point[2] - p.a[2];
+  if (!detail::safe_magnitude(q0) || !detail::safe_magnitude(q1) || !detail::safe_magnitude(q2))
+    return 2;
+  const double v = p.n[0] * q0 + p.n[1] * q1 + p.n[2] * q2;
+  const double bound = (p.err[0] + 8 * u * std::fabs(p.n[0])) * std::fabs(q0) +
+                       (p.err[1] + 8 * u * std::fabs(p.n[1])) * std::fabs(q1) +
+                       (p.err[2] + 8 * u * std::fabs(p.n[2])) * std::fabs(q2);
+  const double safe_bound = bound * (1 + 8 * u) + 1e-290;  // products stay normal
+  if (v > safe_bound) return 1;
+  if (v < -safe_bound) return -1;
+  if (q0 == 0 && q1 == 0 && q2 == 0) return 0;  // p == a exactly
+  return 2;
+}
+
+}  // namespace exbsp

@@ -1,0 +1,24 @@
+// CGAL Epick: exact (filtered) predicates on double coordinates, rounded constructions.
+#pragma once
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include "bsp/kernel_traits.h"
+
+namespace exbsp {
+
+using epick_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+template <>
+struct kernel_traits<epick_kernel> {
+  static constexpr kernel_id id = kernel_id::epick;
+  /// Whether the certified double filter (fast_orientation.h) may answer side tests.
+  static constexpr bool fast_path = true;
+  /// Whether constructed points have exact double coordinates.
+  static constexpr bool constructions_are_doubles = true;
+  static constexpr bool exact = false;
+  static void collapse(const epick_kernel::Point_3&) {}
+  static mpq_srcptr rational(const double&) { return nullptr; }
+  static double to_double(double x) { return x; }
+};
+
+}  // namespace exbsp

@@ -1,0 +1,26 @@
+// Simple_cartesian<CGAL::Gmpq>: plain exact rationals, no filtering (the slow reference).
+#pragma once
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include "bsp/exact_output.h"
+#include "bsp/kernel_traits.h"
+
+namespace exbsp {
+
+using gmpq_kernel = CGAL::Simple_cartesian<CGAL::Gmpq>;
+
+template <>
+struct kernel_traits<gmpq_kernel> {
+  static constexpr kernel_id id = kernel_id::gmpq;
+  /// Whether the certified double filter (fast_orientation.h) may answer side tests.
+  static constexpr bool fast_path = false;
+  /// Whether constructed points have exact double coordinates.
+  static constexpr bool constructions_are_doubles = false;
+  static constexpr bool exact = true;
+  static void collapse(const gmpq_kernel::Point_3&) {}
+  static mpq_srcptr rational(const gmpq_kernel::FT& x) { return x.mpq(); }
+  static double to_double(const gmpq_kernel::FT& x) { return rational_to_double(x.mpq()); }
+};
+
+}  // namespace exbsp

@@ -1,0 +1,231 @@
+// Exact clipping and splitting of triangles by planes with a CGAL kernel (CAD section views).
+//
+// Notation (DESIGN.md section 3): a cut plane is three points (a, b, c); its positive side
+// is where (b - a) x (c - a) points, i.e. p is on the positive side when
+// CGAL::orientation(a, b, c, p) == POSITIVE. Clipping keeps the closed positive side.
+// A triangle's vertex signs decide: all 0 -> coplanar (kept, it lies in the closed positive
+// side); all >= 0 -> positive; all <= 0 -> negative; otherwise it straddles and is split:
+//   - no vertex on the plane: relabel cyclically so c is alone on its side;
+//     A = plane ∩ [c, a], B = plane ∩ [b, c]; pieces (a, b, A), (b, B, A) on the a/b side
+//     and (A, B, c) on c's side, in that order;
+//   - one vertex z on the plane, the other two opposite: relabel cyclically to (z, a, b);
+//     X = plane ∩ [a, b]; pieces (z, a, X) on a's side and (z, X, b) on b's side.
+// Pieces keep the parent's orientation. With exact constructions (Epeck, Gmpq) the pieces of
+// both sides tile the parent exactly.
+//
+// The templates are explicitly instantiated once (exact_triangle_clip.cpp) for exbsp::clip::epeck
+// and exbsp::clip::gmpq_kernel; other kernels (e.g. Epick) instantiate them implicitly.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include "mesh/errors.h"
+
+namespace exbsp::clip {
+
+using epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+using gmpq_kernel = CGAL::Simple_cartesian<CGAL::Gmpq>;
+
+/// Triangle (v[0], v[1], v[2]) of kernel K; its orientation is its vertex order.
+template <class K>
+struct exact_triangle {
+  std::array<typename K::Point_3, 3> v;
+};
+
+/// Oriented cut plane through a, b, c (not collinear); positive side along (b-a) x (c-a).
+template <class K>
+struct exact_plane {
+  typename K::Point_3 a, b, c;
+};
+
+/// How a triangle lies with respect to a plane (see the notation above).
+enum class triangle_plane_side { positive, negative, coplanar, straddling };
+
+/// Both sides of a split: `positive` holds the pieces in the closed positive side (and a
+/// coplanar triangle), `negative` those in the open negative side, each in piece order.
+template <class K>
+struct exact_split {
+  std::vector<exact_triangle<K>> positive;
+  std::vector<exact_triangle<K>> negative;
+};
+
+/// Classifies t against the plane by the exact signs of its vertices.
+/// Throws usage_error when the plane's points are collinear.
+template <class K>
+triangle_plane_side classify_triangle(const exact_triangle<K>& t, const exact_plane<K>& plane);
+
+/// The point where segment [p, q] crosses the plane. Precondition: p and q strictly on
+/// opposite sides (throws usage_error otherwise, or when the plane's points are collinear).
+/// Computed from the lexicographically smaller endpoint, so [p, q] and [q, p] agree even
+/// with a rounding kernel.
+template <class K>
+typename K::Point_3 plane_segment_intersection(const exact_plane<K>& plane,
+                                               const typename K::Point_3& p,
+                                               const typename K::Point_3& q);
+
+/// Splits t by the plane into the pieces on each side (section 3 piece convention).
+/// A triangle not straddling goes whole to its side (coplanar: positive).
+/// Throws usage_error when the plane's points are collinear.
+template <class K>
+exact_split<K> split_triangle(const exact_triangle<K>& t, const exact_plane<K>& plane);
+
+/// The part of t in the closed positive side of the plane, as triangles with t's
+/// orientation (empty when t is entirely on the negative side).
+/// Throws usage_error when the plane's points are collinear.
+template <class K>
+std::vector<exact_triangle<K>> clip_triangle(const exact_triangle<K>& t, const exact_plane<K>& plane);
+
+/// The part of t in the convex region = intersection of the closed positive sides of all
+/// planes, as triangles with t's orientation; planes are applied in order. No planes: {t}.
+/// Throws usage_error when a plane's points are collinear.
+template <class K>
+std::vector<exact_triangle<K>> clip_triangle(const exact_triangle<K>& t,
+                                             const std::vector<exact_plane<K>>& planes);
+
+// ---------------------------------------------------------------------------------------
+// Definitions. s[i] is the sign (+1, 0, -1) of vertex i of the triangle.
+namespace detail {
+
+template <class K>
+void require_plane(const exact_plane<K>& plane, const char* function) {
+  if (CGAL::collinear(plane.a, plane.b, plane.c))
+    throw usage_error(std::string(function) + ": the three plane points are collinear");
+}
+
+template <class K>
+int side_of(const exact_plane<K>& plane, const typename K::Point_3& p) {
+  return static_cast<int>(CGAL::orientation(plane.a, plane.b, plane.c, p));
+}
+
+template <class K>
+typename K::Point_3 crossing_unchecked(const exact_plane<K>& plane, const typename K::Point_3& p0,
+                                       const typename K::Point_3& q0) {
+  const bool swap = CGAL::compare_xyz(q0, p0) == CGAL::SMALLER;
+  const typename K::Point_3& p = swap ? q0 : p0;
+  const typename K::Point_3& q = swap ? p0 : q0;
+  const typename K::Vector_3 n = CGAL::cross_product(plane.b - plane.a, plane.c - plane.a);
+  const typename K::FT fp = n * (p - plane.a);
+  const typename K::FT fq = n * (q - plane.a);
+  const typename K::FT t = fp / (fp - fq);
+  return p + t * (q - p);
+}
+
+template <class K>
+triangle_plane_side classify_signs(const std::array<int, 3>& s) {
+  const bool any_pos = s[0] > 0 || s[1] > 0 || s[2] > 0;
+  const bool any_neg = s[0] < 0 || s[1] < 0 || s[2] < 0;
+  if (!any_pos && !any_neg) return triangle_plane_side::coplanar;
+  if (!any_neg) return triangle_plane_side::positive;
+  if (!any_pos) return triangle_plane_side::negative;
+  return triangle_plane_side::straddling;
+}
+
+template <class K>
+exact_split<K> split_unchecked(const exact_triangle<K>& t, const exact_plane<K>& plane) {
+  const std::array<int, 3> s{side_of(plane, t.v[0]), side_of(plane, t.v[1]), side_of(plane, t.v[2])};
+  exact_split<K> out;
+  switch (classify_signs<K>(s)) {
+    case triangle_plane_side::coplanar:
+    case triangle_plane_side::positive: out.positive.push_back(t); return out;
+    case triangle_plane_side::negative: out.negative.push_back(t); return out;
+    case triangle_plane_side::straddling: break;
+  }
+  auto side_list = [&out](int sign) -> std::vector<exact_triangle<K>>& {
+    return sign > 0 ? out.positive : out.negative;
+  };
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (s[i] != 0) continue;
+    // One vertex z on the plane; straddling means the other two are strictly opposite.
+    const auto& z = t.v[i];
+    const auto& a = t.v[(i + 1) % 3];
+    const auto& b = t.v[(i + 2) % 3];
+    const typename K::Point_3 x = crossing_unchecked(plane, a, b);
+    side_list(s[(i + 1) % 3]).push_back(exact_triangle<K>{{z, a, x}});
+    side_list(s[(i + 2) % 3]).push_back(exact_triangle<K>{{z, x, b}});
+    return out;
+  }
+  // No vertex on the plane: c = v[i] is the one whose sign differs from the other two.
+  std::size_t lone = 0;
+  if (s[1] != s[0] && s[1] != s[2]) lone = 1;
+  if (s[2] != s[0] && s[2] != s[1]) lone = 2;
+  const auto& c = t.v[lone];
+  const auto& a = t.v[(lone + 1) % 3];
+  const auto& b = t.v[(lone + 2) % 3];
+  const typename K::Point_3 pa = crossing_unchecked(plane, c, a);  // A
+  const typename K::Point_3 pb = crossing_unchecked(plane, b, c);  // B
+  auto& ab_side = side_list(s[(lone + 1) % 3]);
+  ab_side.push_back(exact_triangle<K>{{a, b, pa}});
+  ab_side.push_back(exact_triangle<K>{{b, pb, pa}});
+  side_list(s[lone]).push_back(exact_triangle<K>{{pa, pb, c}});
+  return out;
+}
+
+}  // namespace detail
+
+template <class K>
+triangle_plane_side classify_triangle(const exact_triangle<K>& t, const exact_plane<K>& plane) {
+  detail::require_plane(plane, "classify_triangle");
+  return detail::classify_signs<K>(
+      {detail::side_of(plane, t.v[0]), detail::side_of(plane, t.v[1]), detail::side_of(plane, t.v[2])});
+}
+
+template <class K>
+typename K::Point_3 plane_segment_intersection(const exact_plane<K>& plane,
+                                               const typename K::Point_3& p,
+                                               const typename K::Point_3& q) {
+  detail::require_plane(plane, "plane_segment_intersection");
+  if (detail::side_of(plane, p) * detail::side_of(plane, q) >= 0)
+    throw usage_error("plane_segment_intersection: the endpoints are not strictly on opposite sides");
+  return detail::crossing_unchecked(plane, p, q);
+}
+
+template <class K>
+exact_split<K> split_triangle(const exact_triangle<K>& t, const exact_plane<K>& plane) {
+  detail::require_plane(plane, "split_triangle");
+  return detail::split_unchecked(t, plane);
+}
+
+template <class K>
+std::vector<exact_triangle<K>> clip_triangle(const exact_triangle<K>& t, const exact_plane<K>& plane) {
+  detail::require_plane(plane, "clip_triangle");
+  return detail::split_unchecked(t, plane).positive;
+}
+
+template <class K>
+std::vector<exact_triangle<K>> clip_triangle(const exact_triangle<K>& t,
+                                             const std::vector<exact_plane<K>>& planes) {
+  for (const auto& plane : planes) detail::require_plane(plane, "clip_triangle");
+  std::vector<exact_triangle<K>> kept{t}, next;
+  for (const auto& plane : planes) {
+    next.clear();
+    for (const auto& piece : kept) {
+      auto pieces = detail::split_unchecked(piece, plane).positive;
+      next.insert(next.end(), pieces.begin(), pieces.end());
+    }
+    kept.swap(next);
+    if (kept.empty()) break;
+  }
+  return kept;
+}
+
+// Compiled once in exact_triangle_clip.cpp for the two exact kernels.
+#define EXBSP_CLIP_EXACT_TEMPLATES(PREFIX, K)                                                     \
+  PREFIX template triangle_plane_side classify_triangle<K>(const exact_triangle<K>&,             \
+                                                            const exact_plane<K>&);               \
+  PREFIX template K::Point_3 plane_segment_intersection<K>(const exact_plane<K>&,                \
+                                                           const K::Point_3&, const K::Point_3&); \
+  PREFIX template exact_split<K> split_triangle<K>(const exact_triangle<K>&, const exact_plane<K>&); \
+  PREFIX template std::vector<exact_triangle<K>> clip_triangle<K>(const exact_triangle<K>&,      \
+                                                                  const exact_plane<K>&);        \
+  PREFIX template std::vector<exact_triangle<K>> clip_triangle<K>(                               \
+      const exact_triangle<K>&, const std::vector<exact_plane<K>>&);
+
+EXBSP_CLIP_EXACT_TEMPLATES(extern, epeck)
+EXBSP_CLIP_EXACT_TEMPLATES(extern, gmpq_kernel)
+
+}  // namespace exbsp::clip

@@ -1,0 +1,147 @@
+// Sutherland–Hodgman clipping (see sutherland_hodgman.h for the notation).
+// `in` and `out` are the polygons before and after one half-space; `f` holds f(in[i]).
+#include "clip/sutherland_hodgman.h"
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+
+#include "clip/clip_checks.h"
+
+namespace exbsp::clip {
+namespace {
+
+/// Normal component index of a 2D/3D plane, or -1 when it is not axis-aligned.
+int axis_of(const half_plane2& h) {
+  if (h.a != 0.0 && h.b == 0.0) return 0;
+  if (h.a == 0.0 && h.b != 0.0) return 1;
+  return -1;
+}
+int axis_of(const half_space3& h) {
+  int axis = -1;
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (h.n[k] == 0.0) continue;
+    if (axis >= 0) return -1;
+    axis = static_cast<int>(k);
+  }
+  return axis;
+}
+double normal_component(const half_plane2& h, int k) { return k == 0 ? h.a : h.b; }
+double normal_component(const half_space3& h, int k) { return h.n[static_cast<std::size_t>(k)]; }
+double offset(const half_plane2& h) { return h.c; }
+double offset(const half_space3& h) { return h.d; }
+
+bool finite_plane(const half_plane2& h) {
+  return std::isfinite(h.a) && std::isfinite(h.b) && std::isfinite(h.c);
+}
+bool finite_plane(const half_space3& h) { return detail::all_finite(h.n) && std::isfinite(h.d); }
+
+/// Crossing point of edge (p, q) with f(p), f(q) of strictly opposite signs, computed from
+/// the lexicographically smaller endpoint so that the edge's direction does not matter.
+template <class P, class H>
+P crossing(const P& p, double fp, const P& q, double fq, const H& h, int axis) {
+  const bool swap = q < p;
+  const P& lo = swap ? q : p;
+  const P& hi = swap ? p : q;
+  const double f_lo = swap ? fq : fp;
+  const double f_hi = swap ? fp : fq;
+  const double t = f_lo / (f_lo - f_hi);  // in [0, 1]: |f_lo - f_hi| >= |f_lo|
+  P x;
+  for (std::size_t k = 0; k < x.size(); ++k) x[k] = detail::lerp_within(lo[k], hi[k], t);
+  if (axis >= 0) x[static_cast<std::size_t>(axis)] = -offset(h) / normal_component(h, axis);
+  return x;
+}
+
+template <class P, class H>
+std::vector<P> clip_n(const std::vector<P>& polygon, const std::vector<H>& region) {
+  const char* function = "sutherland_hodgman_clip";
+  for (const P& p : polygon) detail::require_finite(p, function, "polygon vertex");
+  for (const H& h : region)
+    if (!finite_plane(h))
+      throw usage_error(std::string(function) + ": half-space has a NaN or infinite coefficient");
+  if (polygon.size() < 3) return {};
+
+  std::vector<P> in = polygon, out;
+  std::vector<double> f;
+  for (const H& h : region) {
+    const std::size_t n = in.size();
+    f.resize(n);
+    bool all_inside = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      f[i] = h.value(in[i]);
+      all_inside = all_inside && f[i] >= 0.0;
+    }
+    if (all_inside) continue;
+    const int axis = axis_of(h);
+    out.clear();
+    std::size_t s = n - 1;
+    for (std::size_t e = 0; e < n; s = e, ++e) {
+      if ((f[s] > 0.0 && f[e] < 0.0) || (f[s] < 0.0 && f[e] > 0.0))
+        out.push_back(crossing(in[s], f[s], in[e], f[e], h, axis));
+      if (f[e] >= 0.0) out.push_back(in[e]);
+    }
+    if (out.size() < 3) return {};
+    std::swap(in, out);
+  }
+  return in;
+}
+
+void require_view_volume(double left, double right, double bottom, double top, double near,
+                         double far, const char* function) {
+  for (double v : {left, right, bottom, top, near, far})
+    if (!std::isfinite(v)) throw usage_error(std::string(function) + ": NaN or infinite bound");
+  if (!(left < right)) throw usage_error(std::string(function) + ": left must be < right");
+  if (!(bottom < top)) throw usage_error(std::string(function) + ": bottom must be < top");
+  if (!(near < far)) throw usage_error(std::string(function) + ": near must be < far");
+}
+
+}  // namespace
+
+std::vector<vec2> sutherland_hodgman_clip(const std::vector<vec2>& polygon,
+                                          const std::vector<half_plane2>& region) {
+  return clip_n(polygon, region);
+}
+
+std::vector<vec3> sutherland_hodgman_clip(const std::vector<vec3>& polygon,
+                                          const std::vector<half_space3>& region) {
+  return clip_n(polygon, region);
+}
+
+std::vector<half_plane2> window_half_planes(const window2& w) {
+  detail::require_valid_box(w, "window_half_planes");
+  return {{1.0, 0.0, -w.min[0]}, {-1.0, 0.0, w.max[0]}, {0.0, 1.0, -w.min[1]}, {0.0, -1.0, w.max[1]}};
+}
+
+std::vector<half_space3> box_half_spaces(const box3& b) {
+  detail::require_valid_box(b, "box_half_spaces");
+  std::vector<half_space3> out;
+  for (std::size_t k = 0; k < 3; ++k) {
+    vec3 n{0.0, 0.0, 0.0};
+    n[k] = 1.0;
+    out.push_back({n, -b.min[k]});
+    n[k] = -1.0;
+    out.push_back({n, b.max[k]});
+  }
+  return out;
+}
+
+std::vector<half_space3> frustum_half_spaces(double left, double right, double bottom, double top,
+                                             double near, double far) {
+  const char* function = "frustum_half_spaces";
+  require_view_volume(left, right, bottom, top, near, far, function);
+  if (!(near > 0.0)) throw usage_error(std::string(function) + ": near must be > 0");
+  // A side plane passes through the eye and one edge of the near rectangle z = -near:
+  // x / -z >= left / near  <=>  near * x + left * z >= 0 (for z < 0), and so on.
+  return {{{near, 0.0, left}, 0.0},    {{-near, 0.0, -right}, 0.0},
+          {{0.0, near, bottom}, 0.0},  {{0.0, -near, -top}, 0.0},
+          {{0.0, 0.0, -1.0}, -near},   {{0.0, 0.0, 1.0}, far}};
+}
+
+std::vector<half_space3> orthographic_half_spaces(double left, double right, double bottom,
+                                                  double top, double near, double far) {
+  require_view_volume(left, right, bottom, top, near, far, "orthographic_half_spaces");
+  return box_half_spaces(box3{{left, bottom, -far}, {right, top, -near}});
+}
+
+}  // namespace exbsp::clip

@@ -1,0 +1,65 @@
+// Sutherland–Hodgman polygon clipping against a convex region given as half-spaces.
+//
+// Notation: a 2D half-plane is {a*x + b*y + c >= 0}; a 3D half-space is {n·p + d >= 0};
+// f(p) is that left-hand side. The region is the intersection of the (closed) half-spaces.
+// The polygon is clipped against one half-space after the other; for each edge s -> e
+// (from the last vertex to the first included) the clipper emits: e when f(e) >= 0, and
+// before it the crossing point when f(s) and f(e) have strictly opposite signs. A vertex
+// with f = 0 is kept as it is (no crossing point is computed next to it).
+//
+// Floating point: a crossing point is computed from the edge's endpoints in lexicographic
+// order (so an edge shared by two polygons gives the same point whichever way it is
+// walked), each coordinate kept within the range of the two endpoints. For an axis-aligned
+// half-space (exactly one nonzero normal component n_k) the point's coordinate k is set to
+// -d / n_k, so a box or window boundary is hit exactly.
+//
+// The result is exact for convex input polygons (the clipped part, in the input's order and
+// orientation); a concave input can produce degenerate connecting edges along a boundary.
+#pragma once
+#include <vector>
+
+#include "clip/clip_types.h"
+
+namespace exbsp::clip {
+
+/// Closed half-plane a*x + b*y + c >= 0.
+struct half_plane2 {
+  double a, b, c;
+  double value(const vec2& p) const { return a * p[0] + b * p[1] + c; }
+};
+
+/// Closed half-space n·p + d >= 0.
+struct half_space3 {
+  vec3 n;
+  double d;
+  double value(const vec3& p) const { return n[0] * p[0] + n[1] * p[1] + n[2] * p[2] + d; }
+};
+
+/// The part of `polygon` inside every half-plane of `region` (their intersection, which is
+/// convex), in the input's vertex order. An empty region list returns the polygon unchanged;
+/// a result with fewer than 3 vertices (nothing, a point or a segment) is returned empty, as
+/// is an input with fewer than 3 vertices. Throws usage_error on NaN/infinite input.
+std::vector<vec2> sutherland_hodgman_clip(const std::vector<vec2>& polygon,
+                                          const std::vector<half_plane2>& region);
+/// 3D version: a planar polygon clipped by half-spaces; same guarantees and errors.
+std::vector<vec3> sutherland_hodgman_clip(const std::vector<vec3>& polygon,
+                                          const std::vector<half_space3>& region);
+
+/// The four half-planes of the closed window: x >= xmin, x <= xmax, y >= ymin, y <= ymax
+/// (in that order). Throws usage_error on NaN/infinite bounds or min > max.
+std::vector<half_plane2> window_half_planes(const window2& window);
+/// The six half-spaces of the closed box: x >= min, x <= max, then y, then z.
+/// Throws usage_error on NaN/infinite bounds or min > max.
+std::vector<half_space3> box_half_spaces(const box3& box);
+/// The six half-spaces of a glFrustum view volume in eye coordinates (eye at the origin,
+/// looking down -z): left, right, bottom, top, near (z <= -near), far (z >= -far).
+/// Throws usage_error unless left < right, bottom < top, 0 < near < far, all finite.
+std::vector<half_space3> frustum_half_spaces(double left, double right, double bottom, double top,
+                                             double near, double far);
+/// The six half-spaces of a glOrtho view volume in eye coordinates: the box
+/// [left, right] x [bottom, top] x [-far, -near]. Throws usage_error unless left < right,
+/// bottom < top, near < far, all finite.
+std::vector<half_space3> orthographic_half_spaces(double left, double right, double bottom,
+                                                  double top, double near, double far);
+
+}  // namespace exbsp::clip

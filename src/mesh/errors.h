@@ -1,0 +1,57 @@
+// exbsp error hierarchy: the library reports every failure by throwing one of these;
+// it never aborts or exits. The command line maps them to exit codes (DESIGN.md section 4):
+// input_error and scene_error -> 2, limit_error -> 3.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace exbsp {
+
+/// Base of all exbsp errors. what() is a complete, user-facing message.
+class error : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Bad input file: unreadable, syntax error, NaN/Inf, index out of range, count mismatch.
+/// The message names the file and, where there is one, the line ("FILE:LINE: ...").
+class input_error : public error {
+public:
+  input_error(const std::string& file, std::size_t line, const std::string& what)
+      : error(line ? file + ":" + std::to_string(line) + ": " + what : file + ": " + what),
+        file_(file), line_(line) {}
+  const std::string& file() const { return file_; }
+  /// 1-based line number, or 0 when the problem has no line (binary files, missing file).
+  std::size_t line() const { return line_; }
+
+private:
+  std::string file_;
+  std::size_t line_;
+};
+
+/// Bad scene: a missing or wrongly typed key, an impossible camera or projection.
+/// The message names the scene file and the key (JSON pointer style, e.g. /projection/near).
+class scene_error : public error {
+public:
+  scene_error(const std::string& file, const std::string& key, const std::string& what)
+      : error(file + ": " + (key.empty() ? std::string() : key + ": ") + what), file_(file), key_(key) {}
+  const std::string& file() const { return file_; }
+  const std::string& key() const { return key_; }
+
+private:
+  std::string file_, key_;
+};
+
+/// A resource limit was reached (e.g. --max-fragments); nothing partial is returned.
+class limit_error : public error {
+public:
+  using error::error;
+};
+
+/// A caller broke a documented precondition (e.g. a zero direction vector).
+class usage_error : public error {
+public:
+  using error::error;
+};
+
+}  // namespace exbsp

@@ -1,0 +1,30 @@
+// Mesh input: OFF, OBJ, PLY and STL into a triangle soup (DESIGN.md section 2).
+// The readers are exbsp's own (not OpenMesh's): a coordinate is the IEEE double nearest to
+// its decimal text, no face is dropped, and bad input throws input_error naming file and line.
+#pragma once
+#include <string>
+#include <string_view>
+
+#include "mesh/soup.h"
+
+namespace exbsp {
+
+/// The mesh file formats read_mesh understands.
+enum class mesh_format { off, obj, ply, stl };
+
+/// The format for `path`'s extension (.off, .obj, .ply, .stl, case-insensitive).
+/// Throws input_error (line 0) for any other or no extension, listing the supported ones.
+mesh_format mesh_format_for_path(const std::string& path);
+
+/// Reads a mesh file by extension (.off, .obj, .ply, .stl, case-insensitive) into a soup.
+/// Every face is kept (fan-triangulated, face id = 0-based face index in the file).
+/// Throws input_error naming the file and line for unreadable files, syntax errors,
+/// NaN/Inf coordinates, out-of-range indices, faces with < 3 vertices and count mismatches.
+triangle_soup read_mesh(const std::string& path);
+
+/// Parses the complete contents `data` of a mesh file in `format`; `name` is the file name
+/// used in messages and stored in triangle_soup::source. Same rules and errors as read_mesh
+/// (an empty `data` is an error: "empty file").
+triangle_soup read_mesh_data(std::string_view data, mesh_format format, const std::string& name);
+
+}  // namespace exbsp

@@ -1,0 +1,359 @@
+// Scene parsing and validation (notation in scene.h). Every check names its key as a JSON
+// pointer; parse_scene validates the whole document before any mesh file is read.
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+
+#include "mesh/errors.h"
+#include "mesh/mesh_io.h"
+#include "view/effects.h"
+#include "view/projection.h"
+
+namespace exbsp::scene {
+
+using nlohmann::json;
+
+namespace {
+
+std::string number_text(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+/// JSON reading with JSON-pointer error messages.
+class reader {
+public:
+  reader(std::string file, std::ostream* warnings) : file_(std::move(file)), warnings_(warnings) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const { throw scene_error(file_, key, what); }
+
+  void warn(const std::string& key, const std::string& what) const {
+    if (warnings_) *warnings_ << "exbsp: warning: " << file_ << ": " << key << ": " << what << "\n";
+  }
+
+  const json& object(const json& v, const std::string& key) const {
+    if (!v.is_object()) fail(key, std::string("must be an object (got ") + v.type_name() + ")");
+    return v;
+  }
+
+  /// The member `name` of object `obj` at pointer `key`; fails when absent or null.
+  const json& require(const json& obj, const std::string& key, const char* name) const {
+    auto it = obj.find(name);
+    if (it == obj.end() || it->is_null()) fail(key + "/" + name, "missing key");
+    return *it;
+  }
+
+  /// Pointer to the member or nullptr when absent or null.
+  const json* optional(const json& obj, const char* name) const {
+    auto it = obj.find(name);
+    if (it == obj.end() || it->is_null()) return nullptr;
+    return &*it;
+  }
+
+  void warn_unknown(const json& obj, const std::string& key, std::initializer_list<const char*> known) const {
+    for (auto it = obj.begin(); it != obj.end(); ++it) {
+      const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; });
+      if (!ok) warn(key + "/" + it.key(), "unknown key ignored");
+    }
+  }
+
+  double number(const json& v, const std::string& key) const {
+    if (!v.is_number()) fail(key, std::string("must be a number (got ") + v.type_name() + ")");
+    const double d = v.get<double>();
+    if (!std::isfinite(d)) fail(key, "must be a finite number");
+    return d;
+  }
+
+  long long integer(const json& v, const std::string& key) const {
+    if (v.is_number_integer()) {
+      if (v.is_number_unsigned() && v.get<unsigned long long>() > 1ull << 62) fail(key, "integer out of range");
+      return v.get<long long>();
+    }
+    const double d = number(v, key);
+    if (d != std::floor(d) || std::fabs(d) > 4.0e18) fail(key, "must be an integer (got " + number_text(d) + ")");
+    return static_cast<long long>(d);
+  }
+
+  view::vector3 triple(const json& v, const std::string& key) const {
+    if (!v.is_array() || v.size() != 3) fail(key, "must be an array of 3 numbers");
+    return {number(v[0], key + "/0"), number(v[1], key + "/1"), number(v[2], key + "/2")};
+  }
+
+  view::rgb8 color(const json& v, const std::string& key) const {
+    if (!v.is_array() || v.size() != 3) fail(key, "must be an array of 3 integers in 0..255");
+    std::uint8_t c[3];
+    for (int k = 0; k < 3; ++k) {
+      const std::string ck = key + "/" + std::to_string(k);
+      if (!v[k].is_number()) fail(ck, std::string("must be an integer in 0..255 (got ") + v[k].type_name() + ")");
+      const double d = v[k].get<double>();
+      if (!(d >= 0 && d <= 255) || d != std::floor(d))
+        fail(ck, "colour component must be an integer in 0..255 (got " + number_text(d) + ")");
+      c[k] = static_cast<std::uint8_t>(d);
+    }
+    return {c[0], c[1], c[2]};
+  }
+
+  const std::string& file() const { return file_; }
+
+private:
+  std::string file_;
+  std::ostream* warnings_;
+};
+
+view::point3 as_point(const view::vector3& v) { return {v.x, v.y, v.z}; }
+
+void parse_meshes(const reader& r, const json& doc, const std::string& path, scene& s) {
+  const json& meshes = r.require(doc, "", "meshes");
+  if (!meshes.is_array()) r.fail("/meshes", std::string("must be an array (got ") + meshes.type_name() + ")");
+  const std::filesystem::path base = std::filesystem::path(path).parent_path();
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    const std::string key = "/meshes/" + std::to_string(i);
+    const json& m = r.object(meshes[i], key);
+    r.warn_unknown(m, key, {"file", "color", "transform"});
+    mesh_spec spec;
+    spec.key = key;
+    const json& file = r.require(m, key, "file");
+    if (!file.is_string() || file.get<std::string>().empty())
+      r.fail(key + "/file", "must be a non-empty string (a mesh file path)");
+    spec.file = file.get<std::string>();
+    const std::filesystem::path fp(spec.file);
+    spec.path = fp.is_absolute() ? fp.string() : (base / fp).string();
+    if (const json* c = r.optional(m, "color")) spec.color = r.color(*c, key + "/color");
+    if (const json* t = r.optional(m, "transform")) {
+      if (!t->is_array() || t->size() != 16) r.fail(key + "/transform", "must be an array of 16 numbers (row-major 4x4)");
+      std::array<double, 16> rows{};
+      for (int k = 0; k < 16; ++k) rows[k] = r.number((*t)[k], key + "/transform/" + std::to_string(k));
+      spec.transform = view::mat4::from_rows(rows);
+    }
+    s.meshes.push_back(std::move(spec));
+  }
+}
+
+void parse_camera(const reader& r, const json& doc, scene& s) {
+  const json& cam = r.object(r.require(doc, "", "camera"), "/camera");
+  r.warn_unknown(cam, "/camera", {"eye", "look_at", "up"});
+  s.camera.eye = as_point(r.triple(r.require(cam, "/camera", "eye"), "/camera/eye"));
+  s.camera.look_at = as_point(r.triple(r.require(cam, "/camera", "look_at"), "/camera/look_at"));
+  s.camera.up = r.triple(r.require(cam, "/camera", "up"), "/camera/up");
+  const view::vector3 g = s.camera.look_at - s.camera.eye;
+  if (!(view::length(g) > 0)) r.fail("/camera/look_at", "must differ from /camera/eye");
+  if (!(view::length(s.camera.up) > 0)) r.fail("/camera/up", "must not be the zero vector");
+  try {
+    view::look_at_basis(s.camera.eye, s.camera.look_at, s.camera.up);
+  } catch (const usage_error&) {
+    r.fail("/camera/up", "is parallel to the view direction (look_at - eye)");
+  }
+}
+
+void parse_projection(const reader& r, const json& doc, scene& s) {
+  const json& p = r.object(r.require(doc, "", "projection"), "/projection");
+  const json& type = r.require(p, "/projection", "type");
+  if (!type.is_string()) r.fail("/projection/type", "must be a string");
+  const std::string t = type.get<std::string>();
+  projection_spec& ps = s.projection;
+  auto num = [&](const char* name) { return r.number(r.require(p, "/projection", name), std::string("/projection/") + name); };
+  if (t == "perspective") {
+    ps.kind = view::projection_kind::perspective;
+    r.warn_unknown(p, "/projection", {"type", "fovy_deg", "near", "far"});
+    ps.fovy_deg = num("fovy_deg");
+    if (!(ps.fovy_deg > 0 && ps.fovy_deg < 180))
+      r.fail("/projection/fovy_deg", "must be in (0, 180) degrees (got " + number_text(ps.fovy_deg) + ")");
+  } else if (t == "frustum" || t == "orthographic" || t == "oblique") {
+    ps.kind = t == "frustum" ? view::projection_kind::frustum
+              : t == "orthographic" ? view::projection_kind::orthographic
+                                    : view::projection_kind::oblique;
+    if (ps.kind == view::projection_kind::oblique)
+      r.warn_unknown(p, "/projection", {"type", "left", "right", "bottom", "top", "near", "far", "direction"});
+    else
+      r.warn_unknown(p, "/projection", {"type", "left", "right", "bottom", "top", "near", "far"});
+    ps.left = num("left");
+    ps.right = num("right");
+    ps.bottom = num("bottom");
+    ps.top = num("top");
+    if (!(ps.right > ps.left)) r.fail("/projection/right", "must be greater than /projection/left");
+    if (!(ps.top > ps.bottom)) r.fail("/projection/top", "must be greater than /projection/bottom");
+  } else {
+    r.fail("/projection/type", "unknown projection type \"" + t + "\" (expected perspective, frustum, orthographic or oblique)");
+  }
+  ps.near_dist = num("near");
+  ps.far_dist = num("far");
+  if (!(ps.near_dist > 0))
+    r.fail("/projection/near", "must be a positive distance in front of the eye (got " + number_text(ps.near_dist) + ")");
+  if (!(ps.far_dist > ps.near_dist))
+    r.fail("/projection/far", "must be greater than /projection/near (near " + number_text(ps.near_dist) + ", far " +
+                                  number_text(ps.far_dist) + ")");
+  if (ps.kind == view::projection_kind::oblique) {
+    ps.direction = r.triple(r.require(p, "/projection", "direction"), "/projection/direction");
+    if (!(view::length(ps.direction) > 0)) r.fail("/projection/direction", "must not be the zero vector");
+    const view::vector3 g = s.camera.look_at - s.camera.eye;
+    const double cos_angle = view::dot(ps.direction, g) / (view::length(ps.direction) * view::length(g));
+    if (!(cos_angle > 1e-6))
+      r.fail("/projection/direction", "must point into the scene (positive component along look_at - eye)");
+  }
+}
+
+void parse_viewport(const reader& r, const json& doc, scene& s) {
+  const json& vp = r.object(r.require(doc, "", "viewport"), "/viewport");
+  r.warn_unknown(vp, "/viewport", {"width", "height"});
+  const long long w = r.integer(r.require(vp, "/viewport", "width"), "/viewport/width");
+  const long long h = r.integer(r.require(vp, "/viewport", "height"), "/viewport/height");
+  if (w < 1 || w > max_viewport_side)
+    r.fail("/viewport/width", "must be in 1.." + std::to_string(max_viewport_side) + " (got " + std::to_string(w) + ")");
+  if (h < 1 || h > max_viewport_side)
+    r.fail("/viewport/height", "must be in 1.." + std::to_string(max_viewport_side) + " (got " + std::to_string(h) + ")");
+  s.width = static_cast<int>(w);
+  s.height = static_cast<int>(h);
+}
+
+void parse_effects(const reader& r, const json& doc, scene& s) {
+  const json* e = r.optional(doc, "effects");
+  if (!e) return;
+  r.object(*e, "/effects");
+  std::string known;
+  for (const view::effect_description& d : view::effect_catalog()) known += (known.empty() ? "" : ", ") + d.name;
+  for (auto it = e->begin(); it != e->end(); ++it) {
+    const std::string key = "/effects/" + it.key();
+    const view::effect_description* d = view::find_effect(it.key());
+    if (!d) r.fail(key, "unknown effect (known: " + known + ")");
+    const json& v = it.value();
+    bool enabled;
+    if (v.is_boolean()) {
+      enabled = v.get<bool>();
+    } else if (v.is_object()) {
+      enabled = true;
+      if (d->available && !v.empty()) r.fail(key + "/" + v.begin().key(), "unknown parameter (" + d->name + " takes none)");
+    } else {
+      r.fail(key, "must be true, false or an object of parameters");
+    }
+    if (!enabled) continue;
+    if (!d->available) r.fail(key, "effect not supported yet");
+    s.effects.push_back(d->name);
+  }
+}
+
+void parse_curves(const reader& r, const json& doc, scene& s) {
+  const json* c = r.optional(doc, "curves");
+  if (!c) return;
+  if (!c->is_array()) r.fail("/curves", std::string("must be an array (got ") + c->type_name() + ")");
+  s.curves = *c;
+  if (!c->empty()) r.warn("/curves", std::to_string(c->size()) + " curve(s) ignored: Bezier curves are not drawn yet");
+}
+
+}  // namespace
+
+scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings) {
+  const reader r(path, warnings);
+  if (!doc.is_object()) r.fail("", std::string("the scene must be a JSON object (got ") + doc.type_name() + ")");
+  r.warn_unknown(doc, "", {"meshes", "curves", "camera", "projection", "viewport", "background", "effects"});
+  scene s;
+  s.path = path;
+  parse_meshes(r, doc, path, s);
+  parse_curves(r, doc, s);
+  parse_camera(r, doc, s);
+  parse_projection(r, doc, s);
+  parse_viewport(r, doc, s);
+  if (const json* b = r.optional(doc, "background")) s.background = r.color(*b, "/background");
+  parse_effects(r, doc, s);
+  return s;
+}
+
+scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw scene_error(path, "", std::string("invalid JSON: ") + e.what());
+  }
+  return parse_scene(doc, path, warnings);
+}
+
+scene load_scene(const std::string& path, std::ostream* warnings) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw input_error(path, 0, "cannot open scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw input_error(path, 0, "read error");
+  return parse_scene_text(text.str(), path, warnings);
+}
+
+view::view_setup make_view_setup(const scene& s) {
+  view::view_setup v;
+  const projection_spec& p = s.projection;
+  v.kind = p.kind;
+  v.cam = s.camera;
+  v.vp = view::viewport{0, 0, s.width, s.height, 0.0, 1.0};
+  try {
+    v.model_view = view::look_at(s.camera);
+  } catch (const usage_error& e) {
+    throw scene_error(s.path, "/camera/up", e.what());
+  }
+  try {
+    switch (p.kind) {
+      case view::projection_kind::perspective:
+        v.projection = view::perspective(p.fovy_deg, static_cast<double>(s.width) / s.height, p.near_dist, p.far_dist);
+        break;
+      case view::projection_kind::frustum:
+        v.projection = view::frustum(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist);
+        break;
+      case view::projection_kind::orthographic:
+        v.projection = view::ortho(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist);
+        v.direction = view::gaze_direction(s.camera);
+        break;
+      case view::projection_kind::oblique: {
+        const view::vector3 d = view::normalized(p.direction);
+        const view::vector3 dop_eye = view::transform_vector(v.model_view, d);
+        const double pivot = -view::length(s.camera.look_at - s.camera.eye);
+        v.projection = view::oblique(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist, dop_eye, pivot);
+        v.direction = d;
+        break;
+      }
+    }
+  } catch (const usage_error& e) {
+    throw scene_error(s.path, "/projection", e.what());
+  }
+  return v;
+}
+
+scene_geometry load_geometry(const scene& s) {
+  scene_geometry g;
+  g.face_offsets.push_back(0);
+  for (const mesh_spec& m : s.meshes) {
+    triangle_soup part;
+    if (m.soup) {
+      part = *m.soup;
+    } else {
+      std::error_code ec;
+      if (!std::filesystem::exists(m.path, ec)) throw scene_error(s.path, m.key + "/file", "mesh file not found: " + m.path);
+      part = read_mesh(m.path);
+    }
+    const bool identity = m.transform.m == view::mat4::identity().m;
+    if (!identity) {
+      for (std::size_t k = 0; k < part.vertices.size(); ++k) {
+        const view::hpoint h = m.transform * view::to_point(part.vertices[k]);
+        vec3d p = h.w == 1 ? vec3d{h.x, h.y, h.z} : vec3d{h.x / h.w, h.y / h.w, h.z / h.w};
+        if (!(h.w != 0) || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+          throw scene_error(s.path, m.key + "/transform", "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
+        part.vertices[k] = p;
+      }
+    }
+    g.soup.append(part);
+    g.face_colors.resize(g.soup.face_count, m.color);
+    g.face_offsets.push_back(g.soup.face_count);
+  }
+  return g;
+}
+
+std::size_t mesh_of_face(const scene_geometry& g, std::uint32_t face) {
+  const auto it = std::upper_bound(g.face_offsets.begin(), g.face_offsets.end(), face);
+  if (it == g.face_offsets.begin() || it == g.face_offsets.end()) return g.face_offsets.empty() ? 0 : g.face_offsets.size() - 1;
+  return static_cast<std::size_t>(it - g.face_offsets.begin()) - 1;
+}
+
+}  // namespace exbsp::scene

@@ -1,0 +1,101 @@
+// Scene files (DESIGN.md section 5): parsing, validation, view setup and geometry loading.
+//
+// Notation: every error names the scene file and the offending key as a JSON pointer
+// ("/meshes/0/color/1", "/projection/near"); see scene_error in mesh/errors.h. Mesh paths are
+// relative to the scene file's directory. A mesh transform is 16 numbers, row-major, acting on
+// column vectors (view/matrix.h); it is applied in double and the results are the exact input
+// of the BSP.
+//
+// Projection keys:
+//   perspective   fovy_deg (0 < fovy_deg < 180), near, far        aspect = width / height
+//   frustum       left, right, bottom, top, near, far              glFrustum (window on near plane)
+//   orthographic  left, right, bottom, top, near, far              glOrtho
+//   oblique       left, right, bottom, top, near, far, direction   direction = world-space
+//                 direction of projection (eye into the scene, positive component along the
+//                 gaze); the window lies in the view plane through look_at (view/projection.h)
+// near and far are distances in front of the eye with 0 < near < far for every type.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "mesh/soup.h"
+#include "view/camera.h"
+#include "view/image.h"
+#include "view/matrix.h"
+#include "view/pipeline.h"
+
+namespace exbsp::scene {
+
+/// Largest accepted viewport side in pixels.
+constexpr int max_viewport_side = 16384;
+
+/// One entry of "meshes".
+struct mesh_spec {
+  std::string file;                          ///< as written in the scene
+  std::string path;                          ///< resolved against the scene file's directory
+  std::string key;                           ///< JSON pointer of the entry, e.g. "/meshes/0"
+  view::rgb8 color{160, 160, 160};           ///< default grey
+  view::mat4 transform = view::mat4::identity();
+  std::shared_ptr<const triangle_soup> soup; ///< inline geometry (built-in demo): file not read
+};
+
+/// "projection".
+struct projection_spec {
+  view::projection_kind kind = view::projection_kind::perspective;
+  double fovy_deg = 0;                             ///< perspective
+  double left = 0, right = 0, bottom = 0, top = 0; ///< frustum, orthographic, oblique
+  double near_dist = 0, far_dist = 0;
+  view::vector3 direction;                         ///< oblique: world-space direction of projection
+};
+
+/// A validated scene.
+struct scene {
+  std::string path;  ///< scene file, or "(built-in demo)"
+  std::vector<mesh_spec> meshes;
+  view::camera camera;
+  projection_spec projection;
+  int width = 0, height = 0;
+  view::rgb8 background{255, 255, 255};
+  std::vector<std::string> effects;  ///< enabled effects (names from view::effect_catalog())
+  /// Hook for Bézier curves: the raw "curves" array, kept but not drawn yet (an empty array
+  /// when absent). A curve stage will read it from here.
+  nlohmann::json curves = nlohmann::json::array();
+};
+
+/// Validates a parsed JSON document. `path` names the file in messages and anchors relative
+/// mesh paths. Unknown keys and ignored curves produce warnings on `warnings` (may be null).
+/// Throws scene_error naming the key for every missing, wrongly typed or impossible value
+/// (including up parallel to the view direction, unknown and not-yet-supported effects).
+scene parse_scene(const nlohmann::json& doc, const std::string& path, std::ostream* warnings = nullptr);
+
+/// parse_scene on JSON text; a syntax error is a scene_error with an empty key.
+scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings = nullptr);
+
+/// Reads and validates a scene file. Throws input_error when the file cannot be read,
+/// scene_error as parse_scene.
+scene load_scene(const std::string& path, std::ostream* warnings = nullptr);
+
+/// Camera, projection and viewport of a validated scene as the pipeline's view_setup.
+/// Throws scene_error naming the key if the scene was not validated and is impossible.
+view::view_setup make_view_setup(const scene& s);
+
+/// All meshes of a scene, transformed to world space and appended into one soup.
+struct scene_geometry {
+  triangle_soup soup;
+  std::vector<view::rgb8> face_colors;       ///< colour by face id of `soup`
+  std::vector<std::uint32_t> face_offsets;   ///< first face id of mesh k (size = meshes + 1)
+};
+
+/// Reads every mesh (read_mesh: input_error for bad files), applies its transform and appends
+/// it. Throws scene_error naming /meshes/K/file for a missing file and /meshes/K/transform when
+/// the transform sends a vertex to infinity.
+scene_geometry load_geometry(const scene& s);
+
+/// The mesh index of a face id (upper bound in face_offsets); meshes.size() if out of range.
+std::size_t mesh_of_face(const scene_geometry& g, std::uint32_t face);
+
+}  // namespace exbsp::scene

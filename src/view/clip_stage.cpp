@@ -1,0 +1,23 @@
+// The clipping stage: delegates to exbsp_clip's homogeneous (4D) Sutherland–Hodgman clipper
+// (src/clip/homogeneous.h), which clips against w+x, w-x, w+y, w-y, w+z, w-z >= 0 before the
+// divide, interpolates each crossing from the lexicographically smaller end point (shared
+// edges give bit-identical vertices) and puts the crossing exactly on its plane.
+// This file is the only place that knows which clipper the pipeline uses.
+#include "view/clip_stage.h"
+
+#include "clip/homogeneous.h"
+
+namespace exbsp::view {
+
+void clip_to_view_volume(const std::vector<hpoint>& in, std::vector<hpoint>& out) {
+  out.clear();
+  if (in.size() < 3) return;
+  clip::homogeneous_polygon poly;
+  poly.positions.reserve(in.size());
+  for (const hpoint& p : in) poly.positions.push_back({p.x, p.y, p.z, p.w});
+  const clip::homogeneous_polygon clipped = clip::homogeneous_clip(poly);
+  out.reserve(clipped.positions.size());
+  for (const clip::vec4& p : clipped.positions) out.push_back({p[0], p[1], p[2], p[3]});
+}
+
+}  // namespace exbsp::view

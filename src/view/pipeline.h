@@ -1,0 +1,100 @@
+// The viewing pipeline as an explicit list of named stages over one `frame`.
+//
+// Data flow (DESIGN.md section 1): world-space soup -> BSP build -> fragments converted once to
+// double -> back-to-front order for the view -> [world-space effects, e.g. backface_culling]
+// -> modelview, projection, homogeneous clip, divide, viewport -> [screen effects] ->
+// rasterizer (painter's algorithm) or SVG -> [image effects] -> write.
+// Only the stages a scene asks for are in the list, so an effect that is not named costs
+// nothing. Effects plug in at three hooks (effects.h); the render command adds the write stage.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "bsp/engine.h"
+#include "mesh/soup.h"
+#include "view/camera.h"
+#include "view/image.h"
+#include "view/matrix.h"
+#include "view/screen_polygon.h"
+#include "view/viewport.h"
+
+namespace exbsp::view {
+
+/// The four projection types of a scene (DESIGN.md section 5).
+enum class projection_kind { perspective, frustum, orthographic, oblique };
+/// "perspective", "frustum", "orthographic", "oblique".
+const char* to_string(projection_kind k);
+
+/// Everything the stages need to know about the view.
+struct view_setup {
+  projection_kind kind = projection_kind::perspective;
+  camera cam;                         ///< gluLookAt input; cam.eye orders perspective views
+  mat4 model_view = mat4::identity(); ///< look_at(cam)
+  mat4 projection = mat4::identity(); ///< eye -> clip coordinates
+  viewport vp;
+  /// Parallel kinds only: unit direction of projection in WORLD space, from the eye into the
+  /// scene (the gaze for orthographic, the oblique direction for oblique).
+  vector3 direction;
+
+  bool is_parallel() const { return kind == projection_kind::orthographic || kind == projection_kind::oblique; }
+};
+
+/// The data flowing through the stages. Inputs are set by the caller; each stage fills the
+/// products it is responsible for.
+struct frame {
+  // Inputs.
+  triangle_soup soup;               ///< all meshes, transformed to world space, appended
+  build_options build;              ///< BSP options (default: epeck, default heuristic)
+  std::vector<rgb8> face_colors;    ///< colour by face id of `soup`
+  view_setup view;
+  rgb8 background{255, 255, 255};
+
+  // Products.
+  std::optional<bsp> tree;                 ///< "build"
+  std::vector<fragment_d> fragments;       ///< "build": fragments_double(), converted once
+  std::vector<std::uint32_t> order;        ///< "order": fragment indices, back to front
+  std::vector<screen_polygon> polygons;    ///< "transform+clip": visible polygons, back to front
+  image picture;                           ///< "raster"
+  std::string svg;                         ///< "svg"
+
+  // Counters for --verbose.
+  std::size_t culled = 0;         ///< fragments removed by backface_culling
+  std::size_t fully_clipped = 0;  ///< fragments entirely outside the view volume
+
+  /// Colour of a face id (grey when the id has no colour).
+  rgb8 color_of(std::uint32_t face) const {
+    return face < face_colors.size() ? face_colors[face] : rgb8{160, 160, 160};
+  }
+};
+
+/// One stage: a name and a function that updates the frame and returns a short note
+/// (counts) for the verbose log.
+struct stage {
+  std::string name;
+  std::function<std::string(frame&)> run;
+};
+
+/// An ordered list of stages.
+class pipeline {
+public:
+  /// Appends a stage.
+  void add(std::string name, std::function<std::string(frame&)> run);
+  /// Inserts a stage right after the first stage called `after`; throws usage_error when
+  /// there is none.
+  void insert_after(const std::string& after, std::string name, std::function<std::string(frame&)> run);
+  const std::vector<stage>& stages() const { return stages_; }
+  /// Stage names in order.
+  std::vector<std::string> names() const;
+  /// Runs every stage in order. With a log, prints one line per stage:
+  /// "stage NAME: SECONDS s (NOTE)". Exceptions from a stage propagate unchanged.
+  void run(frame& f, std::ostream* log) const;
+
+private:
+  std::vector<stage> stages_;
+};
+
+}  // namespace exbsp::view

@@ -1,0 +1,34 @@
+// The standard stages of the viewing pipeline (pipeline.h). Each takes the frame, fills its
+// products and returns a short note for the verbose log.
+//
+// Notation: fragment vertices are world-space points p (w = 1); clip coordinates
+// c = P Mv p; after clip_to_view_volume, ndc = c.xyz / c.w; window = viewport(ndc).
+#pragma once
+#include <string>
+
+#include "view/pipeline.h"
+
+namespace exbsp::view {
+
+/// "build": one BSP of f.soup with f.build, then f.fragments = fragments_double() (converted
+/// once). Throws usage_error / limit_error from bsp::build.
+std::string build_stage(frame& f);
+
+/// "order": f.order = back-to-front fragment indices: order_from_eye(camera eye) for
+/// perspective and frustum, order_for_direction(f.view.direction) for orthographic and oblique.
+/// Precondition: build_stage ran.
+std::string order_stage(frame& f);
+
+/// "transform+clip": for each fragment in f.order, c = P Mv p per vertex, homogeneous clip
+/// (clip_stage.h), divide, viewport; fills f.polygons in the same order and counts the
+/// fragments that are entirely outside in f.fully_clipped.
+std::string transform_clip_stage(frame& f);
+
+/// "raster": painter's algorithm, no z-buffer: f.picture = background, then every polygon of
+/// f.polygons in order with the top-left-rule rasterizer.
+std::string raster_stage(frame& f);
+
+/// "svg": f.svg = the SVG document of f.polygons (svg_writer.h).
+std::string svg_stage(frame& f);
+
+}  // namespace exbsp::view

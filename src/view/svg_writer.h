@@ -1,0 +1,29 @@
+// SVG output of a painter's-order polygon list: a vector drawing that looks like the PNG.
+//
+// Notation: the SVG user space is the window with y flipped: (x_svg, y_svg) = (x - vp.x,
+// vp.y + height - y), viewBox "0 0 width height", so window pixel (i, j) is the unit square
+// at SVG (i, height - 1 - j) — the same place as in the PNG. Polygons are written in the order
+// given (back to front), one closed <path> each, filled with the polygon's colour and stroked
+// in the same colour with width svg_seam_stroke (round joins): anti-aliasing SVG renderers
+// otherwise let the background shine through the shared edges of adjacent polygons
+// ("conflation" seams). Each path carries data-face and data-fragment attributes (face id,
+// fragment index).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "view/screen_polygon.h"
+
+namespace exbsp::view {
+
+/// Width in pixels of the same-colour stroke that closes anti-aliasing seams (0: no stroke).
+constexpr double svg_seam_stroke = 0.5;
+
+/// The SVG document: a background rectangle, then one path per polygon in order.
+std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons);
+
+/// svg_document written atomically to `path`. Throws input_error naming `path` on failure.
+void write_svg(const std::string& path, const viewport& vp, rgb8 background,
+               const std::vector<screen_polygon>& polygons);
+
+}  // namespace exbsp::view

@@ -1,0 +1,562 @@
+// Tests of src/scene/: scene validation (every error names its key), defaults, relative mesh
+// paths, geometry loading (transforms, face offsets, colours), view setup, the built-in demo,
+// the example scenes in scenes/, `exbsp render` output (PNG read back, SVG parsed back) and
+// atomic output on errors.
+#include <gtest/gtest.h>
+#include <png.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <iostream>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "mesh/errors.h"
+#include "scene/demo_scene.h"
+#include "scene/procedural.h"
+#include "scene/render.h"
+#include "scene/scene.h"
+#include "view/effects.h"
+#include "view/png_io.h"
+#include "view/backface_culling.h"
+#include "view/clip_stage.h"
+#include "view/rasterizer.h"
+#include "view/stages.h"
+
+namespace {
+
+using namespace exbsp;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+std::string temp_dir() {
+  static const std::string dir = [] {
+    std::string tmpl = (fs::temp_directory_path() / "exbsp_test_scene_XXXXXX").string();
+    std::vector<char> buf(tmpl.begin(), tmpl.end());
+    buf.push_back('\0');
+    if (!::mkdtemp(buf.data())) throw std::runtime_error("mkdtemp failed");
+    const std::string d(buf.data());
+    fs::create_directories(d + "/meshes");
+    std::ofstream(d + "/meshes/tri.off") << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n";
+    return d;
+  }();
+  return dir;
+}
+
+std::string write_text(const std::string& name, const std::string& text) {
+  const std::string path = temp_dir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+/// A valid scene; tests break one field at a time.
+json valid_scene() {
+  return json::parse(R"({
+    "meshes": [{"file": "meshes/tri.off", "color": [200, 40, 40]}],
+    "camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0], "up": [0, 1, 0]},
+    "projection": {"type": "perspective", "fovy_deg": 40, "near": 1, "far": 100},
+    "viewport": {"width": 64, "height": 48}
+  })");
+}
+
+scene::scene parse(const json& doc, std::ostream* warnings = nullptr) {
+  return scene::parse_scene(doc, temp_dir() + "/scene.json", warnings);
+}
+
+/// The key named by the scene_error thrown for `doc`, or "(no error)".
+std::string error_key(const json& doc, std::string* message = nullptr) {
+  try {
+    parse(doc);
+  } catch (const scene_error& e) {
+    if (message) *message = e.what();
+    return e.key();
+  }
+  return "(no error)";
+}
+
+// ---------------------------------------------------------------------------------------
+// Validation
+
+TEST(SceneParse, ValidSceneAndDefaults) {
+  const scene::scene s = parse(valid_scene());
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_EQ(s.meshes[0].color, (view::rgb8{200, 40, 40}));
+  EXPECT_EQ(s.meshes[0].transform.m, view::mat4::identity().m);
+  EXPECT_EQ(s.meshes[0].path, (fs::path(temp_dir()) / "meshes/tri.off").string());
+  EXPECT_EQ(s.background, (view::rgb8{255, 255, 255}));
+  EXPECT_TRUE(s.effects.empty());
+  EXPECT_TRUE(s.curves.empty());
+  EXPECT_EQ(s.width, 64);
+  EXPECT_EQ(s.projection.kind, view::projection_kind::perspective);
+  json d = valid_scene();
+  d["meshes"][0].erase("color");
+  EXPECT_EQ(parse(d).meshes[0].color, (view::rgb8{160, 160, 160}));  // grey
+}
+
+struct bad_case {
+  const char* name;
+  std::function<void(json&)> mutate;
+  const char* key;
+};
+
+TEST(SceneParse, EveryErrorNamesItsKey) {
+  const std::vector<bad_case> cases = {
+      {"meshes missing", [](json& d) { d.erase("meshes"); }, "/meshes"},
+      {"meshes not an array", [](json& d) { d["meshes"] = 3; }, "/meshes"},
+      {"mesh not an object", [](json& d) { d["meshes"][0] = "x.off"; }, "/meshes/0"},
+      {"mesh file missing", [](json& d) { d["meshes"][0].erase("file"); }, "/meshes/0/file"},
+      {"mesh file not a string", [](json& d) { d["meshes"][0]["file"] = 7; }, "/meshes/0/file"},
+      {"color not an array", [](json& d) { d["meshes"][0]["color"] = "red"; }, "/meshes/0/color"},
+      {"color two numbers", [](json& d) { d["meshes"][0]["color"] = {1, 2}; }, "/meshes/0/color"},
+      {"color above 255", [](json& d) { d["meshes"][0]["color"] = {1, 256, 3}; }, "/meshes/0/color/1"},
+      {"color negative", [](json& d) { d["meshes"][0]["color"] = {-1, 2, 3}; }, "/meshes/0/color/0"},
+      {"color fraction", [](json& d) { d["meshes"][0]["color"] = {1, 2, 3.5}; }, "/meshes/0/color/2"},
+      {"color string", [](json& d) { d["meshes"][0]["color"] = {1, "2", 3}; }, "/meshes/0/color/1"},
+      {"transform 15 numbers", [](json& d) { d["meshes"][0]["transform"] = std::vector<double>(15, 0.0); },
+       "/meshes/0/transform"},
+      {"transform not numbers",
+       [](json& d) {
+         json t = std::vector<double>(16, 0.0);
+         t[5] = "one";
+         d["meshes"][0]["transform"] = t;
+       },
+       "/meshes/0/transform/5"},
+      {"camera missing", [](json& d) { d.erase("camera"); }, "/camera"},
+      {"camera not an object", [](json& d) { d["camera"] = {1, 2, 3}; }, "/camera"},
+      {"eye missing", [](json& d) { d["camera"].erase("eye"); }, "/camera/eye"},
+      {"eye two numbers", [](json& d) { d["camera"]["eye"] = {1, 2}; }, "/camera/eye"},
+      {"eye string", [](json& d) { d["camera"]["eye"] = {1, "2", 3}; }, "/camera/eye/1"},
+      {"look_at equals eye", [](json& d) { d["camera"]["look_at"] = {0, 0, 5}; }, "/camera/look_at"},
+      {"up parallel to gaze", [](json& d) { d["camera"]["up"] = {0, 0, 2}; }, "/camera/up"},
+      {"up zero", [](json& d) { d["camera"]["up"] = {0, 0, 0}; }, "/camera/up"},
+      {"projection missing", [](json& d) { d.erase("projection"); }, "/projection"},
+      {"projection type missing", [](json& d) { d["projection"].erase("type"); }, "/projection/type"},
+      {"projection type unknown", [](json& d) { d["projection"]["type"] = "fisheye"; }, "/projection/type"},
+      {"fovy missing", [](json& d) { d["projection"].erase("fovy_deg"); }, "/projection/fovy_deg"},
+      {"fovy zero", [](json& d) { d["projection"]["fovy_deg"] = 0; }, "/projection/fovy_deg"},
+      {"fovy 180", [](json& d) { d["projection"]["fovy_deg"] = 180; }, "/projection/fovy_deg"},
+      {"fovy string", [](json& d) { d["projection"]["fovy_deg"] = "40"; }, "/projection/fovy_deg"},
+      {"near zero", [](json& d) { d["projection"]["near"] = 0; }, "/projection/near"},
+      {"near negative", [](json& d) { d["projection"]["near"] = -1; }, "/projection/near"},
+      {"near missing", [](json& d) { d["projection"].erase("near"); }, "/projection/near"},
+      {"near equals far", [](json& d) { d["projection"]["far"] = 1; }, "/projection/far"},
+      {"near beyond far", [](json& d) { d["projection"]["far"] = 0.5; }, "/projection/far"},
+      {"ortho left missing",
+       [](json& d) { d["projection"] = {{"type", "orthographic"}, {"right", 1}, {"bottom", -1}, {"top", 1}, {"near", 1}, {"far", 9}}; },
+       "/projection/left"},
+      {"ortho left equals right",
+       [](json& d) {
+         d["projection"] = {{"type", "orthographic"}, {"left", 1}, {"right", 1}, {"bottom", -1}, {"top", 1}, {"near", 1}, {"far", 9}};
+       },
+       "/projection/right"},
+      {"frustum bottom above top",
+       [](json& d) {
+         d["projection"] = {{"type", "frustum"}, {"left", -1}, {"right", 1}, {"bottom", 2}, {"top", 1}, {"near", 1}, {"far", 9}};
+       },
+       "/projection/top"},
+      {"frustum near zero",
+       [](json& d) {
+         d["projection"] = {{"type", "frustum"}, {"left", -1}, {"right", 1}, {"bottom", -1}, {"top", 1}, {"near", 0}, {"far", 9}};
+       },
+       "/projection/near"},
+      {"oblique direction missing",
+       [](json& d) {
+         d["projection"] = {{"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1}, {"top", 1}, {"near", 1}, {"far", 9}};
+       },
+       "/projection/direction"},
+      {"oblique direction away from the scene",
+       [](json& d) {
+         d["projection"] = {{"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1}, {"top", 1},
+                            {"near", 1}, {"far", 9}, {"direction", {0.5, 0, 1}}};
+       },
+       "/projection/direction"},
+      {"oblique direction zero",
+       [](json& d) {
+         d["projection"] = {{"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1}, {"top", 1},
+                            {"near", 1}, {"far", 9}, {"direction", {0, 0, 0}}};
+       },
+       "/projection/direction"},
+      {"viewport missing", [](json& d) { d.erase("viewport"); }, "/viewport"},
+      {"viewport width zero", [](json& d) { d["viewport"]["width"] = 0; }, "/viewport/width"},
+      {"viewport height huge", [](json& d) { d["viewport"]["height"] = 16385; }, "/viewport/height"},
+      {"viewport width fraction", [](json& d) { d["viewport"]["width"] = 64.5; }, "/viewport/width"},
+      {"viewport height missing", [](json& d) { d["viewport"].erase("height"); }, "/viewport/height"},
+      {"background out of range", [](json& d) { d["background"] = {0, 0, 300}; }, "/background/2"},
+      {"background wrong type", [](json& d) { d["background"] = "white"; }, "/background"},
+      {"effects not an object", [](json& d) { d["effects"] = {"backface_culling"}; }, "/effects"},
+      {"effect unknown", [](json& d) { d["effects"] = {{"sparkle", true}}; }, "/effects/sparkle"},
+      {"effect not supported yet", [](json& d) { d["effects"] = {{"lighting", true}}; }, "/effects/lighting"},
+      {"effect fog not supported yet", [](json& d) { d["effects"] = {{"fog", json::object()}}; }, "/effects/fog"},
+      {"effect wrong type", [](json& d) { d["effects"] = {{"backface_culling", 3}}; }, "/effects/backface_culling"},
+      {"effect unknown parameter", [](json& d) { d["effects"] = {{"backface_culling", {{"mode", "front"}}}}; },
+       "/effects/backface_culling/mode"},
+      {"curves not an array", [](json& d) { d["curves"] = 5; }, "/curves"},
+      {"root not an object", [](json& d) { d = json::array(); }, ""},
+  };
+  for (const bad_case& c : cases) {
+    json d = valid_scene();
+    c.mutate(d);
+    std::string message;
+    EXPECT_EQ(error_key(d, &message), c.key) << c.name;
+    if (*c.key) {
+      EXPECT_NE(message.find(c.key), std::string::npos) << c.name << ": " << message;
+    }
+    EXPECT_NE(message.find("scene.json"), std::string::npos) << c.name << ": " << message;
+  }
+}
+
+TEST(SceneParse, NotSupportedYetSaysSo) {
+  json d = valid_scene();
+  d["effects"] = {{"depth_of_field", true}};
+  std::string message;
+  error_key(d, &message);
+  EXPECT_NE(message.find("not supported yet"), std::string::npos) << message;
+  d["effects"] = {{"depth_of_field", false}, {"antialias", false}};  // not asked for: fine
+  EXPECT_TRUE(parse(d).effects.empty());
+}
+
+TEST(SceneParse, EffectsAndCurves) {
+  json d = valid_scene();
+  d["effects"] = {{"backface_culling", true}};
+  EXPECT_EQ(parse(d).effects, std::vector<std::string>{"backface_culling"});
+  d["effects"] = {{"backface_culling", json::object()}};
+  EXPECT_EQ(parse(d).effects, std::vector<std::string>{"backface_culling"});
+  d["effects"] = {{"backface_culling", false}};
+  EXPECT_TRUE(parse(d).effects.empty());
+  // Curves: empty or absent accepted; non-empty accepted, kept for the hook, with a warning.
+  d["curves"] = json::array();
+  EXPECT_TRUE(parse(d).curves.empty());
+  d["curves"] = json::parse(R"([{"bezier": [[0,0,0],[1,1,0],[2,0,0]], "color": [0,0,0]}])");
+  std::ostringstream warnings;
+  const scene::scene s = parse(d, &warnings);
+  EXPECT_EQ(s.curves.size(), 1u);
+  EXPECT_NE(warnings.str().find("/curves"), std::string::npos);
+}
+
+TEST(SceneParse, UnknownKeysAreWarnedAboutAndIgnored) {
+  json d = valid_scene();
+  d["title"] = "x";
+  d["camera"]["roll"] = 3;
+  std::ostringstream warnings;
+  parse(d, &warnings);
+  EXPECT_NE(warnings.str().find("/title"), std::string::npos);
+  EXPECT_NE(warnings.str().find("/camera/roll"), std::string::npos);
+}
+
+TEST(SceneParse, SyntaxErrorsAndMissingFiles) {
+  try {
+    scene::parse_scene_text("{\"meshes\": [", "broken.json");
+    FAIL() << "no error";
+  } catch (const scene_error& e) {
+    EXPECT_EQ(e.key(), "");
+    EXPECT_NE(std::string(e.what()).find("broken.json"), std::string::npos);
+  }
+  EXPECT_THROW(scene::load_scene(temp_dir() + "/no_such_scene.json"), input_error);
+}
+
+TEST(SceneParse, ObliqueAndOrthographicViews) {
+  json d = valid_scene();
+  d["projection"] = {{"type", "orthographic"}, {"left", -2}, {"right", 2}, {"bottom", -1.5}, {"top", 1.5}, {"near", 1}, {"far", 9}};
+  view::view_setup v = scene::make_view_setup(parse(d));
+  EXPECT_TRUE(v.is_parallel());
+  EXPECT_DOUBLE_EQ(v.direction.z, -1);  // the gaze
+  d["projection"]["type"] = "oblique";
+  d["projection"]["direction"] = {1, 0, -1};
+  v = scene::make_view_setup(parse(d));
+  EXPECT_EQ(v.kind, view::projection_kind::oblique);
+  EXPECT_NEAR(v.direction.x, std::sqrt(0.5), 1e-15);
+  // A point moved along the direction of projection keeps its image.
+  const view::mat4 pm = v.projection * v.model_view;
+  const view::hpoint a = pm * view::point3{0.2, 0.3, -1}, b = pm * view::point3{1.2, 0.3, -2};
+  EXPECT_NEAR(a.x, b.x, 1e-14);
+  EXPECT_NEAR(a.y, b.y, 1e-14);
+  // The look-at point (on the view plane) projects to the window centre.
+  const view::hpoint c = pm * view::point3{0, 0, 0};
+  EXPECT_NEAR(c.x, 0, 1e-15);
+  EXPECT_NEAR(c.y, 0, 1e-15);
+}
+
+// ---------------------------------------------------------------------------------------
+// Geometry
+
+TEST(SceneGeometry, TransformsFaceOffsetsAndColours) {
+  json d = valid_scene();
+  json second = {{"file", temp_dir() + "/meshes/tri.off"},  // absolute path
+                 {"color", {1, 2, 3}},
+                 {"transform", {1, 0, 0, 10, 0, 1, 0, 20, 0, 0, 1, 30, 0, 0, 0, 1}}};
+  d["meshes"].push_back(second);
+  const scene::scene s = parse(d);
+  const scene::scene_geometry g = scene::load_geometry(s);
+  EXPECT_EQ(g.soup.face_count, 4u);
+  EXPECT_EQ(g.soup.triangles.size(), 4u);
+  EXPECT_EQ(g.face_offsets, (std::vector<std::uint32_t>{0, 2, 4}));
+  ASSERT_EQ(g.face_colors.size(), 4u);
+  EXPECT_EQ(g.face_colors[1], (view::rgb8{200, 40, 40}));
+  EXPECT_EQ(g.face_colors[2], (view::rgb8{1, 2, 3}));
+  EXPECT_EQ(scene::mesh_of_face(g, 0), 0u);
+  EXPECT_EQ(scene::mesh_of_face(g, 3), 1u);
+  EXPECT_EQ(scene::mesh_of_face(g, 9), 2u);
+  EXPECT_EQ(g.soup.vertices[4], (vec3d{10, 20, 30}));
+  EXPECT_EQ(g.soup.vertices[5], (vec3d{11, 20, 30}));
+}
+
+TEST(SceneGeometry, MissingMeshFileNamesTheKey) {
+  json d = valid_scene();
+  d["meshes"].push_back({{"file", "meshes/absent.off"}});
+  try {
+    scene::load_geometry(parse(d));
+    FAIL() << "no error";
+  } catch (const scene_error& e) {
+    EXPECT_EQ(e.key(), "/meshes/1/file");
+    EXPECT_NE(std::string(e.what()).find("absent.off"), std::string::npos);
+  }
+}
+
+TEST(SceneGeometry, TransformToInfinityIsAnError) {
+  json d = valid_scene();
+  d["meshes"][0]["transform"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0};
+  try {
+    scene::load_geometry(parse(d));
+    FAIL() << "no error";
+  } catch (const scene_error& e) {
+    EXPECT_EQ(e.key(), "/meshes/0/transform");
+  }
+}
+
+/// Signed volume sum over triangles of a . (b x c) / 6: positive for a closed mesh with
+/// outward normals (divergence theorem).
+double signed_volume(const triangle_soup& s) {
+  double volume = 0;
+  for (const soup_triangle& t : s.triangles) {
+    const vec3d &a = s.vertices[t.v[0]], &b = s.vertices[t.v[1]], &c = s.vertices[t.v[2]];
+    volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+               a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+  }
+  return volume;
+}
+
+TEST(Procedural, ClosedSolidsHaveOutwardNormals) {
+  EXPECT_NEAR(signed_volume(scene::make_box({0, 0, 0}, {1, 2, 3})), 6.0, 1e-12);
+  EXPECT_NEAR(signed_volume(scene::make_prism({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0, 2)), 2.0, 1e-12);
+  EXPECT_GT(signed_volume(scene::make_gear(8, 1, 1.3, 0.4, 0.3)), 0);
+  EXPECT_EQ(scene::make_cyclic_planks(1, 2, 0.5, 0.2).face_count, 3u);
+  EXPECT_THROW(scene::make_box({0, 0, 0}, {0, 1, 1}), usage_error);
+}
+
+// ---------------------------------------------------------------------------------------
+// Rendering
+
+std::set<std::tuple<int, int, int>> colours_of(const view::image& img) {
+  std::set<std::tuple<int, int, int>> c;
+  for (int r = 0; r < img.height(); ++r)
+    for (int k = 0; k < img.width(); ++k) {
+      const view::rgb8 p = img.at_row(r, k);
+      c.insert({p.r, p.g, p.b});
+    }
+  return c;
+}
+
+TEST(Render, BuiltInDemoScene) {
+  const scene::scene demo = scene::demo_scene();
+  EXPECT_EQ(demo.width, 800);
+  EXPECT_EQ(demo.height, 600);
+  const std::string out = temp_dir() + "/demo.png";
+  std::ostringstream log;
+  render_command({"", out, true}, log);
+  const view::image img = view::read_png(out);
+  EXPECT_EQ(img.width(), 800);
+  EXPECT_EQ(img.height(), 600);
+  EXPECT_GT(colours_of(img).size(), 10u);
+  const std::string s = log.str();
+  for (const char* stage : {"stage build:", "stage order:", "stage transform+clip:", "stage raster:", "stage write:"})
+    EXPECT_NE(s.find(stage), std::string::npos) << stage;
+  EXPECT_EQ(s.find("backface_culling"), std::string::npos);
+  // The cyclic planks force at least one split.
+  const std::size_t at = s.find(" splits");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_NE(s.substr(at - 2, 2), " 0");
+}
+
+TEST(Render, DefaultOutputIsExbspPngInTheCurrentDirectory) {
+  const std::string dir = temp_dir() + "/cwd";
+  fs::create_directories(dir);
+  const fs::path old = fs::current_path();
+  fs::current_path(dir);
+  std::ostringstream log;
+  EXPECT_NO_THROW(render_command({"", "", false}, log));
+  fs::current_path(old);
+  EXPECT_TRUE(fs::exists(dir + "/exbsp.png"));
+  EXPECT_TRUE(log.str().empty());
+}
+
+TEST(Render, UnknownOutputExtensionIsRejected) {
+  std::ostringstream log;
+  EXPECT_THROW(render_command({"", temp_dir() + "/out.jpg", false}, log), usage_error);
+  EXPECT_FALSE(fs::exists(temp_dir() + "/out.jpg"));
+}
+
+TEST(Render, ErrorsLeaveNoPartialOutput) {
+  const std::string out = temp_dir() + "/kept.png";
+  std::ofstream(out) << "old";
+  json d = valid_scene();
+  d["projection"]["near"] = -1;
+  const std::string bad = write_text("bad_scene.json", d.dump());
+  std::ostringstream log;
+  EXPECT_THROW(render_command({bad, out, false}, log), scene_error);
+  std::ifstream in(out);
+  std::string s;
+  in >> s;
+  EXPECT_EQ(s, "old");
+  const std::string missing_out = temp_dir() + "/never.svg";
+  json m = valid_scene();
+  m["meshes"][0]["file"] = "meshes/absent.off";
+  EXPECT_THROW(render_command({write_text("missing_mesh.json", m.dump()), missing_out, false}, log), scene_error);
+  EXPECT_FALSE(fs::exists(missing_out));
+  for (const auto& e : fs::directory_iterator(temp_dir()))
+    EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+TEST(Render, BackfaceCullingRunsOnlyWhenAskedFor) {
+  json d = valid_scene();
+  std::ostringstream log;
+  const std::string out = temp_dir() + "/culled.png";
+  render_command({write_text("plain.json", d.dump()), out, true}, log);
+  EXPECT_EQ(log.str().find("backface_culling"), std::string::npos);
+  d["effects"] = {{"backface_culling", true}};
+  log.str("");
+  render_command({write_text("culling.json", d.dump()), out, true}, log);
+  EXPECT_NE(log.str().find("stage backface_culling:"), std::string::npos);
+}
+
+/// Renders a scene from scenes/ to PNG and SVG; returns the SVG's data-fragment sequence.
+std::vector<std::uint32_t> render_example(const std::string& name, view::image& png) {
+  const std::string scene_path = std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json";
+  const std::string png_path = temp_dir() + "/" + name + ".png", svg_path = temp_dir() + "/" + name + ".svg";
+  std::ostringstream log;
+  render_command({scene_path, png_path, false}, log);
+  render_command({scene_path, svg_path, false}, log);
+  EXPECT_TRUE(log.str().empty()) << log.str();
+  png = view::read_png(png_path);
+  std::ifstream in(svg_path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string svg = text.str();
+  const std::regex re("data-fragment=\"(\\d+)\"");
+  std::vector<std::uint32_t> frags;
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator(); ++it)
+    frags.push_back(static_cast<std::uint32_t>(std::stoul((*it)[1])));
+  return frags;
+}
+
+TEST(Render, ExampleScenesRenderToPngAndSvg) {
+  for (const char* name : {"perspective", "orthographic", "oblique", "frustum", "inside", "cyclic"}) {
+    view::image png;
+    const std::vector<std::uint32_t> frags = render_example(name, png);
+    EXPECT_GT(frags.size(), 0u) << name;
+    EXPECT_GT(colours_of(png).size(), 3u) << name;
+
+    // The SVG's paths are exactly the visible fragments in back-to-front order.
+    const scene::scene s = scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
+    scene::scene_geometry g = scene::load_geometry(s);
+    view::frame f;
+    f.view = scene::make_view_setup(s);
+    f.soup = std::move(g.soup);
+    f.face_colors = std::move(g.face_colors);
+    view::standard_pipeline(s.effects, view::output_kind::svg).run(f, nullptr);
+    std::vector<std::uint32_t> expected;
+    for (const view::screen_polygon& p : f.polygons) expected.push_back(p.fragment);
+    EXPECT_EQ(frags, expected) << name;
+    EXPECT_EQ(f.polygons.size() + f.fully_clipped + f.culled, f.fragments.size()) << name;
+    if (std::string(name) == "inside") {
+      EXPECT_GT(f.fully_clipped, 0u);  // the near plane cuts the room around the eye
+      EXPECT_GT(f.culled, 0u);
+    }
+    if (std::string(name) == "cyclic") {
+      EXPECT_GT(f.tree->stats().splits, 0u);
+    }
+  }
+}
+
+/// Independent z-buffer rendering of a scene's unsplit triangles (same coverage rule, same
+/// clip stage, depth interpolated in window space), honouring backface_culling.
+view::image zbuffer_render(const view::frame& f, bool cull) {
+  const int w = f.view.vp.width, h = f.view.vp.height;
+  view::image img(w, h, f.background);
+  std::vector<double> depth(static_cast<std::size_t>(w) * h, 2.0);
+  const view::mat4 pm = f.view.projection * f.view.model_view;
+  std::vector<view::hpoint> in(3), out;
+  for (const soup_triangle& t : f.soup.triangles) {
+    const fragment_d tri{t.face, {f.soup.vertices[t.v[0]], f.soup.vertices[t.v[1]], f.soup.vertices[t.v[2]]}};
+    if (cull && view::is_back_facing(tri, f.view)) continue;
+    for (int k = 0; k < 3; ++k) in[k] = pm * view::to_point(tri.v[k]);
+    view::clip_to_view_volume(in, out);
+    std::vector<view::window_point> p;
+    for (const view::hpoint& c : out) p.push_back(view::to_window(f.view.vp, c.x / c.w, c.y / c.w, c.z / c.w));
+    for (std::size_t k = 1; k + 1 < p.size(); ++k) {
+      const view::window_point &a = p[0], &b = p[k], &c = p[k + 1];
+      const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+      view::for_each_covered_pixel({a.x, a.y}, {b.x, b.y}, {c.x, c.y}, w, h, [&](int i, int j) {
+        const double x = i + 0.5, y = j + 0.5;
+        const double l1 = ((x - a.x) * (c.y - a.y) - (c.x - a.x) * (y - a.y)) / det;
+        const double l2 = ((b.x - a.x) * (y - a.y) - (x - a.x) * (b.y - a.y)) / det;
+        const double z = a.z + l1 * (b.z - a.z) + l2 * (c.z - a.z);
+        double& d = depth[static_cast<std::size_t>(j) * w + i];
+        if (z < d) {
+          d = z;
+          img.set_pixel(i, j, f.color_of(t.face));
+        }
+      });
+    }
+  }
+  return img;
+}
+
+TEST(Render, ExampleScenesMatchAZBufferOracle) {
+  for (const char* name : {"demo", "perspective", "orthographic", "oblique", "frustum", "inside", "cyclic"}) {
+    const scene::scene s = std::string(name) == "demo"
+                               ? scene::demo_scene()
+                               : scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
+    scene::scene_geometry g = scene::load_geometry(s);
+    view::frame f;
+    f.view = scene::make_view_setup(s);
+    f.background = s.background;
+    f.soup = std::move(g.soup);
+    f.face_colors = std::move(g.face_colors);
+    view::standard_pipeline(s.effects, view::output_kind::png).run(f, nullptr);
+    const bool cull = std::find(s.effects.begin(), s.effects.end(), "backface_culling") != s.effects.end();
+    const view::image oracle = zbuffer_render(f, cull);
+    int differ = 0;
+    for (int r = 0; r < oracle.height(); ++r)
+      for (int c = 0; c < oracle.width(); ++c) differ += oracle.at_row(r, c) != f.picture.at_row(r, c);
+    // Pixels may differ only where depths tie: along the intersection lines of interpenetrating
+    // parts and on T-junctions of split fragments.
+    std::cout << name << ": " << differ << " of " << oracle.width() * oracle.height() << " pixels differ\n";
+    EXPECT_LE(differ, oracle.width() * oracle.height() / 10000) << name;
+  }
+}
+
+TEST(Render, CommandLineExitCodes) {
+  const std::string cli = EXBSP_CLI;
+  json d = valid_scene();
+  d["camera"]["up"] = {0, 0, 1};
+  const std::string bad = write_text("cli_bad.json", d.dump());
+  const std::string err = temp_dir() + "/cli_err.txt";
+  const int rc = std::system((cli + " render " + bad + " -o " + temp_dir() + "/cli.png 2> " + err).c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 2);
+  std::ifstream in(err);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("/camera/up"), std::string::npos) << text.str();
+  EXPECT_FALSE(fs::exists(temp_dir() + "/cli.png"));
+}
+
+}  // namespace
