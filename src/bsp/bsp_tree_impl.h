@@ -314,34 +314,35 @@ std::size_t bsp_tree<K>::choose_splitter(const std::vector<std::uint32_t>& list,
 }
 
 // min-split: the fragment whose plane straddles the fewest others, ties to the earliest.
-// Exact counts are needed only for candidates that can still win: a count that exceeds the
-// best complete count so far stops early (a candidate is never better than one it exceeds).
-// A fragment found coplanar with an earlier candidate has the same count and loses the tie,
-// so it is skipped. Candidates run in parallel; the result does not depend on scheduling.
+// Candidates are ranked by the key (count, index). The best complete key so far bounds the
+// rest: candidate j stops as soon as (count so far, j) can no longer beat it, so once a plane
+// with 0 straddlers is found at i, every later candidate is skipped at once. A fragment found
+// coplanar with an earlier candidate has the same count and loses the tie: it is skipped.
+// Candidates run in parallel; the result does not depend on scheduling.
 template <class K>
 std::size_t bsp_tree<K>::choose_min_split(const std::vector<std::uint32_t>& list, unsigned threads) const {
   const std::size_t n = list.size();
-  constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
   std::vector<std::atomic<unsigned char>> same_plane(n);
   for (auto& f : same_plane) f.store(0, std::memory_order_relaxed);
-  std::vector<std::size_t> count(n, none);
-  std::atomic<std::size_t> best{none};
+  const auto key = [](std::uint64_t count, std::uint64_t index) { return count << 32 | index; };
+  std::atomic<std::uint64_t> best{std::numeric_limits<std::uint64_t>::max()};
   const long long nn = static_cast<long long>(n);
 #pragma omp parallel for schedule(dynamic, 8) if (n > 64) num_threads(detail::threads_for(threads))
   for (long long ii = 0; ii < nn; ++ii) {
-    const auto i = static_cast<std::size_t>(ii);
+    const auto i = static_cast<std::uint64_t>(ii);
     if (same_plane[i].load(std::memory_order_relaxed)) continue;
+    if (key(0, i) >= best.load(std::memory_order_relaxed)) continue;
     const fragment& candidate = pool_[list[i]];
     const triangle& plane = sources_[candidate.source];
     const fast_plane& fast = fast_[candidate.source];
-    std::size_t c = 0;
+    std::uint64_t c = 0;
     bool complete = true;
     for (std::size_t j = 0; j < n; ++j) {
       if (j == i) continue;
       const fragment& other = pool_[list[j]];
       bool coplanar = other.source == candidate.source;
       if (!coplanar && detail::straddles<K>(plane, fast, other, coplanar)) {
-        if (++c > best.load(std::memory_order_relaxed)) {
+        if (key(++c, i) >= best.load(std::memory_order_relaxed)) {
           complete = false;
           break;
         }
@@ -350,15 +351,12 @@ std::size_t bsp_tree<K>::choose_min_split(const std::vector<std::uint32_t>& list
       }
     }
     if (!complete) continue;
-    count[i] = c;
-    std::size_t b = best.load(std::memory_order_relaxed);
-    while (c < b && !best.compare_exchange_weak(b, c, std::memory_order_relaxed)) {
+    std::uint64_t b = best.load(std::memory_order_relaxed);
+    const std::uint64_t mine = key(c, i);
+    while (mine < b && !best.compare_exchange_weak(b, mine, std::memory_order_relaxed)) {
     }
   }
-  std::size_t arg = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    if (count[i] < count[arg]) arg = i;
-  return arg;
+  return static_cast<std::size_t>(best.load() & 0xffffffffu);
 }
 
 // sampled: up to 16 candidates drawn with the seed, each scored on an evenly spaced sample

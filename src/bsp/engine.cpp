@@ -32,7 +32,7 @@ const std::vector<std::string>& heuristic_names() {
   return names;
 }
 
-const char* default_heuristic() { return "min-split"; }
+const char* default_heuristic() { return "sampled"; }
 
 namespace detail {
 int heuristic_index(const std::string& name) {
