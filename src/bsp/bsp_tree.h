@@ -66,8 +66,10 @@ public:
   /// (soup.triangles) and its face id.
   struct fragment {
     triangle v;
-    std::array<vec3d, 3> d;     ///< exact double coordinates of the vertices flagged in double_mask
-    std::uint8_t double_mask;   ///< bit k: vertex k is exactly d[k] (input points, Epick points)
+    std::array<vec3d, 3> d;     ///< double approximations of the vertices flagged in double_mask
+    std::array<double, 3> r;    ///< vertex k lies within r[k] (max norm) of d[k]; 0: exactly d[k]
+    std::uint8_t double_mask;   ///< bit k: d[k], r[k] are valid (input points, Epick points,
+                                ///< Epeck constructions via their interval approximation)
     std::uint32_t source;
     std::uint32_t face;
   };

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -41,7 +42,7 @@ inline int vertex_sign(const std::array<typename K::Point_3, 3>& plane, const fa
                        const Fragment& f, int k) {
   if constexpr (kernel_traits<K>::fast_path) {
     if ((f.double_mask >> k) & 1) {
-      const int s = fast_sign(fast, f.d[k]);
+      const int s = fast_sign(fast, f.d[k], f.r[k]);
       if (s != 2) return s;
     }
   }
@@ -80,18 +81,39 @@ inline bool straddles(const std::array<typename K::Point_3, 3>& plane, const fas
 
 }  // namespace detail
 
+namespace detail {
+/// The point where [p,q] meets the plane through `a` with normal n (n = (b-a)x(c-a)).
 template <class K>
-typename K::Point_3 plane_segment_intersection(const std::array<typename K::Point_3, 3>& plane,
-                                               const typename K::Point_3& p,
-                                               const typename K::Point_3& q) {
+typename K::Point_3 intersect_with_normal(const typename K::Point_3& a, const typename K::Vector_3& n,
+                                          const typename K::Point_3& p, const typename K::Point_3& q) {
   using FT = typename K::FT;
-  const typename K::Vector_3 n = CGAL::cross_product(plane[1] - plane[0], plane[2] - plane[0]);
-  const FT fp = n * (p - plane[0]);
-  const FT fq = n * (q - plane[0]);
+  const FT fp = n * (p - a);
+  const FT fq = n * (q - a);
   const FT t = fp / (fp - fq);
   typename K::Point_3 x = p + t * (q - p);
   kernel_traits<K>::collapse(x);
   return x;
+}
+
+template <class K>
+typename K::Vector_3 plane_normal(const std::array<typename K::Point_3, 3>& plane) {
+  typename K::Vector_3 n = CGAL::cross_product(plane[1] - plane[0], plane[2] - plane[0]);
+  kernel_traits<K>::collapse_vector(n);
+  return n;
+}
+
+template <class K>
+split_pieces<K> split_with_normal(const std::array<typename K::Point_3, 3>& plane,
+                                  const typename K::Vector_3& normal,
+                                  const std::array<typename K::Point_3, 3>& t,
+                                  const std::array<int, 3>& s);
+}  // namespace detail
+
+template <class K>
+typename K::Point_3 plane_segment_intersection(const std::array<typename K::Point_3, 3>& plane,
+                                               const typename K::Point_3& p,
+                                               const typename K::Point_3& q) {
+  return detail::intersect_with_normal<K>(plane[0], detail::plane_normal<K>(plane), p, q);
 }
 
 template <class K>
@@ -100,6 +122,14 @@ split_pieces<K> split_triangle(const std::array<typename K::Point_3, 3>& plane,
                                const std::array<int, 3>& s) {
   if (classify_signs(s) != classification::straddling)
     throw usage_error("split_triangle: the triangle does not straddle the plane");
+  return detail::split_with_normal<K>(plane, detail::plane_normal<K>(plane), t, s);
+}
+
+template <class K>
+split_pieces<K> detail::split_with_normal(const std::array<typename K::Point_3, 3>& plane,
+                                          const typename K::Vector_3& normal,
+                                          const std::array<typename K::Point_3, 3>& t,
+                                          const std::array<int, 3>& s) {
   split_pieces<K> out;
   const int zero = s[0] == 0 ? 0 : s[1] == 0 ? 1 : s[2] == 0 ? 2 : -1;
   if (zero < 0) {
@@ -110,8 +140,8 @@ split_pieces<K> split_triangle(const std::array<typename K::Point_3, 3>& plane,
     const auto& c = t[lone];
     const auto& a = t[(lone + 1) % 3];
     const auto& b = t[(lone + 2) % 3];
-    const auto A = plane_segment_intersection<K>(plane, c, a);
-    const auto B = plane_segment_intersection<K>(plane, b, c);
+    const auto A = intersect_with_normal<K>(plane[0], normal, c, a);
+    const auto B = intersect_with_normal<K>(plane[0], normal, b, c);
     out.piece[0] = {a, b, A};
     out.piece[1] = {b, B, A};
     out.piece[2] = {A, B, c};
@@ -123,7 +153,7 @@ split_pieces<K> split_triangle(const std::array<typename K::Point_3, 3>& plane,
     const auto& z = t[zero];
     const auto& a = t[(zero + 1) % 3];
     const auto& b = t[(zero + 2) % 3];
-    const auto X = plane_segment_intersection<K>(plane, a, b);
+    const auto X = intersect_with_normal<K>(plane[0], normal, a, b);
     out.piece[0] = {z, a, X};
     out.piece[1] = {z, X, b};
     out.side = {s[(zero + 1) % 3], s[(zero + 2) % 3], 0};
@@ -175,7 +205,7 @@ bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
     const vec3d& c = soup.vertices[st.v[2]];
     fast_[i] = make_fast_plane(a, b, c);
     root_list.push_back(static_cast<std::uint32_t>(pool_.size()));
-    pool_.push_back({sources_[i], {a, b, c}, 7, static_cast<std::uint32_t>(i), st.face});
+    pool_.push_back({sources_[i], {a, b, c}, {0, 0, 0}, 7, static_cast<std::uint32_t>(i), st.face});
   }
 
   std::size_t total_fragments = root_list.size();
@@ -205,6 +235,7 @@ bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
     const std::uint32_t plane_source = pool_[w.list[splitter]].source;
     const triangle& plane = sources_[plane_source];
     const fast_plane& fast = fast_[plane_source];
+    std::optional<vector> normal;  // computed once per node, at its first split
 
     const auto id = static_cast<std::int32_t>(nodes_.size());
     node nd;
@@ -244,7 +275,8 @@ bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
         case classification::positive: positive.push_back(index); break;
         case classification::negative: negative.push_back(index); break;
         case classification::straddling: {
-          const split_pieces<K> pieces = split_triangle<K>(plane, pool_[index].v, s);
+          if (!normal) normal = detail::plane_normal<K>(plane);
+          const split_pieces<K> pieces = detail::split_with_normal<K>(plane, *normal, pool_[index].v, s);
           ++stats_.splits;
           total_fragments += pieces.count - 1;
           check_limit();
@@ -282,18 +314,17 @@ bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
 template <class K>
 typename bsp_tree<K>::fragment bsp_tree<K>::make_piece(const fragment& parent,
                                                        const split_pieces<K>& pieces, int i) {
-  // Vertices taken from the parent keep their exact doubles; constructed ones have exact
-  // doubles only in kernels whose constructions are doubles (Epick).
+  // Vertices taken from the parent keep their approximations; constructed ones get one from
+  // the kernel where it has one (Epick: the point itself; Epeck: its interval approximation).
   const triangle& piece = pieces.piece[i];
-  fragment out{piece, {}, 0, parent.source, parent.face};
+  fragment out{piece, {}, {0, 0, 0}, 0, parent.source, parent.face};
   for (int k = 0; k < 3; ++k) {
     const int m = pieces.origin[i][k];
     if (m >= 0 && ((parent.double_mask >> m) & 1)) {
       out.d[k] = parent.d[m];
+      out.r[k] = parent.r[m];
       out.double_mask |= static_cast<std::uint8_t>(1u << k);
-    } else if (kernel_traits<K>::constructions_are_doubles) {
-      out.d[k] = {kernel_traits<K>::to_double(piece[k].x()), kernel_traits<K>::to_double(piece[k].y()),
-                  kernel_traits<K>::to_double(piece[k].z())};
+    } else if (m < 0 && kernel_traits<K>::approximate(piece[k], out.d[k], out.r[k])) {
       out.double_mask |= static_cast<std::uint8_t>(1u << k);
     }
   }

@@ -15,7 +15,8 @@
 namespace exbsp {
 
 struct fast_plane {
-  vec3d a{}, n{}, err{};  ///< base point, rounded normal, error bound per normal component
+  vec3d a{}, b{}, c{};    ///< the plane's three points
+  vec3d n{}, err{};       ///< rounded normal, error bound per normal component
   bool valid = false;
 };
 
@@ -30,6 +31,8 @@ inline fast_plane make_fast_plane(const vec3d& a, const vec3d& b, const vec3d& c
   constexpr double u = 1.1102230246251565e-16;  // 2^-53
   fast_plane p;
   p.a = a;
+  p.b = b;
+  p.c = c;
   const vec3d e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
   const vec3d e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
   for (int k = 0; k < 3; ++k)
@@ -48,22 +51,29 @@ inline fast_plane make_fast_plane(const vec3d& a, const vec3d& b, const vec3d& c
   return p;
 }
 
-/// Sign of orientation(a, b, c, point) for a point with exact double coordinates:
-/// -1, 0 or +1 when certified, 2 when the caller must use the exact predicate.
-inline int fast_sign(const fast_plane& p, const vec3d& point) {
+/// Sign of orientation(a, b, c, x) for a point x known to lie within `radius` (max norm) of
+/// the double point `point` (radius 0: x is exactly `point`): -1, 0 or +1 when certified,
+/// 2 when the caller must use the exact predicate.
+inline int fast_sign(const fast_plane& p, const vec3d& point, double radius = 0) {
   constexpr double u = 1.1102230246251565e-16;
   if (!p.valid) return 2;
   const double q0 = point[0] - p.a[0], q1 = point[1] - p.a[1], q2 = point[2] - p.a[2];
-  if (!detail::safe_magnitude(q0) || !detail::safe_magnitude(q1) || !detail::safe_magnitude(q2))
+  if (!detail::safe_magnitude(q0) || !detail::safe_magnitude(q1) || !detail::safe_magnitude(q2) ||
+      !(radius <= 1e80))
     return 2;
   const double v = p.n[0] * q0 + p.n[1] * q1 + p.n[2] * q2;
   const double bound = (p.err[0] + 8 * u * std::fabs(p.n[0])) * std::fabs(q0) +
                        (p.err[1] + 8 * u * std::fabs(p.n[1])) * std::fabs(q1) +
                        (p.err[2] + 8 * u * std::fabs(p.n[2])) * std::fabs(q2);
-  const double safe_bound = bound * (1 + 8 * u) + 1e-290;  // products stay normal
+  // A point known only to within `radius` moves f by at most |n| . (radius, radius, radius).
+  const double spread = radius == 0 ? 0
+                                    : radius * ((std::fabs(p.n[0]) + p.err[0]) + (std::fabs(p.n[1]) + p.err[1]) +
+                                                (std::fabs(p.n[2]) + p.err[2]));
+  const double safe_bound = (bound + spread) * (1 + 8 * u) + 1e-290;  // products stay normal
   if (v > safe_bound) return 1;
   if (v < -safe_bound) return -1;
-  if (q0 == 0 && q1 == 0 && q2 == 0) return 0;  // p == a exactly
+  // A vertex shared with the plane's triangle (adjacent mesh triangles): exactly on it.
+  if (radius == 0 && (point == p.a || point == p.b || point == p.c)) return 0;
   return 2;
 }
 

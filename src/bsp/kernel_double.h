@@ -13,10 +13,10 @@ struct kernel_traits<double_kernel> {
   static constexpr kernel_id id = kernel_id::double_;
   /// Whether the certified double filter (fast_orientation.h) may answer side tests.
   static constexpr bool fast_path = false;
-  /// Whether constructed points have exact double coordinates.
-  static constexpr bool constructions_are_doubles = true;
+  static bool approximate(const double_kernel::Point_3&, vec3d&, double&) { return false; }
   static constexpr bool exact = false;
   static void collapse(const double_kernel::Point_3&) {}
+  static void collapse_vector(const double_kernel::Vector_3&) {}
   static mpq_srcptr rational(const double&) { return nullptr; }
   static double to_double(double x) { return x; }
 };

@@ -4,6 +4,9 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "bsp/exact_output.h"
 #include "bsp/kernel_traits.h"
 
@@ -20,11 +23,23 @@ struct kernel_traits<epeck_kernel> {
   static constexpr kernel_id id = kernel_id::epeck;
   /// Whether the certified double filter (fast_orientation.h) may answer side tests.
   static constexpr bool fast_path = true;
-  /// Whether constructed points have exact double coordinates.
-  static constexpr bool constructions_are_doubles = false;
+  /// Centre and radius (max norm, rounded up) of the point's interval approximation, which
+  /// is tight once the point has been collapsed to its exact value.
+  static bool approximate(const epeck_kernel::Point_3& p, vec3d& centre, double& radius) {
+    const auto& a = CGAL::approx(p);
+    radius = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double lo = a[k].inf(), hi = a[k].sup();
+      if (!(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi)) return false;
+      centre[k] = lo + 0.5 * (hi - lo);
+      radius = std::max(radius, (hi - lo) * (1 + 1e-15));
+    }
+    return true;
+  }
   static constexpr bool exact = true;
   /// Computing the exact value prunes the lazy DAG below the point (memory and later speed).
   static void collapse(const epeck_kernel::Point_3& p) { CGAL::exact(p); }
+  static void collapse_vector(const epeck_kernel::Vector_3& v) { CGAL::exact(v); }
   static mpq_srcptr rational(const epeck_kernel::FT& x) { return mpq_of(CGAL::exact(x)); }
   static double to_double(const epeck_kernel::FT& x) { return rational_to_double(rational(x)); }
 };

@@ -13,10 +13,14 @@ struct kernel_traits<epick_kernel> {
   static constexpr kernel_id id = kernel_id::epick;
   /// Whether the certified double filter (fast_orientation.h) may answer side tests.
   static constexpr bool fast_path = true;
-  /// Whether constructed points have exact double coordinates.
-  static constexpr bool constructions_are_doubles = true;
+  static bool approximate(const epick_kernel::Point_3& p, vec3d& centre, double& radius) {
+    centre = {p.x(), p.y(), p.z()};
+    radius = 0;
+    return true;
+  }
   static constexpr bool exact = false;
   static void collapse(const epick_kernel::Point_3&) {}
+  static void collapse_vector(const epick_kernel::Vector_3&) {}
   static mpq_srcptr rational(const double&) { return nullptr; }
   static double to_double(double x) { return x; }
 };

@@ -15,10 +15,10 @@ struct kernel_traits<gmpq_kernel> {
   static constexpr kernel_id id = kernel_id::gmpq;
   /// Whether the certified double filter (fast_orientation.h) may answer side tests.
   static constexpr bool fast_path = false;
-  /// Whether constructed points have exact double coordinates.
-  static constexpr bool constructions_are_doubles = false;
+  static bool approximate(const gmpq_kernel::Point_3&, vec3d&, double&) { return false; }
   static constexpr bool exact = true;
   static void collapse(const gmpq_kernel::Point_3&) {}
+  static void collapse_vector(const gmpq_kernel::Vector_3&) {}
   static mpq_srcptr rational(const gmpq_kernel::FT& x) { return x.mpq(); }
   static double to_double(const gmpq_kernel::FT& x) { return rational_to_double(x.mpq()); }
 };

@@ -10,7 +10,9 @@ namespace exbsp {
 
 /// Primary template, specialised per kernel:
 ///   static constexpr kernel_id id; static constexpr bool exact;
+///   static constexpr bool fast_path;          // may the certified double filter answer?
 ///   static void collapse(Point_3&);           // drop lazy DAGs after a construction
+///   static bool approximate(Point_3, vec3d& centre, double& radius);  // for the filter
 ///   static double to_double(const FT&);       // nearest double
 ///   static mpq_srcptr rational(const FT&);    // exact kernels only
 template <class K>
