@@ -9,3 +9,6 @@ if(EXBSP_SANITIZE)
   target_compile_options(exbsp_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   target_link_options(exbsp_options INTERFACE -fsanitize=address,undefined)
 endif()
+# Installed consumers write #include <exbsp/bsp/engine.h>; exbsp's own headers include
+# "bsp/..." relative to include/exbsp (each module adds that directory).
+target_include_directories(exbsp_options INTERFACE $<INSTALL_INTERFACE:include>)
