@@ -103,19 +103,42 @@ public:
   std::vector<std::uint32_t> order_for_direction(const vector& d, bool back_to_front = true) const;
 
 private:
+  /// Refs to fragments: a pool_ index, or local_ref | index into a subtree's own pieces.
+  static constexpr std::uint32_t local_ref = 0x80000000u;
+  struct work {
+    std::vector<std::uint32_t> list;  ///< fragment refs, in list order
+    std::int32_t parent;              ///< parent node (index in the subtree being grown), -1: none
+    std::int32_t side;
+    std::uint32_t depth;
+    std::uint64_t key;                ///< path key: root 1, children mix64(2 key + (side > 0))
+  };
+  /// Nodes, fragment refs and pieces of one independently grown subtree.
+  struct subtree {
+    std::vector<node> nodes;
+    std::vector<std::uint32_t> node_fragments;
+    std::vector<fragment> pieces;
+    std::int32_t root_parent = -1;
+    std::int32_t root_side = 0;
+  };
+  struct build_context;
+  template <class PushChild>
+  void grow_node(work&& w, subtree& part, build_context& ctx, PushChild&& push_child);
+  void append_subtree(subtree& part, std::uint32_t piece_base);
   template <class SideOf>
   std::vector<std::uint32_t> traverse(SideOf side_of, bool back_to_front) const;
-  std::size_t choose_splitter(const std::vector<std::uint32_t>& list, int heuristic, std::uint64_t seed,
-                              std::size_t node_index, unsigned threads) const;
-  std::size_t choose_min_split(const std::vector<std::uint32_t>& list, unsigned threads) const;
-  std::size_t choose_sampled(const std::vector<std::uint32_t>& list, std::uint64_t seed,
-                             std::size_t node_index) const;
+  std::size_t choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part, int heuristic,
+                              std::uint64_t seed, std::uint64_t node_key, unsigned threads) const;
+  std::size_t choose_min_split(const std::vector<std::uint32_t>& list, const subtree& part,
+                               unsigned threads) const;
+  std::size_t choose_sampled(const std::vector<std::uint32_t>& list, const subtree& part,
+                             std::uint64_t seed, std::uint64_t node_key) const;
 
   static fragment make_piece(const fragment& parent, const split_pieces<K>& pieces, int i);
 
   std::vector<triangle> sources_;
   std::vector<fast_plane> fast_;
   std::vector<fragment> pool_;  ///< build time only: every fragment made, by index
+  std::vector<std::uint32_t> node_fragments_;  ///< build time only: pool indices, node by node
   std::vector<fragment> fragments_;
   std::vector<node> nodes_;
   build_stats stats_;

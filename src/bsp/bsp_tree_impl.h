@@ -9,6 +9,9 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <deque>
+#include <exception>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <string>
@@ -164,6 +167,25 @@ split_pieces<K> detail::split_with_normal(const std::array<typename K::Point_3, 
   return out;
 }
 
+/// Shared state of one build: options, counters updated by all threads, the failure flag.
+template <class K>
+struct bsp_tree<K>::build_context {
+  build_context(const build_options& o, int h, std::chrono::steady_clock::time_point t)
+      : options(o), heuristic(h), start(t) {}
+  const build_options& options;
+  int heuristic;
+  std::chrono::steady_clock::time_point start;
+  std::atomic<std::size_t> total_fragments{0}, splits{0}, placed{0}, nodes{0};
+  std::atomic<bool> failed{false};
+  /// Counts `added` new fragments; throws limit_error beyond options.max_fragments.
+  void check_limit(std::size_t added) {
+    const std::size_t total = total_fragments.fetch_add(added, std::memory_order_relaxed) + added;
+    if (options.max_fragments && total > options.max_fragments)
+      throw limit_error("fragment limit exceeded: the tree needs more than " +
+                        std::to_string(options.max_fragments) + " fragments (--max-fragments)");
+  }
+};
+
 template <class K>
 bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
   using clock = std::chrono::steady_clock;
@@ -208,107 +230,183 @@ bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
     pool_.push_back({sources_[i], {a, b, c}, {0, 0, 0}, 7, static_cast<std::uint32_t>(i), st.face});
   }
 
-  std::size_t total_fragments = root_list.size();
-  const auto check_limit = [&] {
-    if (options.max_fragments && total_fragments > options.max_fragments)
-      throw limit_error("fragment limit exceeded: the tree needs more than " +
-                        std::to_string(options.max_fragments) + " fragments (--max-fragments)");
-  };
-  check_limit();
-  std::vector<std::uint32_t> node_fragments;  // pool indices, node by node
-  node_fragments.reserve(total_fragments);
-
-  struct work {
-    std::vector<std::uint32_t> list;
-    std::int32_t parent;
-    std::int32_t side;
-    std::uint32_t depth;
-  };
-  std::vector<work> stack;
-  if (!root_list.empty()) stack.push_back({std::move(root_list), -1, 0, 1});
-  std::size_t popped = 0;
-  while (!stack.empty()) {
-    work w = std::move(stack.back());
-    stack.pop_back();
-    const std::size_t splitter =
-        choose_splitter(w.list, heuristic, options.seed, nodes_.size(), options.threads);
-    const std::uint32_t plane_source = pool_[w.list[splitter]].source;
-    const triangle& plane = sources_[plane_source];
-    const fast_plane& fast = fast_[plane_source];
-    std::optional<vector> normal;  // computed once per node, at its first split
-
-    const auto id = static_cast<std::int32_t>(nodes_.size());
-    node nd;
-    nd.plane_source = plane_source;
-    nd.first = static_cast<std::uint32_t>(node_fragments.size());
-    nd.parent = w.parent;
-    nd.side_in_parent = w.side;
-    nd.depth = w.depth;
-    if (w.parent >= 0) (w.side > 0 ? nodes_[w.parent].positive : nodes_[w.parent].negative) = id;
-    stats_.depth = std::max<std::size_t>(stats_.depth, w.depth);
-
-    // Side tests first (in parallel for long lists: they dominate degenerate trees), then the
-    // sequential, order-keeping distribution with the exact splits.
-    const std::size_t n = w.list.size();
-    std::vector<std::array<std::int8_t, 3>> signs(n);
-    const long long nn = static_cast<long long>(n);
-#pragma omp parallel for schedule(static) if (n > 65536) num_threads(detail::threads_for(options.threads))
-    for (long long jj = 0; jj < nn; ++jj) {
-      const auto j = static_cast<std::size_t>(jj);
-      // A fragment lies exactly in its source's plane: coplanar by construction. (Exact
-      // kernels would find the same; rounded ones could not, and would loop forever.)
-      const fragment& f = pool_[w.list[j]];
-      if (f.source == plane_source) {
-        signs[j] = {0, 0, 0};
-        continue;
-      }
-      const std::array<int, 3> sj = detail::signs_against<K>(plane, fast, f);
-      signs[j] = {static_cast<std::int8_t>(sj[0]), static_cast<std::int8_t>(sj[1]),
-                  static_cast<std::int8_t>(sj[2])};
-    }
-    std::vector<std::uint32_t> negative, positive;
-    for (std::size_t j = 0; j < n; ++j) {
-      const std::uint32_t index = w.list[j];
-      const std::array<int, 3> s{signs[j][0], signs[j][1], signs[j][2]};
-      switch (classify_signs(s)) {
-        case classification::coplanar: node_fragments.push_back(index); break;
-        case classification::positive: positive.push_back(index); break;
-        case classification::negative: negative.push_back(index); break;
-        case classification::straddling: {
-          if (!normal) normal = detail::plane_normal<K>(plane);
-          const split_pieces<K> pieces = detail::split_with_normal<K>(plane, *normal, pool_[index].v, s);
-          ++stats_.splits;
-          total_fragments += pieces.count - 1;
-          check_limit();
-          for (int k = 0; k < pieces.count; ++k) {
-            fragment piece = make_piece(pool_[index], pieces, k);
-            (pieces.side[k] > 0 ? positive : negative).push_back(static_cast<std::uint32_t>(pool_.size()));
-            pool_.push_back(std::move(piece));
-          }
-          break;
-        }
-      }
-    }
-    nd.count = static_cast<std::uint32_t>(node_fragments.size() - nd.first);
-    nodes_.push_back(nd);
-    w.list.clear();
-    w.list.shrink_to_fit();
-    if (!positive.empty()) stack.push_back({std::move(positive), id, +1, w.depth + 1});
-    if (!negative.empty()) stack.push_back({std::move(negative), id, -1, w.depth + 1});
-
-    if (options.progress && (++popped & 255) == 0)
-      options.progress({node_fragments.size(), total_fragments, nodes_.size(),
-                        std::chrono::duration<double>(clock::now() - start).count()});
+  // The build runs in two phases with the same per-node step (grow): the top levels
+  // breadth-first on this thread until there are `frontier_size` pending subtrees, then those
+  // subtrees in parallel, each into its own node list and piece pool, merged in frontier order.
+  // Heuristic seeds come from each node's path key, not from a creation counter, and the
+  // frontier size is fixed, so the tree is the same for any number of threads.
+  build_context ctx(options, heuristic, start);
+  ctx.check_limit(root_list.size());
+  std::deque<work> queue;
+  if (!root_list.empty()) queue.push_back({std::move(root_list), -1, 0, 1, 1});
+  subtree top;
+  constexpr std::size_t frontier_size = 16;
+  while (!queue.empty() && queue.size() < frontier_size) {
+    work w = std::move(queue.front());
+    queue.pop_front();
+    grow_node(std::move(w), top, ctx, [&](work&& child) { queue.push_back(std::move(child)); });
   }
-  fragments_.reserve(node_fragments.size());
-  for (std::uint32_t index : node_fragments) fragments_.push_back(std::move(pool_[index]));
+  // Top pieces join the shared read-only pool; refs to them become plain pool indices.
+  const auto top_base = static_cast<std::uint32_t>(pool_.size());
+  for (fragment& f : top.pieces) pool_.push_back(std::move(f));
+  top.pieces.clear();
+  const auto remap = [](std::uint32_t ref, std::uint32_t base) {
+    return (ref & local_ref) ? base + (ref & ~local_ref) : ref;
+  };
+  for (std::uint32_t& ref : top.node_fragments) ref = remap(ref, top_base);
+  for (work& w : queue)
+    for (std::uint32_t& ref : w.list) ref = remap(ref, top_base);
+  append_subtree(top, top_base);
+
+  std::vector<work> frontier(std::make_move_iterator(queue.begin()), std::make_move_iterator(queue.end()));
+  queue.clear();
+  std::vector<subtree> parts(frontier.size());
+  std::exception_ptr failure;
+  const long long count = static_cast<long long>(frontier.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(detail::threads_for(options.threads))
+  for (long long i = 0; i < count; ++i) {
+    try {
+      subtree& part = parts[static_cast<std::size_t>(i)];
+      part.root_parent = frontier[static_cast<std::size_t>(i)].parent;
+      part.root_side = frontier[static_cast<std::size_t>(i)].side;
+      frontier[static_cast<std::size_t>(i)].parent = -1;  // local to the part from here on
+      std::vector<work> stack;
+      stack.push_back(std::move(frontier[static_cast<std::size_t>(i)]));
+      while (!stack.empty() && !ctx.failed.load(std::memory_order_relaxed)) {
+        work w = std::move(stack.back());
+        stack.pop_back();
+        grow_node(std::move(w), part, ctx, [&](work&& child) { stack.push_back(std::move(child)); });
+      }
+    } catch (...) {
+#pragma omp critical(exbsp_bsp_failure)
+      if (!failure) failure = std::current_exception();
+      ctx.failed.store(true);
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+  for (subtree& part : parts) {
+    const auto base = static_cast<std::uint32_t>(pool_.size());
+    for (fragment& f : part.pieces) pool_.push_back(std::move(f));
+    part.pieces.clear();
+    for (std::uint32_t& ref : part.node_fragments) ref = remap(ref, base);
+    append_subtree(part, base);
+  }
+
+  fragments_.reserve(node_fragments_.size());
+  for (std::uint32_t index : node_fragments_) fragments_.push_back(std::move(pool_[index]));
   std::vector<fragment>().swap(pool_);
+  std::vector<std::uint32_t>().swap(node_fragments_);
+  stats_.splits = ctx.splits.load();
   stats_.fragments = fragments_.size();
   stats_.nodes = nodes_.size();
   stats_.build_seconds = std::chrono::duration<double>(clock::now() - start).count();
   stats_.peak_rss_bytes = peak_rss_bytes();
   if (options.progress)
-    options.progress({fragments_.size(), total_fragments, nodes_.size(), stats_.build_seconds});
+    options.progress({fragments_.size(), ctx.total_fragments.load(), nodes_.size(), stats_.build_seconds});
+}
+
+template <class K>
+void bsp_tree<K>::append_subtree(subtree& part, std::uint32_t) {
+  const auto node_base = static_cast<std::int32_t>(nodes_.size());
+  const auto fragment_base = static_cast<std::uint32_t>(node_fragments_.size());
+  node_fragments_.insert(node_fragments_.end(), part.node_fragments.begin(), part.node_fragments.end());
+  for (node nd : part.nodes) {
+    nd.first += fragment_base;
+    if (nd.negative >= 0) nd.negative += node_base;
+    if (nd.positive >= 0) nd.positive += node_base;
+    if (nd.parent >= 0) {
+      nd.parent += node_base;
+    } else if (part.root_parent >= 0) {  // the part's root hangs below a node built earlier
+      nd.parent = part.root_parent;
+      nd.side_in_parent = part.root_side;
+      node& parent = nodes_[part.root_parent];
+      (part.root_side > 0 ? parent.positive : parent.negative) = static_cast<std::int32_t>(nodes_.size());
+    }
+    stats_.depth = std::max<std::size_t>(stats_.depth, nd.depth);
+    nodes_.push_back(nd);
+  }
+  part.nodes.clear();
+  part.node_fragments.clear();
+}
+
+template <class K>
+template <class PushChild>
+void bsp_tree<K>::grow_node(work&& w, subtree& part, build_context& ctx, PushChild&& push_child) {
+  const auto fragment_at = [&](std::uint32_t ref) -> const fragment& {
+    return (ref & local_ref) ? part.pieces[ref & ~local_ref] : pool_[ref];
+  };
+  const build_options& options = ctx.options;
+  const std::size_t splitter = choose_splitter(w.list, part, ctx.heuristic, options.seed, w.key, options.threads);
+  const std::uint32_t plane_source = fragment_at(w.list[splitter]).source;
+  const triangle& plane = sources_[plane_source];
+  const fast_plane& fast = fast_[plane_source];
+  std::optional<vector> normal;  // computed once per node, at its first split
+
+  const auto id = static_cast<std::int32_t>(part.nodes.size());
+  node nd;
+  nd.plane_source = plane_source;
+  nd.first = static_cast<std::uint32_t>(part.node_fragments.size());
+  nd.parent = w.parent;
+  nd.side_in_parent = w.side;
+  nd.depth = w.depth;
+  if (w.parent >= 0) (w.side > 0 ? part.nodes[w.parent].positive : part.nodes[w.parent].negative) = id;
+
+  // Side tests first (in parallel for very long lists: they dominate degenerate trees), then
+  // the sequential, order-keeping distribution with the exact splits.
+  const std::size_t n = w.list.size();
+  std::vector<std::array<std::int8_t, 3>> signs(n);
+  const long long nn = static_cast<long long>(n);
+#pragma omp parallel for schedule(static) if (n > 65536) num_threads(detail::threads_for(options.threads))
+  for (long long jj = 0; jj < nn; ++jj) {
+    const auto j = static_cast<std::size_t>(jj);
+    // A fragment lies exactly in its source's plane: coplanar by construction. (Exact
+    // kernels would find the same; rounded ones could not, and would loop forever.)
+    const fragment& f = fragment_at(w.list[j]);
+    if (f.source == plane_source) {
+      signs[j] = {0, 0, 0};
+      continue;
+    }
+    const std::array<int, 3> sj = detail::signs_against<K>(plane, fast, f);
+    signs[j] = {static_cast<std::int8_t>(sj[0]), static_cast<std::int8_t>(sj[1]),
+                static_cast<std::int8_t>(sj[2])};
+  }
+  std::vector<std::uint32_t> negative, positive;
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::uint32_t ref = w.list[j];
+    const std::array<int, 3> s{signs[j][0], signs[j][1], signs[j][2]};
+    switch (classify_signs(s)) {
+      case classification::coplanar: part.node_fragments.push_back(ref); break;
+      case classification::positive: positive.push_back(ref); break;
+      case classification::negative: negative.push_back(ref); break;
+      case classification::straddling: {
+        if (!normal) normal = detail::plane_normal<K>(plane);
+        const fragment parent = fragment_at(ref);  // a copy: part.pieces may grow below
+        const split_pieces<K> pieces = detail::split_with_normal<K>(plane, *normal, parent.v, s);
+        ctx.splits.fetch_add(1, std::memory_order_relaxed);
+        ctx.check_limit(static_cast<std::size_t>(pieces.count - 1));
+        for (int k = 0; k < pieces.count; ++k) {
+          (pieces.side[k] > 0 ? positive : negative)
+              .push_back(local_ref | static_cast<std::uint32_t>(part.pieces.size()));
+          part.pieces.push_back(make_piece(parent, pieces, k));
+        }
+        break;
+      }
+    }
+  }
+  nd.count = static_cast<std::uint32_t>(part.node_fragments.size() - nd.first);
+  part.nodes.push_back(nd);
+  const std::uint64_t key = w.key;
+  const std::uint32_t depth = w.depth;
+  w.list.clear();
+  w.list.shrink_to_fit();
+  if (!positive.empty()) push_child({std::move(positive), id, +1, depth + 1, detail::mix64(key * 2 + 1)});
+  if (!negative.empty()) push_child({std::move(negative), id, -1, depth + 1, detail::mix64(key * 2)});
+
+  const std::size_t placed = ctx.placed.fetch_add(nd.count, std::memory_order_relaxed) + nd.count;
+  const std::size_t nodes = ctx.nodes.fetch_add(1, std::memory_order_relaxed) + 1;
+  if (options.progress && (nodes & 255) == 0 && omp_get_thread_num() == 0)
+    options.progress({placed, ctx.total_fragments.load(std::memory_order_relaxed), nodes,
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx.start).count()});
 }
 
 template <class K>
@@ -332,15 +430,15 @@ typename bsp_tree<K>::fragment bsp_tree<K>::make_piece(const fragment& parent,
 }
 
 template <class K>
-std::size_t bsp_tree<K>::choose_splitter(const std::vector<std::uint32_t>& list, int heuristic,
-                                         std::uint64_t seed, std::size_t node_index,
+std::size_t bsp_tree<K>::choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part,
+                                         int heuristic, std::uint64_t seed, std::uint64_t node_key,
                                          unsigned threads) const {
   if (list.size() <= 1) return 0;
   switch (heuristic) {
     case 0: return 0;
-    case 1: return choose_min_split(list, threads);
-    case 2: return choose_sampled(list, seed, node_index);
-    default: return detail::mix64(seed ^ detail::mix64(node_index)) % list.size();
+    case 1: return choose_min_split(list, part, threads);
+    case 2: return choose_sampled(list, part, seed, node_key);
+    default: return detail::mix64(seed ^ detail::mix64(node_key)) % list.size();
   }
 }
 
@@ -351,7 +449,11 @@ std::size_t bsp_tree<K>::choose_splitter(const std::vector<std::uint32_t>& list,
 // coplanar with an earlier candidate has the same count and loses the tie: it is skipped.
 // Candidates run in parallel; the result does not depend on scheduling.
 template <class K>
-std::size_t bsp_tree<K>::choose_min_split(const std::vector<std::uint32_t>& list, unsigned threads) const {
+std::size_t bsp_tree<K>::choose_min_split(const std::vector<std::uint32_t>& list, const subtree& part,
+                                          unsigned threads) const {
+  const auto fragment_at = [&](std::uint32_t ref) -> const fragment& {
+    return (ref & local_ref) ? part.pieces[ref & ~local_ref] : pool_[ref];
+  };
   const std::size_t n = list.size();
   std::vector<std::atomic<unsigned char>> same_plane(n);
   for (auto& f : same_plane) f.store(0, std::memory_order_relaxed);
@@ -363,14 +465,14 @@ std::size_t bsp_tree<K>::choose_min_split(const std::vector<std::uint32_t>& list
     const auto i = static_cast<std::uint64_t>(ii);
     if (same_plane[i].load(std::memory_order_relaxed)) continue;
     if (key(0, i) >= best.load(std::memory_order_relaxed)) continue;
-    const fragment& candidate = pool_[list[i]];
+    const fragment& candidate = fragment_at(list[i]);
     const triangle& plane = sources_[candidate.source];
     const fast_plane& fast = fast_[candidate.source];
     std::uint64_t c = 0;
     bool complete = true;
     for (std::size_t j = 0; j < n; ++j) {
       if (j == i) continue;
-      const fragment& other = pool_[list[j]];
+      const fragment& other = fragment_at(list[j]);
       bool coplanar = other.source == candidate.source;
       if (!coplanar && detail::straddles<K>(plane, fast, other, coplanar)) {
         if (key(++c, i) >= best.load(std::memory_order_relaxed)) {
@@ -394,15 +496,18 @@ std::size_t bsp_tree<K>::choose_min_split(const std::vector<std::uint32_t>& list
 // of at most 512 fragments by 8 * splits + |positive - negative| (the split/balance score of
 // classic BSP compilers); lowest score wins, ties to the earliest candidate.
 template <class K>
-std::size_t bsp_tree<K>::choose_sampled(const std::vector<std::uint32_t>& list, std::uint64_t seed,
-                                        std::size_t node_index) const {
+std::size_t bsp_tree<K>::choose_sampled(const std::vector<std::uint32_t>& list, const subtree& part,
+                                        std::uint64_t seed, std::uint64_t node_key) const {
+  const auto fragment_at = [&](std::uint32_t ref) -> const fragment& {
+    return (ref & local_ref) ? part.pieces[ref & ~local_ref] : pool_[ref];
+  };
   const std::size_t n = list.size();
   constexpr std::size_t max_candidates = 16, max_sample = 512;
   std::vector<std::size_t> candidates;
   if (n <= max_candidates) {
     for (std::size_t i = 0; i < n; ++i) candidates.push_back(i);
   } else {
-    const std::uint64_t h = detail::mix64(seed ^ detail::mix64(node_index + 0x51ed));
+    const std::uint64_t h = detail::mix64(seed ^ detail::mix64(node_key + 0x51ed));
     for (std::size_t k = 0; k < max_candidates; ++k) candidates.push_back(detail::mix64(h + k) % n);
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
@@ -411,13 +516,13 @@ std::size_t bsp_tree<K>::choose_sampled(const std::vector<std::uint32_t>& list, 
   std::size_t best = candidates.front();
   long long best_score = std::numeric_limits<long long>::max();
   for (std::size_t i : candidates) {
-    const fragment& candidate = pool_[list[i]];
+    const fragment& candidate = fragment_at(list[i]);
     const triangle& plane = sources_[candidate.source];
     const fast_plane& fast = fast_[candidate.source];
     long long splits = 0, pos = 0, neg = 0, score = 0;
     for (std::size_t k = 0; k < m && score < best_score; ++k) {
       const std::size_t j = k * n / m;
-      const fragment& other = pool_[list[j]];
+      const fragment& other = fragment_at(list[j]);
       if (other.source == candidate.source) continue;  // coplanar by construction
       switch (classify_signs(detail::signs_against<K>(plane, fast, other))) {
         case classification::straddling: ++splits; break;
