@@ -1,0 +1,6 @@
+// libFuzzer target: the OBJ reader (read_mesh_data with mesh_format::obj). Oracle: fuzz_mesh.h.
+#include "fuzz_mesh.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return exbsp::fuzz::fuzz_mesh(data, size, exbsp::mesh_format::obj, "fuzz.obj");
+}
