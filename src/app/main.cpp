@@ -232,6 +232,13 @@ int main(int argc, char** argv) {
   render->add_option("SCENE", scene_path, "scene file (JSON); omit for the built-in demo");
   render->add_option("-o,--output", render_out, "output .png or .svg")->capture_default_str();
   render->add_flag("-v,--verbose", verbose, "print the pipeline stages that ran and their timings");
+  std::string orbit_drag;
+  std::size_t orbit_frames = 0;
+  render->add_option("--orbit-drag", orbit_drag,
+                     "trackball orbit: screen pixel path X0,Y0:X1,Y1:... (y down) dragged over an "
+                     "arcball; writes OUT_0000.png, OUT_0001.png, ... from one BSP build");
+  render->add_option("--frames", orbit_frames,
+                     "number of orbit frames (the drag path resampled evenly; default: one per point)");
 
   try {
     app.parse(argc, argv);
@@ -252,7 +259,10 @@ int main(int argc, char** argv) {
       return run_order(order_opts, eye, direction, order_out);
     }
     if (*render) {
-      exbsp::render_command({scene_path, render_out, verbose}, std::cerr);
+      exbsp::render_request request{scene_path, render_out, verbose};
+      if (!orbit_drag.empty()) request.orbit_drag = exbsp::parse_drag_path(orbit_drag);
+      request.frames = orbit_frames;
+      exbsp::render_command(request, std::cerr);
       return 0;
     }
   } catch (const exbsp::limit_error& e) {

@@ -1,19 +1,23 @@
 // `exbsp render`: scene (or the built-in demo) -> one soup -> the stage list of
-// view/effects.h -> atomic PNG or SVG write.
+// view/effects.h -> atomic PNG or SVG write; with an orbit, one build and one run of the
+// per-view stages per frame (notation in render.h).
 #include "scene/render.h"
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <string_view>
 
 #include "mesh/errors.h"
 #include "scene/demo_scene.h"
-#include "scene/scene.h"
-#include "view/effects.h"
 #include "view/atomic_file.h"
+#include "view/effects.h"
 #include "view/png_io.h"
+#include "view/stages.h"
+#include "view/trackball.h"
 
 namespace exbsp {
 
@@ -25,7 +29,113 @@ bool ends_with_ci(const std::string& s, const std::string& suffix) {
                     [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
 }
 
+std::string seconds_text(double s) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4f", s);
+  return buf;
+}
+
+view::vector3 to_vector(const vec3d& v) { return {v[0], v[1], v[2]}; }
+vec3d to_array(const view::vector3& v) { return {v.x, v.y, v.z}; }
+
+/// The write stage for `path`.
+view::stage write_stage(const std::string& path, view::output_kind kind) {
+  return {"write", [path, kind](view::frame& fr) {
+            if (kind == view::output_kind::png)
+              view::write_png(fr.picture, path);
+            else
+              view::write_file_atomically(path, fr.svg);
+            return path;
+          }};
+}
+
 }  // namespace
+
+std::vector<std::array<double, 2>> parse_drag_path(const std::string& text, const std::string& option) {
+  std::vector<std::array<double, 2>> path;
+  const char* p = text.data();
+  const char* end = text.data() + text.size();
+  const std::string usage = option + " expects screen points X0,Y0:X1,Y1:... (finite numbers), got '" + text + "'";
+  if (p == end) throw usage_error(usage);
+  while (true) {
+    std::array<double, 2> pt{};
+    for (int k = 0; k < 2; ++k) {
+      const auto r = std::from_chars(p, end, pt[k]);
+      if (r.ec != std::errc() || !std::isfinite(pt[k])) throw usage_error(usage);
+      p = r.ptr;
+      if (k == 0) {
+        if (p == end || *p != ',') throw usage_error(usage);
+        ++p;
+      }
+    }
+    path.push_back(pt);
+    if (p == end) break;
+    if (*p != ':') throw usage_error(usage);
+    ++p;
+  }
+  return path;
+}
+
+std::string frame_path(const std::string& output, std::size_t k) {
+  const std::size_t slash = output.find_last_of('/');
+  const std::size_t dot = output.find_last_of('.');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  char num[32];
+  std::snprintf(num, sizeof num, "_%04zu", k);
+  return has_ext ? output.substr(0, dot) + num + output.substr(dot) : output + num;
+}
+
+std::vector<std::array<double, 2>> resample_path(const std::vector<std::array<double, 2>>& path, std::size_t count) {
+  if (path.empty()) throw usage_error("resample_path: the path is empty");
+  if (count == 0) throw usage_error("resample_path: count must be >= 1");
+  std::vector<double> along(path.size(), 0.0);  // arc length at each point
+  for (std::size_t i = 1; i < path.size(); ++i)
+    along[i] = along[i - 1] + std::hypot(path[i][0] - path[i - 1][0], path[i][1] - path[i - 1][1]);
+  const double total = along.back();
+  std::vector<std::array<double, 2>> out;
+  out.reserve(count);
+  std::size_t seg = 1;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k + 1 == count && count > 1) {
+      out.push_back(path.back());
+      continue;
+    }
+    if (!(total > 0) || k == 0) {
+      out.push_back(path.front());
+      continue;
+    }
+    const double s = total * static_cast<double>(k) / static_cast<double>(count - 1);
+    while (seg + 1 < path.size() && along[seg] < s) ++seg;
+    const double len = along[seg] - along[seg - 1];
+    const double t = len > 0 ? (s - along[seg - 1]) / len : 0.0;
+    out.push_back({path[seg - 1][0] + t * (path[seg][0] - path[seg - 1][0]),
+                   path[seg - 1][1] + t * (path[seg][1] - path[seg - 1][1])});
+  }
+  return out;
+}
+
+std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(const scene::scene& s,
+                                                                  const std::vector<std::array<double, 2>>& path,
+                                                                  std::size_t frames) {
+  if (path.empty()) throw usage_error("orbit: the drag path is empty");
+  const std::vector<std::array<double, 2>> points = frames == 0 ? path : resample_path(path, frames);
+  const arcball ball(s.width, s.height, screen_y::down);
+  const std::vector<quaternion> turns = ball.drag_path(points);
+  const view::camera_basis b0 = view::look_at_basis(s.camera.eye, s.camera.look_at, s.camera.up);
+  const view::vector3& d = s.projection.direction;
+  const double du = view::dot(d, b0.u), dv = view::dot(d, b0.v), dw = view::dot(d, b0.w);
+  std::vector<std::pair<view::camera, view::vector3>> out;
+  out.reserve(turns.size());
+  for (const quaternion& q : turns) {
+    const orbit_view o = orbit_camera({view::to_vec3d(s.camera.eye), view::to_vec3d(s.camera.look_at),
+                                       to_array(s.camera.up)},
+                                      q);
+    view::camera c{view::to_point(o.eye), view::to_point(o.look_at), to_vector(o.up)};
+    const view::camera_basis b = view::look_at_basis(c.eye, c.look_at, c.up);
+    out.push_back({c, du * b.u + dv * b.v + dw * b.w});
+  }
+  return out;
+}
 
 void render_command(const render_request& request, std::ostream& log) {
   const std::string out = request.output_path.empty() ? std::string("exbsp.png") : request.output_path;
@@ -37,6 +147,8 @@ void render_command(const render_request& request, std::ostream& log) {
   } else {
     throw usage_error("render: the output file must end in .png or .svg: " + out);
   }
+  const bool orbit = !request.orbit_drag.empty();
+  if (!orbit && request.frames != 0) throw usage_error("render: --frames needs --orbit-drag");
 
   const auto t0 = std::chrono::steady_clock::now();
   const scene::scene s = request.scene_path.empty() ? scene::demo_scene() : scene::load_scene(request.scene_path, &log);
@@ -48,28 +160,63 @@ void render_command(const render_request& request, std::ostream& log) {
   f.background = s.background;
   f.face_colors = std::move(geometry.face_colors);
   f.soup = std::move(geometry.soup);
+  f.settings = s.effect_settings;
+  f.curves = s.curves;
 
-  view::pipeline p = view::standard_pipeline(s.effects, kind);
-  p.add("write", [&out, kind](view::frame& fr) {
-    if (kind == view::output_kind::png)
-      view::write_png(fr.picture, out);
-    else
-      view::write_file_atomically(out, fr.svg);
-    return out;
-  });
+  for (const std::string& name : view::effects_without_stage(s.effects, kind))
+    log << "exbsp: warning: " << s.path << ": /effects/" << name << ": applies to PNG output only; ignored for " << out
+        << "\n";
+  const bool curves = !s.curves.empty();
+  const view::pipeline per_view = view::per_view_pipeline(s.effects, kind, curves);
+  std::ostream* stage_log = request.verbose ? &log : nullptr;
 
   if (request.verbose) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.4f", load_seconds);
     log << "scene: " << s.path << ": " << s.meshes.size() << " meshes, " << f.soup.triangles.size() << " triangles, "
-        << view::to_string(s.projection.kind) << " " << s.width << "x" << s.height << "\n";
-    log << "stage load: " << buf << " s (meshes read, transformed, appended into one soup)\n";
-    if (!s.curves.empty()) log << "curves: " << s.curves.size() << " ignored (not drawn yet)\n";
-    std::string names;
-    for (const std::string& n : p.names()) names += (names.empty() ? "" : ", ") + n;
-    log << "stages: " << names << "\n";
+        << s.curves.size() << " curves, " << view::to_string(s.projection.kind) << " " << s.width << "x" << s.height
+        << "\n";
+    log << "stage load: " << seconds_text(load_seconds) << " s (meshes read, transformed, appended into one soup)\n";
+    std::string names = "build";
+    for (const std::string& n : per_view.names()) names += ", " + n;
+    log << "stages: " << names << ", write\n";
   }
-  p.run(f, request.verbose ? &log : nullptr);
+
+  if (!orbit) {
+    view::pipeline p = view::standard_pipeline(s.effects, kind, curves);
+    const view::stage w = write_stage(out, kind);
+    p.add(w.name, w.run);
+    p.run(f, stage_log);
+    return;
+  }
+
+  // Orbit: build once, then the per-view stages for every frame.
+  const auto cameras = orbit_cameras(s, request.orbit_drag, request.frames);
+  std::vector<view::view_setup> views;
+  views.reserve(cameras.size());
+  for (const auto& [cam, direction] : cameras) {
+    scene::scene turned = s;
+    turned.camera = cam;
+    turned.projection.direction = direction;
+    views.push_back(scene::make_view_setup(turned));
+  }
+  if (request.verbose)
+    log << "orbit: " << views.size() << " frames along a drag of " << request.orbit_drag.size()
+        << " points; one BSP build, one traversal per view\n";
+  view::pipeline build;
+  build.add("build", view::build_stage);
+  build.run(f, stage_log);
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    f.view = views[k];
+    if (request.verbose) {
+      const view::point3& e = f.view.cam.eye;
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "frame %zu: eye %.6g,%.6g,%.6g", k, e.x, e.y, e.z);
+      log << buf << "\n";
+    }
+    view::pipeline p = per_view;
+    const view::stage w = write_stage(frame_path(out, k), kind);
+    p.add(w.name, w.run);
+    p.run(f, stage_log);
+  }
 }
 
 }  // namespace exbsp

@@ -1,19 +1,64 @@
-// `exbsp render`: scene file (or the built-in demo) -> PNG or SVG.
+// `exbsp render`: scene file (or the built-in demo) -> PNG or SVG, or an orbit animation.
+//
+// Orbit (trackball): a drag path of screen pixels (x right, y DOWN, origin at the top-left
+// corner of the image, as mouse events) over Shoemake's arcball of the viewport (ball centred
+// in the viewport, radius min(width, height) / 2; view/trackball.h). The path is resampled to
+// `frames` points evenly spaced along its length (its own points when frames is 0); frame k
+// shows the camera orbit_camera(scene camera, drag_path(points)[k]): the eye turns about
+// look_at so that the scene turns as the drag says, and frame 0 is the scene's own camera.
+// For oblique projections the direction of projection turns with the camera. The BSP is
+// built once; each frame only runs the per-view stages (a traversal, never a rebuild).
 #pragma once
+#include <array>
+#include <cstddef>
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include "scene/scene.h"
 
 namespace exbsp {
 
+/// What to render. Constructible as {scene, output, verbose}; set the orbit members after.
 struct render_request {
+  render_request() = default;
+  render_request(std::string scene, std::string output, bool verbose_log = false)
+      : scene_path(std::move(scene)), output_path(std::move(output)), verbose(verbose_log) {}
+
   std::string scene_path;   ///< empty: the built-in demo scene
   std::string output_path;  ///< .png or .svg (by extension)
   bool verbose = false;     ///< print which pipeline stages ran, timings
+  /// Orbit drag path in screen pixels (y down); empty: one still image.
+  std::vector<std::array<double, 2>> orbit_drag;
+  /// Orbit frames (0: one per drag point). Frame k is written to frame_path(output_path, k).
+  std::size_t frames = 0;
 };
 
 /// Loads the scene, builds one BSP of all its meshes, renders and writes output_path
-/// atomically (no partial file on error). Log lines go to `log`.
-/// Throws scene_error / input_error (exit 2), limit_error (exit 3).
+/// atomically (no partial file on error). With an orbit, writes the frames OUT_0000.png ...
+/// from one build. Log lines go to `log`.
+/// Throws scene_error / input_error (exit 2), limit_error (exit 3), usage_error for a bad
+/// output name or orbit request (exit 2).
 void render_command(const render_request& request, std::ostream& log);
+
+/// Parses "X0,Y0:X1,Y1:..." (at least one point, finite numbers). Throws usage_error naming
+/// `option` otherwise.
+std::vector<std::array<double, 2>> parse_drag_path(const std::string& text, const std::string& option = "--orbit-drag");
+
+/// OUT.png -> OUT_0000.png (k with at least 4 digits, before the extension).
+std::string frame_path(const std::string& output, std::size_t k);
+
+/// `path` resampled to `count` points evenly spaced along its length, first and last kept
+/// (a path of zero length: `count` copies of its first point). Throws usage_error for an empty
+/// path or count 0.
+std::vector<std::array<double, 2>> resample_path(const std::vector<std::array<double, 2>>& path, std::size_t count);
+
+/// The cameras of an orbit over scene `s` (see the notation at the top): one per frame, with
+/// the oblique direction of projection turned along (second of each pair).
+/// Throws usage_error for an empty path.
+std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(const scene::scene& s,
+                                                                  const std::vector<std::array<double, 2>>& path,
+                                                                  std::size_t frames);
 
 }  // namespace exbsp

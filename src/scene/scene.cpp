@@ -212,6 +212,109 @@ void parse_viewport(const reader& r, const json& doc, scene& s) {
   s.height = static_cast<int>(h);
 }
 
+/// Fails naming KEY/PARAM for a member of `params` not in `known`.
+void reject_unknown_parameters(const reader& r, const json& params, const std::string& key, const std::string& name,
+                               std::initializer_list<const char*> known) {
+  std::string list;
+  for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+  for (auto it = params.begin(); it != params.end(); ++it) {
+    const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; });
+    if (!ok)
+      r.fail(key + "/" + it.key(),
+             "unknown parameter (" + name + " takes " + (list.empty() ? std::string("none") : list) + ")");
+  }
+}
+
+/// A finite number > 0 (or >= 0 when `zero_ok`).
+double positive(const reader& r, const json& v, const std::string& key, bool zero_ok = false) {
+  const double d = r.number(v, key);
+  if (zero_ok ? !(d >= 0) : !(d > 0))
+    r.fail(key, std::string("must be ") + (zero_ok ? ">= 0" : "> 0") + " (got " + number_text(d) + ")");
+  return d;
+}
+
+void parse_lighting(const reader& r, const json& p, const std::string& key, view::lighting_settings& l) {
+  reject_unknown_parameters(r, p, key, "lighting", {"direction", "intensity", "ambient", "two_sided"});
+  if (const json* v = r.optional(p, "direction")) {
+    l.direction = r.triple(*v, key + "/direction");
+    if (!(view::length(l.direction) > 0)) r.fail(key + "/direction", "must not be the zero vector");
+  }
+  if (const json* v = r.optional(p, "intensity")) l.intensity = positive(r, *v, key + "/intensity", true);
+  if (const json* v = r.optional(p, "ambient")) l.ambient = positive(r, *v, key + "/ambient", true);
+  if (const json* v = r.optional(p, "two_sided")) {
+    if (!v->is_boolean()) r.fail(key + "/two_sided", "must be true or false");
+    l.two_sided = v->get<bool>();
+  }
+}
+
+void parse_fog(const reader& r, const json& p, const std::string& key, const scene& s, view::fog_settings& f) {
+  reject_unknown_parameters(r, p, key, "fog", {"mode", "start", "end", "density", "color"});
+  f.mode = view::fog_mode::linear;
+  if (const json* v = r.optional(p, "mode")) {
+    const std::string m = v->is_string() ? v->get<std::string>() : std::string();
+    if (m == "exp")
+      f.mode = view::fog_mode::exponential;
+    else if (m != "linear")
+      r.fail(key + "/mode", "must be \"linear\" or \"exp\"");
+  }
+  const double near_dist = s.projection.near_dist, far_dist = s.projection.far_dist;
+  if (f.mode == view::fog_mode::linear) {
+    if (p.contains("density")) r.fail(key + "/density", "only for mode \"exp\" (linear fog takes start and end)");
+    f.start = near_dist;
+    f.end = far_dist;
+    if (const json* v = r.optional(p, "start")) f.start = positive(r, *v, key + "/start", true);
+    if (const json* v = r.optional(p, "end")) f.end = positive(r, *v, key + "/end");
+    if (!(f.end > f.start))
+      r.fail(key + "/end", "must be greater than start (start " + number_text(f.start) + ", end " + number_text(f.end) + ")");
+    if (f.end > far_dist)
+      r.warn(key + "/end", "fog ends beyond the far plane (" + number_text(far_dist) +
+                               "): geometry cut by the far plane will pop instead of fading");
+  } else {
+    if (p.contains("start")) r.fail(key + "/start", "only for mode \"linear\" (exp fog takes density)");
+    if (p.contains("end")) r.fail(key + "/end", "only for mode \"linear\" (exp fog takes density)");
+    f.density = std::log(255.0) / far_dist;
+    if (const json* v = r.optional(p, "density")) f.density = positive(r, *v, key + "/density");
+  }
+  f.color = s.background;
+  if (const json* v = r.optional(p, "color")) f.color = r.color(*v, key + "/color");
+}
+
+void parse_depth_of_field(const reader& r, const json& p, const std::string& key, const scene& s,
+                          view::depth_of_field_settings& d) {
+  reject_unknown_parameters(r, p, key, "depth_of_field", {"focal_length", "aperture", "f_number", "focus_distance", "samples"});
+  if (s.projection.kind != view::projection_kind::perspective && s.projection.kind != view::projection_kind::frustum)
+    r.fail(key, "needs a perspective or frustum projection (a parallel projection has no lens)");
+  d.focal_length = positive(r, r.require(p, key, "focal_length"), key + "/focal_length");
+  const json* aperture = r.optional(p, "aperture");
+  const json* f_number = r.optional(p, "f_number");
+  if (aperture && f_number) r.fail(key + "/f_number", "give aperture or f_number, not both");
+  if (!aperture && !f_number) r.fail(key + "/aperture", "missing key (the lens diameter; or give f_number)");
+  d.aperture = aperture ? positive(r, *aperture, key + "/aperture")
+                        : d.focal_length / positive(r, *f_number, key + "/f_number");
+  if (!(std::isfinite(d.aperture) && d.aperture > 0)) r.fail(key + "/f_number", "gives an impossible aperture");
+  d.focus_distance = positive(r, r.require(p, key, "focus_distance"), key + "/focus_distance");
+  if (!(d.focus_distance > d.focal_length))
+    r.fail(key + "/focus_distance", "must be greater than focal_length (a thin lens cannot focus closer than f)");
+  if (const json* v = r.optional(p, "samples")) {
+    const long long n = r.integer(*v, key + "/samples");
+    if (n < 2 || n > 1024) r.fail(key + "/samples", "must be in 2..1024 (got " + std::to_string(n) + ")");
+    d.samples = static_cast<int>(n);
+  }
+}
+
+void parse_antialias(const reader& r, const json& p, const std::string& key, const scene& s,
+                     view::antialias_settings& a) {
+  reject_unknown_parameters(r, p, key, "antialias", {"samples"});
+  if (const json* v = r.optional(p, "samples")) {
+    const long long n = r.integer(*v, key + "/samples");
+    if (n < 1 || n > 8) r.fail(key + "/samples", "must be in 1..8 (got " + std::to_string(n) + ")");
+    a.samples = static_cast<int>(n);
+  }
+  if (static_cast<long long>(std::max(s.width, s.height)) * a.samples > max_viewport_side)
+    r.fail(key + "/samples", "the supersampled image would exceed " + std::to_string(max_viewport_side) +
+                                 " pixels a side (viewport " + std::to_string(s.width) + "x" + std::to_string(s.height) + ")");
+}
+
 void parse_effects(const reader& r, const json& doc, scene& s) {
   const json* e = r.optional(doc, "effects");
   if (!e) return;
@@ -228,12 +331,23 @@ void parse_effects(const reader& r, const json& doc, scene& s) {
       enabled = v.get<bool>();
     } else if (v.is_object()) {
       enabled = true;
-      if (d->available && !v.empty()) r.fail(key + "/" + v.begin().key(), "unknown parameter (" + d->name + " takes none)");
     } else {
       r.fail(key, "must be true, false or an object of parameters");
     }
     if (!enabled) continue;
     if (!d->available) r.fail(key, "effect not supported yet");
+    const json params = v.is_object() ? v : json::object();
+    view::effect_settings& es = s.effect_settings;
+    if (d->name == "lighting")
+      parse_lighting(r, params, key, es.lighting);
+    else if (d->name == "fog")
+      parse_fog(r, params, key, s, es.fog);
+    else if (d->name == "depth_of_field")
+      parse_depth_of_field(r, params, key, s, es.depth_of_field);
+    else if (d->name == "antialias")
+      parse_antialias(r, params, key, s, es.antialias);
+    else
+      reject_unknown_parameters(r, params, key, d->name, {});
     s.effects.push_back(d->name);
   }
 }
@@ -242,8 +356,24 @@ void parse_curves(const reader& r, const json& doc, scene& s) {
   const json* c = r.optional(doc, "curves");
   if (!c) return;
   if (!c->is_array()) r.fail("/curves", std::string("must be an array (got ") + c->type_name() + ")");
-  s.curves = *c;
-  if (!c->empty()) r.warn("/curves", std::to_string(c->size()) + " curve(s) ignored: Bezier curves are not drawn yet");
+  for (std::size_t i = 0; i < c->size(); ++i) {
+    const std::string key = "/curves/" + std::to_string(i);
+    const json& entry = r.object((*c)[i], key);
+    r.warn_unknown(entry, key, {"bezier", "color"});
+    const json& b = r.require(entry, key, "bezier");
+    if (!b.is_array() || b.empty())
+      r.fail(key + "/bezier", "must be an array of at least 1 control point [x, y, z]");
+    if (b.size() > max_curve_control_points)
+      r.fail(key + "/bezier", "at most " + std::to_string(max_curve_control_points) + " control points (got " +
+                                  std::to_string(b.size()) + ")");
+    view::curve_spec curve;
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const view::vector3 p = r.triple(b[k], key + "/bezier/" + std::to_string(k));
+      curve.control_points.push_back({p.x, p.y, p.z});
+    }
+    if (const json* col = r.optional(entry, "color")) curve.color = r.color(*col, key + "/color");
+    s.curves.push_back(std::move(curve));
+  }
 }
 
 }  // namespace

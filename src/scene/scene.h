@@ -14,6 +14,26 @@
 //                 direction of projection (eye into the scene, positive component along the
 //                 gaze); the window lies in the view plane through look_at (view/projection.h)
 // near and far are distances in front of the eye with 0 < near < far for every type.
+//
+// Curves: "curves": [{"bezier": [[x,y,z], ...], "color": [r,g,b]}]: at least one and at most
+// max_curve_control_points finite control points (world space, no transform), colour default
+// black. Drawn as described in view/curves.h.
+//
+// Effects: "effects": {NAME: true | false | {PARAM: value, ...}}; NAME from
+// view::effect_catalog(); `true` or {} takes every default; an unknown NAME or PARAM, or a bad
+// value, is a scene_error naming /effects/NAME or /effects/NAME/PARAM. Parameters and defaults:
+//   backface_culling  (none)
+//   lighting          direction [0,0,1] (towards the light, not zero), intensity 0.8 (>= 0),
+//                     ambient 0.2 (>= 0), two_sided true
+//   fog               mode "linear" (start = near, end = far; 0 <= start < end) or "exp"
+//                     (density > 0, default ln(255)/far: 1/255 visibility at the far plane);
+//                     color = the background; a linear end beyond far is warned about
+//   depth_of_field    focal_length (> 0, required), aperture (lens diameter > 0) or f_number
+//                     (> 0; aperture = focal_length / f_number), exactly one of them,
+//                     focus_distance (> focal_length, required), samples 32 (2..1024);
+//                     perspective and frustum projections only
+//   antialias         samples 4 (1..8: N x N sub-pixels; N times the
+//                     viewport must stay within max_viewport_side)
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -32,6 +52,9 @@ namespace exbsp::scene {
 
 /// Largest accepted viewport side in pixels.
 constexpr int max_viewport_side = 16384;
+/// Largest accepted number of control points of one curve.
+/// (Flattening splits a curve with de Casteljau, O(degree^2) per split, up to 2^16 pieces.)
+constexpr std::size_t max_curve_control_points = 128;
 
 /// One entry of "meshes".
 struct mesh_spec {
@@ -61,15 +84,15 @@ struct scene {
   int width = 0, height = 0;
   view::rgb8 background{255, 255, 255};
   std::vector<std::string> effects;  ///< enabled effects (names from view::effect_catalog())
-  /// Hook for Bézier curves: the raw "curves" array, kept but not drawn yet (an empty array
-  /// when absent). A curve stage will read it from here.
-  nlohmann::json curves = nlohmann::json::array();
+  view::effect_settings effect_settings;  ///< parameters of the enabled effects, defaults filled in
+  std::vector<view::curve_spec> curves;   ///< "curves" (empty when absent)
 };
 
 /// Validates a parsed JSON document. `path` names the file in messages and anchors relative
-/// mesh paths. Unknown keys and ignored curves produce warnings on `warnings` (may be null).
-/// Throws scene_error naming the key for every missing, wrongly typed or impossible value
-/// (including up parallel to the view direction, unknown and not-yet-supported effects).
+/// mesh paths. Unknown keys (outside effect parameters) produce warnings on `warnings` (may be
+/// null). Throws scene_error naming the key for every missing, wrongly typed or impossible
+/// value (including up parallel to the view direction, unknown and not-yet-supported effects,
+/// unknown or bad effect parameters and bad curves).
 scene parse_scene(const nlohmann::json& doc, const std::string& path, std::ostream* warnings = nullptr);
 
 /// parse_scene on JSON text; a syntax error is a scene_error with an empty key.

@@ -1,14 +1,17 @@
 // The viewing pipeline as an explicit list of named stages over one `frame`.
 //
 // Data flow (DESIGN.md section 1): world-space soup -> BSP build -> fragments converted once to
-// double -> back-to-front order for the view -> [world-space effects, e.g. backface_culling]
-// -> modelview, projection, homogeneous clip, divide, viewport -> [screen effects] ->
-// rasterizer (painter's algorithm) or SVG -> [image effects] -> write.
+// double -> back-to-front order for the view -> [world-space effects: backface_culling,
+// lighting] -> modelview, projection, homogeneous clip, divide, viewport -> [curves] ->
+// [screen effects: fog] -> rasterizer (painter's algorithm; antialias replaces it) or SVG ->
+// [image effects: depth_of_field] -> write.
 // Only the stages a scene asks for are in the list, so an effect that is not named costs
-// nothing. Effects plug in at three hooks (effects.h); the render command adds the write stage.
+// nothing, and the curves stage exists only when the scene has curves. Effects plug in at
+// four hooks (effects.h); the render command adds the write stage.
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -17,8 +20,10 @@
 #include "bsp/engine.h"
 #include "mesh/soup.h"
 #include "view/camera.h"
+#include "view/effect_settings.h"
 #include "view/image.h"
 #include "view/matrix.h"
+#include "view/screen_line.h"
 #include "view/screen_polygon.h"
 #include "view/viewport.h"
 
@@ -43,6 +48,8 @@ struct view_setup {
   bool is_parallel() const { return kind == projection_kind::orthographic || kind == projection_kind::oblique; }
 };
 
+struct bsp_cell_tree;  // curves.h: the BSP's shape, rebuilt once for placing curve pieces
+
 /// The data flowing through the stages. Inputs are set by the caller; each stage fills the
 /// products it is responsible for.
 struct frame {
@@ -52,6 +59,8 @@ struct frame {
   std::vector<rgb8> face_colors;    ///< colour by face id of `soup`
   view_setup view;
   rgb8 background{255, 255, 255};
+  effect_settings settings;         ///< parameters of the named effects (the others are ignored)
+  std::vector<curve_spec> curves;   ///< world-space Bézier curves ("curves" stage)
 
   // Products.
   std::optional<bsp> tree;                 ///< "build"
@@ -60,6 +69,10 @@ struct frame {
   std::vector<screen_polygon> polygons;    ///< "transform+clip": visible polygons, back to front
   image picture;                           ///< "raster"
   std::string svg;                         ///< "svg"
+  std::vector<rgb8> fragment_colors;       ///< "lighting": colour by fragment index (empty: face colours)
+  std::vector<screen_line> lines;          ///< "curves": clipped curve pieces in painter's slots
+  std::optional<fog_shading> fog;          ///< "fog": applied per pixel by raster/antialias, per path by svg
+  std::shared_ptr<const bsp_cell_tree> cells;  ///< "curves": the shape of `tree`, built once per tree
 
   // Counters for --verbose.
   std::size_t culled = 0;         ///< fragments removed by backface_culling

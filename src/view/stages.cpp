@@ -3,7 +3,7 @@
 
 #include "mesh/errors.h"
 #include "view/clip_stage.h"
-#include "view/rasterizer.h"
+#include "view/paint.h"
 #include "view/svg_writer.h"
 
 namespace exbsp::view {
@@ -11,9 +11,11 @@ namespace exbsp::view {
 std::string build_stage(frame& f) {
   if (f.soup.triangles.empty()) {  // nothing to draw: no tree, no fragments
     f.tree.reset();
+    f.cells.reset();
     f.fragments.clear();
     return "empty scene";
   }
+  f.cells.reset();  // the curves stage's copy of the old tree's shape
   f.tree.emplace(bsp::build(f.soup, f.build));
   f.fragments = f.tree->fragments_double();
   const build_stats& s = f.tree->stats();
@@ -23,6 +25,10 @@ std::string build_stage(frame& f) {
 }
 
 std::string order_stage(frame& f) {
+  // A new view: the products of the effect and curve stages of the previous view are stale.
+  f.fragment_colors.clear();
+  f.lines.clear();
+  f.fog.reset();
   if (!f.tree) {
     if (!f.fragments.empty()) throw usage_error("order_stage: the BSP has not been built");
     f.order.clear();
@@ -58,7 +64,7 @@ std::string transform_clip_stage(frame& f) {
     screen_polygon poly;
     poly.fragment = idx;
     poly.face = fr.face;
-    poly.color = f.color_of(fr.face);
+    poly.color = f.fragment_colors.empty() ? f.color_of(fr.face) : f.fragment_colors.at(idx);
     poly.v.reserve(out.size());
     for (const hpoint& c : out) poly.v.push_back(to_window(vp, c.x / c.w, c.y / c.w, c.z / c.w));
     f.polygons.push_back(std::move(poly));
@@ -68,20 +74,19 @@ std::string transform_clip_stage(frame& f) {
 
 std::string raster_stage(frame& f) {
   const viewport& vp = f.view.vp;
-  f.picture = image(vp.width, vp.height, f.background);
-  std::vector<vec2> poly;
-  for (const screen_polygon& p : f.polygons) {
-    poly.clear();
-    for (const window_point& w : p.v) poly.push_back({w.x - vp.x, w.y - vp.y});
-    fill_convex_polygon(f.picture, poly, p.color);
-  }
-  return std::to_string(vp.width) + "x" + std::to_string(vp.height) + ", " + std::to_string(f.polygons.size()) +
-         " polygons painted back to front";
+  f.picture = paint_frame(f, 1);
+  std::string note = std::to_string(vp.width) + "x" + std::to_string(vp.height) + ", " +
+                     std::to_string(f.polygons.size()) + " polygons painted back to front";
+  if (!f.lines.empty()) note += ", " + std::to_string(f.lines.size()) + " curve lines in their slots";
+  return note;
 }
 
 std::string svg_stage(frame& f) {
-  f.svg = svg_document(f.view.vp, f.background, f.polygons);
-  return std::to_string(f.polygons.size()) + " paths, " + std::to_string(f.svg.size()) + " bytes";
+  f.svg = f.lines.empty() && !f.fog ? svg_document(f.view.vp, f.background, f.polygons)
+                                     : svg_document(f.view.vp, f.background, f.polygons, f.lines,
+                                                    f.fog ? &*f.fog : nullptr);
+  return std::to_string(f.polygons.size()) + " paths, " + std::to_string(f.lines.size()) + " curve pieces, " +
+         std::to_string(f.svg.size()) + " bytes";
 }
 
 }  // namespace exbsp::view

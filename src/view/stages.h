@@ -16,19 +16,22 @@ std::string build_stage(frame& f);
 
 /// "order": f.order = back-to-front fragment indices: order_from_eye(camera eye) for
 /// perspective and frustum, order_for_direction(f.view.direction) for orthographic and oblique.
+/// Clears the per-view products of effect and curve stages (fragment_colors, lines, fog).
 /// Precondition: build_stage ran.
 std::string order_stage(frame& f);
 
 /// "transform+clip": for each fragment in f.order, c = P Mv p per vertex, homogeneous clip
 /// (clip_stage.h), divide, viewport; fills f.polygons in the same order and counts the
-/// fragments that are entirely outside in f.fully_clipped.
+/// fragments that are entirely outside in f.fully_clipped. Polygon colours: the face colour,
+/// or f.fragment_colors[fragment] when the lighting stage filled it.
 std::string transform_clip_stage(frame& f);
 
 /// "raster": painter's algorithm, no z-buffer: f.picture = background, then every polygon of
-/// f.polygons in order with the top-left-rule rasterizer.
+/// f.polygons in order with the top-left-rule rasterizer, with the curve lines of f.lines in
+/// their slots and per-pixel fog when the fog stage ran (paint.h).
 std::string raster_stage(frame& f);
 
-/// "svg": f.svg = the SVG document of f.polygons (svg_writer.h).
+/// "svg": f.svg = the SVG document of f.polygons and f.lines (svg_writer.h).
 std::string svg_stage(frame& f);
 
 }  // namespace exbsp::view

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "view/atomic_file.h"
+#include "view/fog.h"
 
 namespace exbsp::view {
 
@@ -27,32 +28,93 @@ std::string hex_color(rgb8 c) {
 }  // namespace
 
 std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons) {
+  return svg_document(vp, background, polygons, {}, nullptr);
+}
+
+std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons,
+                         const std::vector<screen_line>& lines, const fog_shading* fog) {
   std::string out;
-  out.reserve(256 + polygons.size() * 120);
+  out.reserve(256 + polygons.size() * 120 + lines.size() * 40);
   const std::string w = std::to_string(vp.width), h = std::to_string(vp.height);
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" + h +
          "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
-  out += "<rect x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" + hex_color(background) + "\"/>\n";
+  out += "<rect x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
+         hex_color(fog ? fog->settings.color : background) + "\"/>\n";
   if (svg_seam_stroke > 0) {
     out += "<g stroke-width=\"";
     append_number(out, svg_seam_stroke);
     out += "\" stroke-linejoin=\"round\">\n";
   }
   const double y_top = static_cast<double>(vp.y) + vp.height;
-  for (const screen_polygon& p : polygons) {
+  auto point = [&](double x, double y) {
+    append_number(out, x - vp.x);
+    out += ' ';
+    append_number(out, y_top - y);
+  };
+  std::size_t next_line = 0;
+  // Curve pieces of slot k: maximal runs of one curve joined end to end become one polyline.
+  auto write_lines = [&](std::size_t slot) {
+    while (next_line < lines.size() && lines[next_line].slot <= slot) {
+      const screen_line& first = lines[next_line];
+      rgb8 c = first.color;
+      if (fog) {
+        const double mx = 0.5 * (first.a.x + first.b.x), my = 0.5 * (first.a.y + first.b.y),
+                     mz = 0.5 * (first.a.z + first.b.z);
+        c = fog_color(*fog, c, eye_distance(*fog, mx, my, mz));
+      }
+      const std::string color = hex_color(c);
+      if (first.point) {
+        out += "<rect data-curve=\"" + std::to_string(first.curve) + "\" x=\"";
+        append_number(out, first.a.x - vp.x - 0.5);
+        out += "\" y=\"";
+        append_number(out, y_top - first.a.y - 0.5);
+        out += "\" width=\"1\" height=\"1\" stroke=\"none\" fill=\"" + color + "\"/>\n";
+        ++next_line;
+        continue;
+      }
+      out += "<path data-curve=\"" + std::to_string(first.curve) + "\" fill=\"none\" stroke=\"" + color +
+             "\" stroke-width=\"1\" stroke-linecap=\"butt\" d=\"M";
+      point(first.a.x, first.a.y);
+      out += " L";
+      point(first.b.x, first.b.y);
+      ++next_line;
+      while (!fog && next_line < lines.size()) {
+        const screen_line& l = lines[next_line];
+        const screen_line& prev = lines[next_line - 1];
+        if (l.point || l.slot != prev.slot || l.curve != prev.curve || l.a.x != prev.b.x || l.a.y != prev.b.y) break;
+        out += " L";
+        point(l.b.x, l.b.y);
+        ++next_line;
+      }
+      out += "\"/>\n";
+    }
+  };
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    write_lines(k);
+    const screen_polygon& p = polygons[k];
     if (p.v.size() < 3) continue;
-    const std::string color = hex_color(p.color);
+    rgb8 fill = p.color;
+    if (fog) {
+      double cx = 0, cy = 0, cz = 0;
+      for (const window_point& v : p.v) {
+        cx += v.x;
+        cy += v.y;
+        cz += v.z;
+      }
+      const double n = static_cast<double>(p.v.size());
+      fill = fog_color(*fog, fill, eye_distance(*fog, cx / n, cy / n, cz / n));
+    }
+    const std::string color = hex_color(fill);
     out += "<path data-face=\"" + std::to_string(p.face) + "\" data-fragment=\"" + std::to_string(p.fragment) +
            "\" fill=\"" + color + "\" stroke=\"" + color + "\" d=\"";
-    for (std::size_t k = 0; k < p.v.size(); ++k) {
-      out += k == 0 ? "M" : " L";
-      append_number(out, p.v[k].x - vp.x);
-      out += ' ';
-      append_number(out, y_top - p.v[k].y);
+    for (std::size_t k2 = 0; k2 < p.v.size(); ++k2) {
+      out += k2 == 0 ? "M" : " L";
+      point(p.v[k2].x, p.v[k2].y);
     }
     out += " Z\"/>\n";
   }
+  write_lines(polygons.size());
   if (svg_seam_stroke > 0) out += "</g>\n";
   out += "</svg>\n";
   return out;
