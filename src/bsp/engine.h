@@ -112,8 +112,9 @@ public:
   /// Throws usage_error for a zero or non-finite d.
   std::vector<std::uint32_t> order_for_direction(const vec3d& d, bool back_to_front = true) const;
 
-  /// Structure for checks: for fragment i, the fragment indices of the splitter plane of each
-  /// ancestor node and the side (+1 / -1) it lies on, root first. Empty for fragments at the root.
+  /// Structure for checks and point location: for fragment i, each ancestor node's plane
+  /// (plane_face = index of the input triangle in soup.triangles whose plane it is) and the
+  /// side (+1 / -1) of it that fragment i lies on, root first. Empty for fragments at the root.
   struct ancestor { std::uint32_t plane_face; int side; };
   std::vector<ancestor> ancestors(std::size_t i) const;
 

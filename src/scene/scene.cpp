@@ -391,6 +391,7 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   parse_viewport(r, doc, s);
   if (const json* b = r.optional(doc, "background")) s.background = r.color(*b, "/background");
   parse_effects(r, doc, s);
+  make_view_setup(s);  // reject cameras and projections whose matrices overflow, before any work
   return s;
 }
 
@@ -398,7 +399,7 @@ scene parse_scene_text(const std::string& text, const std::string& path, std::os
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // syntax errors, and numbers too large for a double
     throw scene_error(path, "", std::string("invalid JSON: ") + e.what());
   }
   return parse_scene(doc, path, warnings);
@@ -448,6 +449,15 @@ view::view_setup make_view_setup(const scene& s) {
   } catch (const usage_error& e) {
     throw scene_error(s.path, "/projection", e.what());
   }
+  const auto finite = [](const view::mat4& m) {
+    for (double x : m.m)
+      if (!std::isfinite(x)) return false;
+    return true;
+  };
+  if (!finite(v.model_view))
+    throw scene_error(s.path, "/camera/eye", "the viewing transformation overflows (coordinates too large)");
+  if (!finite(v.projection))
+    throw scene_error(s.path, "/projection", "the projection matrix overflows (near, far or window too extreme)");
   return v;
 }
 
