@@ -89,6 +89,9 @@ namespace detail {
 template <class K>
 typename K::Point_3 intersect_with_normal(const typename K::Point_3& a, const typename K::Vector_3& n,
                                           const typename K::Point_3& p, const typename K::Point_3& q) {
+  if constexpr (kernel_traits<K>::direct_intersection) {
+    return kernel_traits<K>::intersection(a, n, p, q);
+  }
   using FT = typename K::FT;
   const FT fp = n * (p - a);
   const FT fq = n * (q - a);

@@ -21,6 +21,9 @@ struct kernel_traits<epick_kernel> {
   static constexpr bool exact = false;
   static void collapse(const epick_kernel::Point_3&) {}
   static void collapse_vector(const epick_kernel::Vector_3&) {}
+  static constexpr bool direct_intersection = false;  ///< generic formula in the kernel's own FT
+  template <class... A>
+  static epick_kernel::Point_3 intersection(const A&...) { return {}; }
   static mpq_srcptr rational(const double&) { return nullptr; }
   static double to_double(double x) { return x; }
 };

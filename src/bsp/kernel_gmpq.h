@@ -19,6 +19,9 @@ struct kernel_traits<gmpq_kernel> {
   static constexpr bool exact = true;
   static void collapse(const gmpq_kernel::Point_3&) {}
   static void collapse_vector(const gmpq_kernel::Vector_3&) {}
+  static constexpr bool direct_intersection = false;  ///< generic formula in the kernel's own FT
+  template <class... A>
+  static gmpq_kernel::Point_3 intersection(const A&...) { return {}; }
   static mpq_srcptr rational(const gmpq_kernel::FT& x) { return x.mpq(); }
   static double to_double(const gmpq_kernel::FT& x) { return rational_to_double(x.mpq()); }
 };
