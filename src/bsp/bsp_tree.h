@@ -123,7 +123,12 @@ private:
   struct build_context;
   template <class PushChild>
   void grow_node(work&& w, subtree& part, build_context& ctx, PushChild&& push_child);
-  void append_subtree(subtree& part, std::uint32_t piece_base);
+  /// Appends a grown subtree (its refs already remapped to pool_) to nodes_.
+  void append_subtree(subtree& part);
+  /// The fragment a ref names: a pool_ index, or one of `part`'s own pieces.
+  const fragment& resolve(const subtree& part, std::uint32_t ref) const {
+    return (ref & local_ref) ? part.pieces[ref & ~local_ref] : pool_[ref];
+  }
   template <class SideOf>
   std::vector<std::uint32_t> traverse(SideOf side_of, bool back_to_front) const;
   std::size_t choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part, int heuristic,

@@ -259,7 +259,7 @@ bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
   for (std::uint32_t& ref : top.node_fragments) ref = remap(ref, top_base);
   for (work& w : queue)
     for (std::uint32_t& ref : w.list) ref = remap(ref, top_base);
-  append_subtree(top, top_base);
+  append_subtree(top);
 
   std::vector<work> frontier(std::make_move_iterator(queue.begin()), std::make_move_iterator(queue.end()));
   queue.clear();
@@ -292,7 +292,7 @@ bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
     for (fragment& f : part.pieces) pool_.push_back(std::move(f));
     part.pieces.clear();
     for (std::uint32_t& ref : part.node_fragments) ref = remap(ref, base);
-    append_subtree(part, base);
+    append_subtree(part);
   }
 
   fragments_.reserve(node_fragments_.size());
@@ -309,7 +309,7 @@ bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
 }
 
 template <class K>
-void bsp_tree<K>::append_subtree(subtree& part, std::uint32_t) {
+void bsp_tree<K>::append_subtree(subtree& part) {
   const auto node_base = static_cast<std::int32_t>(nodes_.size());
   const auto fragment_base = static_cast<std::uint32_t>(node_fragments_.size());
   node_fragments_.insert(node_fragments_.end(), part.node_fragments.begin(), part.node_fragments.end());
@@ -335,9 +335,7 @@ void bsp_tree<K>::append_subtree(subtree& part, std::uint32_t) {
 template <class K>
 template <class PushChild>
 void bsp_tree<K>::grow_node(work&& w, subtree& part, build_context& ctx, PushChild&& push_child) {
-  const auto fragment_at = [&](std::uint32_t ref) -> const fragment& {
-    return (ref & local_ref) ? part.pieces[ref & ~local_ref] : pool_[ref];
-  };
+  const auto fragment_at = [&](std::uint32_t ref) -> const fragment& { return resolve(part, ref); };
   const build_options& options = ctx.options;
   const std::size_t splitter = choose_splitter(w.list, part, ctx.heuristic, options.seed, w.key, options.threads);
   const std::uint32_t plane_source = fragment_at(w.list[splitter]).source;
@@ -454,9 +452,7 @@ std::size_t bsp_tree<K>::choose_splitter(const std::vector<std::uint32_t>& list,
 template <class K>
 std::size_t bsp_tree<K>::choose_min_split(const std::vector<std::uint32_t>& list, const subtree& part,
                                           unsigned threads) const {
-  const auto fragment_at = [&](std::uint32_t ref) -> const fragment& {
-    return (ref & local_ref) ? part.pieces[ref & ~local_ref] : pool_[ref];
-  };
+  const auto fragment_at = [&](std::uint32_t ref) -> const fragment& { return resolve(part, ref); };
   const std::size_t n = list.size();
   std::vector<std::atomic<unsigned char>> same_plane(n);
   for (auto& f : same_plane) f.store(0, std::memory_order_relaxed);
@@ -501,9 +497,7 @@ std::size_t bsp_tree<K>::choose_min_split(const std::vector<std::uint32_t>& list
 template <class K>
 std::size_t bsp_tree<K>::choose_sampled(const std::vector<std::uint32_t>& list, const subtree& part,
                                         std::uint64_t seed, std::uint64_t node_key) const {
-  const auto fragment_at = [&](std::uint32_t ref) -> const fragment& {
-    return (ref & local_ref) ? part.pieces[ref & ~local_ref] : pool_[ref];
-  };
+  const auto fragment_at = [&](std::uint32_t ref) -> const fragment& { return resolve(part, ref); };
   const std::size_t n = list.size();
   constexpr std::size_t max_candidates = 16, max_sample = 512;
   std::vector<std::size_t> candidates;
