@@ -332,6 +332,13 @@ std::string clip_svg(const clip_input& in, const json& result) {
       svg << "<path d=\"" << path(piece, true) << "\" fill=\"#e74c3c\" fill-opacity=\"0.45\"/>\n";
   for (const auto& s : result.at("segments"))
     if (!s.is_null()) svg << "<path d=\"" << path(s, false) << "\" fill=\"none\"/>\n";
+  svg << "</g>\n";
+  // The textbook Sutherland–Hodgman polygon where it differs from its pieces: its degenerate
+  // connecting edges show as dark dotted lines along the region's boundary.
+  const json& textbook = result.at("polygons");
+  svg << "<g id=\"textbook\" fill=\"none\" stroke=\"#222\" stroke-width=\"1\" stroke-dasharray=\"1 3\">\n";
+  for (std::size_t i = 0; i < textbook.size(); ++i)
+    if (result.at("pieces")[i].size() > 1) svg << "<path d=\"" << path(textbook[i], true) << "\"/>\n";
   svg << "</g>\n</svg>\n";
   return svg.str();
 }
@@ -350,7 +357,14 @@ void clip_command(const std::string& input_path, const std::string& output_path,
     throw usage_error("clip: the output file must end in .json or .svg: " + output_path);
   const clip_input in = load_clip_input(input_path);
   const json result = run_clip(in, algorithm, verbose ? &log : nullptr);
-  const std::string text = svg ? clip_svg(in, result) : result.dump(1) + "\n";
+  std::string text;
+  if (svg) {
+    text = clip_svg(in, result);
+  } else {  // one top-level key per line, each value compact
+    for (auto it = result.begin(); it != result.end(); ++it)
+      text += (text.empty() ? "{\n \"" : ",\n \"") + it.key() + "\": " + it.value().dump();
+    text += "\n}\n";
+  }
   if (output_path.empty())
     out << text;
   else

@@ -23,7 +23,8 @@
 // back to the same value.
 // SVG (2D only): the region (a rect, the convex polygon, or the half-planes' region within the
 // drawing's bounds) filled pale blue, the input dashed grey, the result in red (segments, and
-// the pieces filled); y points up as in the input.
+// the pieces filled), and for a polygon that fell apart the textbook polygon dotted dark grey
+// (its connecting edges run along the boundary); y points up as in the input.
 // Errors: a scene_error naming the input file and the JSON key (e.g. /segments/3/1), exit 2,
 // and nothing written.
 #pragma once
