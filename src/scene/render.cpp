@@ -184,8 +184,8 @@ void render_command(const render_request& request, std::ostream& log) {
 
   if (request.verbose) {
     log << "scene: " << s.path << ": " << s.meshes.size() << " meshes, " << f.soup.triangles.size() << " triangles, "
-        << s.curves.size() - s.line_count << " curves, " << s.line_count << " lines, " << view::to_string(s.projection.kind) << " " << s.width << "x" << s.height
-        << "\n";
+        << s.curves.size() - s.line_count << " curves, " << s.line_count << " lines, "
+        << view::to_string(s.projection.kind) << " " << s.width << "x" << s.height << "\n";
     log << "stage load: " << seconds_text(load_seconds) << " s (meshes read, transformed, appended into one soup)\n";
     std::string names = orbit ? "build" : "reject, build";
     for (const std::string& n : per_view.names()) names += ", " + n;

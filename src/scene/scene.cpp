@@ -308,7 +308,8 @@ view::view_setup make_view_setup(const scene& s) {
       v.direction = s.phigs->direction;
     } else switch (p.kind) {
       case view::projection_kind::perspective:
-        v.projection = view::perspective(p.fovy_deg, static_cast<double>(v.vp.width) / v.vp.height, p.near_dist, p.far_dist);
+        v.projection =
+            view::perspective(p.fovy_deg, static_cast<double>(v.vp.width) / v.vp.height, p.near_dist, p.far_dist);
         break;
       case view::projection_kind::frustum:
         v.projection = view::frustum(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist);
@@ -359,7 +360,8 @@ scene_geometry load_geometry(const scene& s) {
         const view::hpoint h = m.transform * view::to_point(part.vertices[k]);
         vec3d p = h.w == 1 ? vec3d{h.x, h.y, h.z} : vec3d{h.x / h.w, h.y / h.w, h.z / h.w};
         if (!(h.w != 0) || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-          throw scene_error(s.path, m.transform_key.empty() ? m.key + "/transform" : m.transform_key, "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
+          throw scene_error(s.path, m.transform_key.empty() ? m.key + "/transform" : m.transform_key,
+                            "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
         part.vertices[k] = p;
       }
     }

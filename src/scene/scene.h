@@ -13,7 +13,9 @@
 //   oblique       left, right, bottom, top, near, far, direction   direction = world-space
 //                 direction of projection (eye into the scene, positive component along the
 //                 gaze); the window lies in the view plane through look_at (view/projection.h)
-// near and far are distances in front of the eye with 0 < near < far for every type.
+//   ortho2d       left, right, bottom, top                         gluOrtho2D (near -1, far 1)
+// near and far are distances in front of the eye with 0 < near < far, except orthographic
+// (glOrtho: any two distinct numbers; negative = behind the eye).
 //
 // Modelling: "meshes" and nested "groups" ({"transforms", "meshes", "groups"}) are read in
 // document order (a group's meshes, then its groups, depth first; face ids follow that order)
