@@ -2,6 +2,7 @@
 #include "scene/clip_input.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
