@@ -48,6 +48,10 @@ struct view_setup {
   bool is_parallel() const { return kind == projection_kind::orthographic || kind == projection_kind::oblique; }
 };
 
+/// How the painter (paint.h) walks the polygons: the reference back-to-front walk, or
+/// front-to-back with a coverage mask. Both give the same image.
+enum class paint_order { back_to_front, front_to_back };
+
 struct bsp_cell_tree;  // curves.h: the BSP's shape, rebuilt once for placing curve pieces
 
 /// The data flowing through the stages. Inputs are set by the caller; each stage fills the
@@ -61,6 +65,7 @@ struct frame {
   rgb8 background{255, 255, 255};
   effect_settings settings;         ///< parameters of the named effects (the others are ignored)
   std::vector<curve_spec> curves;   ///< world-space Bézier curves ("curves" stage)
+  paint_order painter = paint_order::front_to_back;  ///< walk of "raster" and "antialias" (paint.h)
 
   // Products.
   std::optional<bsp> tree;                 ///< "build"

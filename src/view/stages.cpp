@@ -76,7 +76,8 @@ std::string raster_stage(frame& f) {
   const viewport& vp = f.view.vp;
   f.picture = paint_frame(f, 1);
   std::string note = std::to_string(vp.width) + "x" + std::to_string(vp.height) + ", " +
-                     std::to_string(f.polygons.size()) + " polygons painted back to front";
+                     std::to_string(f.polygons.size()) + " polygons painted " +
+                     (effective_paint_order(f) == paint_order::front_to_back ? "front to back" : "back to front");
   if (!f.lines.empty()) note += ", " + std::to_string(f.lines.size()) + " curve lines in their slots";
   return note;
 }

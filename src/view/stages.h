@@ -28,7 +28,9 @@ std::string transform_clip_stage(frame& f);
 
 /// "raster": painter's algorithm, no z-buffer: f.picture = background, then every polygon of
 /// f.polygons in order with the top-left-rule rasterizer, with the curve lines of f.lines in
-/// their slots and per-pixel fog when the fog stage ran (paint.h).
+/// their slots and per-pixel fog when the fog stage ran (paint.h). The image of that
+/// back-to-front walk; computed front to back with a coverage mask unless f.painter says
+/// otherwise or there are lines (effective_paint_order).
 std::string raster_stage(frame& f);
 
 /// "svg": f.svg = the SVG document of f.polygons and f.lines (svg_writer.h).
