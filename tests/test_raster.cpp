@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <string>
@@ -19,11 +20,14 @@
 #include <vector>
 
 #include "scene/demo_scene.h"
+#include "mesh/errors.h"
 #include "scene/scene.h"
+#include "view/clip_stage.h"
 #include "view/effects.h"
 #include "view/paint.h"
 #include "view/rasterizer.h"
 #include "view/stages.h"
+#include "view/transforms.h"
 
 namespace {
 
@@ -319,6 +323,87 @@ TEST(FrontToBack, EveryExampleSceneAndTheDemoGiveTheReferenceImage) {
     // And the walks of the last view's polygons at 1x and 2x, whatever the scene's effects.
     for (int scale : {1, 2}) expect_same_walks(f, scale, name);
   }
+}
+
+// ---------------------------------------------------------------------------------------
+// transform+clip: per-point transform and the clipper's trivial cases, same doubles
+
+/// The stage as it was written first: every corner transformed, every fragment clipped.
+std::vector<screen_polygon> reference_transform_clip(const frame& f, std::size_t& fully_clipped) {
+  const mat4 pm = f.view.projection * f.view.model_view;
+  std::vector<screen_polygon> polygons;
+  fully_clipped = 0;
+  std::vector<hpoint> in(3), out;
+  for (std::uint32_t idx : f.order) {
+    const exbsp::fragment_d& fr = f.fragments.at(idx);
+    for (int k = 0; k < 3; ++k) in[k] = pm * to_point(fr.v[k]);
+    clip_to_view_volume(in, out);
+    bool ok = !out.empty();
+    for (const hpoint& c : out) ok = ok && c.w > 0;
+    if (!ok) {
+      ++fully_clipped;
+      continue;
+    }
+    screen_polygon poly;
+    poly.fragment = idx;
+    poly.face = fr.face;
+    poly.color = f.fragment_colors.empty() ? f.color_of(fr.face) : f.fragment_colors.at(idx);
+    for (const hpoint& c : out) poly.v.push_back(to_window(f.view.vp, c.x / c.w, c.y / c.w, c.z / c.w));
+    polygons.push_back(poly);
+  }
+  return polygons;
+}
+
+void expect_bitwise_equal(const std::vector<screen_polygon>& a, const std::vector<screen_polygon>& b,
+                          const std::string& what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].fragment, b[i].fragment) << what;
+    ASSERT_EQ(a[i].color, b[i].color) << what;
+    ASSERT_EQ(a[i].v.size(), b[i].v.size()) << what << " polygon " << i;
+    ASSERT_EQ(std::memcmp(a[i].v.data(), b[i].v.data(), a[i].v.size() * sizeof(window_point)), 0)
+        << what << " polygon " << i;
+  }
+}
+
+TEST(TransformClip, SharedPointsAndTrivialCasesGiveTheClippersDoubles) {
+  // A scene whose near plane and sides cut through the mesh (inside.json), views from every
+  // side, with and without the point index; polygons reused from the previous view.
+  for (const char* name : {"inside", "perspective", "oblique", "orthographic"}) {
+    const exbsp::scene::scene s = exbsp::scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
+    exbsp::scene::scene_geometry g = exbsp::scene::load_geometry(s);
+    frame f;
+    f.view = exbsp::scene::make_view_setup(s);
+    f.face_colors = std::move(g.face_colors);
+    f.soup = std::move(g.soup);
+    build_stage(f);
+    ASSERT_EQ(f.fragment_points.size(), f.fragments.size());
+    EXPECT_LT(f.points.size(), 3 * f.fragments.size()) << name;
+    for (int view = 0; view < 6; ++view) {
+      f.view.model_view = f.view.model_view * rotate(60.0 * view, {0.3, 0.2, 1});
+      f.view.cam.eye = {f.view.cam.eye.y, -f.view.cam.eye.x, f.view.cam.eye.z};  // order only
+      order_stage(f);
+      std::size_t reference_clipped = 0;
+      const std::vector<screen_polygon> reference = reference_transform_clip(f, reference_clipped);
+      transform_clip_stage(f);
+      expect_bitwise_equal(f.polygons, reference, std::string(name) + " indexed, view " + std::to_string(view));
+      EXPECT_EQ(f.fully_clipped, reference_clipped) << name;
+      const auto index = std::move(f.fragment_points);
+      f.fragment_points.clear();
+      transform_clip_stage(f);
+      expect_bitwise_equal(f.polygons, reference, std::string(name) + " per corner, view " + std::to_string(view));
+      f.fragment_points = index;
+    }
+  }
+}
+
+TEST(TransformClip, NonFiniteClipCoordinatesStillThrow) {
+  frame f;
+  f.view.vp = {0, 0, 10, 10, 0, 1};
+  f.fragments = {{0, {exbsp::vec3d{0, 0, 0}, exbsp::vec3d{1, 0, 0}, exbsp::vec3d{0, 1, 0}}}};
+  f.order = {0};
+  f.view.projection(0, 0) = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(transform_clip_stage(f), exbsp::usage_error);
 }
 
 }  // namespace

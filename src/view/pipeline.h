@@ -9,6 +9,7 @@
 // nothing, and the curves stage exists only when the scene has curves. Effects plug in at
 // four hooks (effects.h); the render command adds the write stage.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -70,6 +71,8 @@ struct frame {
   // Products.
   std::optional<bsp> tree;                 ///< "build"
   std::vector<fragment_d> fragments;       ///< "build": fragments_double(), converted once
+  std::vector<vec3d> points;               ///< "build": the distinct vertices of `fragments` (bitwise)
+  std::vector<std::array<std::uint32_t, 3>> fragment_points;  ///< "build": corner k of fragment i is points[fragment_points[i][k]]
   std::vector<std::uint32_t> order;        ///< "order": fragment indices, back to front
   std::vector<screen_polygon> polygons;    ///< "transform+clip": visible polygons, back to front
   image picture;                           ///< "raster"

@@ -1,6 +1,10 @@
 // Standard pipeline stages (notation in stages.h).
 #include "view/stages.h"
 
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+
 #include "mesh/errors.h"
 #include "view/clip_stage.h"
 #include "view/paint.h"
@@ -8,16 +12,72 @@
 
 namespace exbsp::view {
 
+namespace {
+
+/// Bitwise key of a point (so that -0 and +0 stay distinct points: bit-identical transforms).
+struct point_bits {
+  std::uint64_t k[3];
+  bool operator==(const point_bits& o) const { return k[0] == o.k[0] && k[1] == o.k[1] && k[2] == o.k[2]; }
+};
+struct point_bits_hash {
+  std::size_t operator()(const point_bits& p) const {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (std::uint64_t x : p.k) h = (h ^ x) * 0x100000001b3ull + (h >> 29);
+    return static_cast<std::size_t>(h);
+  }
+};
+
+/// f.points and f.fragment_points from f.fragments: each distinct corner (bitwise) once.
+void index_points(frame& f) {
+  f.points.clear();
+  f.fragment_points.resize(f.fragments.size());
+  std::unordered_map<point_bits, std::uint32_t, point_bits_hash> index;
+  index.reserve(f.fragments.size());
+  for (std::size_t i = 0; i < f.fragments.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const vec3d& p = f.fragments[i].v[k];
+      point_bits key;
+      std::memcpy(key.k, p.data(), sizeof key.k);
+      const auto [at, fresh] = index.emplace(key, static_cast<std::uint32_t>(f.points.size()));
+      if (fresh) f.points.push_back(p);
+      f.fragment_points[i][k] = at->second;
+    }
+}
+
+/// A world point after P Mv, with what the fast path of transform+clip needs: its outcode
+/// (view_volume_outcode; all bits when a coordinate is not finite) and, when it is inside the
+/// view volume with w > 0, its window point.
+struct clipped_point {
+  hpoint c;
+  unsigned code = 0;
+  bool finite = false;
+  window_point win;
+};
+
+clipped_point transform_point(const mat4& pm, const viewport& vp, const vec3d& p) {
+  clipped_point r;
+  r.c = pm * to_point(p);
+  r.finite = std::isfinite(r.c.x) && std::isfinite(r.c.y) && std::isfinite(r.c.z) && std::isfinite(r.c.w);
+  r.code = r.finite ? view_volume_outcode(r.c) : ~0u;
+  if (r.code == 0 && r.c.w > 0) r.win = to_window(vp, r.c.x / r.c.w, r.c.y / r.c.w, r.c.z / r.c.w);
+  return r;
+}
+
+}  // namespace
+
 std::string build_stage(frame& f) {
   if (f.soup.triangles.empty()) {  // nothing to draw: no tree, no fragments
     f.tree.reset();
     f.cells.reset();
     f.fragments.clear();
+    f.points.clear();
+    f.fragment_points.clear();
     return "empty scene";
   }
   f.cells.reset();  // the curves stage's copy of the old tree's shape
   f.tree.emplace(bsp::build(f.soup, f.build));
   f.fragments = f.tree->fragments_double();
+  index_points(f);
   const build_stats& s = f.tree->stats();
   return std::to_string(s.input_triangles) + " triangles, " + std::to_string(s.fragments) + " fragments, " +
          std::to_string(s.splits) + " splits, " + std::to_string(s.nodes) + " nodes, depth " +
@@ -44,31 +104,57 @@ std::string order_stage(frame& f) {
 }
 
 std::string transform_clip_stage(frame& f) {
+  // Each distinct point is transformed once (f.points; per corner when the index does not
+  // match f.fragments). A fragment whose corners are all inside the view volume is what the
+  // clipper would return unchanged, one with an outcode bit common to its corners what it
+  // would return empty: only the others go through clip_to_view_volume. The window points are
+  // the same doubles as the clipper's path computes.
   const mat4 pm = f.view.projection * f.view.model_view;
   const viewport& vp = f.view.vp;
-  f.polygons.clear();
-  f.polygons.reserve(f.order.size());
+  const bool indexed = f.fragment_points.size() == f.fragments.size() && !f.fragments.empty();
+  std::vector<clipped_point> points;
+  if (indexed) {
+    points.reserve(f.points.size());
+    for (const vec3d& p : f.points) points.push_back(transform_point(pm, vp, p));
+  }
+  std::size_t count = 0;  // f.polygons[0..count) are this frame's; the rest are reused storage
   f.fully_clipped = 0;
   std::vector<hpoint> in(3), out;
   for (std::uint32_t idx : f.order) {
     const fragment_d& fr = f.fragments.at(idx);
-    for (int k = 0; k < 3; ++k) in[k] = pm * to_point(fr.v[k]);
-    clip_to_view_volume(in, out);
-    bool ok = !out.empty();
-    for (const hpoint& c : out)
-      if (!(c.w > 0)) ok = false;  // cannot happen after near-plane clipping; guards the divide
+    clipped_point corner[3];
+    for (int k = 0; k < 3; ++k)
+      corner[k] = indexed ? points[f.fragment_points[idx][k]] : transform_point(pm, vp, fr.v[k]);
+    const bool finite = corner[0].finite && corner[1].finite && corner[2].finite;
+    const bool inside = finite && (corner[0].code | corner[1].code | corner[2].code) == 0;
+    bool ok = !(finite && (corner[0].code & corner[1].code & corner[2].code) != 0);
+    if (!inside && ok) {
+      for (int k = 0; k < 3; ++k) in[k] = corner[k].c;
+      clip_to_view_volume(in, out);
+      ok = !out.empty();
+    }
+    if (inside)
+      for (const clipped_point& c : corner)
+        if (!(c.c.w > 0)) ok = false;  // cannot happen after near-plane clipping; guards the divide
+    if (!inside)
+      for (const hpoint& c : out)
+        if (!(c.w > 0)) ok = false;
     if (!ok) {
       ++f.fully_clipped;
       continue;
     }
-    screen_polygon poly;
+    if (count == f.polygons.size()) f.polygons.emplace_back();
+    screen_polygon& poly = f.polygons[count++];
     poly.fragment = idx;
     poly.face = fr.face;
     poly.color = f.fragment_colors.empty() ? f.color_of(fr.face) : f.fragment_colors.at(idx);
-    poly.v.reserve(out.size());
-    for (const hpoint& c : out) poly.v.push_back(to_window(vp, c.x / c.w, c.y / c.w, c.z / c.w));
-    f.polygons.push_back(std::move(poly));
+    poly.v.clear();
+    if (inside)
+      for (const clipped_point& c : corner) poly.v.push_back(c.win);
+    else
+      for (const hpoint& c : out) poly.v.push_back(to_window(vp, c.x / c.w, c.y / c.w, c.z / c.w));
   }
+  f.polygons.resize(count);
   return std::to_string(f.polygons.size()) + " polygons, " + std::to_string(f.fully_clipped) + " fully clipped";
 }
 
