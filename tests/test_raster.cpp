@@ -217,12 +217,16 @@ TEST(SpanRaster, PolygonSpansAreTheFanTrianglesSpans) {
 // The front-to-back painter with its coverage mask against the back-to-front reference
 
 /// Both walks of the painter on frame f at `scale`; expects the same bytes. Returns the image.
+/// The front-to-back walk runs with 1, 2, 3 and 7 bands of rows and the default.
 image expect_same_walks(frame& f, int scale, const std::string& what) {
   f.painter = paint_order::back_to_front;
   const image reference = paint_frame(f, scale);
   f.painter = paint_order::front_to_back;
-  const image fast = paint_frame(f, scale);
-  EXPECT_EQ(fast.data(), reference.data()) << what << " at scale " << scale;
+  for (unsigned threads : {1u, 2u, 3u, 7u, 0u}) {
+    f.raster_threads = threads;
+    const image fast = paint_frame(f, scale);
+    EXPECT_EQ(fast.data(), reference.data()) << what << " at scale " << scale << ", " << threads << " bands";
+  }
   return reference;
 }
 

@@ -67,6 +67,7 @@ struct frame {
   effect_settings settings;         ///< parameters of the named effects (the others are ignored)
   std::vector<curve_spec> curves;   ///< world-space Bézier curves ("curves" stage)
   paint_order painter = paint_order::front_to_back;  ///< walk of "raster" and "antialias" (paint.h)
+  unsigned raster_threads = 0;      ///< front-to-back bands painted in parallel (0: one per core)
 
   // Products.
   std::optional<bsp> tree;                 ///< "build"

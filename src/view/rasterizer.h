@@ -131,12 +131,12 @@ struct span_edge {
 };
 }  // namespace detail
 
-/// The pixels of for_each_covered_pixel_reference, one row at a time: calls span(j, lo, hi)
-/// for every row j (bottom-up) whose covered pixels are the non-empty run lo..hi. Same pixel
-/// set exactly (the exact predicate settles every span end); a few predicate calls per row
-/// instead of three per pixel.
-template <class Span>
-void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&& span) {
+/// The covered runs of triangle (a, b, c) (see the overload below), but first asks
+/// narrow(j, lo, hi) for each row of the triangle's box, with lo..hi the box's columns: it
+/// may shrink lo..hi to the columns the caller still needs, or return false to skip the row. span(j, lo, hi) then reports the covered run within the narrowed
+/// columns (the front-to-back painter narrows to the pixels not yet painted).
+template <class Span, class Narrow>
+void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&& span, Narrow&& narrow) {
   for (const vec2* p : {&a, &b, &c})
     if (!std::isfinite(p->x) || !std::isfinite(p->y)) return;
   int i0, i1, j0, j1;  // the box first: most fragments of a fine mesh miss every centre
@@ -145,12 +145,34 @@ void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&&
   const int o = orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
   if (o == 0) return;
   if (o < 0) std::swap(b, c);
+  // On row py, only the edges whose closed y-range holds py bound the run: the third edge's
+  // line meets the row outside the triangle, so every centre between the other two lies
+  // strictly inside it (E > 0 exactly) and testing it changes nothing. A row outside the
+  // triangle's y-range (the box's rows are rounded outwards) has no such edge: empty.
   const detail::span_edge e[3] = {{a, b}, {b, c}, {c, a}};
+  double e_lo[3], e_hi[3];
+  for (int k = 0; k < 3; ++k) e_lo[k] = std::min(e[k].s.y, e[k].t.y), e_hi[k] = std::max(e[k].s.y, e[k].t.y);
   for (int j = j0; j <= j1; ++j) {
     const double py = j + 0.5;
-    int lo = i0, hi = i1;
-    if (e[0].clip(py, lo, hi) && e[1].clip(py, lo, hi) && e[2].clip(py, lo, hi)) span(j, lo, hi);
+    int lo = i0, hi = i1, crossed = 0;
+    if (!narrow(j, lo, hi)) continue;
+    bool any = true;
+    for (int k = 0; k < 3 && any; ++k)
+      if (e_lo[k] <= py && py <= e_hi[k]) {
+        ++crossed;
+        any = e[k].clip(py, lo, hi);
+      }
+    if (any && crossed > 0) span(j, lo, hi);
   }
+}
+
+/// The pixels of for_each_covered_pixel_reference, one row at a time: calls span(j, lo, hi)
+/// for every row j (bottom-up) whose covered pixels are the non-empty run lo..hi. Same pixel
+/// set exactly (the exact predicate settles every span end); a few predicate calls per row
+/// instead of three per pixel.
+template <class Span>
+void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&& span) {
+  for_each_covered_span(a, b, c, width, height, span, [](int, int&, int&) { return true; });
 }
 
 /// Calls cover(i, j) once for every pixel (i, j) of a width x height window whose centre
@@ -176,6 +198,13 @@ void for_each_covered_pixel_polygon(const std::vector<vec2>& poly, int width, in
 template <class Span>
 void for_each_covered_span_polygon(const std::vector<vec2>& poly, int width, int height, Span&& span) {
   for (std::size_t k = 1; k + 1 < poly.size(); ++k) for_each_covered_span(poly[0], poly[k], poly[k + 1], width, height, span);
+}
+
+/// The same with a row filter `narrow` for each fan triangle (for_each_covered_span).
+template <class Span, class Narrow>
+void for_each_covered_span_polygon(const std::vector<vec2>& poly, int width, int height, Span&& span, Narrow&& narrow) {
+  for (std::size_t k = 1; k + 1 < poly.size(); ++k)
+    for_each_covered_span(poly[0], poly[k], poly[k + 1], width, height, span, narrow);
 }
 
 /// Paints triangle (a, b, c) in colour `color` (no depth test).

@@ -44,22 +44,28 @@ void index_points(frame& f) {
     }
 }
 
-/// A world point after P Mv, with what the fast path of transform+clip needs: its outcode
-/// (view_volume_outcode; all bits when a coordinate is not finite) and, when it is inside the
-/// view volume with w > 0, its window point.
+/// A world point after P Mv, as the fast path of transform+clip needs it (32 bytes: the
+/// per-fragment loop reads three of these at random): `code` is its outcode
+/// (view_volume_outcode), plus w_not_positive when it is inside but w <= 0, or just
+/// not_finite; `win` is its window point when code == 0.
 struct clipped_point {
-  hpoint c;
-  unsigned code = 0;
-  bool finite = false;
+  static constexpr unsigned w_not_positive = 64, not_finite = 128;
   window_point win;
+  unsigned code = 0;
 };
+
+hpoint to_clip(const mat4& pm, const vec3d& p) { return pm * to_point(p); }
 
 clipped_point transform_point(const mat4& pm, const viewport& vp, const vec3d& p) {
   clipped_point r;
-  r.c = pm * to_point(p);
-  r.finite = std::isfinite(r.c.x) && std::isfinite(r.c.y) && std::isfinite(r.c.z) && std::isfinite(r.c.w);
-  r.code = r.finite ? view_volume_outcode(r.c) : ~0u;
-  if (r.code == 0 && r.c.w > 0) r.win = to_window(vp, r.c.x / r.c.w, r.c.y / r.c.w, r.c.z / r.c.w);
+  const hpoint c = to_clip(pm, p);
+  if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
+    r.code = clipped_point::not_finite;
+    return r;
+  }
+  r.code = view_volume_outcode(c);
+  if (r.code == 0 && !(c.w > 0)) r.code = clipped_point::w_not_positive;
+  if (r.code == 0) r.win = to_window(vp, c.x / c.w, c.y / c.w, c.z / c.w);
   return r;
 }
 
@@ -118,6 +124,7 @@ std::string transform_clip_stage(frame& f) {
     for (const vec3d& p : f.points) points.push_back(transform_point(pm, vp, p));
   }
   std::size_t count = 0;  // f.polygons[0..count) are this frame's; the rest are reused storage
+  f.polygons.reserve(f.order.size());
   f.fully_clipped = 0;
   std::vector<hpoint> in(3), out;
   for (std::uint32_t idx : f.order) {
@@ -125,20 +132,19 @@ std::string transform_clip_stage(frame& f) {
     clipped_point corner[3];
     for (int k = 0; k < 3; ++k)
       corner[k] = indexed ? points[f.fragment_points[idx][k]] : transform_point(pm, vp, fr.v[k]);
-    const bool finite = corner[0].finite && corner[1].finite && corner[2].finite;
-    const bool inside = finite && (corner[0].code | corner[1].code | corner[2].code) == 0;
-    bool ok = !(finite && (corner[0].code & corner[1].code & corner[2].code) != 0);
-    if (!inside && ok) {
-      for (int k = 0; k < 3; ++k) in[k] = corner[k].c;
+    const unsigned any = corner[0].code | corner[1].code | corner[2].code;
+    const unsigned all = corner[0].code & corner[1].code & corner[2].code;
+    const bool inside = any == 0;  // the clipper returns it unchanged, every w > 0
+    bool ok = inside;
+    if (!inside && (any & clipped_point::not_finite) == 0 && (all & 63) != 0) {
+      ok = false;  // outside one plane: the clipper returns it empty
+    } else if (!inside) {  // crosses a plane, has w <= 0 or a non-finite coordinate (throws)
+      for (int k = 0; k < 3; ++k) in[k] = to_clip(pm, fr.v[k]);
       clip_to_view_volume(in, out);
       ok = !out.empty();
-    }
-    if (inside)
-      for (const clipped_point& c : corner)
-        if (!(c.c.w > 0)) ok = false;  // cannot happen after near-plane clipping; guards the divide
-    if (!inside)
       for (const hpoint& c : out)
-        if (!(c.w > 0)) ok = false;
+        if (!(c.w > 0)) ok = false;  // cannot happen after near-plane clipping; guards the divide
+    }
     if (!ok) {
       ++f.fully_clipped;
       continue;
@@ -149,10 +155,12 @@ std::string transform_clip_stage(frame& f) {
     poly.face = fr.face;
     poly.color = f.fragment_colors.empty() ? f.color_of(fr.face) : f.fragment_colors.at(idx);
     poly.v.clear();
-    if (inside)
-      for (const clipped_point& c : corner) poly.v.push_back(c.win);
-    else
+    if (inside) {
+      poly.v.assign({corner[0].win, corner[1].win, corner[2].win});
+    } else {
+      poly.v.reserve(out.size());
       for (const hpoint& c : out) poly.v.push_back(to_window(vp, c.x / c.w, c.y / c.w, c.z / c.w));
+    }
   }
   f.polygons.resize(count);
   return std::to_string(f.polygons.size()) + " polygons, " + std::to_string(f.fully_clipped) + " fully clipped";
