@@ -67,7 +67,9 @@ struct frame {
   effect_settings settings;         ///< parameters of the named effects (the others are ignored)
   std::vector<curve_spec> curves;   ///< world-space Bézier curves ("curves" stage)
   paint_order painter = paint_order::front_to_back;  ///< walk of "raster" and "antialias" (paint.h)
-  unsigned raster_threads = 0;      ///< front-to-back bands painted in parallel (0: one per core)
+  /// Front-to-back bands painted in parallel (0: one per core). Default 1: on the shared 2-core
+  /// machine of bench/RESULTS.md section 3, two bands were slower than one.
+  unsigned raster_threads = 1;
 
   // Products.
   std::optional<bsp> tree;                 ///< "build"
