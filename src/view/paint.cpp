@@ -14,6 +14,7 @@
 namespace exbsp::view {
 
 namespace {
+
 void put(std::uint8_t* p, rgb8 c) {
   p[0] = c.r;
   p[1] = c.g;

@@ -10,6 +10,9 @@
 // counter-clockwise, so exactly one of them owns its centres: never painted twice, never
 // missed. A pixel centre exactly on a vertex shared by a closed fan is owned by exactly one
 // triangle of the fan. Triangles of zero area cover nothing. Either input winding works.
+// for_each_covered_pixel_reference tests every centre of the box: the definition.
+// for_each_covered_span finds each row's covered run from a rounded edge crossing settled by
+// the exact predicate: the same pixels, a few predicate calls per row (tests/test_raster.cpp).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -133,8 +136,9 @@ struct span_edge {
 
 /// The covered runs of triangle (a, b, c) (see the overload below), but first asks
 /// narrow(j, lo, hi) for each row of the triangle's box, with lo..hi the box's columns: it
-/// may shrink lo..hi to the columns the caller still needs, or return false to skip the row. span(j, lo, hi) then reports the covered run within the narrowed
-/// columns (the front-to-back painter narrows to the pixels not yet painted).
+/// may shrink lo..hi to the columns the caller still needs, or return false to skip the row.
+/// span(j, lo, hi) then reports the covered run within the narrowed columns (the
+/// front-to-back painter narrows to the pixels not yet painted).
 template <class Span, class Narrow>
 void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&& span, Narrow&& narrow) {
   for (const vec2* p : {&a, &b, &c})
