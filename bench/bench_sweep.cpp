@@ -56,6 +56,7 @@ struct sweep_options {
   std::map<std::string, std::size_t> repeats_for;  ///< kernel or heuristic -> timed rounds (overrides)
   std::map<std::string, double> time_cap_for;      ///< kernel or heuristic -> time cap (overrides)
   bool defects = false;
+  std::vector<unsigned> sampled{16, 512, 8};  ///< sampled heuristic: candidates, samples, split weight
   std::size_t control_max_triangles = 20000;  ///< defect checks of exact kernels only up to here
   bool skip_counted = false;                  ///< no counted build (profiling): stats from the timed builds
   defect_options defect;
@@ -110,6 +111,9 @@ build_options make_options(const std::string& kernel, const std::string& heurist
   b.seed = o.build_seed;
   b.threads = o.threads;
   b.max_fragments = o.max_fragments;
+  b.sampled_candidates = o.sampled[0];
+  b.sampled_samples = o.sampled[1];
+  b.sampled_split_weight = o.sampled[2];
   const double cap = value_for(o.time_cap_for, kernel, heuristic, o.time_cap);
   b.progress = [cap](const build_progress& p) {
     if (cap > 0 && p.seconds > cap) throw timeout_error("time cap of " + std::to_string(cap) + " s exceeded");
@@ -282,7 +286,7 @@ void sweep_input(const input_spec& in, const sweep_options& o, std::ostream& out
       json line = {{"label", o.label},        {"input", in.name},          {"input_kind", in.kind},
                    {"input_size", in.size},   {"input_seed", in.seed},     {"triangles", n},
                    {"kernel", st.kernel},     {"heuristic", heuristic},    {"seed", o.build_seed},
-                   {"threads", o.threads},
+                   {"threads", o.threads},    {"sampled", o.sampled},
                    {"repeats", value_for(o.repeats_for, st.kernel, heuristic, o.repeats)},
                    {"time_cap", value_for(o.time_cap_for, st.kernel, heuristic, o.time_cap)},
                    {"status", st.status},     {"load_seconds", load_seconds},
@@ -358,6 +362,9 @@ int main(int argc, char** argv) {
   app.add_option("--eyes", o.defect.eyes, "eyes for order errors (at most 8; 0: no order check)");
   app.add_option("--seed", o.build_seed, "heuristic seed");
   app.add_option("--threads", o.threads, "build threads (0: all cores)");
+  app.add_option("--sampled", o.sampled, "sampled heuristic: CANDIDATES SAMPLES SPLIT_WEIGHT (default 16 512 8)")
+      ->expected(3)
+      ->delimiter(',');
   app.add_option("--max-fragments", o.max_fragments, "stop a build beyond N fragments (status limit; 0: none)");
   app.add_option("--label", o.label, "label copied into every line");
   app.add_option("--out", out_path, "append JSON lines here (default: stdout)");

@@ -138,6 +138,9 @@ private:
                              std::uint64_t seed, std::uint64_t node_key) const;
 
   G geom_;
+  struct {
+    unsigned candidates, samples, weight;
+  } sampled_{16, 512, 8};
   std::vector<fragment> pool_;  ///< build time only: every fragment made, by index
   std::vector<std::uint32_t> node_fragments_;  ///< build time only: pool indices, node by node
   std::vector<fragment> fragments_;

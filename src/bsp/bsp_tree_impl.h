@@ -103,6 +103,7 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   stats_.kernel = to_string(G::id);
   stats_.heuristic = options.heuristic;
   stats_.input_triangles = soup.triangles.size();
+  sampled_ = {options.sampled_candidates, options.sampled_samples, options.sampled_split_weight};
 
   for (std::size_t i = 0; i < soup.vertices.size(); ++i)
     for (double x : soup.vertices[i])
@@ -359,15 +360,18 @@ std::size_t basic_bsp_tree<G>::choose_min_split(const std::vector<std::uint32_t>
   return static_cast<std::size_t>(best.load() & 0xffffffffu);
 }
 
-// sampled: up to 16 candidates drawn with the seed, each scored on an evenly spaced sample
-// of at most 512 fragments by 8 * splits + |positive - negative| (the split/balance score of
-// classic BSP compilers); lowest score wins, ties to the earliest candidate.
+// sampled: up to C candidates drawn with the seed, each scored on an evenly spaced sample
+// of at most S fragments by W * splits + |positive - negative| (the split/balance score of
+// classic BSP compilers); lowest score wins, ties to the earliest candidate. C, S, W are
+// build_options::sampled_candidates, sampled_samples, sampled_split_weight (16, 512, 8).
 template <class G>
 std::size_t basic_bsp_tree<G>::choose_sampled(const std::vector<std::uint32_t>& list, const subtree& part,
                                         std::uint64_t seed, std::uint64_t node_key) const {
   const auto fragment_at = [&](std::uint32_t ref) -> const fragment& { return resolve(part, ref); };
   const std::size_t n = list.size();
-  constexpr std::size_t max_candidates = 16, max_sample = 512;
+  const std::size_t max_candidates = std::max(1u, sampled_.candidates);
+  const std::size_t max_sample = std::max(1u, sampled_.samples);
+  const long long weight = sampled_.weight;
   std::vector<std::size_t> candidates;
   if (n <= max_candidates) {
     for (std::size_t i = 0; i < n; ++i) candidates.push_back(i);
@@ -393,9 +397,9 @@ std::size_t basic_bsp_tree<G>::choose_sampled(const std::vector<std::uint32_t>& 
         case classification::negative: ++neg; break;
         case classification::coplanar: break;
       }
-      score = 8 * splits;
+      score = weight * splits;
     }
-    score = 8 * splits + std::llabs(pos - neg);
+    score = weight * splits + std::llabs(pos - neg);
     if (score < best_score) {
       best_score = score;
       best = i;

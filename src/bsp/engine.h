@@ -56,6 +56,12 @@ struct build_options {
   std::uint64_t seed = 0;          ///< for randomised heuristics; same seed, same tree
   std::size_t max_fragments = 0;   ///< 0: no limit; otherwise throw limit_error beyond it
   unsigned threads = 0;            ///< worker threads for candidate evaluation (0: all cores)
+  /// The sampled heuristic: up to `sampled_candidates` seeded candidates per node, each scored
+  /// on an evenly spaced sample of at most `sampled_samples` fragments by
+  /// sampled_split_weight * splits + |positive - negative|; lowest score wins.
+  unsigned sampled_candidates = 16;
+  unsigned sampled_samples = 512;
+  unsigned sampled_split_weight = 8;
   /// Called every few thousand fragments; may be empty.
   std::function<void(const build_progress&)> progress;
 };
