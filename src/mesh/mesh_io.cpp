@@ -36,7 +36,7 @@ std::string read_input_file(const std::string& path) {
                        : S_ISBLK(st.st_mode)  ? "a block device"
                        : S_ISSOCK(st.st_mode) ? "a socket"
                                               : "a special file";
-    throw input_error(path, 0, std::string("is ") + kind + ", not a regular file; input must be a regular file");
+    throw input_error(path, 0, std::string("cannot read ") + kind + " (input must be a regular file)");
   }
   std::string bytes;
   bytes.reserve(static_cast<std::size_t>(st.st_size));

@@ -140,7 +140,7 @@ std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(const scene::s
 void render_command(const render_request& request, std::ostream& log) {
   const std::string out = request.output_path.empty() ? std::string("exbsp.png") : request.output_path;
   view::output_kind kind;
-  if (ends_with_ci(out, ".png")) {
+  if (out == "-" || ends_with_ci(out, ".png")) {
     kind = view::output_kind::png;
   } else if (ends_with_ci(out, ".svg")) {
     kind = view::output_kind::svg;
@@ -149,9 +149,10 @@ void render_command(const render_request& request, std::ostream& log) {
   }
   const bool orbit = !request.orbit_drag.empty();
   if (!orbit && request.frames != 0) throw usage_error("render: --frames needs --orbit-drag");
+  if (orbit && out == "-") throw usage_error("render: an orbit writes several files; it cannot go to standard output");
 
   const auto t0 = std::chrono::steady_clock::now();
-  const scene::scene s = request.scene_path.empty() ? scene::demo_scene() : scene::load_scene(request.scene_path, &log);
+  const scene::scene s = request.scene_path.empty() ? scene::demo_scene() : scene::load_scene(request.scene_path, &log, request.strict);
   scene::scene_geometry geometry = scene::load_geometry(s);
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 

@@ -27,8 +27,9 @@ struct render_request {
       : scene_path(std::move(scene)), output_path(std::move(output)), verbose(verbose_log) {}
 
   std::string scene_path;   ///< empty: the built-in demo scene
-  std::string output_path;  ///< .png or .svg (by extension)
+  std::string output_path;  ///< .png or .svg (by extension); "-": PNG on standard output
   bool verbose = false;     ///< print which pipeline stages ran, timings
+  bool strict = false;      ///< unknown scene keys are errors (scene::load_scene), not warnings
   /// Orbit drag path in screen pixels (y down); empty: one still image.
   std::vector<std::array<double, 2>> orbit_drag;
   /// Orbit frames (0: one per drag point). Frame k is written to frame_path(output_path, k).

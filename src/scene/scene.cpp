@@ -5,11 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
+#include <limits>
 #include <sstream>
 
 #include "mesh/errors.h"
+#include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"
 #include "view/effects.h"
 #include "view/projection.h"
@@ -30,7 +31,8 @@ std::string number_text(double v) {
 /// JSON reading with JSON-pointer error messages.
 class reader {
 public:
-  reader(std::string file, std::ostream* warnings) : file_(std::move(file)), warnings_(warnings) {}
+  reader(std::string file, std::ostream* warnings, bool strict)
+      : file_(std::move(file)), warnings_(warnings), strict_(strict) {}
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const { throw scene_error(file_, key, what); }
 
@@ -57,10 +59,16 @@ public:
     return &*it;
   }
 
+  /// Warns about (strict: fails on) each member of `obj` whose name is not in `known`, and
+  /// says which names were expected there (a misspelt key is then easy to spot).
   void warn_unknown(const json& obj, const std::string& key, std::initializer_list<const char*> known) const {
     for (auto it = obj.begin(); it != obj.end(); ++it) {
       const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; });
-      if (!ok) warn(key + "/" + it.key(), "unknown key ignored");
+      if (ok) continue;
+      std::string expected;
+      for (const char* k : known) expected += (expected.empty() ? "" : ", ") + std::string(k);
+      if (strict_) fail(key + "/" + it.key(), "unknown key (expected one of: " + expected + ")");
+      warn(key + "/" + it.key(), "unknown key ignored (expected one of: " + expected + ")");
     }
   }
 
@@ -105,6 +113,7 @@ public:
 private:
   std::string file_;
   std::ostream* warnings_;
+  bool strict_;
 };
 
 view::point3 as_point(const view::vector3& v) { return {v.x, v.y, v.z}; }
@@ -378,8 +387,8 @@ void parse_curves(const reader& r, const json& doc, scene& s) {
 
 }  // namespace
 
-scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings) {
-  const reader r(path, warnings);
+scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings, bool strict) {
+  const reader r(path, warnings, strict);
   if (!doc.is_object()) r.fail("", std::string("the scene must be a JSON object (got ") + doc.type_name() + ")");
   r.warn_unknown(doc, "", {"meshes", "curves", "camera", "projection", "viewport", "background", "effects"});
   scene s;
@@ -395,23 +404,19 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   return s;
 }
 
-scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings) {
+scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings, bool strict) {
+  check_json_nesting(text, path);  // before nlohmann builds (and later copies) the document
   json doc;
   try {
     doc = json::parse(text);
   } catch (const json::exception& e) {  // syntax errors, and numbers too large for a double
     throw scene_error(path, "", std::string("invalid JSON: ") + e.what());
   }
-  return parse_scene(doc, path, warnings);
+  return parse_scene(doc, path, warnings, strict);
 }
 
-scene load_scene(const std::string& path, std::ostream* warnings) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw input_error(path, 0, "cannot open scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw input_error(path, 0, "read error");
-  return parse_scene_text(text.str(), path, warnings);
+scene load_scene(const std::string& path, std::ostream* warnings, bool strict) {
+  return parse_scene_text(read_input_file(path), path, warnings, strict);
 }
 
 view::view_setup make_view_setup(const scene& s) {
@@ -464,6 +469,8 @@ view::view_setup make_view_setup(const scene& s) {
 scene_geometry load_geometry(const scene& s) {
   scene_geometry g;
   g.face_offsets.push_back(0);
+  const view::view_setup view_matrices = make_view_setup(s);
+  const double max_clip = std::numeric_limits<double>::max() / 16;
   for (const mesh_spec& m : s.meshes) {
     triangle_soup part;
     if (m.soup) {
@@ -474,14 +481,27 @@ scene_geometry load_geometry(const scene& s) {
       part = read_mesh(m.path);
     }
     const bool identity = m.transform.m == view::mat4::identity().m;
-    if (!identity) {
-      for (std::size_t k = 0; k < part.vertices.size(); ++k) {
-        const view::hpoint h = m.transform * view::to_point(part.vertices[k]);
-        vec3d p = h.w == 1 ? vec3d{h.x, h.y, h.z} : vec3d{h.x / h.w, h.y / h.w, h.z / h.w};
+    // Where a vertex that is too large comes from: the transform, or the mesh file itself.
+    const std::string culprit = m.key + (identity ? "/file" : "/transform");
+    for (std::size_t k = 0; k < part.vertices.size(); ++k) {
+      vec3d p = part.vertices[k];
+      if (!identity) {
+        const view::hpoint h = m.transform * view::to_point(p);
+        p = h.w == 1 ? vec3d{h.x, h.y, h.z} : vec3d{h.x / h.w, h.y / h.w, h.z / h.w};
         if (!(h.w != 0) || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-          throw scene_error(s.path, m.key + "/transform", "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
+          throw scene_error(s.path, culprit, "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
         part.vertices[k] = p;
       }
+      // Finite in the world but too large once viewed (e.g. scaled by 1e308): say so here,
+      // naming the key, rather than as a NaN deep inside the clipper, which forms sums such
+      // as w + z and interpolates between vertices (hence the headroom of 16).
+      const view::hpoint clip = view_matrices.projection * (view_matrices.model_view * view::to_point(p));
+      if (!(std::fabs(clip.x) <= max_clip && std::fabs(clip.y) <= max_clip && std::fabs(clip.z) <= max_clip &&
+            std::fabs(clip.w) <= max_clip))
+        throw scene_error(s.path, culprit,
+                          "vertex " + std::to_string(k) + " of " + m.path +
+                              " is too large to view: its clip coordinates exceed " + number_text(max_clip) +
+                              " (the largest double / 16; scale the mesh down)");
     }
     g.soup.append(part);
     g.face_colors.resize(g.soup.face_count, m.color);
