@@ -116,6 +116,15 @@ void sanitize_omp_num_threads() {
   omp_set_num_threads(static_cast<int>(hw));
 }
 
+/// Starts OpenMP's thread pool now: libgomp cannot report an allocation failure (it prints
+/// "Out of memory allocating N bytes" and exits 1), so the pool and its team are made while
+/// memory is plentiful, and later parallel regions of the same size reuse them.
+void start_thread_pool() {
+#pragma omp parallel
+  {
+  }
+}
+
 struct build_cli {
   std::string mesh;
   std::string kernel = "epeck";
@@ -274,6 +283,7 @@ int main(int argc, char** argv) {
   // First, before any GMP number exists: out of memory in GMP throws, never aborts.
   exbsp::install_gmp_memory_functions();
   sanitize_omp_num_threads();
+  start_thread_pool();
   CLI::App app{
       "exbsp: exact-predicate BSP trees of triangle meshes, back-to-front orders and rendering.\n"
       "Classification and splitting are exact (CGAL Epeck by default), so trees and orders are\n"

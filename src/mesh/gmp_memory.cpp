@@ -7,6 +7,7 @@
 #include <gmp.h>
 
 #include <cstdlib>
+#include <mutex>
 #include <new>
 
 namespace exbsp {
@@ -31,6 +32,16 @@ void release(void* p, std::size_t /*size*/) { std::free(p); }
 
 void install_gmp_memory_functions() {
   mp_set_memory_functions(throwing_allocate, throwing_reallocate, release);
+  // An exception from GMP often unwinds through glibc's own C frames (pthread_once, which
+  // std::call_once and CGAL's lazy kernel use). Their personality routine dlopen()s
+  // libgcc_s on first use, and when memory has run out that dlopen fails and glibc aborts
+  // ("libgcc_s.so.1 must be installed for unwinding to work"; seen under a 200 MB cap).
+  // One exception thrown through std::call_once now, while memory is plentiful, loads it.
+  std::once_flag flag;
+  try {
+    std::call_once(flag, [] { throw std::bad_alloc(); });
+  } catch (const std::bad_alloc&) {
+  }
 }
 
 }  // namespace exbsp

@@ -10,6 +10,8 @@ namespace exbsp {
 /// when memory runs out (mp_set_memory_functions). Call once at startup, before any mpz/mpq
 /// value exists: memory GMP allocated with the previous functions must not be freed with
 /// these (they use malloc/realloc/free, as GMP's defaults do, so mixing is in fact harmless).
+/// It also loads glibc's unwinder for C frames (see gmp_memory.cpp), without which such an
+/// exception crossing pthread_once aborts when memory is exhausted.
 /// Caveat: GMP is C, so the exception unwinds through C frames; GMP's own objects being built
 /// at that moment leak, which is acceptable when the program is out of memory anyway.
 void install_gmp_memory_functions();
