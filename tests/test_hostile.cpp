@@ -45,6 +45,10 @@
 
 namespace {
 
+/// Whether this build runs under AddressSanitizer (scripts/test --sanitize also sets
+/// EXBSP_SANITIZED), where RLIMIT_AS cannot be used.
+bool under_asan() { return EXBSP_UNDER_ASAN || std::getenv("EXBSP_SANITIZED") != nullptr; }
+
 namespace fs = std::filesystem;
 using exbsp::input_error;
 using exbsp::output_error;
@@ -292,7 +296,7 @@ TEST_F(hostile, sigterm_during_a_write_removes_the_temporary_file_and_kills_the_
 // ---- 3. memory exhaustion: exit 3, never abort ---------------------------------------------
 
 TEST(gmp_memory, an_allocation_failure_throws_bad_alloc) {
-  if (EXBSP_UNDER_ASAN) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
+  if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
@@ -318,7 +322,7 @@ TEST(gmp_memory, an_allocation_failure_throws_bad_alloc) {
 class memory_cap : public hostile, public ::testing::WithParamInterface<const char*> {};
 
 TEST_P(memory_cap, order_under_an_address_space_cap_exits_3_without_output) {
-  if (EXBSP_UNDER_ASAN) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
+  if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
   if (std::system("command -v prlimit >/dev/null 2>&1") != 0) GTEST_SKIP() << "prlimit (util-linux) not installed";
   write_file(dir / "sticks.off", sticks_off(96));
   const std::string kernel = GetParam();
@@ -362,7 +366,7 @@ std::string random_soup_off(int n) {
 // exact update) and glibc aborted ("libgcc_s.so.1 must be installed for unwinding to work"),
 // or libgomp could not allocate its team and exited 1; both at caps of 150-200 MB.
 TEST_F(hostile, a_large_soup_under_an_address_space_cap_exits_3_never_aborts) {
-  if (EXBSP_UNDER_ASAN) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
+  if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
   if (std::system("command -v prlimit >/dev/null 2>&1") != 0) GTEST_SKIP() << "prlimit (util-linux) not installed";
   write_file(dir / "soup.off", random_soup_off(100000));
   for (int cap_mb : {150, 200}) {

@@ -39,8 +39,8 @@ struct render_request {
 /// Loads the scene, builds one BSP of all its meshes, renders and writes output_path
 /// atomically (no partial file on error). With an orbit, writes the frames OUT_0000.png ...
 /// from one build. Log lines go to `log`.
-/// Throws scene_error / input_error (exit 2), limit_error (exit 3), usage_error for a bad
-/// output name or orbit request (exit 2).
+/// Throws scene_error / input_error / output_error (exit 2), limit_error (exit 3), usage_error
+/// for a bad output name or orbit request (exit 2).
 void render_command(const render_request& request, std::ostream& log);
 
 /// Parses "X0,Y0:X1,Y1:..." (at least one point, finite numbers). Throws usage_error naming
