@@ -29,6 +29,7 @@
 
 #include "alloc_counter.h"
 #include "bsp/bsp_tree.h"
+#include "bsp/geometry_cgal.h"
 #include "bsp/kernel_double.h"
 #include "bsp/kernel_epeck.h"
 #include "bsp/kernel_epick.h"

@@ -127,7 +127,7 @@ void start_thread_pool() {
 
 struct build_cli {
   std::string mesh;
-  std::string kernel = "epeck";
+  std::string kernel = exbsp::to_string(exbsp::build_options{}.kernel);
   std::string heuristic = exbsp::default_heuristic();
   std::uint64_t seed = 0;
   std::size_t max_fragments = 0;
@@ -149,9 +149,10 @@ const CLI::Validator not_negative(
 void add_build_options(CLI::App* cmd, build_cli& o) {
   cmd->add_option("MESH", o.mesh, "mesh file: .off, .obj, .ply or .stl")->required();
   cmd->add_option("--kernel", o.kernel,
-                  "number type: epeck (lazy exact, default), gmpq (plain exact rationals), "
-                  "epick (exact predicates, rounded splits), double (plain double)")
-      ->check(CLI::IsMember({"epeck", "epick", "double", "gmpq"}))
+                  "number type: exact (exbsp's own exact points, default), epeck (CGAL lazy exact), "
+                  "gmpq (plain exact rationals), epick (exact predicates, rounded splits), "
+                  "double (plain double)")
+      ->check(CLI::IsMember({"exact", "epeck", "gmpq", "epick", "double"}))
       ->capture_default_str();
   cmd->add_option("--heuristic", o.heuristic,
                   "splitter choice: naive (first triangle), min-split (fewest straddlers), "
