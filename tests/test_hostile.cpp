@@ -340,7 +340,7 @@ TEST_P(memory_cap, order_under_an_address_space_cap_exits_3_without_output) {
   EXPECT_EQ(files(), std::vector<std::string>{"sticks.off"});
 }
 
-INSTANTIATE_TEST_SUITE_P(kernels, memory_cap, ::testing::Values("epeck", "gmpq"));
+INSTANTIATE_TEST_SUITE_P(kernels, memory_cap, ::testing::Values("exact", "epeck", "gmpq"));
 
 /// n random triangles in a cube of side n^(1/3), vertices within 0.6 of their centre (the
 /// benchmarks' random soup; a fixed linear congruential generator keeps it the same everywhere).
@@ -369,12 +369,13 @@ TEST_F(hostile, a_large_soup_under_an_address_space_cap_exits_3_never_aborts) {
   if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
   if (std::system("command -v prlimit >/dev/null 2>&1") != 0) GTEST_SKIP() << "prlimit (util-linux) not installed";
   write_file(dir / "soup.off", random_soup_off(100000));
-  for (int cap_mb : {150, 200}) {
-    const result r = run("build soup.off --heuristic naive --threads 2 --kernel epeck --max-fragments 0",
-                         "prlimit --as=" + std::to_string(cap_mb << 20));
-    EXPECT_EQ(r.status, 3) << cap_mb << " MB: " << r.err;
-    EXPECT_TRUE(contains(r.err, "out of memory")) << r.err;
-  }
+  for (const char* kernel : {"exact", "epeck"})
+    for (int cap_mb : {150, 200}) {
+      const result r = run(std::string("build soup.off --heuristic naive --threads 2 --max-fragments 0 --kernel ") + kernel,
+                           "prlimit --as=" + std::to_string(cap_mb << 20));
+      EXPECT_EQ(r.status, 3) << kernel << ", " << cap_mb << " MB: " << r.err;
+      EXPECT_TRUE(contains(r.err, "out of memory")) << r.err;
+    }
 }
 
 TEST_F(hostile, the_default_fragment_budget_is_shown_and_can_be_lifted) {
