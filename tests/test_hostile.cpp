@@ -172,6 +172,20 @@ TEST_F(hostile, render_of_a_deeply_nested_scene_exits_2_naming_the_file_and_writ
   EXPECT_FALSE(fs::exists(dir / "out.png"));
 }
 
+TEST_F(hostile, clip_input_nesting_and_special_files_exit_2_naming_the_file) {
+  std::string deep = "{\"region\": {\"rect\": [0, 0, 1, 1]},\n \"segments\": " + std::string(100000, '[') +
+                     std::string(100000, ']') + "}";
+  write_file(dir / "deep.json", deep);
+  const result r = run("clip deep.json -o out.json");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "deep.json:2: JSON nested too deeply")) << r.err;
+  ASSERT_EQ(::mkfifo((dir / "f.json").c_str(), 0600), 0);
+  const result f = run("clip f.json -o out.json", "timeout 60");
+  EXPECT_EQ(f.status, 2) << f.err;
+  EXPECT_TRUE(contains(f.err, "f.json: cannot read a FIFO")) << f.err;
+  EXPECT_FALSE(fs::exists(dir / "out.json"));
+}
+
 // ---- 2. one safe atomic writer -------------------------------------------------------------
 
 TEST_F(hostile, writer_refuses_an_empty_name_and_a_directory) {
@@ -577,7 +591,7 @@ TEST_F(hostile, strict_makes_unknown_scene_keys_errors_and_the_warning_lists_exp
   write_file(dir / "s.json", scene_with("{\"file\": \"t.off\", \"colour\": [255, 0, 0]}"));
   const result warned = run("render s.json -o out.png");
   EXPECT_EQ(warned.status, 0) << warned.err;
-  EXPECT_TRUE(contains(warned.err, "s.json: /meshes/0/colour: unknown key ignored (expected one of: file, color, transform)"))
+  EXPECT_TRUE(contains(warned.err, "s.json: /meshes/0/colour: unknown key ignored (expected one of: file, color, transform"))
       << warned.err;
   fs::remove(dir / "out.png");
   const result strict = run("render --strict s.json -o out.png");

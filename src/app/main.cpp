@@ -22,6 +22,7 @@
 #include "mesh/errors.h"
 #include "mesh/gmp_memory.h"
 #include "mesh/mesh_io.h"
+#include "scene/clip_input.h"
 #include "scene/render.h"
 
 namespace {
@@ -328,8 +329,27 @@ int main(int argc, char** argv) {
   render->add_option("--orbit-drag", orbit_drag,
                      "trackball orbit: screen pixel path X0,Y0:X1,Y1:... (y down) dragged over an "
                      "arcball; writes OUT_0000.png, OUT_0001.png, ... from one BSP build");
+  std::string trackball;
+  render->add_option("--trackball", trackball,
+                     "orbit rotation: arcball (Shoemake, twice the arc; default) or virtual (the classic "
+                     "virtual trackball: the point under the cursor follows it); overrides the scene's \"trackball\"")
+      ->check(CLI::IsMember({"arcball", "virtual"}));
   render->add_option("--frames", orbit_frames,
                      "number of orbit frames (the drag path resampled evenly; default: one per point)");
+
+  std::string clip_in, clip_out, clip_algorithm;
+  bool clip_verbose = false;
+  auto* clip = app.add_subcommand(
+      "clip", "clip the segments and polygons of INPUT.json against its region (rect, box, convex, halfspaces)");
+  clip->add_option("INPUT", clip_in, "clip input (JSON): {\"region\": ..., \"segments\": ..., \"polygons\": ...}")
+      ->required();
+  clip->add_option("--algorithm", clip_algorithm,
+                   "segment clipper: cohen-sutherland (default) or liang-barsky (rect or box regions); "
+                   "polygons are always clipped by sutherland-hodgman (any convex region)")
+      ->check(CLI::IsMember({"cohen-sutherland", "liang-barsky", "sutherland-hodgman"}));
+  clip->add_option("-o,--output", clip_out, "output .json or .svg (default: JSON on standard output)")
+      ->check(non_empty_path);
+  clip->add_flag("-v,--verbose", clip_verbose, "print each segment endpoint's Cohen-Sutherland outcode");
 
   try {
     app.parse(argc, argv);
@@ -349,11 +369,16 @@ int main(int argc, char** argv) {
         throw exbsp::usage_error("order needs --eye X,Y,Z or --direction X,Y,Z");
       return run_order(order_opts, eye, direction, order_out);
     }
+    if (*clip) {
+      exbsp::scene::clip_command(clip_in, clip_out, clip_algorithm, clip_verbose, std::cout, std::cerr);
+      return 0;
+    }
     if (*render) {
       exbsp::render_request request{scene_path, render_out, verbose};
       request.strict = strict;
       if (!orbit_drag.empty()) request.orbit_drag = exbsp::parse_drag_path(orbit_drag);
       request.frames = orbit_frames;
+      request.trackball = trackball;
       exbsp::render_command(request, std::cerr);
       return 0;
     }

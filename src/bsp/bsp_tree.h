@@ -98,7 +98,7 @@ private:
   std::array<int, 3> signs_against(std::uint32_t plane, const fragment& f) const {
     return {geom_.sign(plane, f, 0), geom_.sign(plane, f, 1), geom_.sign(plane, f, 2)};
   }
-  bool straddles(std::uint32_t plane, const fragment& f, bool& coplanar) const;
+  classification classify(std::uint32_t plane, const fragment& f) const;
   /// Back to front (DESIGN.md section 3) with side_of(plane source) = sign of the eye against
   /// a node's plane; iterative.
   template <class SideOf>

@@ -66,21 +66,14 @@ private:
 
 }  // namespace detail
 
-/// True when f straddles the plane; sets `coplanar` when all three signs are 0.
-/// Skips the third predicate when the first two already have opposite signs.
+/// Classification of f against the plane; skips the third predicate when the first two
+/// already have opposite signs.
 template <class G>
-bool basic_bsp_tree<G>::straddles(std::uint32_t plane, const fragment& f, bool& coplanar) const {
+classification basic_bsp_tree<G>::classify(std::uint32_t plane, const fragment& f) const {
   const int s0 = geom_.sign(plane, f, 0);
   const int s1 = geom_.sign(plane, f, 1);
-  coplanar = false;
-  if (s0 * s1 < 0) return true;
-  const int s2 = geom_.sign(plane, f, 2);
-  if (s0 == 0 && s1 == 0 && s2 == 0) {
-    coplanar = true;
-    return false;
-  }
-  const int lo = std::min({s0, s1, s2}), hi = std::max({s0, s1, s2});
-  return lo < 0 && hi > 0;
+  if (s0 * s1 < 0) return classification::straddling;
+  return classify_signs({s0, s1, geom_.sign(plane, f, 2)});
 }
 
 /// Shared state of one build: options, counters updated by all threads, the failure flag.
@@ -347,8 +340,10 @@ std::size_t basic_bsp_tree<G>::choose_min_split(const std::vector<std::uint32_t>
       for (std::size_t j = 0; j < n; ++j) {
         if (j == i) continue;
         const fragment& other = fragment_at(list[j]);
-        bool coplanar = other.source == candidate.source;
-        if (!coplanar && straddles(candidate.source, other, coplanar)) {
+        const classification cls =
+            other.source == candidate.source ? classification::coplanar : classify(candidate.source, other);
+        const bool coplanar = cls == classification::coplanar;
+        if (cls == classification::straddling) {
           if (key(++c, i) >= best.load(std::memory_order_relaxed)) return;  // cannot win
         } else if (coplanar && j > i) {
           same_plane[j].store(1, std::memory_order_relaxed);
@@ -392,7 +387,7 @@ std::size_t basic_bsp_tree<G>::choose_sampled(const std::vector<std::uint32_t>& 
       const std::size_t j = k * n / m;
       const fragment& other = fragment_at(list[j]);
       if (other.source == candidate.source) continue;  // coplanar by construction
-      switch (classify_signs(signs_against(candidate.source, other))) {
+      switch (classify(candidate.source, other)) {
         case classification::straddling: ++splits; break;
         case classification::positive: ++pos; break;
         case classification::negative: ++neg; break;

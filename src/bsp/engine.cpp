@@ -46,15 +46,6 @@ int heuristic_index(const std::string& name) {
 }
 }  // namespace detail
 
-classification classify_signs(const std::array<int, 3>& s) {
-  const bool any_pos = s[0] > 0 || s[1] > 0 || s[2] > 0;
-  const bool any_neg = s[0] < 0 || s[1] < 0 || s[2] < 0;
-  if (any_pos && any_neg) return classification::straddling;
-  if (any_pos) return classification::positive;
-  if (any_neg) return classification::negative;
-  return classification::coplanar;
-}
-
 bsp bsp::build(const triangle_soup& soup, const build_options& options) {
   detail::heuristic_index(options.heuristic);  // fail fast on a bad name
   switch (options.kernel) {

@@ -62,15 +62,17 @@ inline fast_plane make_fast_plane(const vec3d& a, const vec3d& b, const vec3d& c
 inline bool fast_eval(const fast_plane& p, const vec3d& point, double radius, double& v, double& bound) {
   constexpr double u = 1.1102230246251565e-16;
   if (!p.valid) return false;
+  // The plane's magnitudes were checked once (make_fast_plane). Here a difference q_k is exact
+  // when it is subnormal, a product that underflows errs by less than 2^-1074 (covered by the
+  // absolute 1e-290 term), and anything that overflows makes v or the bound infinite or NaN,
+  // which is refused below.
   const double q0 = point[0] - p.a[0], q1 = point[1] - p.a[1], q2 = point[2] - p.a[2];
-  if (!detail::safe_magnitude(q0) || !detail::safe_magnitude(q1) || !detail::safe_magnitude(q2) ||
-      !(radius <= 1e80))
-    return false;
   v = p.n[0] * q0 + p.n[1] * q1 + p.n[2] * q2;
   const double b = p.coef[0] * std::fabs(q0) + p.coef[1] * std::fabs(q1) + p.coef[2] * std::fabs(q2);
   // A point known only to within `radius` moves f by at most |n| . (radius, radius, radius).
   bound = (b + radius * p.spread) * (1 + 8 * u) + 1e-290;  // products stay normal
-  return true;
+  // Finite v means no sum or product overflowed; NaN fails both comparisons.
+  return std::fabs(v) < HUGE_VAL && bound < HUGE_VAL;
 }
 
 /// Sign of orientation(a, b, c, x) for a point x known to lie within `radius` (max norm) of

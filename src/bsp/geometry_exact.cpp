@@ -43,8 +43,8 @@ exact_geometry::exact_geometry(const triangle_soup& soup)
     : sources_(soup.triangles.size()),
       fast_(soup.triangles.size()),
       exact_planes_(soup.triangles.size()),
-      chunks_(std::size_t{1} << (32 - chunk_bits)) {
-  if (soup.vertices.size() >= (std::size_t{1} << 31))
+      chunks_(std::size_t{1} << (max_point_bits - chunk_bits)) {
+  if (soup.vertices.size() >= (std::size_t{1} << (max_point_bits - 1)))
     throw limit_error("bsp build: too many vertices for the exact kernel's point table");
   // Input vertices are points 0 .. V-1, exactly their doubles.
   scratch sc;
@@ -63,8 +63,8 @@ exact_geometry::~exact_geometry() {
 
 void exact_geometry::claim_block(scratch& sc) {
   const std::lock_guard<std::mutex> lock(claim_mutex_);
-  if (claimed_ > std::numeric_limits<std::uint32_t>::max() - 2 * block)
-    throw limit_error("bsp build: more than 2^32 points in the exact kernel's point table");
+  if (claimed_ > (std::uint32_t{1} << max_point_bits) - 2 * block)
+    throw limit_error("bsp build: more than 2^28 points in the exact kernel's point table");
   sc.next = claimed_;
   sc.end = claimed_ + block;
   claimed_ += block;

@@ -92,6 +92,7 @@ private:
     mutable std::atomic<const exact_value*> exact{nullptr};
   };
   static constexpr unsigned chunk_bits = 15;
+  static constexpr unsigned max_point_bits = 28;  ///< 2^28 points (15 GB of them) at most
   static constexpr std::uint32_t chunk_size = 1u << chunk_bits;
   static constexpr std::uint32_t block = 512;
 

@@ -18,7 +18,14 @@ namespace exbsp {
 enum class classification { coplanar, positive, negative, straddling };
 
 /// Classification from the three vertex signs (each -1, 0 or +1).
-classification classify_signs(const std::array<int, 3>& s);
+inline classification classify_signs(const std::array<int, 3>& s) {
+  const bool any_pos = s[0] > 0 || s[1] > 0 || s[2] > 0;
+  const bool any_neg = s[0] < 0 || s[1] < 0 || s[2] < 0;
+  if (any_pos && any_neg) return classification::straddling;
+  if (any_pos) return classification::positive;
+  if (any_neg) return classification::negative;
+  return classification::coplanar;
+}
 
 struct split_pattern {
   int new_points = 0;                  ///< 1 (a vertex on the plane) or 2
