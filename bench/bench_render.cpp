@@ -11,13 +11,24 @@
 // glClear + glDrawArrays + glFinish per frame, median over the frames, and the first frame
 // (upload and pipeline compilation) separately. "pixel_agreement" is the fraction of pixels
 // with the same colour in both images.
+//
+// The raster stage paints front to back with a coverage mask (the default, paint.h); two
+// more timings of the same stage, not part of the frame, compare: "raster all cores" (front
+// to back in one band of rows per core) and "raster back to front" (the reference walk).
+// Every frame checks that all three give the same bytes. Orbit: `orbit`
+// frames (default 36) with the eye turned about the look-at point by 360 / orbit degrees each
+// (the same BSP, order + transform+clip + raster per frame) give "orbit_fps", and OSMesa draws
+// the same cameras for its own frames per second.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -25,6 +36,7 @@
 #include "view/atomic_file.h"
 #include "view/camera.h"
 #include "view/projection.h"
+#include "view/paint.h"
 #include "view/stages.h"
 
 #if EXBSP_HAVE_OSMESA
@@ -58,9 +70,21 @@ view::rgb8 face_color(std::uint32_t face) {
           static_cast<std::uint8_t>(40 + (x >> 16) % 200)};
 }
 
+/// The camera of orbit frame k of n: the eye turned about the look-at point by 360 k / n
+/// degrees around the up axis.
+view::view_setup orbit_view(const view::view_setup& v, std::size_t k, std::size_t n) {
+  view::view_setup o = v;
+  const double a = 2 * 3.14159265358979323846 * static_cast<double>(k) / static_cast<double>(n);
+  const view::vector3 d = v.cam.eye - v.cam.look_at;
+  o.cam.eye = v.cam.look_at + view::vector3{d.x * std::cos(a) - d.y * std::sin(a), d.x * std::sin(a) + d.y * std::cos(a), d.z};
+  o.model_view = view::look_at(o.cam);
+  return o;
+}
+
 #if EXBSP_HAVE_OSMESA
 /// OSMesa z-buffer rendering of the input triangles; fills `out` and returns the image.
-std::vector<unsigned char> render_osmesa(const view::frame& f, std::size_t frames, json& out) {
+/// With orbit > 0, also draws the orbit's cameras and reports "orbit_fps".
+std::vector<unsigned char> render_osmesa(const view::frame& f, std::size_t frames, std::size_t orbit, json& out) {
   const int w = f.view.vp.width, h = f.view.vp.height;
   std::vector<unsigned char> buffer(static_cast<std::size_t>(w) * h * 4);
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
@@ -120,11 +144,22 @@ std::vector<unsigned char> render_osmesa(const view::frame& f, std::size_t frame
   }
   out["frame_seconds"] = times;
   out["frame_seconds_median"] = median(times);
+  out["frame_seconds_min"] = *std::min_element(times.begin(), times.end());
+  std::vector<unsigned char> image = buffer;
+  if (orbit > 0) {
+    const auto t_orbit = clock_type::now();
+    for (std::size_t k = 0; k < orbit; ++k) {
+      glMatrixMode(GL_MODELVIEW);
+      glLoadMatrixd(view::transpose(orbit_view(f.view, k, orbit).model_view).m.data());
+      draw();
+    }
+    out["orbit_fps"] = static_cast<double>(orbit) / seconds_since(t_orbit);
+  }
   out["triangles_drawn"] = f.soup.triangles.size();
   out["status"] = "ok";
   glDeleteBuffers(2, vbo);
   OSMesaDestroyContext(ctx);
-  return buffer;
+  return image;
 }
 #endif
 
@@ -133,13 +168,14 @@ std::vector<unsigned char> render_osmesa(const view::frame& f, std::size_t frame
 int main(int argc, char** argv) {
   CLI::App app{"bench_render: per-frame times of the exbsp pipeline and of an OSMesa z-buffer"};
   std::string mesh, kernel = "epeck", heuristic = "sampled", out_path, svg_path = "bench/out/render.svg";
-  std::size_t soup_n = 0, frames = 5;
+  std::size_t soup_n = 0, frames = 5, orbit = 36;
   int width = 1024, height = 768;
   app.add_option("--mesh", mesh, "mesh file");
   app.add_option("--soup", soup_n, "random soup of N triangles instead of a mesh");
   app.add_option("--kernel", kernel, "BSP kernel");
   app.add_option("--heuristic", heuristic, "BSP heuristic");
   app.add_option("--frames", frames, "timed frames (median reported)");
+  app.add_option("--orbit", orbit, "orbit frames for frames per second (0: none)");
   app.add_option("--width", width);
   app.add_option("--height", height);
   app.add_option("--svg", svg_path, "where the svg write stage writes");
@@ -182,6 +218,20 @@ int main(int argc, char** argv) {
       t0 = clock_type::now();
       view::raster_stage(f);
       stage_times["raster"].push_back(seconds_since(t0));
+      const view::image fast = f.picture;
+      const unsigned threads = f.raster_threads;
+      f.raster_threads = 0;
+      t0 = clock_type::now();
+      view::raster_stage(f);
+      stage_times["raster all cores"].push_back(seconds_since(t0));
+      f.raster_threads = threads;
+      if (f.picture.data() != fast.data()) throw std::runtime_error("raster: one band and all bands differ");
+      f.painter = view::paint_order::back_to_front;
+      t0 = clock_type::now();
+      view::raster_stage(f);
+      stage_times["raster back to front"].push_back(seconds_since(t0));
+      f.painter = view::paint_order::front_to_back;
+      if (f.picture.data() != fast.data()) throw std::runtime_error("raster: front to back and back to front differ");
       t0 = clock_type::now();
       view::svg_stage(f);
       stage_times["svg"].push_back(seconds_since(t0));
@@ -189,20 +239,39 @@ int main(int argc, char** argv) {
       view::write_file_atomically(svg_path, f.svg);
       stage_times["svg write"].push_back(seconds_since(t0));
     }
-    json stages = json::object();
+    json stages = json::object(), stages_min = json::object();
     double frame_total = 0;
     for (const auto& [name, times] : stage_times) {
       stages[name] = median(times);
-      if (name != "svg" && name != "svg write") frame_total += median(times);
+      stages_min[name] = *std::min_element(times.begin(), times.end());
+      if (name == "order" || name == "transform+clip" || name == "raster") frame_total += median(times);
     }
     line["stage_seconds_median"] = stages;
+    line["stage_seconds_min"] = stages_min;
     line["png_frame_seconds"] = frame_total;  // order + transform+clip + raster
     line["polygons"] = f.polygons.size();
     line["fully_clipped"] = f.fully_clipped;
+    const view::view_setup centre = f.view;
+    const view::image centre_picture = f.picture;
+    if (orbit > 0) {
+      t0 = clock_type::now();
+      for (std::size_t k = 0; k < orbit; ++k) {
+        f.view = orbit_view(centre, k, orbit);
+        view::order_stage(f);
+        view::transform_clip_stage(f);
+        view::raster_stage(f);
+      }
+      line["orbit_frames"] = orbit;
+      line["orbit_fps"] = static_cast<double>(orbit) / seconds_since(t0);
+      f.view = centre;
+      view::order_stage(f);
+      view::transform_clip_stage(f);
+      f.picture = centre_picture;
+    }
     line["svg_bytes"] = f.svg.size();
     json gl = json::object();
 #if EXBSP_HAVE_OSMESA
-    const std::vector<unsigned char> gl_image = render_osmesa(f, frames, gl);
+    const std::vector<unsigned char> gl_image = render_osmesa(f, frames, orbit, gl);
     if (!gl_image.empty()) {
       std::size_t same = 0;
       for (int j = 0; j < height; ++j)
@@ -221,7 +290,8 @@ int main(int argc, char** argv) {
     if (!out_path.empty()) file.open(out_path, std::ios::app);
     (out_path.empty() ? std::cout : file) << line.dump() << "\n";
     std::cerr << "bench_render: " << in.name << ": " << line["fragments"] << " fragments, frame "
-              << frame_total << " s, osmesa " << gl.value("frame_seconds_median", 0.0) << " s\n";
+              << frame_total << " s, osmesa " << gl.value("frame_seconds_median", 0.0) << " s; orbit "
+              << line.value("orbit_fps", 0.0) << " fps, osmesa " << gl.value("orbit_fps", 0.0) << " fps\n";
   } catch (const std::exception& e) {
     std::cerr << "bench_render: error: " << e.what() << "\n";
     return 2;

@@ -20,4 +20,6 @@ void clip_to_view_volume(const std::vector<hpoint>& in, std::vector<hpoint>& out
   for (const clip::vec4& p : clipped.positions) out.push_back({p[0], p[1], p[2], p[3]});
 }
 
+unsigned view_volume_outcode(const hpoint& p) { return clip::homogeneous_outcode({p.x, p.y, p.z, p.w}); }
+
 }  // namespace exbsp::view

@@ -19,4 +19,9 @@ namespace exbsp::view {
 /// Throws usage_error for a NaN or infinite coordinate.
 void clip_to_view_volume(const std::vector<hpoint>& in, std::vector<hpoint>& out);
 
+/// 6-bit outcode of a finite clip-space point against the view volume: 0 inside (boundary
+/// included). A polygon whose vertices all have outcode 0 is returned unchanged by
+/// clip_to_view_volume; one whose vertices share a set bit is returned empty.
+unsigned view_volume_outcode(const hpoint& p);
+
 }  // namespace exbsp::view

@@ -2,6 +2,15 @@
 // (line_raster.h) in their painter's slots (curves.h), optionally fogged per pixel (fog.h),
 // at 1x or N x N resolution (antialias.h). No depth buffer.
 //
+// Two walks give the same image. The reference (back_to_front) paints every polygon of
+// f.polygons in order, each overwriting what is behind it. The fast one (front_to_back) walks
+// the list in reverse (DESIGN.md section 3: front-to-back is the exact reverse) with a
+// coverage mask of one bit per pixel: a pixel takes the colour of the first polygon that
+// covers it, which is the last one the reference paints there, and a polygon whose screen box
+// is already entirely covered is skipped without rasterizing it. Visibility still comes from
+// the BSP order alone (no depth values). Lines are painted in slots between polygons; a frame
+// with lines is always painted back to front.
+//
 // Notation: scale s >= 1; the painted image is (s width) x (s height); a window point (x, y)
 // maps to (s (x - vp.x), s (y - vp.y)) in it, and its pixel (i, j) has its centre at window
 // point (vp.x + (i + 1/2) / s, vp.y + (j + 1/2) / s). Lines are s pixels wide, so they stay one
@@ -11,8 +20,13 @@
 
 namespace exbsp::view {
 
+/// The walk paint_frame uses for frame f: f.painter (front_to_back by default), except that a
+/// frame with lines is painted back_to_front.
+paint_order effective_paint_order(const frame& f);
+
 /// Paints the background (the fog colour when fog is on), then for every slot k the lines of
-/// slot k and polygon k of f.polygons. Throws usage_error unless 1 <= scale and the scaled
+/// slot k and polygon k of f.polygons: the image of the back-to-front walk, whichever walk
+/// (effective_paint_order) computes it. Throws usage_error unless 1 <= scale and the scaled
 /// image fits (image.h).
 image paint_frame(const frame& f, int scale);
 

@@ -9,6 +9,7 @@
 // nothing, and the curves stage exists only when the scene has curves. Effects plug in at
 // four hooks (effects.h); the render command adds the write stage.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -58,6 +59,10 @@ struct view_setup {
   bool is_parallel() const { return kind == projection_kind::orthographic || kind == projection_kind::oblique; }
 };
 
+/// How the painter (paint.h) walks the polygons: the reference back-to-front walk, or
+/// front-to-back with a coverage mask. Both give the same image.
+enum class paint_order { back_to_front, front_to_back };
+
 struct bsp_cell_tree;  // curves.h: the BSP's shape, rebuilt once for placing curve pieces
 
 /// The data flowing through the stages. Inputs are set by the caller; each stage fills the
@@ -72,10 +77,16 @@ struct frame {
   effect_settings settings;         ///< parameters of the named effects (the others are ignored)
   std::vector<curve_spec> curves;   ///< world-space Bézier curves and polylines ("curves" stage)
   std::vector<std::uint32_t> mesh_face_offsets;  ///< first face id of mesh k (size meshes + 1; "reject")
+  paint_order painter = paint_order::front_to_back;  ///< walk of "raster" and "antialias" (paint.h)
+  /// Front-to-back bands painted in parallel (0: one per core). Default 1: on the shared 2-core
+  /// machine of bench/RESULTS.md section 3, two bands were slower than one.
+  unsigned raster_threads = 1;
 
   // Products.
   std::optional<bsp> tree;                 ///< "build"
   std::vector<fragment_d> fragments;       ///< "build": fragments_double(), converted once
+  std::vector<vec3d> points;               ///< "build": the distinct vertices of `fragments` (bitwise)
+  std::vector<std::array<std::uint32_t, 3>> fragment_points;  ///< "build": corner k of fragment i is points[fragment_points[i][k]]
   std::vector<std::uint32_t> order;        ///< "order": fragment indices, back to front
   std::vector<screen_polygon> polygons;    ///< "transform+clip": visible polygons, back to front
   image picture;                           ///< "raster"

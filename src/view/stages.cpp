@@ -1,6 +1,10 @@
 // Standard pipeline stages (notation in stages.h).
 #include "view/stages.h"
 
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+
 #include "mesh/errors.h"
 #include "view/clip_stage.h"
 #include "view/paint.h"
@@ -8,16 +12,78 @@
 
 namespace exbsp::view {
 
+namespace {
+
+/// Bitwise key of a point (so that -0 and +0 stay distinct points: bit-identical transforms).
+struct point_bits {
+  std::uint64_t k[3];
+  bool operator==(const point_bits& o) const { return k[0] == o.k[0] && k[1] == o.k[1] && k[2] == o.k[2]; }
+};
+struct point_bits_hash {
+  std::size_t operator()(const point_bits& p) const {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (std::uint64_t x : p.k) h = (h ^ x) * 0x100000001b3ull + (h >> 29);
+    return static_cast<std::size_t>(h);
+  }
+};
+
+/// f.points and f.fragment_points from f.fragments: each distinct corner (bitwise) once.
+void index_points(frame& f) {
+  f.points.clear();
+  f.fragment_points.resize(f.fragments.size());
+  std::unordered_map<point_bits, std::uint32_t, point_bits_hash> index;
+  index.reserve(f.fragments.size());
+  for (std::size_t i = 0; i < f.fragments.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const vec3d& p = f.fragments[i].v[k];
+      point_bits key;
+      std::memcpy(key.k, p.data(), sizeof key.k);
+      const auto [at, fresh] = index.emplace(key, static_cast<std::uint32_t>(f.points.size()));
+      if (fresh) f.points.push_back(p);
+      f.fragment_points[i][k] = at->second;
+    }
+}
+
+/// A world point after P Mv, as the fast path of transform+clip needs it (32 bytes: the
+/// per-fragment loop reads three of these at random): `code` is its outcode
+/// (view_volume_outcode), plus w_not_positive when it is inside but w <= 0, or just
+/// not_finite; `win` is its window point when code == 0.
+struct clipped_point {
+  static constexpr unsigned w_not_positive = 64, not_finite = 128;
+  window_point win;
+  unsigned code = 0;
+};
+
+hpoint to_clip(const mat4& pm, const vec3d& p) { return pm * to_point(p); }
+
+clipped_point transform_point(const mat4& pm, const viewport& vp, const vec3d& p) {
+  clipped_point r;
+  const hpoint c = to_clip(pm, p);
+  if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) {
+    r.code = clipped_point::not_finite;
+    return r;
+  }
+  r.code = view_volume_outcode(c);
+  if (r.code == 0 && !(c.w > 0)) r.code = clipped_point::w_not_positive;
+  if (r.code == 0) r.win = to_window(vp, c.x / c.w, c.y / c.w, c.z / c.w);
+  return r;
+}
+
+}  // namespace
+
 std::string build_stage(frame& f) {
   if (f.soup.triangles.empty()) {  // nothing to draw: no tree, no fragments
     f.tree.reset();
     f.cells.reset();
     f.fragments.clear();
+    f.points.clear();
+    f.fragment_points.clear();
     return "empty scene";
   }
   f.cells.reset();  // the curves stage's copy of the old tree's shape
   f.tree.emplace(bsp::build(f.soup, f.build));
   f.fragments = f.tree->fragments_double();
+  index_points(f);
   const build_stats& s = f.tree->stats();
   return std::to_string(s.input_triangles) + " triangles, " + std::to_string(s.fragments) + " fragments, " +
          std::to_string(s.splits) + " splits, " + std::to_string(s.nodes) + " nodes, depth " +
@@ -44,31 +110,59 @@ std::string order_stage(frame& f) {
 }
 
 std::string transform_clip_stage(frame& f) {
+  // Each distinct point is transformed once (f.points; per corner when the index does not
+  // match f.fragments). A fragment whose corners are all inside the view volume is what the
+  // clipper would return unchanged, one with an outcode bit common to its corners what it
+  // would return empty: only the others go through clip_to_view_volume. The window points are
+  // the same doubles as the clipper's path computes.
   const mat4 pm = f.view.projection * f.view.model_view;
   const viewport& vp = f.view.vp;
-  f.polygons.clear();
+  const bool indexed = f.fragment_points.size() == f.fragments.size() && !f.fragments.empty();
+  std::vector<clipped_point> points;
+  if (indexed) {
+    points.reserve(f.points.size());
+    for (const vec3d& p : f.points) points.push_back(transform_point(pm, vp, p));
+  }
+  std::size_t count = 0;  // f.polygons[0..count) are this frame's; the rest are reused storage
   f.polygons.reserve(f.order.size());
   f.fully_clipped = 0;
   std::vector<hpoint> in(3), out;
   for (std::uint32_t idx : f.order) {
     const fragment_d& fr = f.fragments.at(idx);
-    for (int k = 0; k < 3; ++k) in[k] = pm * to_point(fr.v[k]);
-    clip_to_view_volume(in, out);
-    bool ok = !out.empty();
-    for (const hpoint& c : out)
-      if (!(c.w > 0)) ok = false;  // cannot happen after near-plane clipping; guards the divide
+    clipped_point corner[3];
+    for (int k = 0; k < 3; ++k)
+      corner[k] = indexed ? points[f.fragment_points[idx][k]] : transform_point(pm, vp, fr.v[k]);
+    const unsigned any = corner[0].code | corner[1].code | corner[2].code;
+    const unsigned all = corner[0].code & corner[1].code & corner[2].code;
+    const bool inside = any == 0;  // the clipper returns it unchanged, every w > 0
+    bool ok = inside;
+    if (!inside && (any & clipped_point::not_finite) == 0 && (all & 63) != 0) {
+      ok = false;  // outside one plane: the clipper returns it empty
+    } else if (!inside) {  // crosses a plane, has w <= 0 or a non-finite coordinate (throws)
+      for (int k = 0; k < 3; ++k) in[k] = to_clip(pm, fr.v[k]);
+      clip_to_view_volume(in, out);
+      ok = !out.empty();
+      for (const hpoint& c : out)
+        if (!(c.w > 0)) ok = false;  // cannot happen after near-plane clipping; guards the divide
+    }
     if (!ok) {
       ++f.fully_clipped;
       continue;
     }
-    screen_polygon poly;
+    if (count == f.polygons.size()) f.polygons.emplace_back();
+    screen_polygon& poly = f.polygons[count++];
     poly.fragment = idx;
     poly.face = fr.face;
     poly.color = f.fragment_colors.empty() ? f.color_of(fr.face) : f.fragment_colors.at(idx);
-    poly.v.reserve(out.size());
-    for (const hpoint& c : out) poly.v.push_back(to_window(vp, c.x / c.w, c.y / c.w, c.z / c.w));
-    f.polygons.push_back(std::move(poly));
+    poly.v.clear();
+    if (inside) {
+      poly.v.assign({corner[0].win, corner[1].win, corner[2].win});
+    } else {
+      poly.v.reserve(out.size());
+      for (const hpoint& c : out) poly.v.push_back(to_window(vp, c.x / c.w, c.y / c.w, c.z / c.w));
+    }
   }
+  f.polygons.resize(count);
   return std::to_string(f.polygons.size()) + " polygons, " + std::to_string(f.fully_clipped) + " fully clipped";
 }
 
@@ -76,7 +170,8 @@ std::string raster_stage(frame& f) {
   const viewport& vp = f.view.vp;
   f.picture = paint_frame(f, 1);
   std::string note = std::to_string(vp.width) + "x" + std::to_string(vp.height) + ", " +
-                     std::to_string(f.polygons.size()) + " polygons painted back to front";
+                     std::to_string(f.polygons.size()) + " polygons painted " +
+                     (effective_paint_order(f) == paint_order::front_to_back ? "front to back" : "back to front");
   if (!f.lines.empty()) note += ", " + std::to_string(f.lines.size()) + " curve lines in their slots";
   return note;
 }

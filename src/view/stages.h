@@ -11,7 +11,8 @@
 namespace exbsp::view {
 
 /// "build": one BSP of f.soup with f.build, then f.fragments = fragments_double() (converted
-/// once). Throws usage_error / limit_error from bsp::build.
+/// once) and their distinct corners f.points / f.fragment_points (each transformed once per
+/// view). Throws usage_error / limit_error from bsp::build.
 std::string build_stage(frame& f);
 
 /// "order": f.order = back-to-front fragment indices: order_from_eye(camera eye) for
@@ -22,13 +23,17 @@ std::string order_stage(frame& f);
 
 /// "transform+clip": for each fragment in f.order, c = P Mv p per vertex, homogeneous clip
 /// (clip_stage.h), divide, viewport; fills f.polygons in the same order and counts the
-/// fragments that are entirely outside in f.fully_clipped. Polygon colours: the face colour,
+/// fragments that are entirely outside in f.fully_clipped. Each distinct point is transformed
+/// once; fragments entirely inside (or outside one plane) skip the clipper, with the same
+/// doubles as its path. Polygon colours: the face colour,
 /// or f.fragment_colors[fragment] when the lighting stage filled it.
 std::string transform_clip_stage(frame& f);
 
 /// "raster": painter's algorithm, no z-buffer: f.picture = background, then every polygon of
 /// f.polygons in order with the top-left-rule rasterizer, with the curve lines of f.lines in
-/// their slots and per-pixel fog when the fog stage ran (paint.h).
+/// their slots and per-pixel fog when the fog stage ran (paint.h). The image of that
+/// back-to-front walk; computed front to back with a coverage mask unless f.painter says
+/// otherwise or there are lines (effective_paint_order).
 std::string raster_stage(frame& f);
 
 /// "svg": f.svg = the SVG document of f.polygons and f.lines (svg_writer.h).
