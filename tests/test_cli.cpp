@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "bsp/engine.h"
+#include "cli_support.h"
 #include "mesh/mesh_io.h"
 
 namespace {
@@ -27,28 +28,10 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_file(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-}
-
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-struct result {
-  int status = -1;  ///< exit status, -1 if the process did not exit normally
-  std::string out, err;
-};
+using exbsp_test::quoted;
+using exbsp_test::read_file;
+using exbsp_test::write_file;
+using result = exbsp_test::cli_result;
 
 /// A fresh temporary directory per test; the CLI runs inside it.
 class cli : public ::testing::Test {
@@ -64,19 +47,7 @@ protected:
   }
 
   /// Runs `exbsp ARGS` in dir (args already shell-quoted where needed).
-  result run(const std::string& args) {
-    const fs::path out = dir / ".stdout", err = dir / ".stderr";
-    const std::string cmd = "cd " + quoted(dir.string()) + " && " + quoted(EXBSP_CLI) + " " + args + " >" +
-                            quoted(out.string()) + " 2>" + quoted(err.string()) + " </dev/null";
-    const int raw = std::system(cmd.c_str());
-    result r;
-    r.status = raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = read_file(out);
-    r.err = read_file(err);
-    fs::remove(out);
-    fs::remove(err);
-    return r;
-  }
+  result run(const std::string& args) { return exbsp_test::run_cli(dir, args); }
 
   /// Files in dir other than the ones the test wrote itself.
   std::vector<std::string> files_in_dir() const {

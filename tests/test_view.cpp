@@ -846,7 +846,7 @@ TEST(Png, ReadingAnInvalidFileThrowsInputError) {
 TEST(AtomicWrite, FailureLeavesNoFileAndKeepsTheOldOne) {
   const std::string dir = temp_dir() + "/atomic";
   std::filesystem::create_directories(dir);
-  EXPECT_THROW(write_file_atomically(dir + "/no/such/dir/out.png", "x"), input_error);
+  EXPECT_THROW(write_file_atomically(dir + "/no/such/dir/out.png", "x"), exbsp::output_error);
   const std::string path = dir + "/out.txt";
   write_file_atomically(path, "first");
   write_file_atomically(path, "second");
@@ -856,7 +856,7 @@ TEST(AtomicWrite, FailureLeavesNoFileAndKeepsTheOldOne) {
   EXPECT_EQ(s, "second");
   // A directory in the way: rename fails, the temporary file is removed.
   std::filesystem::create_directories(dir + "/blocked");
-  EXPECT_THROW(write_file_atomically(dir + "/blocked", "x"), input_error);
+  EXPECT_THROW(write_file_atomically(dir + "/blocked", "x"), exbsp::output_error);
   int files = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.is_regular_file();
   EXPECT_EQ(files, 1);

@@ -1,17 +1,26 @@
 // exbsp command line (DESIGN.md section 4): glue only. Library exceptions become messages
-// "exbsp: error: ..." on stderr and exit codes: 2 bad input, 3 resource limit.
+// "exbsp: error: ..." on stderr and exit codes: 2 bad input, bad usage or an output that cannot
+// be written; 3 resource limit (--max-fragments, whose default comes from the available
+// memory, or out of memory).
 #include <CLI/CLI.hpp>
+#include <omp.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 #include "bsp/engine.h"
+#include "mesh/atomic_file.h"
 #include "mesh/errors.h"
+#include "mesh/gmp_memory.h"
 #include "mesh/mesh_io.h"
 #include "scene/clip_input.h"
 #include "scene/render.h"
@@ -46,22 +55,74 @@ std::string format_double(double x) {
   return buf;
 }
 
-/// Writes `content` to `path` through a temporary file and a rename: never a partial file.
-void write_atomically(const std::string& path, const std::string& content) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw exbsp::input_error(path, 0, "cannot open for writing");
-    out << content;
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw exbsp::input_error(path, 0, "write failed");
+// ---- resource defaults and limits (the library's defaults stay explicit: 0 = no limit) ----
+
+/// Bytes one tree fragment costs in a build, tree nodes and lists included: about 1,000
+/// measured (naive heuristic on 128 + 128 sticks: 2.1 M fragments in 2.1 GB; 121 k fragments
+/// in 108 MB resident), rounded up for the heavier gmpq numbers.
+constexpr std::uint64_t bytes_per_fragment = 1300;
+
+/// Bytes this process may still use: MemAvailable (/proc/meminfo), and no more than the
+/// address-space limit (RLIMIT_AS) when there is one. 0 when unknown.
+std::uint64_t available_memory_bytes() {
+  std::uint64_t available = 0;
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  std::uint64_t kib = 0;
+  std::string unit;
+  while (meminfo >> key >> kib >> unit)
+    if (key == "MemAvailable:") {
+      available = kib * 1024;
+      break;
     }
+  struct rlimit as {};
+  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
+    const auto cap = static_cast<std::uint64_t>(as.rlim_cur);
+    available = available ? std::min(available, cap) : cap;
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw exbsp::input_error(path, 0, "cannot replace the file");
+  return available;
+}
+
+/// The default --max-fragments: half the available memory at bytes_per_fragment each (the
+/// other half for the input, the output and the allocator's slack), at least 10,000;
+/// 0 (no limit) when the available memory is unknown.
+std::size_t default_fragment_budget() {
+  const std::uint64_t bytes = available_memory_bytes();
+  if (bytes == 0) return 0;
+  return static_cast<std::size_t>(std::max<std::uint64_t>(bytes / 2 / bytes_per_fragment, 10000));
+}
+
+/// The most threads --threads accepts: 4 per hardware thread, at most 1024 (libgomp crashes
+/// or fails on team sizes in the tens of thousands).
+unsigned max_threads() {
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  return std::min(1024u, 4 * hw);
+}
+
+/// OMP_NUM_THREADS is read by libgomp before main; a value it accepts but cannot honour
+/// (100000) crashes the first parallel region. Anything but a number in 1..max_threads()
+/// (first entry of a nesting list) is replaced by the hardware thread count, with a warning.
+void sanitize_omp_num_threads() {
+  const char* env = std::getenv("OMP_NUM_THREADS");
+  if (!env) return;
+  const std::string text(env);
+  const std::string first = text.substr(0, text.find(','));
+  unsigned long value = 0;
+  const auto r = std::from_chars(first.data(), first.data() + first.size(), value);
+  const bool ok = r.ec == std::errc() && r.ptr == first.data() + first.size() && value >= 1 && value <= max_threads();
+  if (ok) return;
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  std::cerr << "exbsp: warning: OMP_NUM_THREADS='" << text.substr(0, 40) << "' ignored (expected 1.."
+            << max_threads() << "); using " << hw << " threads\n";
+  omp_set_num_threads(static_cast<int>(hw));
+}
+
+/// Starts OpenMP's thread pool now: libgomp cannot report an allocation failure (it prints
+/// "Out of memory allocating N bytes" and exits 1), so the pool and its team are made while
+/// memory is plentiful, and later parallel regions of the same size reuse them.
+void start_thread_pool() {
+#pragma omp parallel
+  {
   }
 }
 
@@ -73,6 +134,18 @@ struct build_cli {
   std::size_t max_fragments = 0;
   unsigned threads = 0;
 };
+
+/// Rejects an empty output name (`-o ""`): it would silently mean the default output.
+const CLI::Validator non_empty_path(
+    [](const std::string& s) { return s.empty() ? std::string("empty file name") : std::string(); }, "FILE");
+
+/// Rejects a negative integer for an unsigned option: CLI11 would wrap "-1" to 2^64 - 1.
+const CLI::Validator not_negative(
+    [](const std::string& s) {
+      const std::size_t i = s.find_first_not_of(" \t");
+      return i != std::string::npos && s[i] == '-' ? "must not be negative, got " + s : std::string();
+    },
+    "");
 
 void add_build_options(CLI::App* cmd, build_cli& o) {
   cmd->add_option("MESH", o.mesh, "mesh file: .off, .obj, .ply or .stl")->required();
@@ -87,10 +160,17 @@ void add_build_options(CLI::App* cmd, build_cli& o) {
                   "sampled (16 seeded candidates, split/balance score), random (seeded)")
       ->check(CLI::IsMember(exbsp::heuristic_names()))
       ->capture_default_str();
-  cmd->add_option("--seed", o.seed, "seed of the randomised heuristics")->capture_default_str();
+  cmd->add_option("--seed", o.seed, "seed of the randomised heuristics")
+      ->check(not_negative)
+      ->capture_default_str();
   cmd->add_option("--max-fragments", o.max_fragments,
-                  "stop with exit status 3 when the tree would need more fragments (0: no limit)");
-  cmd->add_option("--threads", o.threads, "threads for candidate evaluation (0: all cores)");
+                  "stop with exit status 3 when the tree would need more fragments (0: no limit; "
+                  "default: half the available memory at " + std::to_string(bytes_per_fragment) +
+                      " bytes per fragment)")
+      ->check(not_negative)
+      ->capture_default_str();
+  cmd->add_option("--threads", o.threads, "threads for candidate evaluation (0: all cores)")
+      ->check(CLI::Range(0u, max_threads()));
 }
 
 /// Progress line on a terminal for builds that run longer than a second.
@@ -195,13 +275,17 @@ int run_order(const build_cli& o, const std::string& eye, const std::string& dir
   if (out_path.empty())
     std::cout << out;
   else
-    write_atomically(out_path, out);
+    exbsp::write_file_atomically(out_path, out);
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  // First, before any GMP number exists: out of memory in GMP throws, never aborts.
+  exbsp::install_gmp_memory_functions();
+  sanitize_omp_num_threads();
+  start_thread_pool();
   CLI::App app{
       "exbsp: exact-predicate BSP trees of triangle meshes, back-to-front orders and rendering.\n"
       "Classification and splitting are exact (CGAL Epeck by default), so trees and orders are\n"
@@ -209,6 +293,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   build_cli build_opts, order_opts;
+  build_opts.max_fragments = order_opts.max_fragments = default_fragment_budget();
   bool json = false;
   auto* build = app.add_subcommand("build", "build the BSP tree of MESH and print its statistics");
   add_build_options(build, build_opts);
@@ -225,14 +310,19 @@ int main(int argc, char** argv) {
                                     "direction of projection X,Y,Z, from the eye into the scene "
                                     "(parallel view)");
   eye_opt->excludes(dir_opt);
-  order->add_option("-o,--output", order_out, "output JSON file (default: standard output)");
+  order->add_option("-o,--output", order_out, "output JSON file ('-' or none: standard output)")
+      ->check(non_empty_path);
 
   std::string scene_path, render_out = "exbsp.png";
   bool verbose = false;
   auto* render = app.add_subcommand(
       "render", "render SCENE.json (or the built-in demo scene) to PNG or SVG");
   render->add_option("SCENE", scene_path, "scene file (JSON); omit for the built-in demo");
-  render->add_option("-o,--output", render_out, "output .png or .svg")->capture_default_str();
+  render->add_option("-o,--output", render_out, "output .png or .svg ('-': PNG on standard output)")
+      ->check(non_empty_path)
+      ->capture_default_str();
+  bool strict = false;
+  render->add_flag("--strict", strict, "unknown scene keys are errors (exit 2), not warnings");
   render->add_flag("-v,--verbose", verbose, "print the pipeline stages that ran and their timings");
   std::string orbit_drag;
   std::size_t orbit_frames = 0;
@@ -257,7 +347,8 @@ int main(int argc, char** argv) {
                    "segment clipper: cohen-sutherland (default) or liang-barsky (rect or box regions); "
                    "polygons are always clipped by sutherland-hodgman (any convex region)")
       ->check(CLI::IsMember({"cohen-sutherland", "liang-barsky", "sutherland-hodgman"}));
-  clip->add_option("-o,--output", clip_out, "output .json or .svg (default: JSON on standard output)");
+  clip->add_option("-o,--output", clip_out, "output .json or .svg (default: JSON on standard output)")
+      ->check(non_empty_path);
   clip->add_flag("-v,--verbose", clip_verbose, "print each segment endpoint's Cohen-Sutherland outcode");
 
   try {
@@ -284,6 +375,7 @@ int main(int argc, char** argv) {
     }
     if (*render) {
       exbsp::render_request request{scene_path, render_out, verbose};
+      request.strict = strict;
       if (!orbit_drag.empty()) request.orbit_drag = exbsp::parse_drag_path(orbit_drag);
       request.frames = orbit_frames;
       request.trackball = trackball;
@@ -292,12 +384,15 @@ int main(int argc, char** argv) {
     }
   } catch (const exbsp::limit_error& e) {
     std::cerr << "exbsp: error: " << e.what() << "\n";
+    if (*build || *order)
+      std::cerr << "exbsp: the limit is --max-fragments (default: from the available memory); raise it with "
+                   "--max-fragments N, or 0 for no limit\n";
     return 3;
-  } catch (const exbsp::error& e) {
+  } catch (const exbsp::error& e) {  // input, scene, usage and output errors
     std::cerr << "exbsp: error: " << e.what() << "\n";
     return 2;
   } catch (const std::bad_alloc&) {
-    std::cerr << "exbsp: error: out of memory\n";
+    std::cerr << "exbsp: error: out of memory (lower --max-fragments, or use a smaller input)\n";
     return 3;
   } catch (const std::exception& e) {
     std::cerr << "exbsp: error: " << e.what() << "\n";

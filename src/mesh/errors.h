@@ -1,6 +1,7 @@
 // exbsp error hierarchy: the library reports every failure by throwing one of these;
 // it never aborts or exits. The command line maps them to exit codes (DESIGN.md section 4):
-// input_error and scene_error -> 2, limit_error -> 3.
+// input_error, scene_error, usage_error and output_error -> 2, limit_error (and
+// std::bad_alloc) -> 3.
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -46,6 +47,17 @@ private:
 class limit_error : public error {
 public:
   using error::error;
+};
+
+/// An output file could not be written (directory missing, disk full, permission, rename).
+/// The message names the file ("FILE: cannot write output: ..."); nothing partial is left.
+class output_error : public error {
+public:
+  output_error(const std::string& file, const std::string& what) : error(file + ": " + what), file_(file) {}
+  const std::string& file() const { return file_; }
+
+private:
+  std::string file_;
 };
 
 /// A caller broke a documented precondition (e.g. a zero direction vector).

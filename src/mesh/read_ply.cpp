@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <unordered_set>
 
 #include "mesh/reader_util.h"
 
@@ -164,6 +165,9 @@ ply_header parse_header(std::string_view text, const std::string& file) {
   if (tokens.size() != 1 || tokens[0] != "ply")
     fail(file, 1, "not a PLY file: the first line must be 'ply', found " + quote(line));
   bool have_format = false;
+  // Duplicate checks by hash set: the header is read in time linear in its length, however
+  // many elements or properties it declares.
+  std::unordered_set<std::string> element_names, property_names;  // the latter: current element's
   for (;;) {
     if (!lines.next(line))
       fail(file, lines.line_number(), "unexpected end of file in the PLY header (no 'end_header')");
@@ -195,8 +199,11 @@ ply_header parse_header(std::string_view text, const std::string& file) {
       std::int64_t count = 0;
       if (!parse_integer(tokens[2], count) || count < 0)
         fail(file, n, "element count " + quote(tokens[2]) + " is not a non-negative integer");
-      for (const ply_element& e : header.elements)
-        if (e.name == tokens[1]) fail(file, n, "second element named " + quote(tokens[1]));
+      if (!element_names.insert(std::string(tokens[1])).second)
+        fail(file, n, "second element named " + quote(tokens[1]));
+      // A fresh set, not clear(): clear() costs the bucket count, which stays as large as the
+      // biggest element's, and that would make many small elements after a big one quadratic.
+      std::unordered_set<std::string>().swap(property_names);
       ply_element e;
       e.name = std::string(tokens[1]);
       e.count = static_cast<std::uint64_t>(count);
@@ -220,8 +227,8 @@ ply_header parse_header(std::string_view text, const std::string& file) {
         p.name = std::string(tokens[2]);
       }
       ply_element& e = header.elements.back();
-      for (const ply_property& q : e.properties)
-        if (q.name == p.name) fail(file, n, "second property named " + quote(p.name) + " in element " + quote(e.name));
+      if (!property_names.insert(p.name).second)
+        fail(file, n, "second property named " + quote(p.name) + " in element " + quote(e.name));
       e.properties.push_back(std::move(p));
     } else {
       fail(file, n, "unknown PLY header keyword " + quote(keyword));

@@ -13,7 +13,8 @@
 //          Keywords are matched ignoring case; the rest of a solid/endsolid line is a name.
 //
 // Detection: binary when the size is 84 + 50 N for the N stored at byte 80; otherwise
-// ascii when the file starts with "solid" and holds no NUL byte; otherwise an error.
+// ascii when the file starts with "solid" (after an optional UTF-8 byte order mark) and
+// holds no NUL byte; otherwise an error. Ascii lines end with \n, \r\n or \r.
 // Facet j (0-based, in file order) is face j. Vertices with exactly equal coordinates are
 // merged into one soup vertex (the first occurrence is kept), like other STL loaders do;
 // merging changes no coordinate, so the geometry is exactly the file's.
@@ -43,10 +44,10 @@ float little_endian_float(std::string_view text, std::size_t at) {
 
 bool starts_with_solid(std::string_view text) {
   std::size_t i = 0;
-  while (i < text.size() && (is_blank(text[i]) || text[i] == '\n')) ++i;
+  while (i < text.size() && (is_blank(text[i]) || ends_line(text, i))) ++i;
   const std::string_view word = text.substr(i, 5);
   if (!equals_ignoring_case(word, "solid")) return false;
-  return i + 5 == text.size() || is_blank(text[i + 5]) || text[i + 5] == '\n';
+  return i + 5 == text.size() || is_blank(text[i + 5]) || ends_line(text, i + 5);
 }
 
 triangle_soup read_binary_stl(std::string_view text, const std::string& file, std::uint32_t count) {
@@ -78,31 +79,31 @@ public:
   explicit token_reader(std::string_view text) : text_(text) {}
   // Stores the next token in `token`; false at end of text.
   bool next(std::string_view& token) {
-    while (pos_ < text_.size() && (is_blank(text_[pos_]) || text_[pos_] == '\n')) {
-      if (text_[pos_] == '\n') ++line_;
+    while (pos_ < text_.size() && (is_blank(text_[pos_]) || ends_line(text_, pos_))) {
+      if (ends_line(text_, pos_)) ++line_;
       ++pos_;
     }
     if (pos_ == text_.size()) return false;
     const std::size_t start = pos_;
-    while (pos_ < text_.size() && !is_blank(text_[pos_]) && text_[pos_] != '\n') ++pos_;
+    while (pos_ < text_.size() && !is_blank(text_[pos_]) && !ends_line(text_, pos_)) ++pos_;
     token = text_.substr(start, pos_ - start);
     return true;
   }
   // Skips the rest of the current line (a solid's name).
   void skip_line() {
-    while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+    while (pos_ < text_.size() && !ends_line(text_, pos_)) ++pos_;
   }
   // Line of the last token.
   std::size_t line() const { return line_; }
   // The file's last line, for end-of-file messages.
   std::size_t last_line() const {
-    return !text_.empty() && text_.back() == '\n' ? line_count() : line_count() + 1;
+    return !text_.empty() && ends_line(text_, text_.size() - 1) ? line_count() : line_count() + 1;
   }
 
 private:
   std::size_t line_count() const {
     std::size_t n = 0;
-    for (char c : text_) n += c == '\n';
+    for (std::size_t i = 0; i < text_.size(); ++i) n += ends_line(text_, i);
     return n;
   }
   std::string_view text_;
@@ -185,11 +186,12 @@ triangle_soup read_stl(std::string_view text, const std::string& file) {
     const std::uint32_t count = little_endian_u32(text, 80);
     const std::uint64_t expected = stl_header_size + std::uint64_t{count} * stl_record_size;
     if (text.size() == expected) return read_binary_stl(text, file, count);
-    if (!starts_with_solid(text) || text.find('\0') != std::string_view::npos)
-      fail(file, 0, "binary STL declares " + std::to_string(count) + " triangles (" + std::to_string(expected) +
-                        " bytes) but the file has " + std::to_string(text.size()) + " bytes");
-    return read_ascii_stl(text, file);
+    if (starts_with_solid(skip_utf8_bom(text)) && text.find('\0') == std::string_view::npos)
+      return read_ascii_stl(skip_utf8_bom(text), file);
+    fail(file, 0, "binary STL declares " + std::to_string(count) + " triangles (" + std::to_string(expected) +
+                      " bytes) but the file has " + std::to_string(text.size()) + " bytes");
   }
+  text = skip_utf8_bom(text);
   if (!starts_with_solid(text) || text.find('\0') != std::string_view::npos)
     fail(file, 0, "not an STL file: too short for binary STL (" + std::to_string(text.size()) +
                       " bytes, at least 84 needed) and not ascii STL (no 'solid' at the start)");

@@ -38,14 +38,17 @@ std::string quote(std::string_view token) {
   return out;
 }
 
+std::string_view skip_utf8_bom(std::string_view text) {
+  return text.substr(0, 3) == "\xEF\xBB\xBF" ? text.substr(3) : text;
+}
+
 bool line_reader::next(std::string_view& line) {
   if (pos_ >= text_.size()) return false;
-  const std::size_t newline = text_.find('\n', pos_);
-  const std::size_t end = newline == std::string_view::npos ? text_.size() : newline;
-  std::size_t stop = end;
-  if (stop > pos_ && text_[stop - 1] == '\r') --stop;
-  line = text_.substr(pos_, stop - pos_);
-  pos_ = newline == std::string_view::npos ? text_.size() : newline + 1;
+  const std::size_t end = std::min(text_.find_first_of("\r\n", pos_), text_.size());
+  std::size_t after = end;
+  if (end < text_.size()) after = text_[end] == '\r' && end + 1 < text_.size() && text_[end + 1] == '\n' ? end + 2 : end + 1;
+  line = text_.substr(pos_, end - pos_);
+  pos_ = after;
   ++line_;
   return true;
 }

@@ -1,8 +1,9 @@
 // Internal helpers shared by the mesh readers (read_off.cpp, read_obj.cpp, read_ply.cpp,
 // read_stl.cpp). Not part of the public API: include mesh/mesh_io.h instead.
 //
-// Notation: a file is held in memory as one `std::string_view text`. Lines end with "\n"
-// or "\r\n" and are numbered from 1; the "line" of an end-of-file error is the file's last
+// Notation: a file is held in memory as one `std::string_view text` (a leading UTF-8 byte
+// order mark already removed). Lines end with "\n", "\r\n" or a lone "\r" (old Mac
+// files) and are numbered from 1; the "line" of an end-of-file error is the file's last
 // line. A token is a maximal run of non-blank bytes (blank = space, \t, \r, \f, \v).
 // Every reader function throws exbsp::input_error(file, line, what) and nothing else that
 // is caused by the file's contents (std::bad_alloc can still escape on a real memory shortage).
@@ -28,7 +29,16 @@ constexpr std::uint64_t max_element_count = 0xFFFFFFFFull;
 /// written as \xNN, so binary garbage cannot corrupt a terminal.
 std::string quote(std::string_view token);
 
-/// Splits text into lines. A line excludes its terminator ("\n" or "\r\n").
+/// `text` without a leading UTF-8 byte order mark (EF BB BF), if it has one.
+std::string_view skip_utf8_bom(std::string_view text);
+
+/// Whether text[i] ends a line: '\n', or '\r' not followed by '\n' (the '\r' of "\r\n"
+/// is a blank; its '\n' ends the line).
+inline bool ends_line(std::string_view text, std::size_t i) {
+  return text[i] == '\n' || (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'));
+}
+
+/// Splits text into lines. A line excludes its terminator ("\n", "\r\n" or "\r").
 class line_reader {
 public:
   /// Starts at byte `start` of `text`; line numbers continue from `first_line - 1`.

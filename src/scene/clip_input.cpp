@@ -5,7 +5,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -13,6 +12,8 @@
 #include "clip/convex_region.h"
 #include "clip/liang_barsky.h"
 #include "mesh/errors.h"
+#include "mesh/json_limits.h"
+#include "mesh/mesh_io.h"
 #include "scene/json_reader.h"
 #include "view/atomic_file.h"
 
@@ -233,13 +234,11 @@ clip_input parse_clip_input(const json& doc, const std::string& path) {
 }
 
 clip_input load_clip_input(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw input_error(path, 0, "cannot open the clip input");
-  std::ostringstream text;
-  text << file.rdbuf();
+  const std::string text = read_input_file(path);  // a regular file: no FIFO hang, no /dev/zero
+  check_json_nesting(text, path);                   // before nlohmann builds and copies it
   json doc;
   try {
-    doc = json::parse(text.str());
+    doc = json::parse(text);
   } catch (const json::exception& e) {
     throw scene_error(path, "", std::string("invalid JSON: ") + e.what());
   }

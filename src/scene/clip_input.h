@@ -63,7 +63,8 @@ struct clip_input {
 /// "convex" polygon, coplanar hull points, min > max, a point of the wrong dimension).
 clip_input parse_clip_input(const nlohmann::json& doc, const std::string& path);
 
-/// Reads and validates a file: input_error when it cannot be read, scene_error otherwise.
+/// Reads and validates a file: input_error when it cannot be read, is not a regular file or
+/// nests deeper than max_json_depth (mesh/json_limits.h), scene_error otherwise.
 clip_input load_clip_input(const std::string& path);
 
 /// Clips everything; `algorithm` is "cohen-sutherland", "liang-barsky", "sutherland-hodgman"

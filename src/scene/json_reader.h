@@ -32,7 +32,9 @@ inline std::string number_text(double v) {
 /// JSON reading with JSON-pointer error messages.
 class reader {
 public:
-  reader(std::string file, std::ostream* warnings) : file_(std::move(file)), warnings_(warnings) {}
+  /// `strict`: unknown keys (warn_unknown) are errors, not warnings.
+  reader(std::string file, std::ostream* warnings, bool strict = false)
+      : file_(std::move(file)), warnings_(warnings), strict_(strict) {}
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const { throw scene_error(file_, key, what); }
 
@@ -59,10 +61,16 @@ public:
     return &*it;
   }
 
+  /// Warns about (strict: fails on) each member of `obj` whose name is not in `known`, and
+  /// says which names were expected there (a misspelt key is then easy to spot).
   void warn_unknown(const json& obj, const std::string& key, std::initializer_list<const char*> known) const {
     for (auto it = obj.begin(); it != obj.end(); ++it) {
       const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; });
-      if (!ok) warn(key + "/" + it.key(), "unknown key ignored");
+      if (ok) continue;
+      std::string expected;
+      for (const char* k : known) expected += (expected.empty() ? "" : ", ") + std::string(k);
+      if (strict_) fail(key + "/" + it.key(), "unknown key (expected one of: " + expected + ")");
+      warn(key + "/" + it.key(), "unknown key ignored (expected one of: " + expected + ")");
     }
   }
 
@@ -107,6 +115,7 @@ public:
 private:
   std::string file_;
   std::ostream* warnings_;
+  bool strict_;
 };
 
 }  // namespace exbsp::scene

@@ -146,7 +146,7 @@ std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(const scene::s
 void render_command(const render_request& request, std::ostream& log) {
   const std::string out = request.output_path.empty() ? std::string("exbsp.png") : request.output_path;
   view::output_kind kind;
-  if (ends_with_ci(out, ".png")) {
+  if (out == "-" || ends_with_ci(out, ".png")) {
     kind = view::output_kind::png;
   } else if (ends_with_ci(out, ".svg")) {
     kind = view::output_kind::svg;
@@ -155,9 +155,11 @@ void render_command(const render_request& request, std::ostream& log) {
   }
   const bool orbit = !request.orbit_drag.empty();
   if (!orbit && request.frames != 0) throw usage_error("render: --frames needs --orbit-drag");
+  if (orbit && out == "-") throw usage_error("render: an orbit writes several files; it cannot go to standard output");
 
   const auto t0 = std::chrono::steady_clock::now();
-  scene::scene s = request.scene_path.empty() ? scene::demo_scene() : scene::load_scene(request.scene_path, &log);
+  scene::scene s = request.scene_path.empty() ? scene::demo_scene()
+                                              : scene::load_scene(request.scene_path, &log, request.strict);
   if (!request.trackball.empty()) {
     if (request.trackball != "arcball" && request.trackball != "virtual")
       throw usage_error("render: --trackball must be arcball or virtual, got " + request.trackball);

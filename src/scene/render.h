@@ -32,8 +32,9 @@ struct render_request {
       : scene_path(std::move(scene)), output_path(std::move(output)), verbose(verbose_log) {}
 
   std::string scene_path;   ///< empty: the built-in demo scene
-  std::string output_path;  ///< .png or .svg (by extension)
+  std::string output_path;  ///< .png or .svg (by extension); "-": PNG on standard output
   bool verbose = false;     ///< print which pipeline stages ran, timings
+  bool strict = false;      ///< unknown scene keys are errors (scene::load_scene), not warnings
   /// Orbit drag path in screen pixels (y down); empty: one still image.
   std::vector<std::array<double, 2>> orbit_drag;
   /// Orbit rotation rule: "arcball" or "virtual" (empty: the scene's "trackball", default arcball).
@@ -45,8 +46,8 @@ struct render_request {
 /// Loads the scene, builds one BSP of all its meshes, renders and writes output_path
 /// atomically (no partial file on error). With an orbit, writes the frames OUT_0000.png ...
 /// from one build. Log lines go to `log`.
-/// Throws scene_error / input_error (exit 2), limit_error (exit 3), usage_error for a bad
-/// output name or orbit request (exit 2).
+/// Throws scene_error / input_error / output_error (exit 2), limit_error (exit 3), usage_error
+/// for a bad output name or orbit request (exit 2).
 void render_command(const render_request& request, std::ostream& log);
 
 /// Parses "X0,Y0:X1,Y1:..." (at least one point, finite numbers). Throws usage_error naming

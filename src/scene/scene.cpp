@@ -5,11 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
+#include <limits>
 #include <sstream>
 
 #include "mesh/errors.h"
+#include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"
 #include "scene/json_reader.h"
 #include "scene/scene_parts.h"
@@ -249,8 +250,8 @@ void parse_curves(const reader& r, const json& doc, scene& s) {
 
 }  // namespace
 
-scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings) {
-  const reader r(path, warnings);
+scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings, bool strict) {
+  const reader r(path, warnings, strict);
   if (!doc.is_object()) r.fail("", std::string("the scene must be a JSON object (got ") + doc.type_name() + ")");
   r.warn_unknown(doc, "", {"meshes", "groups", "curves", "lines", "camera", "projection", "viewport", "image", "aspect",
                            "background", "effects", "trackball"});
@@ -272,23 +273,19 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   return s;
 }
 
-scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings) {
+scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings, bool strict) {
+  check_json_nesting(text, path);  // before nlohmann builds (and later copies) the document
   json doc;
   try {
     doc = json::parse(text);
   } catch (const json::exception& e) {  // syntax errors, and numbers too large for a double
     throw scene_error(path, "", std::string("invalid JSON: ") + e.what());
   }
-  return parse_scene(doc, path, warnings);
+  return parse_scene(doc, path, warnings, strict);
 }
 
-scene load_scene(const std::string& path, std::ostream* warnings) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw input_error(path, 0, "cannot open scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw input_error(path, 0, "read error");
-  return parse_scene_text(text.str(), path, warnings);
+scene load_scene(const std::string& path, std::ostream* warnings, bool strict) {
+  return parse_scene_text(read_input_file(path), path, warnings, strict);
 }
 
 view::view_setup make_view_setup(const scene& s) {
@@ -345,6 +342,8 @@ view::view_setup make_view_setup(const scene& s) {
 scene_geometry load_geometry(const scene& s) {
   scene_geometry g;
   g.face_offsets.push_back(0);
+  const view::view_setup view_matrices = make_view_setup(s);
+  const double max_clip = std::numeric_limits<double>::max() / 16;
   for (const mesh_spec& m : s.meshes) {
     triangle_soup part;
     if (m.soup) {
@@ -355,15 +354,28 @@ scene_geometry load_geometry(const scene& s) {
       part = read_mesh(m.path);
     }
     const bool identity = m.transform.m == view::mat4::identity().m;
-    if (!identity) {
-      for (std::size_t k = 0; k < part.vertices.size(); ++k) {
-        const view::hpoint h = m.transform * view::to_point(part.vertices[k]);
-        vec3d p = h.w == 1 ? vec3d{h.x, h.y, h.z} : vec3d{h.x / h.w, h.y / h.w, h.z / h.w};
+    // Where a vertex that is too large comes from: the transform, or the mesh file itself.
+    const std::string culprit =
+        identity ? m.key + "/file" : (m.transform_key.empty() ? m.key + "/transform" : m.transform_key);
+    for (std::size_t k = 0; k < part.vertices.size(); ++k) {
+      vec3d p = part.vertices[k];
+      if (!identity) {
+        const view::hpoint h = m.transform * view::to_point(p);
+        p = h.w == 1 ? vec3d{h.x, h.y, h.z} : vec3d{h.x / h.w, h.y / h.w, h.z / h.w};
         if (!(h.w != 0) || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-          throw scene_error(s.path, m.transform_key.empty() ? m.key + "/transform" : m.transform_key,
-                            "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
+          throw scene_error(s.path, culprit, "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
         part.vertices[k] = p;
       }
+      // Finite in the world but too large once viewed (e.g. scaled by 1e308): say so here,
+      // naming the key, rather than as a NaN deep inside the clipper, which forms sums such
+      // as w + z and interpolates between vertices (hence the headroom of 16).
+      const view::hpoint clip = view_matrices.projection * (view_matrices.model_view * view::to_point(p));
+      if (!(std::fabs(clip.x) <= max_clip && std::fabs(clip.y) <= max_clip && std::fabs(clip.z) <= max_clip &&
+            std::fabs(clip.w) <= max_clip))
+        throw scene_error(s.path, culprit,
+                          "vertex " + std::to_string(k) + " of " + m.path +
+                              " is too large to view: its clip coordinates exceed " + number_text(max_clip) +
+                              " (the largest double / 16; scale the mesh down)");
     }
     g.soup.append(part);
     g.face_colors.resize(g.soup.face_count, m.color);

@@ -143,18 +143,22 @@ struct scene {
 };
 
 /// Validates a parsed JSON document. `path` names the file in messages and anchors relative
-/// mesh paths. Unknown keys (outside effect parameters) produce warnings on `warnings` (may be
-/// null). Throws scene_error naming the key for every missing, wrongly typed or impossible
+/// mesh paths. Unknown keys (outside effect parameters) produce warnings naming the expected
+/// keys on `warnings` (may be null), or with `strict` a scene_error naming the key.
+/// Throws scene_error naming the key for every missing, wrongly typed or impossible
 /// value (including up parallel to the view direction, unknown and not-yet-supported effects,
 /// unknown or bad effect parameters and bad curves).
-scene parse_scene(const nlohmann::json& doc, const std::string& path, std::ostream* warnings = nullptr);
+scene parse_scene(const nlohmann::json& doc, const std::string& path, std::ostream* warnings = nullptr,
+                  bool strict = false);
 
-/// parse_scene on JSON text; a syntax error is a scene_error with an empty key.
-scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings = nullptr);
+/// parse_scene on JSON text; a syntax error is a scene_error with an empty key; nesting deeper
+/// than max_json_depth (mesh/json_limits.h) an input_error naming the line, before parsing.
+scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings = nullptr,
+                       bool strict = false);
 
-/// Reads and validates a scene file. Throws input_error when the file cannot be read,
-/// scene_error as parse_scene.
-scene load_scene(const std::string& path, std::ostream* warnings = nullptr);
+/// Reads and validates a scene file. Throws input_error when the file cannot be read or is not
+/// a regular file (mesh_io.h read_input_file), scene_error as parse_scene.
+scene load_scene(const std::string& path, std::ostream* warnings = nullptr, bool strict = false);
 
 /// Camera, projection and viewport of a validated scene as the pipeline's view_setup.
 /// Throws scene_error naming the key if the scene was not validated and is impossible.
@@ -169,7 +173,8 @@ struct scene_geometry {
 
 /// Reads every mesh (read_mesh: input_error for bad files), applies its transform and appends
 /// it. Throws scene_error naming /meshes/K/file for a missing file and /meshes/K/transform when
-/// the transform sends a vertex to infinity.
+/// the transform sends a vertex to infinity or so far that the scene's view of it overflows
+/// (/meshes/K/file when the mesh has no transform and its own coordinates do).
 scene_geometry load_geometry(const scene& s);
 
 /// The mesh index of a face id (upper bound in face_offsets); meshes.size() if out of range.

@@ -1,14 +1,8 @@
-// Atomic output: the bytes go to a temporary file next to the destination, which is then
-// renamed over it, so a failed run never leaves a partial (or truncated old) output file.
+// The atomic output writer moved to mesh/atomic_file.h (the lowest module, shared with the
+// command line); this header keeps the view:: spelling working.
 #pragma once
-#include <string>
-#include <string_view>
+#include "mesh/atomic_file.h"
 
 namespace exbsp::view {
-
-/// Writes `bytes` to `path` atomically (temporary file in the same directory + rename).
-/// Throws input_error naming `path` when the file cannot be written; the temporary file is
-/// removed and any existing file at `path` is left untouched.
-void write_file_atomically(const std::string& path, std::string_view bytes);
-
+using exbsp::write_file_atomically;
 }  // namespace exbsp::view

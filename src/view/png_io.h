@@ -12,7 +12,7 @@ namespace exbsp::view {
 std::vector<std::uint8_t> encode_png(const image& img);
 
 /// Encodes and writes `img` to `path` atomically (write_file_atomically).
-/// Throws input_error naming `path` when it cannot be written.
+/// Throws output_error naming `path` when it cannot be written.
 void write_png(const image& img, const std::string& path);
 
 /// Reads a PNG file into an 8-bit RGB image (palette, grey, 16-bit and alpha are converted;

@@ -35,7 +35,7 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
 std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons,
                          const std::vector<screen_line>& lines, const fog_shading* fog);
 
-/// svg_document written atomically to `path`. Throws input_error naming `path` on failure.
+/// svg_document written atomically to `path`. Throws output_error naming `path` on failure.
 void write_svg(const std::string& path, const viewport& vp, rgb8 background,
                const std::vector<screen_polygon>& polygons);
 

@@ -1,0 +1,30 @@
+// Output files, the one writer every exbsp output goes through (order JSON, PNG, SVG, ...).
+// A regular file is replaced atomically: the bytes go to a fresh temporary file in the
+// target's directory (created O_CREAT|O_EXCL|O_NOFOLLOW under a short random name, so a
+// planted file or symlink is never followed or overwritten), which is fsynced and renamed
+// over the target. A failed or interrupted run never leaves a partial, truncated or
+// clobbered file. It lives in exbsp_mesh because that is the lowest module.
+#pragma once
+#include <string>
+#include <string_view>
+
+namespace exbsp {
+
+/// Writes `bytes` to `path`:
+/// - "-": standard output, directly;
+/// - an existing non-regular file (a device such as /dev/null, a FIFO): opened and written
+///   directly (never replaced by a regular file);
+/// - otherwise (a new or existing regular file, also through a symbolic link, which is kept):
+///   temporary file + fsync + rename. A new file gets mode 0666 minus the umask; an existing
+///   file keeps its mode (and, where permitted, its owner).
+/// The temporary file is removed on error and, while it exists, on SIGINT, SIGTERM and SIGHUP
+/// (when those signals have their default action; the signal is then re-raised).
+/// Throws output_error naming `path` (empty name, missing directory, a directory, permission,
+/// disk full, ...); any existing file at `path` is then left untouched.
+void write_file_atomically(const std::string& path, std::string_view bytes);
+
+/// Number of temporary output files currently being written (registered for removal on a
+/// signal). For tests: 0 whenever no write_file_atomically call is running.
+int pending_temporary_files();
+
+}  // namespace exbsp

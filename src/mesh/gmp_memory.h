@@ -1,0 +1,19 @@
+// GMP allocation failures as C++ exceptions. GMP's default allocator calls abort() when
+// malloc fails; exbsp's contract is that the library never aborts, so programs using the
+// exact kernels (gmpq, epeck) should install these functions once, before any GMP number is
+// created (the exbsp command line does so first thing in main).
+#pragma once
+
+namespace exbsp {
+
+/// Makes GMP (and MPFR, which allocates through GMP) throw std::bad_alloc instead of aborting
+/// when memory runs out (mp_set_memory_functions). Call once at startup, before any mpz/mpq
+/// value exists: memory GMP allocated with the previous functions must not be freed with
+/// these (they use malloc/realloc/free, as GMP's defaults do, so mixing is in fact harmless).
+/// It also loads glibc's unwinder for C frames (see gmp_memory.cpp), without which such an
+/// exception crossing pthread_once aborts when memory is exhausted.
+/// Caveat: GMP is C, so the exception unwinds through C frames; GMP's own objects being built
+/// at that moment leak, which is acceptable when the program is out of memory anyway.
+void install_gmp_memory_functions();
+
+}  // namespace exbsp

@@ -1,0 +1,603 @@
+// Hostile input and hostile environments (issue 11): every item has a regression here.
+// Library checks call the functions directly; command-line checks run EXBSP_CLI in a fresh
+// temporary directory as tests/test_cli.cpp does. Memory-cap checks run the CLI (or a forked
+// child) under an address-space limit (RLIMIT_AS); they are skipped under AddressSanitizer,
+// which reserves terabytes of shadow address space and cannot run under such a limit.
+#include <gmp.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <new>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli_support.h"
+#include "mesh/atomic_file.h"
+#include "mesh/errors.h"
+#include "mesh/gmp_memory.h"
+#include "mesh/json_limits.h"
+#include "mesh/mesh_io.h"
+#include "scene/scene.h"
+
+#if defined(__SANITIZE_ADDRESS__)
+#define EXBSP_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define EXBSP_UNDER_ASAN 1
+#endif
+#endif
+#ifndef EXBSP_UNDER_ASAN
+#define EXBSP_UNDER_ASAN 0
+#endif
+
+namespace {
+
+/// Whether this build runs under AddressSanitizer (scripts/test --sanitize also sets
+/// EXBSP_SANITIZED), where RLIMIT_AS cannot be used.
+bool under_asan() { return EXBSP_UNDER_ASAN || std::getenv("EXBSP_SANITIZED") != nullptr; }
+
+namespace fs = std::filesystem;
+using exbsp::input_error;
+using exbsp::output_error;
+using exbsp::scene_error;
+
+using exbsp_test::read_file;
+using exbsp_test::write_file;
+using result = exbsp_test::cli_result;
+
+bool contains(const std::string& haystack, const std::string& needle) {
+  return haystack.find(needle) != std::string::npos;
+}
+
+const std::string bom = "\xEF\xBB\xBF";
+const std::string triangle_off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+
+/// A scene around `mesh_entry` (the JSON of meshes[0]) with a plain camera.
+std::string scene_with(const std::string& mesh_entry, const std::string& extra = "") {
+  return "{\"meshes\": [" + mesh_entry +
+         "],\n \"camera\": {\"eye\": [3,3,3], \"look_at\": [0,0,0], \"up\": [0,0,1]},\n"
+         " \"projection\": {\"type\": \"perspective\", \"fovy_deg\": 40, \"near\": 1, \"far\": 100},\n"
+         " \"viewport\": {\"width\": 32, \"height\": 24}" +
+         extra + "}\n";
+}
+
+/// The two-layer grid of k + k sticks (bench/generators.h): the naive heuristic grows as k^3.
+std::string sticks_off(int k) {
+  std::ostringstream off;
+  off << "OFF\n" << 8 * k << " " << 4 * k << " 0\n";
+  const double h = 0.25, lo = -1, hi = k;
+  for (int i = 0; i < k; ++i)
+    off << lo << " " << i << " 0\n" << hi << " " << i << " 0\n" << hi << " " << i << " " << h << "\n"
+        << lo << " " << i << " " << h << "\n";
+  for (int j = 0; j < k; ++j) {
+    const double x = j + 0.5;
+    off << x << " " << lo << " 1\n" << x << " " << hi << " 1\n" << x << " " << hi << " " << 1 + h << "\n"
+        << x << " " << lo << " " << 1 + h << "\n";
+  }
+  for (int s = 0; s < 2 * k; ++s) {
+    const int a = 4 * s;
+    off << "3 " << a << " " << a + 1 << " " << a + 2 << "\n3 " << a << " " << a + 2 << " " << a + 3 << "\n";
+  }
+  return off.str();
+}
+
+class hostile : public ::testing::Test {
+protected:
+  void SetUp() override {
+    std::string tmpl = (fs::temp_directory_path() / "exbsp_hostile_XXXXXX").string();
+    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
+    dir = tmpl;
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+
+  /// Runs `PREFIX exbsp ARGS` in dir (args already shell-quoted where needed).
+  result run(const std::string& args, const std::string& prefix = "") { return exbsp_test::run_cli(dir, args, prefix); }
+
+  /// Names of the files in dir.
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  fs::path dir;
+};
+
+// ---- 1. JSON nesting depth ---------------------------------------------------------------
+
+TEST(json_nesting, empty_and_flat_texts_pass) {
+  EXPECT_NO_THROW(exbsp::check_json_nesting("", "x.json"));
+  EXPECT_NO_THROW(exbsp::check_json_nesting("{}", "x.json"));
+  EXPECT_NO_THROW(exbsp::check_json_nesting("]]]}}}", "x.json"));  // syntax is nlohmann's business
+}
+
+TEST(json_nesting, the_limit_itself_passes_one_more_level_fails_naming_the_line) {
+  const std::size_t limit = exbsp::max_json_depth;
+  EXPECT_NO_THROW(exbsp::check_json_nesting(std::string(limit, '[') + std::string(limit, ']'), "x.json"));
+  const std::string deep = "{\"a\":\n" + std::string(limit, '[') + std::string(limit, ']') + "}";
+  try {
+    exbsp::check_json_nesting(deep, "x.json");
+    FAIL() << "no error";
+  } catch (const input_error& e) {
+    EXPECT_EQ(e.file(), "x.json");
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_TRUE(contains(e.what(), "nested too deeply")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "column 256")) << e.what();
+  }
+}
+
+TEST(json_nesting, brackets_inside_strings_do_not_count) {
+  const std::string s = "{\"k\": \"" + std::string(1000, '[') + "\\\"" + std::string(1000, '{') + "\"}";
+  EXPECT_NO_THROW(exbsp::check_json_nesting(s, "x.json"));
+}
+
+TEST(json_nesting, a_scene_nested_100000_deep_under_an_effect_is_an_error_not_a_crash) {
+  std::string deep;
+  for (int i = 0; i < 100000; ++i) deep += "{\"a\":";
+  deep += "1";
+  deep += std::string(100000, '}');
+  const std::string text = scene_with("{\"file\": \"t.off\"}", ",\n \"effects\": {\"fog\": {\"color\": " + deep + "}}");
+  EXPECT_THROW(exbsp::scene::parse_scene_text(text, "deep.json"), input_error);
+  std::string arrays = std::string(100000, '[') + std::string(100000, ']');
+  EXPECT_THROW(exbsp::scene::parse_scene_text(scene_with("{\"file\": \"t.off\"}", ",\n \"x\": " + arrays), "deep.json"),
+               input_error);
+}
+
+TEST_F(hostile, render_of_a_deeply_nested_scene_exits_2_naming_the_file_and_writes_nothing) {
+  write_file(dir / "t.off", triangle_off);
+  std::string deep;
+  for (int i = 0; i < 100000; ++i) deep += "{\"a\":";
+  deep += "1" + std::string(100000, '}');
+  write_file(dir / "deep.json", scene_with("{\"file\": \"t.off\"}", ",\n \"effects\": {\"lighting\": " + deep + "}"));
+  const result r = run("render deep.json -o out.png");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "deep.json:5: JSON nested too deeply")) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+TEST_F(hostile, clip_input_nesting_and_special_files_exit_2_naming_the_file) {
+  std::string deep = "{\"region\": {\"rect\": [0, 0, 1, 1]},\n \"segments\": " + std::string(100000, '[') +
+                     std::string(100000, ']') + "}";
+  write_file(dir / "deep.json", deep);
+  const result r = run("clip deep.json -o out.json");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "deep.json:2: JSON nested too deeply")) << r.err;
+  ASSERT_EQ(::mkfifo((dir / "f.json").c_str(), 0600), 0);
+  const result f = run("clip f.json -o out.json", "timeout 60");
+  EXPECT_EQ(f.status, 2) << f.err;
+  EXPECT_TRUE(contains(f.err, "f.json: cannot read a FIFO")) << f.err;
+  EXPECT_FALSE(fs::exists(dir / "out.json"));
+}
+
+// ---- 2. one safe atomic writer -------------------------------------------------------------
+
+TEST_F(hostile, writer_refuses_an_empty_name_and_a_directory) {
+  EXPECT_THROW(exbsp::write_file_atomically("", "x"), output_error);
+  fs::create_directory(dir / "d");
+  try {
+    exbsp::write_file_atomically((dir / "d").string(), "x");
+    FAIL() << "no error";
+  } catch (const output_error& e) {
+    EXPECT_EQ(e.file(), (dir / "d").string());
+  }
+  EXPECT_THROW(exbsp::write_file_atomically((dir / "missing" / "x.json").string(), "x"), output_error);
+  EXPECT_EQ(files(), std::vector<std::string>{"d"});
+  EXPECT_EQ(exbsp::pending_temporary_files(), 0);
+}
+
+TEST_F(hostile, writer_ignores_a_planted_symlink_at_the_old_predictable_temporary_name) {
+  write_file(dir / "victim", "precious");
+  const fs::path out = dir / "out.json";
+  // The old writer used OUT.tmp.<pid> through std::ofstream, which followed this link.
+  fs::create_symlink(dir / "victim", out.string() + ".tmp." + std::to_string(::getpid()));
+  exbsp::write_file_atomically(out.string(), "new");
+  EXPECT_EQ(read_file(dir / "victim"), "precious");
+  EXPECT_EQ(read_file(out), "new");
+  EXPECT_EQ(files().size(), 3u);  // victim, the planted link, out.json: no temporary left
+}
+
+TEST_F(hostile, writer_keeps_a_symlinked_target_a_symlink_and_writes_through_it) {
+  write_file(dir / "real.json", "old");
+  fs::create_symlink(dir / "real.json", dir / "link.json");
+  exbsp::write_file_atomically((dir / "link.json").string(), "new");
+  EXPECT_TRUE(fs::is_symlink(dir / "link.json"));
+  EXPECT_EQ(read_file(dir / "real.json"), "new");
+  fs::create_symlink(dir / "nowhere.json", dir / "dangling.json");
+  EXPECT_THROW(exbsp::write_file_atomically((dir / "dangling.json").string(), "x"), output_error);
+  EXPECT_FALSE(fs::exists(dir / "nowhere.json"));
+}
+
+TEST_F(hostile, writer_writes_devices_in_place) {
+  struct stat before {}, after {};
+  ASSERT_EQ(::stat("/dev/null", &before), 0);
+  exbsp::write_file_atomically("/dev/null", "discarded");
+  ASSERT_EQ(::stat("/dev/null", &after), 0);
+  EXPECT_TRUE(S_ISCHR(after.st_mode));
+  EXPECT_EQ(before.st_rdev, after.st_rdev);
+  // A symlink to the device stays a symlink to the device.
+  fs::create_symlink("/dev/null", dir / "null.json");
+  exbsp::write_file_atomically((dir / "null.json").string(), "discarded");
+  EXPECT_TRUE(fs::is_symlink(dir / "null.json"));
+}
+
+TEST_F(hostile, writer_honours_the_umask_for_new_files_and_keeps_an_existing_mode) {
+  const mode_t old_mask = ::umask(027);
+  exbsp::write_file_atomically((dir / "new.json").string(), "x");
+  ::umask(old_mask);
+  struct stat st {};
+  ASSERT_EQ(::stat((dir / "new.json").c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0640u);
+
+  write_file(dir / "kept.json", "old");
+  ASSERT_EQ(::chmod((dir / "kept.json").c_str(), 0604), 0);
+  exbsp::write_file_atomically((dir / "kept.json").string(), "new");
+  ASSERT_EQ(::stat((dir / "kept.json").c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0604u);
+  EXPECT_EQ(read_file(dir / "kept.json"), "new");
+}
+
+TEST_F(hostile, writer_handles_target_names_near_the_255_byte_limit) {
+  const fs::path out = dir / (std::string(250, 'n') + ".json");  // 255 bytes
+  exbsp::write_file_atomically(out.string(), "long");
+  EXPECT_EQ(read_file(out), "long");
+  exbsp::write_file_atomically(out.string(), "again");
+  EXPECT_EQ(read_file(out), "again");
+  EXPECT_EQ(files().size(), 1u);
+}
+
+TEST_F(hostile, order_to_dev_null_and_to_a_symlink_keeps_them) {
+  write_file(dir / "t.off", triangle_off);
+  fs::create_symlink("/dev/null", dir / "null.json");
+  EXPECT_EQ(run("order t.off --eye 0,0,5 -o /dev/null").status, 0);
+  struct stat st {};
+  ASSERT_EQ(::stat("/dev/null", &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));
+  EXPECT_EQ(run("order t.off --eye 0,0,5 -o null.json").status, 0);
+  EXPECT_TRUE(fs::is_symlink(dir / "null.json"));
+}
+
+// ---- 5. a signal during the write removes the temporary file -----------------------------
+
+TEST_F(hostile, sigterm_during_a_write_removes_the_temporary_file_and_kills_the_process) {
+  const fs::path out = dir / "big.bin";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    // A watcher thread sends SIGTERM as soon as the temporary file appears; the write of
+    // 256 MB takes far longer than the watcher's polling interval.
+    std::thread watcher([this] {
+      for (;;) {
+        for (const auto& e : fs::directory_iterator(dir))
+          if (e.path().filename().string().rfind(".exbsp-", 0) == 0) {
+            ::kill(::getpid(), SIGTERM);
+            return;
+          }
+        std::this_thread::sleep_for(std::chrono::microseconds(100));
+      }
+    });
+    watcher.detach();
+    const std::string bytes(std::size_t{256} << 20, 'x');
+    try {
+      exbsp::write_file_atomically(out.string(), bytes);
+    } catch (...) {
+    }
+    ::_exit(0);  // reached only when the signal came too late
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the write finished before the signal: status " << status;
+  EXPECT_EQ(WTERMSIG(status), SIGTERM);
+  EXPECT_TRUE(files().empty()) << files().front();
+}
+
+// ---- 3. memory exhaustion: exit 3, never abort ---------------------------------------------
+
+TEST(gmp_memory, an_allocation_failure_throws_bad_alloc) {
+  if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    exbsp::install_gmp_memory_functions();
+    struct rlimit cap {std::size_t{512} << 20, std::size_t{512} << 20};
+    ::setrlimit(RLIMIT_AS, &cap);
+    int code = 1;
+    try {
+      mpz_t z;
+      mpz_init2(z, mp_bitcnt_t{1} << 34);  // 2 GB: beyond the cap
+      mpz_clear(z);
+    } catch (const std::bad_alloc&) {
+      code = 42;
+    }
+    ::_exit(code);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 42);
+}
+
+class memory_cap : public hostile, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(memory_cap, order_under_an_address_space_cap_exits_3_without_output) {
+  if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
+  if (std::system("command -v prlimit >/dev/null 2>&1") != 0) GTEST_SKIP() << "prlimit (util-linux) not installed";
+  write_file(dir / "sticks.off", sticks_off(96));
+  const std::string kernel = GetParam();
+  const std::string args = "order sticks.off --direction 0.3,0.2,-1 --heuristic naive --threads 2 --kernel " + kernel;
+  // No fragment limit: the build runs into the cap (std::bad_alloc, also from GMP).
+  const result r = run(args + " --max-fragments 0 -o out.json", "prlimit --as=" + std::to_string(200 << 20));
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_TRUE(contains(r.err, "out of memory")) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out.json"));
+  // The default budget sees the cap and stops first, saying how to raise it.
+  const result d = run(args + " -o out.json", "prlimit --as=" + std::to_string(200 << 20));
+  EXPECT_EQ(d.status, 3) << d.err;
+  EXPECT_TRUE(contains(d.err, "--max-fragments")) << d.err;
+  EXPECT_FALSE(fs::exists(dir / "out.json"));
+  EXPECT_EQ(files(), std::vector<std::string>{"sticks.off"});
+}
+
+INSTANTIATE_TEST_SUITE_P(kernels, memory_cap, ::testing::Values("exact", "epeck", "gmpq"));
+
+/// n random triangles in a cube of side n^(1/3), vertices within 0.6 of their centre (the
+/// benchmarks' random soup; a fixed linear congruential generator keeps it the same everywhere).
+std::string random_soup_off(int n) {
+  std::uint64_t state = 12345;
+  const auto uniform = [&state](double lo, double hi) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return lo + (hi - lo) * static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  const double side = std::cbrt(static_cast<double>(n));
+  std::ostringstream off;
+  off << "OFF\n" << 3 * n << " " << n << " 0\n";
+  for (int t = 0; t < n; ++t) {
+    const double c[3] = {uniform(0, side), uniform(0, side), uniform(0, side)};
+    for (int v = 0; v < 3; ++v)
+      off << c[0] + uniform(-0.6, 0.6) << " " << c[1] + uniform(-0.6, 0.6) << " " << c[2] + uniform(-0.6, 0.6) << "\n";
+  }
+  for (int t = 0; t < n; ++t) off << "3 " << 3 * t << " " << 3 * t + 1 << " " << 3 * t + 2 << "\n";
+  return off.str();
+}
+
+// A large soup under a cap: the exception from GMP crossed glibc's pthread_once (CGAL's lazy
+// exact update) and glibc aborted ("libgcc_s.so.1 must be installed for unwinding to work"),
+// or libgomp could not allocate its team and exited 1; both at caps of 150-200 MB.
+TEST_F(hostile, a_large_soup_under_an_address_space_cap_exits_3_never_aborts) {
+  if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
+  if (std::system("command -v prlimit >/dev/null 2>&1") != 0) GTEST_SKIP() << "prlimit (util-linux) not installed";
+  write_file(dir / "soup.off", random_soup_off(100000));
+  for (const char* kernel : {"exact", "epeck"})
+    for (int cap_mb : {150, 200}) {
+      const result r = run(std::string("build soup.off --heuristic naive --threads 2 --max-fragments 0 --kernel ") + kernel,
+                           "prlimit --as=" + std::to_string(cap_mb << 20));
+      EXPECT_EQ(r.status, 3) << kernel << ", " << cap_mb << " MB: " << r.err;
+      EXPECT_TRUE(contains(r.err, "out of memory")) << r.err;
+    }
+}
+
+TEST_F(hostile, the_default_fragment_budget_is_shown_and_can_be_lifted) {
+  const result h = run("order --help");
+  EXPECT_EQ(h.status, 0);
+  EXPECT_TRUE(contains(h.out, "--max-fragments")) << h.out;
+  EXPECT_TRUE(contains(h.out, "default: half the available memory")) << h.out;
+  write_file(dir / "sticks.off", sticks_off(6));
+  const result small = run("build sticks.off --heuristic naive --max-fragments 30");
+  EXPECT_EQ(small.status, 3);
+  EXPECT_TRUE(contains(small.err, "raise it with --max-fragments N, or 0 for no limit")) << small.err;
+  EXPECT_EQ(run("build sticks.off --heuristic naive --max-fragments 0").status, 0);
+}
+
+// ---- 4. thread counts ------------------------------------------------------------------------
+
+TEST_F(hostile, absurd_thread_counts_exit_2_and_absurd_omp_num_threads_is_ignored) {
+  write_file(dir / "t.off", triangle_off);
+  for (const char* n : {"100000", "40000", "4294967295", "-1", "two"}) {
+    const result r = run(std::string("build t.off --threads ") + n);
+    EXPECT_EQ(r.status, 2) << n << ": " << r.err;
+    EXPECT_TRUE(contains(r.err, "--threads")) << r.err;
+  }
+  EXPECT_EQ(run("build t.off --threads 1").status, 0);
+  for (const char* env : {"100000", "0", "garbage", "4294967297"}) {
+    const result r = run("build t.off --heuristic min-split", std::string("OMP_NUM_THREADS=") + env);
+    EXPECT_EQ(r.status, 0) << env << ": " << r.err;
+    EXPECT_TRUE(contains(r.err, "OMP_NUM_THREADS")) << r.err;
+  }
+  const result ok = run("build t.off", "OMP_NUM_THREADS=1");
+  EXPECT_EQ(ok.status, 0);
+  EXPECT_FALSE(contains(ok.err, "OMP_NUM_THREADS")) << ok.err;
+}
+
+// ---- 6. special files ----------------------------------------------------------------------
+
+TEST_F(hostile, special_files_are_refused_naming_the_file_without_reading_or_waiting) {
+  fs::create_symlink("/dev/zero", dir / "z.off");
+  ASSERT_EQ(::mkfifo((dir / "f.off").c_str(), 0600), 0);
+  ASSERT_EQ(::mkfifo((dir / "f.json").c_str(), 0600), 0);
+  fs::create_directory(dir / "d.off");
+  for (const char* name : {"z.off", "f.off", "d.off"}) {
+    const result r = run(std::string("build ") + name, "timeout 60");
+    EXPECT_EQ(r.status, 2) << name << ": " << r.err;
+    EXPECT_TRUE(contains(r.err, std::string("exbsp: error: ") + name + ": cannot read a")) << r.err;
+    EXPECT_TRUE(contains(r.err, "(input must be a regular file)")) << r.err;
+  }
+  const result s = run("render f.json -o out.png", "timeout 60");
+  EXPECT_EQ(s.status, 2) << s.err;
+  EXPECT_TRUE(contains(s.err, "f.json: cannot read a FIFO")) << s.err;
+  EXPECT_THROW(exbsp::read_mesh("/dev/zero.off"), input_error);  // no such file: still an input_error
+}
+
+// ---- 7. PLY headers are read in linear time ------------------------------------------------
+
+TEST(ply_header, two_hundred_thousand_property_and_element_lines_are_read_correctly) {
+  std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  ply += "element face 1\nproperty list uchar int vertex_indices\nelement extra 0\n";
+  for (int i = 0; i < 200000; ++i) ply += "property float p" + std::to_string(i) + "\n";
+  for (int i = 0; i < 100000; ++i) ply += "element empty" + std::to_string(i) + " 0\nproperty int a\n";
+  const std::string body = "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const exbsp::triangle_soup soup = exbsp::read_mesh_data(ply + body, exbsp::mesh_format::ply, "big.ply");
+  EXPECT_EQ(soup.triangles.size(), 1u);
+  EXPECT_EQ(soup.vertices.size(), 3u);
+  // The duplicate checks still work at the end of such a header.
+  const std::size_t lines = 9 + 200000 + 2 * 100000;
+  try {
+    exbsp::read_mesh_data(ply + "property int a\n" + body, exbsp::mesh_format::ply, "big.ply");
+    FAIL() << "no error";
+  } catch (const input_error& e) {
+    EXPECT_EQ(e.line(), lines + 1);
+    EXPECT_TRUE(contains(e.what(), "second property named 'a'")) << e.what();
+  }
+  try {
+    exbsp::read_mesh_data(ply + "element empty7 0\n" + body, exbsp::mesh_format::ply, "big.ply");
+    FAIL() << "no error";
+  } catch (const input_error& e) {
+    EXPECT_EQ(e.line(), lines + 1);
+    EXPECT_TRUE(contains(e.what(), "second element named 'empty7'")) << e.what();
+  }
+}
+
+// ---- 8. messages with a place ----------------------------------------------------------------
+
+TEST_F(hostile, a_transform_scaled_by_1e308_names_the_scene_file_and_key) {
+  write_file(dir / "t.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n1 1 1\n3 0 1 2\n");
+  const std::string huge = "{\"file\": \"t.off\", \"transform\": [1e308,0,0,0, 0,1e308,0,0, 0,0,1e308,0, 0,0,0,1]}";
+  write_file(dir / "s.json", scene_with(huge));
+  const result r = run("render s.json -o out.png");
+  EXPECT_EQ(r.status, 2) << r.err;
+  // Finite in the world, but beyond what the clipper can take (it forms w - x, w + z, ...).
+  EXPECT_TRUE(contains(r.err, "s.json: /meshes/0/transform: vertex ")) << r.err;
+  EXPECT_TRUE(contains(r.err, "too large to view")) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out.png"));
+  // Without a transform, coordinates that large in the file itself name the file key.
+  write_file(dir / "huge.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n1.7e308 1.7e308 1.7e308\n3 0 1 2\n");
+  const exbsp::scene::scene s = exbsp::scene::parse_scene_text(scene_with("{\"file\": \"huge.off\"}"),
+                                                               (dir / "h.json").string());
+  try {
+    exbsp::scene::load_geometry(s);
+    FAIL() << "no error";
+  } catch (const scene_error& e) {
+    EXPECT_EQ(e.key(), "/meshes/0/file");
+  }
+}
+
+TEST(stl, ascii_stl_with_a_utf8_bom_is_read_as_ascii) {
+  std::string stl = bom + "solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n"
+                          "   vertex 0 1 0\n  endloop\n endfacet\nendsolid t\n";
+  stl += std::string(200, ' ');  // longer than a binary header, as real files are
+  const exbsp::triangle_soup soup = exbsp::read_mesh_data(stl, exbsp::mesh_format::stl, "bom.stl");
+  EXPECT_EQ(soup.triangles.size(), 1u);
+  // A binary STL whose 80-byte header happens to start with the BOM stays binary.
+  std::string bin = bom + std::string(77, ' ');
+  bin += std::string("\x01\x00\x00\x00", 4) + std::string(50, '\0');
+  EXPECT_EQ(exbsp::read_mesh_data(bin, exbsp::mesh_format::stl, "bin.stl").source, "bin.stl");
+}
+
+// ---- 9. small ones -----------------------------------------------------------------------------
+
+TEST_F(hostile, negative_counts_and_empty_output_names_exit_2) {
+  write_file(dir / "t.off", triangle_off);
+  for (const char* args : {"build t.off --max-fragments -1", "build t.off --seed -1",
+                           "order t.off --eye 0,0,5 -o ''", "render -o ''"}) {
+    const result r = run(args);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("exbsp: error: ", 0), 0u) << r.err;
+  }
+  EXPECT_EQ(files(), std::vector<std::string>{"t.off"});
+}
+
+TEST_F(hostile, dash_output_means_standard_output) {
+  write_file(dir / "t.off", triangle_off);
+  const result r = run("order t.off --eye 0,0,5 -o -");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(run("order t.off --eye 0,0,5 -o file.json").status, 0);
+  EXPECT_EQ(r.out, read_file(dir / "file.json"));
+  EXPECT_FALSE(fs::exists(dir / "-"));
+  const result png = run("render -o -");
+  EXPECT_EQ(png.status, 0) << png.err;
+  EXPECT_EQ(png.out.substr(0, 8), "\x89PNG\r\n\x1a\n");
+  EXPECT_FALSE(fs::exists(dir / "-"));
+}
+
+/// `text` with every "\n" replaced by `eol`, preceded by `prefix`.
+std::string recode(const std::string& text, const std::string& prefix, const std::string& eol) {
+  std::string out = prefix;
+  for (char c : text) out += c == '\n' ? eol : std::string(1, c);
+  return out;
+}
+
+TEST(text_files, bom_and_cr_only_line_ends_are_accepted_by_every_ascii_reader) {
+  const std::pair<exbsp::mesh_format, std::string> inputs[] = {
+      {exbsp::mesh_format::off, triangle_off},
+      {exbsp::mesh_format::obj, "# t\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
+      {exbsp::mesh_format::ply,
+       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+       "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+      {exbsp::mesh_format::stl,
+       "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+       "endsolid t\n"}};
+  for (const auto& [format, text] : inputs)
+    for (const char* prefix : {"", "\xEF\xBB\xBF"})
+      for (const char* eol : {"\n", "\r\n", "\r"}) {
+        SCOPED_TRACE(text.substr(0, 3) + " bom=" + std::to_string(*prefix != 0) + " eol=" + std::to_string(eol[0]));
+        const exbsp::triangle_soup soup = exbsp::read_mesh_data(recode(text, prefix, eol), format, "f");
+        EXPECT_EQ(soup.triangles.size(), 1u);
+      }
+}
+
+TEST(text_files, line_numbers_stay_right_with_a_bom_and_cr_only_line_ends) {
+  const std::string bad_off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 nan\n3 0 1 2\n";  // line 5
+  const std::string bad_stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                              "vertex 0 1 x\nendloop\nendfacet\nendsolid t\n";  // line 6
+  for (const char* eol : {"\n", "\r\n", "\r"}) {
+    try {
+      exbsp::read_mesh_data(recode(bad_off, bom, eol), exbsp::mesh_format::off, "f.off");
+      FAIL() << "no error";
+    } catch (const input_error& e) {
+      EXPECT_EQ(e.line(), 5u) << e.what();
+    }
+    try {
+      exbsp::read_mesh_data(recode(bad_stl, bom, eol), exbsp::mesh_format::stl, "f.stl");
+      FAIL() << "no error";
+    } catch (const input_error& e) {
+      EXPECT_EQ(e.line(), 6u) << e.what();
+    }
+  }
+}
+
+TEST(text_files, scenes_with_a_bom_and_cr_only_line_ends_are_read) {
+  const std::string text = scene_with("{\"file\": \"t.off\"}");
+  for (const char* eol : {"\r\n", "\r"})
+    EXPECT_NO_THROW(exbsp::scene::parse_scene_text(recode(text, bom, eol), "s.json")) << eol[0];
+}
+
+TEST_F(hostile, strict_makes_unknown_scene_keys_errors_and_the_warning_lists_expected_keys) {
+  write_file(dir / "t.off", triangle_off);
+  write_file(dir / "s.json", scene_with("{\"file\": \"t.off\", \"colour\": [255, 0, 0]}"));
+  const result warned = run("render s.json -o out.png");
+  EXPECT_EQ(warned.status, 0) << warned.err;
+  EXPECT_TRUE(contains(warned.err, "s.json: /meshes/0/colour: unknown key ignored (expected one of: file, color, transform"))
+      << warned.err;
+  fs::remove(dir / "out.png");
+  const result strict = run("render --strict s.json -o out.png");
+  EXPECT_EQ(strict.status, 2) << strict.err;
+  EXPECT_TRUE(contains(strict.err, "exbsp: error: s.json: /meshes/0/colour: unknown key")) << strict.err;
+  EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+}  // namespace
