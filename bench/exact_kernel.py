@@ -59,8 +59,10 @@ def callgrind(outdir, mesh, kernel):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--quick", action="store_true")
-    ap.add_argument("--no-build", action="store_true")
+    ap.add_argument("--no-build", action="store_true", help="use the existing bench_sweep binary")
+    ap.add_argument("--build-dir", default=base.BUILD, help="where bench/bench_sweep is (default build-bench/)")
     args = ap.parse_args()
+    base.BUILD = os.path.abspath(args.build_dir)
     outdir = os.path.join(base.HERE, "out", "exact-quick" if args.quick else "exact")
     os.makedirs(outdir, exist_ok=True)
     report_path = os.path.join(outdir, "EXACT_KERNEL.md") if args.quick else os.path.join(base.HERE, "EXACT_KERNEL.md")

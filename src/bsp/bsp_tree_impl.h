@@ -176,18 +176,35 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
     });
   }
   failure.rethrow();
+  std::size_t pieces = pool_.size();
+  for (const subtree& part : parts) pieces += part.pieces.size();
+  pool_.reserve(pieces);  // one reallocation, not a doubling per part
   for (subtree& part : parts) {
     const auto base = static_cast<std::uint32_t>(pool_.size());
     for (fragment& f : part.pieces) pool_.push_back(std::move(f));
-    part.pieces.clear();
+    std::vector<fragment>().swap(part.pieces);  // freed as soon as merged
     for (std::uint32_t& ref : part.node_fragments) ref = remap(ref, base);
     append_subtree(part);
   }
 
-  fragments_.reserve(node_fragments_.size());
-  for (std::uint32_t index : node_fragments_) fragments_.push_back(std::move(pool_[index]));
-  std::vector<fragment>().swap(pool_);
-  std::vector<std::uint32_t>().swap(node_fragments_);
+  // Fragments in node order, in place: each moves to its final slot by following cycles of
+  // the permutation, and the dead split parents fall off the end, so no second array of
+  // every fragment is held at the peak.
+  {
+    constexpr std::uint32_t dead = ~0u;
+    const std::size_t live = node_fragments_.size();
+    std::vector<std::uint32_t> target(pool_.size(), dead);
+    for (std::size_t k = 0; k < live; ++k) target[node_fragments_[k]] = static_cast<std::uint32_t>(k);
+    std::vector<std::uint32_t>().swap(node_fragments_);
+    for (std::size_t i = 0; i < pool_.size(); ++i)
+      while (target[i] != dead && target[i] != i) {
+        const std::uint32_t j = target[i];
+        std::swap(pool_[i], pool_[j]);
+        std::swap(target[i], target[j]);
+      }
+    pool_.resize(live);
+    fragments_ = std::move(pool_);
+  }
   stats_.splits = ctx.splits.load();
   stats_.fragments = fragments_.size();
   stats_.nodes = nodes_.size();

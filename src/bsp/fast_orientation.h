@@ -14,12 +14,19 @@
 
 namespace exbsp {
 
-struct fast_plane {
-  vec3d a{}, b{}, c{};    ///< the plane's three points
-  vec3d n{}, err{};       ///< rounded normal, error bound per normal component
-  vec3d coef{};           ///< err + 8u|n| per component: |f - f^| <= coef . |p - a| (before scaling)
-  double spread = 0;      ///< sum of |n| + err: how far f moves per unit of a point's radius
+/// What the filter needs of a plane through a (80 bytes): the rounded normal n and, per
+/// component, coef = err + 8u|n| where err bounds the normal's rounding error, so that
+/// |f(p) - f^(p)| <= coef . |p - a| (before scaling); spread = sum of |n| + err, how far f
+/// moves per unit of a point's radius.
+struct fast_plane_core {
+  vec3d a{}, n{}, coef{};
+  double spread = 0;
   bool valid = false;
+};
+
+/// The core and the plane's other two points (for the shared-vertex test of fast_sign).
+struct fast_plane : fast_plane_core {
+  vec3d b{}, c{};
 };
 
 namespace detail {
@@ -35,6 +42,7 @@ inline fast_plane make_fast_plane(const vec3d& a, const vec3d& b, const vec3d& c
   p.a = a;
   p.b = b;
   p.c = c;
+  vec3d err{};
   const vec3d e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
   const vec3d e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
   for (int k = 0; k < 3; ++k)
@@ -46,10 +54,10 @@ inline fast_plane make_fast_plane(const vec3d& a, const vec3d& b, const vec3d& c
   for (int k = 0; k < 3; ++k) {
     p.n[k] = t[2 * k] - t[2 * k + 1];
     // e1, e2 carry a relative error <= u each, products <= 3u, the difference u more.
-    p.err[k] = 8 * u * (std::fabs(t[2 * k]) + std::fabs(t[2 * k + 1]));
+    err[k] = 8 * u * (std::fabs(t[2 * k]) + std::fabs(t[2 * k + 1]));
     if (!detail::safe_magnitude(p.n[k]) && p.n[k] != 0) return p;
-    p.coef[k] = p.err[k] + 8 * u * std::fabs(p.n[k]);
-    p.spread += std::fabs(p.n[k]) + p.err[k];
+    p.coef[k] = err[k] + 8 * u * std::fabs(p.n[k]);
+    p.spread += std::fabs(p.n[k]) + err[k];
   }
   p.valid = true;
   return p;
@@ -59,7 +67,7 @@ inline fast_plane make_fast_plane(const vec3d& a, const vec3d& b, const vec3d& c
 /// of the double point `point` (radius 0: x is exactly `point`): writes the double value v
 /// and a bound such that |f(x) - v| <= bound. Returns false when the magnitudes leave the
 /// range where the bound holds (the caller must then compute exactly).
-inline bool fast_eval(const fast_plane& p, const vec3d& point, double radius, double& v, double& bound) {
+inline bool fast_eval(const fast_plane_core& p, const vec3d& point, double radius, double& v, double& bound) {
   constexpr double u = 1.1102230246251565e-16;
   if (!p.valid) return false;
   // The plane's magnitudes were checked once (make_fast_plane). Here a difference q_k is exact
@@ -78,12 +86,18 @@ inline bool fast_eval(const fast_plane& p, const vec3d& point, double radius, do
 /// Sign of orientation(a, b, c, x) for a point x known to lie within `radius` (max norm) of
 /// the double point `point` (radius 0: x is exactly `point`): -1, 0 or +1 when certified,
 /// 2 when the caller must use the exact predicate.
-inline int fast_sign(const fast_plane& p, const vec3d& point, double radius = 0) {
+inline int fast_sign(const fast_plane_core& p, const vec3d& point, double radius = 0) {
   double v, bound;
   if (!fast_eval(p, point, radius, v, bound)) return 2;
   if (v > bound) return 1;
   if (v < -bound) return -1;
-  // A vertex shared with the plane's triangle (adjacent mesh triangles): exactly on it.
+  return 2;
+}
+
+/// fast_sign, and 0 for a vertex shared with the plane's triangle (adjacent mesh triangles).
+inline int fast_sign(const fast_plane& p, const vec3d& point, double radius = 0) {
+  const int s = fast_sign(static_cast<const fast_plane_core&>(p), point, radius);
+  if (s != 2) return s;
   if (radius == 0 && (point == p.a || point == p.b || point == p.c)) return 0;
   return 2;
 }

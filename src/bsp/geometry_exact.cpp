@@ -58,7 +58,12 @@ exact_geometry::exact_geometry(const triangle_soup& soup)
 
 exact_geometry::~exact_geometry() {
   for (auto& p : exact_planes_) delete p.load(std::memory_order_relaxed);
-  for (std::uint32_t id = 0; id < claimed_; ++id) delete at(id).exact.load(std::memory_order_relaxed);
+}
+
+const exact_geometry::exact_value* exact_geometry::find_exact(std::uint32_t id) const {
+  const std::lock_guard<std::mutex> lock(exact_mutex_);
+  const auto it = exact_values_.find(id);
+  return it == exact_values_.end() ? nullptr : it->second.get();
 }
 
 void exact_geometry::claim_block(scratch& sc) {
@@ -116,20 +121,21 @@ const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane)
 const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) const {
   // Iterative over the points x depends on (their ids are smaller: a point is made after its
   // endpoints), so a long chain of nested split points cannot overflow the stack.
+  if (const exact_value* known = find_exact(x)) return *known;
   std::vector<std::uint32_t> stack{x};
   while (!stack.empty()) {
     const std::uint32_t id = stack.back();
-    const point& pt = at(id);
-    if (pt.exact.load(std::memory_order_acquire)) {
+    if (find_exact(id)) {
       stack.pop_back();
       continue;
     }
+    const point& pt = at(id);
     auto made = std::make_unique<exact_value>();
     if (pt.p == none) {
       for (int j = 0; j < 3; ++j) made->x[j] = pt.c[j];  // exact: a double is a dyadic rational
     } else {
-      const exact_value* ep = at(pt.p).exact.load(std::memory_order_acquire);
-      const exact_value* eq = at(pt.q).exact.load(std::memory_order_acquire);
+      const exact_value* ep = find_exact(pt.p);
+      const exact_value* eq = find_exact(pt.q);
       if (!ep || !eq) {
         if (!ep) stack.push_back(pt.p);
         if (!eq) stack.push_back(pt.q);
@@ -142,11 +148,14 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
       const mpq_class den = fp - fq;
       for (int j = 0; j < 3; ++j) made->x[j] = (fp * eq->x[j] - fq * ep->x[j]) / den;
     }
-    const exact_value* expected = nullptr;
-    if (pt.exact.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel)) made.release();
+    {
+      // Another thread may have made the same value meanwhile: the first one stays.
+      const std::lock_guard<std::mutex> lock(exact_mutex_);
+      exact_values_.emplace(id, std::move(made));
+    }
     stack.pop_back();
   }
-  return *at(x).exact.load(std::memory_order_acquire);
+  return *find_exact(x);
 }
 
 int exact_geometry::exact_sign(std::uint32_t plane, std::uint32_t x) const {
@@ -158,9 +167,11 @@ int exact_geometry::exact_sign(std::uint32_t plane, std::uint32_t x) const {
 int exact_geometry::point_sign_slow(std::uint32_t plane, std::uint32_t x, int& budget) const {
   const point& pt = at(x);
   if (pt.p == none) {
-    // An input vertex: Epick's orientation is exact on doubles (filtered, exact fallback).
-    using E = CGAL::Epick;
+    // An input vertex: 0 when it is one of the plane's own vertices (adjacent mesh triangles),
+    // else Epick's orientation, exact on doubles (filtered, exact fallback).
     const auto& s = sources_[plane];
+    if (x == s[0] || x == s[1] || x == s[2]) return 0;
+    using E = CGAL::Epick;
     const auto P = [&](std::uint32_t id) { return E::Point_3(at(id).c[0], at(id).c[1], at(id).c[2]); };
     return static_cast<int>(E().orientation_3_object()(P(s[0]), P(s[1]), P(s[2]), P(x)));
   }
@@ -256,11 +267,11 @@ int exact_geometry::side_of_eye(std::uint32_t plane, const vec3d& eye) const {
 
 int exact_geometry::side_of_direction(std::uint32_t plane, const vec3d& d) const {
   // sign(n . (-d)): the double normal's error bound first, exact rationals when too close.
-  const fast_plane& fp = fast_[plane];
+  const fast_plane_core& fp = fast_[plane];
   if (fp.valid) {
     const double v = -(fp.n[0] * d[0] + fp.n[1] * d[1] + fp.n[2] * d[2]);
     double bound = 0;
-    for (int k = 0; k < 3; ++k) bound += (fp.err[k] + 4 * u * std::fabs(fp.n[k])) * std::fabs(d[k]);
+    for (int k = 0; k < 3; ++k) bound += fp.coef[k] * std::fabs(d[k]);
     bound = bound * (1 + 8 * u) + 1e-290;
     if (std::isfinite(v) && std::isfinite(bound)) {
       if (v > bound) return 1;

@@ -18,6 +18,7 @@
 // the construction is what makes most exact answers free.
 #pragma once
 #include <array>
+#include <memory>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -89,9 +90,8 @@ private:
     vec3d c{};
     double r = 0;
     std::uint32_t p = none, q = none, plane = none;  ///< SEG(p, q, plane); none: input vertex
-    mutable std::atomic<const exact_value*> exact{nullptr};
   };
-  static constexpr unsigned chunk_bits = 15;
+  static constexpr unsigned chunk_bits = 13;
   static constexpr unsigned max_point_bits = 28;  ///< 2^28 points (15 GB of them) at most
   static constexpr std::uint32_t chunk_size = 1u << chunk_bits;
   static constexpr std::uint32_t block = 512;
@@ -103,7 +103,7 @@ private:
 
   int point_sign(std::uint32_t plane, std::uint32_t x, int& budget) const {
     const point& pt = at(x);
-    const int s = fast_sign(fast_[plane], pt.c, pt.r);
+    const int s = fast_sign(fast_[plane], pt.c, pt.r);  // the core filter: no shared-vertex test
     if (s != 2) {
       return s;
     }
@@ -116,8 +116,13 @@ private:
   std::uint32_t construct(std::uint32_t plane, std::uint32_t p, std::uint32_t q, scratch& sc);
 
   std::vector<std::array<std::uint32_t, 3>> sources_;  ///< input vertex ids (= point ids)
-  std::vector<fast_plane> fast_;
+  std::vector<fast_plane_core> fast_;
   mutable std::vector<std::atomic<const exact_plane*>> exact_planes_;
+  /// Exact values of the few points that needed one (and of output points), by point id:
+  /// rare during a build, so a locked map rather than 8 bytes in every point.
+  const exact_value* find_exact(std::uint32_t id) const;
+  mutable std::mutex exact_mutex_;
+  mutable std::unordered_map<std::uint32_t, std::unique_ptr<const exact_value>> exact_values_;
   std::vector<std::unique_ptr<point[]>> chunks_;  ///< sized once: never reallocated
   std::mutex claim_mutex_;
   std::uint32_t claimed_ = 0;  ///< ids below this are claimed (guarded by claim_mutex_)
