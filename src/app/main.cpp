@@ -228,9 +228,9 @@ int main(int argc, char** argv) {
   std::string scene_path, render_out = "exbsp.png";
   bool verbose = false;
   auto* render = app.add_subcommand(
-      "render", "render SCENE.json (or the built-in demo scene) to PNG or SVG");
+      "render", "render SCENE.json (or the built-in demo scene) to PNG, SVG or PDF");
   render->add_option("SCENE", scene_path, "scene file (JSON); omit for the built-in demo");
-  render->add_option("-o,--output", render_out, "output .png or .svg")->capture_default_str();
+  render->add_option("-o,--output", render_out, "output .png, .svg or .pdf")->capture_default_str();
   render->add_flag("-v,--verbose", verbose, "print the pipeline stages that ran and their timings");
   std::string orbit_drag;
   std::size_t orbit_frames = 0;

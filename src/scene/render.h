@@ -27,7 +27,7 @@ struct render_request {
       : scene_path(std::move(scene)), output_path(std::move(output)), verbose(verbose_log) {}
 
   std::string scene_path;   ///< empty: the built-in demo scene
-  std::string output_path;  ///< .png or .svg (by extension)
+  std::string output_path;  ///< .png, .svg or .pdf (by extension)
   bool verbose = false;     ///< print which pipeline stages ran, timings
   /// Orbit drag path in screen pixels (y down); empty: one still image.
   std::vector<std::array<double, 2>> orbit_drag;

@@ -34,6 +34,10 @@
 //                     perspective and frustum projections only
 //   antialias         samples 4 (1..8: N x N sub-pixels; N times the
 //                     viewport must stay within max_viewport_side)
+//
+// Vector output: "svg": {"mode": "visible" | "painter", "edges": "none" | "visible" |
+// "visible+hidden", "crease_deg": (0, 180]} (view/vector_drawing.h; SVG and PDF), default
+// visible regions without edges.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -86,6 +90,7 @@ struct scene {
   std::vector<std::string> effects;  ///< enabled effects (names from view::effect_catalog())
   view::effect_settings effect_settings;  ///< parameters of the enabled effects, defaults filled in
   std::vector<view::curve_spec> curves;   ///< "curves" (empty when absent)
+  view::vector_options vector;            ///< "svg": vector output options (SVG and PDF)
 };
 
 /// Validates a parsed JSON document. `path` names the file in messages and anchors relative

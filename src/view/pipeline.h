@@ -25,6 +25,7 @@
 #include "view/matrix.h"
 #include "view/screen_line.h"
 #include "view/screen_polygon.h"
+#include "view/vector_drawing.h"
 #include "view/viewport.h"
 
 namespace exbsp::view {
@@ -61,6 +62,8 @@ struct frame {
   rgb8 background{255, 255, 255};
   effect_settings settings;         ///< parameters of the named effects (the others are ignored)
   std::vector<curve_spec> curves;   ///< world-space Bézier curves ("curves" stage)
+  vector_options vector;            ///< SVG / PDF: visible regions or painter's stack, edges
+  std::vector<std::uint32_t> face_offsets;  ///< first face id of each mesh (vector groups; may be empty)
 
   // Products.
   std::optional<bsp> tree;                 ///< "build"
@@ -68,7 +71,8 @@ struct frame {
   std::vector<std::uint32_t> order;        ///< "order": fragment indices, back to front
   std::vector<screen_polygon> polygons;    ///< "transform+clip": visible polygons, back to front
   image picture;                           ///< "raster"
-  std::string svg;                         ///< "svg"
+  std::string svg;                         ///< "svg": the SVG document
+  std::string pdf;                         ///< "pdf": the PDF document
   std::vector<rgb8> fragment_colors;       ///< "lighting": colour by fragment index (empty: face colours)
   std::vector<screen_line> lines;          ///< "curves": clipped curve pieces in painter's slots
   std::optional<fog_shading> fog;          ///< "fog": applied per pixel by raster/antialias, per path by svg
