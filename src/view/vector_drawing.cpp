@@ -149,13 +149,19 @@ public:
       }
   }
 
+  /// True when every tile p's bounding box meets is fully covered (p is hidden).
+  bool hides(const cl::Path& p) const {
+    const auto [tx0, ty0, tx1, ty1] = tile_range(bbox_of(p));
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx)
+        if (!tiles_[index(tx, ty)].full) return false;
+    return true;
+  }
+
   /// Adds the counter-clockwise polygon p; appends its part not covered before to `visible`.
   void add(const cl::Path& p, cl::Paths& visible) {
+    if (hides(p)) return;
     const auto [tx0, ty0, tx1, ty1] = tile_range(bbox_of(p));
-    bool all_full = true;
-    for (int ty = ty0; ty <= ty1 && all_full; ++ty)
-      for (int tx = tx0; tx <= tx1 && all_full; ++tx) all_full = tiles_[index(tx, ty)].full;
-    if (all_full) return;
     clip_.clear();
     gather(tx0, ty0, tx1, ty1, clip_);
     if (clip_.empty()) {
@@ -259,59 +265,74 @@ private:
 /// point on a neighbour's edge), rounding to the grid moves it up to half a unit off that edge
 /// and opens a crack through which what is behind would show. Every vertex lying less than
 /// one unit from the inside of an edge of another polygon is inserted into that edge, so the
-/// two share the boundary exactly. (Vertices are found through a hash grid of cells walked
-/// along each edge.)
-void mend_t_junctions(std::vector<cl::Path>& polys) {
-  constexpr long long cell = 4 * grid_per_pixel;
-  auto key = [](long long cx, long long cy) { return static_cast<std::uint64_t>(cx + (1LL << 30)) << 32 | static_cast<std::uint64_t>(cy + (1LL << 30)); };
-  auto cell_of = [](long long v) { return v >= 0 ? v / cell : -((-v + cell - 1) / cell); };
-  std::unordered_map<std::uint64_t, std::vector<cl::IntPoint>> cells;
-  for (const cl::Path& p : polys)
-    for (const cl::IntPoint& q : p) cells[key(cell_of(q.X), cell_of(q.Y))].push_back(q);
-  for (auto& [k, pts] : cells) {
-    std::sort(pts.begin(), pts.end(), [](const cl::IntPoint& a, const cl::IntPoint& b) { return a.X != b.X ? a.X < b.X : a.Y < b.Y; });
-    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+/// two share the boundary exactly. Vertices are found in a sorted index of 4-pixel cells,
+/// walking the cells along each edge; a polygon is mended only when it may be visible.
+class t_junction_mender {
+public:
+  explicit t_junction_mender(const std::vector<cl::Path>& polys) {
+    for (const cl::Path& p : polys)
+      for (const cl::IntPoint& q : p) index_.push_back({key(cell_of(q.X), cell_of(q.Y)), q});
+    std::sort(index_.begin(), index_.end(), [](const entry& a, const entry& b) {
+      return a.key != b.key ? a.key < b.key : a.p.X != b.p.X ? a.p.X < b.p.X : a.p.Y < b.p.Y;
+    });
+    index_.erase(std::unique(index_.begin(), index_.end(),
+                             [](const entry& a, const entry& b) { return a.key == b.key && a.p == b.p; }),
+                 index_.end());
   }
-  std::vector<std::pair<double, cl::IntPoint>> on_edge;
-  std::vector<std::uint64_t> visited;
-  cl::Path mended;
-  for (cl::Path& p : polys) {
-    if (p.empty()) continue;
-    mended.clear();
+
+  /// Inserts into p's edges the vertices lying less than one unit from their insides.
+  void mend(cl::Path& p) {
+    mended_.clear();
     for (std::size_t i = 0; i < p.size(); ++i) {
       const cl::IntPoint a = p[i], b = p[(i + 1) % p.size()];
-      mended.push_back(a);
+      mended_.push_back(a);
       const double dx = static_cast<double>(b.X - a.X), dy = static_cast<double>(b.Y - a.Y);
       const double len2 = dx * dx + dy * dy, len = std::sqrt(len2);
-      on_edge.clear();
-      visited.clear();
+      on_edge_.clear();
+      cells_.clear();
       const long long steps = static_cast<long long>(len / (cell / 2)) + 1;
       for (long long s = 0; s <= steps; ++s) {
         const double t = static_cast<double>(s) / static_cast<double>(steps);
         const long long cx = cell_of(a.X + std::llround(t * dx)), cy = cell_of(a.Y + std::llround(t * dy));
         for (long long ox = -1; ox <= 1; ++ox)
-          for (long long oy = -1; oy <= 1; ++oy) visited.push_back(key(cx + ox, cy + oy));
+          for (long long oy = -1; oy <= 1; ++oy) cells_.push_back(key(cx + ox, cy + oy));
       }
-      std::sort(visited.begin(), visited.end());
-      visited.erase(std::unique(visited.begin(), visited.end()), visited.end());
-      for (const std::uint64_t k : visited) {
-        const auto it = cells.find(k);
-        if (it == cells.end()) continue;
-        for (const cl::IntPoint& v : it->second) {
+      std::sort(cells_.begin(), cells_.end());
+      cells_.erase(std::unique(cells_.begin(), cells_.end()), cells_.end());
+      for (const std::uint64_t k : cells_) {
+        auto it = std::lower_bound(index_.begin(), index_.end(), k, [](const entry& e, std::uint64_t v) { return e.key < v; });
+        for (; it != index_.end() && it->key == k; ++it) {
+          const cl::IntPoint& v = it->p;
           const double vx = static_cast<double>(v.X - a.X), vy = static_cast<double>(v.Y - a.Y);
           const double along = vx * dx + vy * dy;
           if (along <= 0 || along >= len2) continue;
           if (std::abs(vx * dy - vy * dx) >= len) continue;  // one unit or more off the line
-          on_edge.push_back({along, v});
+          on_edge_.push_back({along, v});
         }
       }
-      std::sort(on_edge.begin(), on_edge.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-      for (const auto& [along, v] : on_edge)
-        if (!(mended.back() == v)) mended.push_back(v);
+      std::sort(on_edge_.begin(), on_edge_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+      for (const auto& [along, v] : on_edge_)
+        if (!(mended_.back() == v)) mended_.push_back(v);
     }
-    p.swap(mended);
+    p.swap(mended_);
   }
-}
+
+private:
+  static constexpr long long cell = 4 * grid_per_pixel;
+  struct entry {
+    std::uint64_t key;
+    cl::IntPoint p;
+  };
+  static std::uint64_t key(long long cx, long long cy) {
+    return static_cast<std::uint64_t>(cx + (1LL << 30)) << 32 | static_cast<std::uint64_t>(cy + (1LL << 30));
+  }
+  static long long cell_of(long long v) { return v >= 0 ? v / cell : -((-v + cell - 1) / cell); }
+
+  std::vector<entry> index_;
+  std::vector<std::uint64_t> cells_;
+  std::vector<std::pair<double, cl::IntPoint>> on_edge_;
+  cl::Path mended_;
+};
 
 /// Mesh index of each face id (f.face_offsets: first face of mesh k).
 std::uint32_t mesh_of(const frame& f, std::uint32_t face) {
@@ -674,14 +695,15 @@ vector_drawing visible_drawing(const frame& f) {
     }
     if (!cl::Orientation(poly)) cl::ReversePath(poly);
   }
-  mend_t_junctions(snapped);
+  t_junction_mender mender(snapped);
   cl::Paths visible;
   for (std::size_t k = f.polygons.size(); k-- > 0;) {
     // Lines of slot k + 1 lie behind polygons k + 1 .. n - 1: clip them now.
     while (next_line > 0 && f.lines[next_line - 1].slot > k) clip_line(f.lines[--next_line]);
     const screen_polygon& p = f.polygons[k];
-    const cl::Path& poly = snapped[k];
-    if (poly.empty()) continue;
+    cl::Path& poly = snapped[k];
+    if (poly.empty() || coverage.hides(poly)) continue;
+    mender.mend(poly);
     visible.clear();
     coverage.add(poly, visible);
     if (visible.empty()) continue;

@@ -57,6 +57,10 @@ struct vector_options {
   /// visible edges.
   edges_kind edges = edges_kind::none;
   double crease_deg = 30;  ///< 0 < crease_deg <= 180
+
+  /// The defaults for a bare mesh drawn without a scene (`exbsp render MESH`): a CAD line
+  /// drawing, visible regions with visible edges.
+  static vector_options for_mesh() { return {mode_kind::visible, edges_kind::visible, 30}; }
 };
 
 /// "visible", "painter" / "none", "visible", "visible+hidden".
