@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_view.h"
 #include "generators.h"
 #include "view/camera.h"
 #include "view/effects.h"
@@ -80,17 +81,7 @@ int main(int argc, char** argv) {
     view::frame f;
     f.soup = bench::load_input(in);
     f.face_colors.assign(f.soup.face_count, view::rgb8{200, 200, 210});
-    const bench::bounds b = bench::soup_bounds(f.soup);
-    const vec3d c = b.centre();
-    const double d = b.diagonal();
-    const double n = std::sqrt(1 + 0.36 + 0.16);
-    f.view.kind = view::projection_kind::perspective;
-    f.view.cam.look_at = {c[0], c[1], c[2]};
-    f.view.cam.eye = {c[0] + d * 1.0 / n, c[1] + d * 0.6 / n, c[2] + d * 0.4 / n};
-    f.view.cam.up = {0, 0, 1};
-    f.view.model_view = view::look_at(f.view.cam);
-    f.view.projection = view::perspective(40, static_cast<double>(width) / height, 0.05 * d, 3 * d);
-    f.view.vp = view::viewport{0, 0, width, height, 0.0, 1.0};
+    bench::set_bench_view(f, width, height);
     view::build_stage(f);
     for (const mode& m : modes) {
       f.vector = m.options;
