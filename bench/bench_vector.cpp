@@ -58,6 +58,8 @@ int main(int argc, char** argv) {
   app.add_option("--height", height)->capture_default_str();
   app.add_option("--out", out_path, "append the JSON lines to this file");
   app.add_option("--keep", keep_dir, "write each mode's last document into this directory");
+  std::string only;
+  app.add_option("--mode", only, "run only the modes whose name contains this text");
   CLI11_PARSE(app, argc, argv);
 
   std::ofstream out;
@@ -84,6 +86,7 @@ int main(int argc, char** argv) {
     bench::set_bench_view(f, width, height);
     view::build_stage(f);
     for (const mode& m : modes) {
+      if (std::string(m.name).find(only) == std::string::npos) continue;
       f.vector = m.options;
       std::vector<double> stage, total, stage_cpu;
       for (std::size_t i = 0; i < frames; ++i) {

@@ -135,7 +135,7 @@ bbox_i bbox_of(const Points& pts) {
 /// Nonzero fill with every input polygon counter-clockwise makes a list mean its union.
 class tiled_coverage {
 public:
-  static constexpr long long tile_side = 32 * grid_per_pixel;
+  static constexpr long long tile_side = 16 * grid_per_pixel;
   static constexpr int merge_every = 8;
 
   tiled_coverage(long long width, long long height)
@@ -232,6 +232,11 @@ private:
     clipper_.AddPaths(t.covered, cl::ptSubject, true);
     clipper_.Execute(cl::ctUnion, t.covered, cl::pftNonZero, cl::pftNonZero);
     t.pending = 0;
+    // Holes thinner than min_region_width are rounding cracks, not gaps anything can be seen
+    // through: closing them keeps the coverage simple and lets the tile become full.
+    t.covered.erase(std::remove_if(t.covered.begin(), t.covered.end(),
+                                   [](const cl::Path& p) { return !cl::Orientation(p) && mean_width(p) < min_region_width; }),
+                    t.covered.end());
     double area = 0;
     for (const cl::Path& p : t.covered) area += cl::Area(p);
     if (area < cl::Area(t.rect)) return;  // cannot cover the square yet
