@@ -22,6 +22,7 @@
 
 #include "mesh/errors.h"
 #include "scene/demo_scene.h"
+#include "scene/render.h"
 #include "scene/scene.h"
 #include "view/camera.h"
 #include "view/effects.h"
@@ -393,6 +394,47 @@ TEST(Pdf, IsAPdfWithOnePageOfTheViewportSize) {
   f.vector.mode = vector_options::mode_kind::painter;
   run(f, s.effects, output_kind::pdf);
   EXPECT_EQ(f.pdf.compare(0, 5, "%PDF-"), 0);
+}
+
+// ---- scene options and the command ------------------------------------------------------
+
+TEST(Options, BadSvgOptionsNameTheirKey) {
+  const std::string base = R"({"meshes": [], "camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0], "up": [0, 1, 0]},
+    "projection": {"type": "perspective", "fovy_deg": 40, "near": 1, "far": 100},
+    "viewport": {"width": 64, "height": 48}, "svg": )";
+  auto key_of = [&](const std::string& svg) {
+    try {
+      scene::parse_scene_text(base + svg + "}", "s.json");
+    } catch (const scene_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(key_of(R"({"mode": "stack"})").find("/svg/mode"), std::string::npos);
+  EXPECT_NE(key_of(R"({"edges": "all"})").find("/svg/edges"), std::string::npos);
+  EXPECT_NE(key_of(R"({"crease_deg": 0})").find("/svg/crease_deg"), std::string::npos);
+  EXPECT_NE(key_of(R"({"crease_deg": "30"})").find("/svg/crease_deg"), std::string::npos);
+  EXPECT_NE(key_of(R"({"colour": 1})").find("/svg/colour"), std::string::npos);
+  const scene::scene s = scene::parse_scene_text(base + R"({"mode": "painter", "edges": "visible+hidden", "crease_deg": 45})" + "}", "s.json");
+  EXPECT_EQ(s.vector.mode, vector_options::mode_kind::painter);
+  EXPECT_EQ(s.vector.edges, vector_options::edges_kind::visible_hidden);
+  EXPECT_EQ(s.vector.crease_deg, 45);
+}
+
+TEST(Options, TheCommandWritesPdfAndSvgByExtension) {
+  const std::string dir = temp_dir();
+  std::ostringstream log;
+  render_command({"", dir + "/cmd.pdf", false}, log);
+  render_command({"", dir + "/cmd.svg", false}, log);
+  std::ifstream pdf(dir + "/cmd.pdf", std::ios::binary), svg(dir + "/cmd.svg");
+  std::string head(5, ' ');
+  pdf.read(&head[0], 5);
+  EXPECT_EQ(head, "%PDF-");
+  std::stringstream text;
+  text << svg.rdbuf();
+  EXPECT_NE(text.str().find("<g id=\"mesh-0\">"), std::string::npos);
+  EXPECT_EQ(text.str().find("data-fragment"), std::string::npos);  // visible regions, not the stack
+  EXPECT_THROW(render_command({"", dir + "/cmd.eps", false}, log), usage_error);
 }
 
 // ---- browsers ---------------------------------------------------------------------------
