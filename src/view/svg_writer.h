@@ -1,16 +1,17 @@
 // SVG output: the visible-region drawing (vector_drawing.h, the default) and the painter's
 // stack ("svg": {"mode": "painter"}), a vector drawing that looks like the PNG.
 //
-// Visible regions: <g id="underlay"> (one path per colour shared by several regions,
-// vector_drawing.h), then one <g id="mesh-N"> per mesh holding one <path data-face="F"> per visible
-// region (its rings in one path, nonzero fill, no stroke), then <g id="hidden-edges"> (dashed)
-// and <g id="visible-edges"> with one path per mesh (data-mesh="N"), then <g id="curves">.
-// Coordinates are grid values / 100 (at most two decimals), y flipped as below.
-//
-// The painter's stack:
-// Notation: the SVG user space is the window with y flipped: (x_svg, y_svg) = (x - vp.x,
+// Notation (both): the SVG user space is the window with y flipped: (x_svg, y_svg) = (x - vp.x,
 // vp.y + height - y), viewBox "0 0 width height", so window pixel (i, j) is the unit square
-// at SVG (i, height - 1 - j) — the same place as in the PNG. Polygons are written in the order
+// at SVG (i, height - 1 - j) — the same place as in the PNG.
+//
+// Visible regions: <g id="underlay"> (one path per colour shared by several regions,
+// vector_drawing.h), then one <g id="mesh-N"> per mesh holding one <path data-face="F"> per
+// visible region (its rings in one path, nonzero fill, no stroke), then <g id="hidden-edges">
+// (dashed) and <g id="visible-edges"> with one path per mesh (data-mesh="N"), then
+// <g id="curves">. Coordinates are grid values / 100 (at most two decimals).
+//
+// The painter's stack: polygons are written in the order
 // given (back to front), one closed <path> each, filled with the polygon's colour and stroked
 // in the same colour with width svg_seam_stroke (round joins): anti-aliasing SVG renderers
 // otherwise let the background shine through the shared edges of adjacent polygons
