@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_view.h"
 #include "generators.h"
 #include "view/atomic_file.h"
 #include "view/camera.h"
@@ -189,17 +190,7 @@ int main(int argc, char** argv) {
     f.build.heuristic = heuristic;
     f.face_colors.resize(f.soup.face_count);
     for (std::uint32_t i = 0; i < f.soup.face_count; ++i) f.face_colors[i] = face_color(i);
-    const bench::bounds b = bench::soup_bounds(f.soup);
-    const vec3d c = b.centre();
-    const double d = b.diagonal();
-    const double n = std::sqrt(1 + 0.36 + 0.16);
-    f.view.kind = view::projection_kind::perspective;
-    f.view.cam.look_at = {c[0], c[1], c[2]};
-    f.view.cam.eye = {c[0] + d * 1.0 / n, c[1] + d * 0.6 / n, c[2] + d * 0.4 / n};
-    f.view.cam.up = {0, 0, 1};
-    f.view.model_view = view::look_at(f.view.cam);
-    f.view.projection = view::perspective(40, static_cast<double>(width) / height, 0.05 * d, 3 * d);
-    f.view.vp = view::viewport{0, 0, width, height, 0.0, 1.0};
+    bench::set_bench_view(f, width, height);
 
     json line = {{"input", in.name}, {"triangles", f.soup.triangles.size()}, {"kernel", kernel},
                  {"heuristic", heuristic}, {"width", width}, {"height", height}, {"frames", frames}};

@@ -1,7 +1,7 @@
 # cmake --install: headers, static libraries and a CMake package config (find_package(exbsp)).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
-set(EXBSP_INSTALL_TARGETS exbsp_options exbsp_gmp exbsp_cgal_flags
+set(EXBSP_INSTALL_TARGETS exbsp_options exbsp_gmp exbsp_cgal_flags exbsp_polyclipping exbsp_cairo
     exbsp_mesh exbsp_bsp exbsp_clip exbsp_view exbsp_scene)
 install(TARGETS ${EXBSP_INSTALL_TARGETS} EXPORT exbspTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

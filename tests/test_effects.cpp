@@ -788,6 +788,7 @@ TEST(CurveDepth, SvgPlacesTheCurveBetweenTheFacesBehindAndInFrontOfIt) {
   add_quad(s, {-1, -2, -2}, {1, -2, -2}, {1, -2, 2}, {-1, -2, 2});  // face 1 in front of it
   frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, -8, 0.5}, {0, 0, 0}, {0, 0, 1}}, 120, 90);
   f.curves.push_back({{{-3, 0, 0}, {0, 0.5, 1}, {3, 0, 0}}, {0, 0, 0}});
+  f.vector.mode = vector_options::mode_kind::painter;  // the painter's stack keeps every fragment
   run(f, {}, output_kind::svg);
   std::vector<std::string> sequence;  // "face0", "face1", "curve", in document order
   for (std::size_t at = f.svg.find("data-"); at != std::string::npos; at = f.svg.find("data-", at + 1)) {

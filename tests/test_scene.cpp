@@ -466,7 +466,8 @@ TEST(Render, BackfaceCullingRunsOnlyWhenAskedFor) {
   EXPECT_NE(log.str().find("stage backface_culling:"), std::string::npos);
 }
 
-/// Renders a scene from scenes/ to PNG and SVG; returns the SVG's data-fragment sequence.
+/// Renders a scene from scenes/ to PNG and SVG; returns the SVG's data-face sequence (one path
+/// per visible region, view/vector_drawing.h).
 std::vector<std::uint32_t> render_example(const std::string& name, view::image& png) {
   const std::string scene_path = std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json";
   const std::string png_path = temp_dir() + "/" + name + ".png", svg_path = temp_dir() + "/" + name + ".svg";
@@ -481,7 +482,7 @@ std::vector<std::uint32_t> render_example(const std::string& name, view::image& 
   const std::string svg = text.str();
   // (String scanning rather than <regex>: GCC 12's <regex> trips -Wmaybe-uninitialized in
   // the sanitizer build.)
-  const std::string key = "data-fragment=\"";
+  const std::string key = "data-face=\"";
   std::vector<std::uint32_t> frags;
   for (std::size_t at = svg.find(key); at != std::string::npos; at = svg.find(key, at + 1))
     frags.push_back(static_cast<std::uint32_t>(std::stoul(svg.substr(at + key.size()))));
@@ -495,17 +496,23 @@ TEST(Render, ExampleScenesRenderToPngAndSvg) {
     EXPECT_GT(frags.size(), 0u) << name;
     EXPECT_GT(colours_of(png).size(), 3u) << name;
 
-    // The SVG's paths are exactly the visible fragments in back-to-front order.
+    // Visible regions: each face at most once.
+    EXPECT_EQ(std::set<std::uint32_t>(frags.begin(), frags.end()).size(), frags.size()) << name;
+    // The painter's SVG: its paths are exactly the visible fragments in back-to-front order.
     const scene::scene s = scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
     scene::scene_geometry g = scene::load_geometry(s);
     view::frame f;
     f.view = scene::make_view_setup(s);
     f.soup = std::move(g.soup);
     f.face_colors = std::move(g.face_colors);
+    f.vector.mode = view::vector_options::mode_kind::painter;
     view::standard_pipeline(s.effects, view::output_kind::svg).run(f, nullptr);
-    std::vector<std::uint32_t> expected;
+    std::vector<std::uint32_t> expected, painted;
     for (const view::screen_polygon& p : f.polygons) expected.push_back(p.fragment);
-    EXPECT_EQ(frags, expected) << name;
+    const std::string fragment_key = "data-fragment=\"";
+    for (std::size_t at = f.svg.find(fragment_key); at != std::string::npos; at = f.svg.find(fragment_key, at + 1))
+      painted.push_back(static_cast<std::uint32_t>(std::stoul(f.svg.substr(at + fragment_key.size()))));
+    EXPECT_EQ(painted, expected) << name;
     EXPECT_EQ(f.polygons.size() + f.fully_clipped + f.culled, f.fragments.size()) << name;
     if (std::string(name) == "inside") {
       EXPECT_GT(f.fully_clipped, 0u);  // the near plane cuts the room around the eye

@@ -867,6 +867,7 @@ TEST(Svg, OnePathPerVisibleFragmentInBackToFrontOrder) {
   f.view.vp = {0, 0, 320, 240, 0, 1};
   // Move the camera so that some fragments are fully clipped (outside the view).
   f.view.projection = perspective(20, 320.0 / 240, 1, 30);
+  f.vector.mode = vector_options::mode_kind::painter;  // the painter's stack (the default is visible regions)
   pipeline p = standard_pipeline({}, output_kind::svg);
   p.run(f, nullptr);
   ASSERT_FALSE(f.polygons.empty());

@@ -316,9 +316,9 @@ int main(int argc, char** argv) {
   std::string scene_path, render_out = "exbsp.png";
   bool verbose = false;
   auto* render = app.add_subcommand(
-      "render", "render SCENE.json (or the built-in demo scene) to PNG or SVG");
+      "render", "render SCENE.json (or the built-in demo scene) to PNG, SVG or PDF");
   render->add_option("SCENE", scene_path, "scene file (JSON); omit for the built-in demo");
-  render->add_option("-o,--output", render_out, "output .png or .svg ('-': PNG on standard output)")
+  render->add_option("-o,--output", render_out, "output .png, .svg or .pdf ('-': PNG on standard output)")
       ->check(non_empty_path)
       ->capture_default_str();
   bool strict = false;

@@ -1,5 +1,5 @@
 // `exbsp render`: scene (or the built-in demo) -> one soup -> the stage list of
-// view/effects.h -> atomic PNG or SVG write; with an orbit, one build and one run of the
+// view/effects.h -> atomic PNG, SVG or PDF write; with an orbit, one build and one run of the
 // per-view stages per frame (notation in render.h).
 #include "scene/render.h"
 
@@ -46,7 +46,7 @@ view::stage write_stage(const std::string& path, view::output_kind kind) {
             if (kind == view::output_kind::png)
               view::write_png(fr.picture, path);
             else
-              view::write_file_atomically(path, fr.svg);
+              view::write_file_atomically(path, kind == view::output_kind::svg ? fr.svg : fr.pdf);
             return path;
           }};
 }
@@ -150,8 +150,10 @@ void render_command(const render_request& request, std::ostream& log) {
     kind = view::output_kind::png;
   } else if (ends_with_ci(out, ".svg")) {
     kind = view::output_kind::svg;
+  } else if (ends_with_ci(out, ".pdf")) {
+    kind = view::output_kind::pdf;
   } else {
-    throw usage_error("render: the output file must end in .png or .svg: " + out);
+    throw usage_error("render: the output file must end in .png, .svg or .pdf: " + out);
   }
   const bool orbit = !request.orbit_drag.empty();
   if (!orbit && request.frames != 0) throw usage_error("render: --frames needs --orbit-drag");
@@ -176,6 +178,7 @@ void render_command(const render_request& request, std::ostream& log) {
   f.settings = s.effect_settings;
   f.curves = s.curves;
   f.mesh_face_offsets = geometry.face_offsets;
+  f.vector = s.vector;
 
   for (const std::string& name : view::effects_without_stage(s.effects, kind))
     log << "exbsp: warning: " << s.path << ": /effects/" << name << ": applies to PNG output only; ignored for " << out

@@ -32,7 +32,7 @@ struct render_request {
       : scene_path(std::move(scene)), output_path(std::move(output)), verbose(verbose_log) {}
 
   std::string scene_path;   ///< empty: the built-in demo scene
-  std::string output_path;  ///< .png or .svg (by extension); "-": PNG on standard output
+  std::string output_path;  ///< .png, .svg or .pdf (by extension); "-": PNG on standard output
   bool verbose = false;     ///< print which pipeline stages ran, timings
   bool strict = false;      ///< unknown scene keys are errors (scene::load_scene), not warnings
   /// Orbit drag path in screen pixels (y down); empty: one still image.

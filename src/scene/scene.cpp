@@ -248,13 +248,44 @@ void parse_curves(const reader& r, const json& doc, scene& s) {
   }
 }
 
+/// "svg": {"mode", "edges", "crease_deg"} (DESIGN.md section 6; also used for PDF output).
+void parse_vector(const reader& r, const json& doc, scene& s) {
+  const json* v = r.optional(doc, "svg");
+  if (!v) return;
+  r.object(*v, "/svg");
+  reject_unknown_parameters(r, *v, "/svg", "svg", {"mode", "edges", "crease_deg"});
+  auto text = [&](const char* name) -> std::string {
+    const json& t = (*v)[name];
+    if (!t.is_string()) r.fail(std::string("/svg/") + name, std::string("must be a string (got ") + t.type_name() + ")");
+    return t.get<std::string>();
+  };
+  if (r.optional(*v, "mode")) {
+    const std::string m = text("mode");
+    if (m == "visible") s.vector.mode = view::vector_options::mode_kind::visible;
+    else if (m == "painter") s.vector.mode = view::vector_options::mode_kind::painter;
+    else r.fail("/svg/mode", "unknown mode \"" + m + "\" (expected visible or painter)");
+  }
+  if (r.optional(*v, "edges")) {
+    const std::string e = text("edges");
+    if (e == "none") s.vector.edges = view::vector_options::edges_kind::none;
+    else if (e == "visible") s.vector.edges = view::vector_options::edges_kind::visible;
+    else if (e == "visible+hidden") s.vector.edges = view::vector_options::edges_kind::visible_hidden;
+    else r.fail("/svg/edges", "unknown edges \"" + e + "\" (expected none, visible or visible+hidden)");
+  }
+  if (const json* c = r.optional(*v, "crease_deg")) {
+    const double d = r.number(*c, "/svg/crease_deg");
+    if (!(d > 0 && d <= 180)) r.fail("/svg/crease_deg", "must be in (0, 180] (got " + number_text(d) + ")");
+    s.vector.crease_deg = d;
+  }
+}
+
 }  // namespace
 
 scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings, bool strict) {
   const reader r(path, warnings, strict);
   if (!doc.is_object()) r.fail("", std::string("the scene must be a JSON object (got ") + doc.type_name() + ")");
   r.warn_unknown(doc, "", {"meshes", "groups", "curves", "lines", "camera", "projection", "viewport", "image", "aspect",
-                           "background", "effects", "trackball"});
+                           "background", "effects", "trackball", "svg"});
   scene s;
   s.path = path;
   detail::parse_mesh_tree(r, doc, path, s);
@@ -269,6 +300,7 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   detail::parse_trackball(r, doc, s);
   if (const json* b = r.optional(doc, "background")) s.background = r.color(*b, "/background");
   parse_effects(r, doc, s);
+  parse_vector(r, doc, s);
   make_view_setup(s);  // reject cameras and projections whose matrices overflow, before any work
   return s;
 }

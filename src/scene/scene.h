@@ -60,6 +60,10 @@
 //                     perspective and frustum projections only
 //   antialias         samples 4 (1..8: N x N sub-pixels; N times the
 //                     viewport must stay within max_viewport_side)
+//
+// Vector output: "svg": {"mode": "visible" | "painter", "edges": "none" | "visible" |
+// "visible+hidden", "crease_deg": (0, 180]} (view/vector_drawing.h; SVG and PDF), default
+// visible regions without edges.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -140,6 +144,7 @@ struct scene {
   int image_width = 0, image_height = 0;  ///< "image" (default: the viewport's size)
   aspect_policy aspect = aspect_policy::stretch;
   std::string trackball = "arcball";      ///< "arcball" or "virtual" (orbit drags)
+  view::vector_options vector;            ///< "svg": vector output options (SVG and PDF)
 };
 
 /// Validates a parsed JSON document. `path` names the file in messages and anchors relative

@@ -53,12 +53,12 @@ pipeline per_view_pipeline(const std::vector<std::string>& effects, output_kind 
   const std::vector<const effect_description*> chosen = chosen_effects(effects);
   auto has_hook = [&](effect_hook hook) {
     return std::any_of(chosen.begin(), chosen.end(), [&](const effect_description* e) {
-      return e->hook == hook && !(e->png_only && output == output_kind::svg);
+      return e->hook == hook && !(e->png_only && output != output_kind::png);
     });
   };
   auto add_hook = [&](pipeline& p, effect_hook hook) {
     for (const effect_description* e : chosen)
-      if (e->hook == hook && !(e->png_only && output == output_kind::svg)) p.add(e->name, e->run);
+      if (e->hook == hook && !(e->png_only && output != output_kind::png)) p.add(e->name, e->run);
   };
   pipeline p;
   p.add("order", order_stage);
@@ -66,8 +66,8 @@ pipeline per_view_pipeline(const std::vector<std::string>& effects, output_kind 
   p.add("transform+clip", transform_clip_stage);
   if (curves) p.add("curves", curves_stage);
   add_hook(p, effect_hook::after_transform);
-  if (output == output_kind::svg) {
-    p.add("svg", svg_stage);
+  if (output != output_kind::png) {
+    p.add(output == output_kind::svg ? "svg" : "pdf", output == output_kind::svg ? svg_stage : pdf_stage);
     return p;
   }
   if (has_hook(effect_hook::raster))
@@ -96,7 +96,7 @@ pipeline standard_pipeline(const std::vector<std::string>& effects, output_kind 
 
 std::vector<std::string> effects_without_stage(const std::vector<std::string>& effects, output_kind output) {
   std::vector<std::string> out;
-  if (output != output_kind::svg) return out;
+  if (output == output_kind::png) return out;
   for (const effect_description* e : chosen_effects(effects))
     if (e->png_only) out.push_back(e->name);
   return out;

@@ -26,6 +26,7 @@
 #include "view/matrix.h"
 #include "view/screen_line.h"
 #include "view/screen_polygon.h"
+#include "view/vector_drawing.h"
 #include "view/viewport.h"
 
 namespace exbsp::view {
@@ -81,6 +82,7 @@ struct frame {
   /// Front-to-back bands painted in parallel (0: one per core). Default 1: on the shared 2-core
   /// machine of bench/RESULTS.md section 3, two bands were slower than one.
   unsigned raster_threads = 1;
+  vector_options vector;            ///< SVG / PDF: visible regions or painter's stack, edges
 
   // Products.
   std::optional<bsp> tree;                 ///< "build"
@@ -90,7 +92,8 @@ struct frame {
   std::vector<std::uint32_t> order;        ///< "order": fragment indices, back to front
   std::vector<screen_polygon> polygons;    ///< "transform+clip": visible polygons, back to front
   image picture;                           ///< "raster"
-  std::string svg;                         ///< "svg"
+  std::string svg;                         ///< "svg": the SVG document
+  std::string pdf;                         ///< "pdf": the PDF document
   std::vector<rgb8> fragment_colors;       ///< "lighting": colour by fragment index (empty: face colours)
   std::vector<screen_line> lines;          ///< "curves": clipped curve pieces in painter's slots
   std::optional<fog_shading> fog;          ///< "fog": applied per pixel by raster/antialias, per path by svg

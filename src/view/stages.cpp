@@ -9,6 +9,7 @@
 #include "view/clip_stage.h"
 #include "view/paint.h"
 #include "view/svg_writer.h"
+#include "view/vector_pdf.h"
 
 namespace exbsp::view {
 
@@ -176,12 +177,35 @@ std::string raster_stage(frame& f) {
   return note;
 }
 
+namespace {
+
+std::string drawing_note(const vector_drawing& d, std::size_t bytes) {
+  const drawing_counts c = count_paths(d);
+  return std::to_string(c.regions) + " regions (" + std::to_string(c.rings) + " rings), " +
+         std::to_string(c.visible_edges) + " visible and " + std::to_string(c.hidden_edges) + " hidden edge pieces, " +
+         std::to_string(c.curves) + " curve paths, " + std::to_string(bytes) + " bytes";
+}
+
+}  // namespace
+
 std::string svg_stage(frame& f) {
+  if (f.vector.mode == vector_options::mode_kind::visible) {
+    const vector_drawing d = visible_drawing(f);
+    f.svg = svg_document(d);
+    return "visible regions: " + drawing_note(d, f.svg.size());
+  }
   f.svg = f.lines.empty() && !f.fog ? svg_document(f.view.vp, f.background, f.polygons)
                                      : svg_document(f.view.vp, f.background, f.polygons, f.lines,
                                                     f.fog ? &*f.fog : nullptr);
-  return std::to_string(f.polygons.size()) + " paths, " + std::to_string(f.lines.size()) + " curve pieces, " +
-         std::to_string(f.svg.size()) + " bytes";
+  return "painter: " + std::to_string(f.polygons.size()) + " paths, " + std::to_string(f.lines.size()) +
+         " curve pieces, " + std::to_string(f.svg.size()) + " bytes";
+}
+
+std::string pdf_stage(frame& f) {
+  const bool visible = f.vector.mode == vector_options::mode_kind::visible;
+  const vector_drawing d = visible ? visible_drawing(f) : painter_drawing(f);
+  f.pdf = pdf_document(d);
+  return std::string(visible ? "visible regions: " : "painter: ") + drawing_note(d, f.pdf.size());
 }
 
 }  // namespace exbsp::view

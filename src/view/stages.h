@@ -36,7 +36,12 @@ std::string transform_clip_stage(frame& f);
 /// otherwise or there are lines (effective_paint_order).
 std::string raster_stage(frame& f);
 
-/// "svg": f.svg = the SVG document of f.polygons and f.lines (svg_writer.h).
+/// "svg": f.svg = the SVG document: the visible-region drawing of the frame (vector_drawing.h),
+/// or, with f.vector.mode painter, the painter's stack of f.polygons and f.lines (svg_writer.h).
 std::string svg_stage(frame& f);
+
+/// "pdf": f.pdf = the PDF document (vector_pdf.h) of the same drawing as svg_stage (painter's
+/// stack: painter_drawing). Throws usage_error when cairo fails.
+std::string pdf_stage(frame& f);
 
 }  // namespace exbsp::view

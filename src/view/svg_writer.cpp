@@ -25,7 +25,104 @@ std::string hex_color(rgb8 c) {
   return buf;
 }
 
+/// A grid value as pixels: v / 100 with at most two decimals ("12", "12.5", "-0.25").
+void append_grid(std::string& out, long long v) {
+  if (v < 0) {
+    out += '-';
+    v = -v;
+  }
+  out += std::to_string(v / grid_per_pixel);
+  long long frac = v % grid_per_pixel;
+  if (frac == 0) return;
+  out += '.';
+  out += static_cast<char>('0' + frac / 10);
+  if (frac % 10 != 0) out += static_cast<char>('0' + frac % 10);
+}
+
 }  // namespace
+
+std::string svg_document(const vector_drawing& d) {
+  std::string out;
+  const std::string w = std::to_string(d.width), h = std::to_string(d.height);
+  const long long y_top = static_cast<long long>(d.height) * grid_per_pixel;
+  out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" + h +
+         "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+  out += "<rect x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" + hex_color(d.background) + "\"/>\n";
+  auto point = [&](const grid_point& q) {
+    append_grid(out, q.x);
+    out += ' ';
+    append_grid(out, y_top - q.y);
+  };
+  auto rings = [&](const vector_path& p, bool closed) {
+    bool first = true;
+    for (const std::vector<grid_point>& ring : p.rings) {
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        out += k == 0 ? (first ? "M" : " M") : " L";
+        point(ring[k]);
+      }
+      if (closed) out += " Z";
+      first = false;
+    }
+  };
+  std::string group;  // the open group's id
+  auto open_group = [&](const std::string& id, const std::string& attributes) {
+    if (group == id) return;
+    if (!group.empty()) out += "</g>\n";
+    group = id;
+    out += "<g id=\"" + id + "\"" + attributes + ">\n";
+  };
+  char dash[64];
+  std::snprintf(dash, sizeof dash, "%g %g", hidden_edge_dash[0], hidden_edge_dash[1]);
+  for (const vector_path& p : d.paths) {
+    const std::string mesh = std::to_string(p.mesh), color = hex_color(p.color);
+    switch (p.kind) {
+      case vector_path::kind_type::underlay:
+        open_group("underlay", "");
+        out += "<path fill=\"" + color + "\" d=\"";
+        rings(p, true);
+        out += "\"/>\n";
+        break;
+      case vector_path::kind_type::region:
+        open_group("mesh-" + mesh, "");
+        out += "<path data-face=\"" + std::to_string(p.face) + "\" fill=\"" + color + "\" d=\"";
+        rings(p, true);
+        out += "\"/>\n";
+        break;
+      case vector_path::kind_type::hidden_edge:
+      case vector_path::kind_type::visible_edge: {
+        const bool hidden = p.kind == vector_path::kind_type::hidden_edge;
+        char width[32];
+        std::snprintf(width, sizeof width, "%g", hidden ? hidden_edge_width : visible_edge_width);
+        open_group(hidden ? "hidden-edges" : "visible-edges",
+                   std::string(" fill=\"none\" stroke-width=\"") + width + "\"" +
+                       (hidden ? std::string(" stroke-dasharray=\"") + dash + "\" stroke-linecap=\"butt\""
+                               : std::string(" stroke-linecap=\"round\" stroke-linejoin=\"round\"")));
+        out += "<path data-mesh=\"" + mesh + "\" stroke=\"" + color + "\" d=\"";
+        rings(p, false);
+        out += "\"/>\n";
+        break;
+      }
+      case vector_path::kind_type::curve:
+        open_group("curves", " fill=\"none\" stroke-width=\"1\" stroke-linecap=\"butt\"");
+        out += "<path data-curve=\"" + std::to_string(p.face) + "\" stroke=\"" + color + "\" d=\"";
+        rings(p, false);
+        out += "\"/>\n";
+        break;
+      case vector_path::kind_type::point:
+        open_group("curves", " fill=\"none\" stroke-width=\"1\" stroke-linecap=\"butt\"");
+        out += "<rect data-curve=\"" + std::to_string(p.face) + "\" x=\"";
+        append_grid(out, p.rings[0][0].x - grid_per_pixel / 2);
+        out += "\" y=\"";
+        append_grid(out, y_top - p.rings[0][0].y - grid_per_pixel / 2);
+        out += "\" width=\"1\" height=\"1\" fill=\"" + color + "\"/>\n";
+        break;
+    }
+  }
+  if (!group.empty()) out += "</g>\n";
+  out += "</svg>\n";
+  return out;
+}
 
 std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons) {
   return svg_document(vp, background, polygons, {}, nullptr);

@@ -1,8 +1,17 @@
-// SVG output of a painter's-order polygon list: a vector drawing that looks like the PNG.
+// SVG output: the visible-region drawing (vector_drawing.h, the default) and the painter's
+// stack ("svg": {"mode": "painter"}), a vector drawing that looks like the PNG.
 //
-// Notation: the SVG user space is the window with y flipped: (x_svg, y_svg) = (x - vp.x,
+// Notation (both): the SVG user space is the window with y flipped: (x_svg, y_svg) = (x - vp.x,
 // vp.y + height - y), viewBox "0 0 width height", so window pixel (i, j) is the unit square
-// at SVG (i, height - 1 - j) — the same place as in the PNG. Polygons are written in the order
+// at SVG (i, height - 1 - j) — the same place as in the PNG.
+//
+// Visible regions: <g id="underlay"> (one path per colour shared by several regions,
+// vector_drawing.h), then one <g id="mesh-N"> per mesh holding one <path data-face="F"> per
+// visible region (its rings in one path, nonzero fill, no stroke), then <g id="hidden-edges">
+// (dashed) and <g id="visible-edges"> with one path per mesh (data-mesh="N"), then
+// <g id="curves">. Coordinates are grid values / 100 (at most two decimals).
+//
+// The painter's stack: polygons are written in the order
 // given (back to front), one closed <path> each, filled with the polygon's colour and stroked
 // in the same colour with width svg_seam_stroke (round joins): anti-aliasing SVG renderers
 // otherwise let the background shine through the shared edges of adjacent polygons
@@ -21,6 +30,7 @@
 #include "view/effect_settings.h"
 #include "view/screen_line.h"
 #include "view/screen_polygon.h"
+#include "view/vector_drawing.h"
 
 namespace exbsp::view {
 
@@ -34,6 +44,14 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
 /// is not null, flat fog as described above.
 std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons,
                          const std::vector<screen_line>& lines, const fog_shading* fog);
+
+/// The SVG document of a visible-region drawing (notation above).
+std::string svg_document(const vector_drawing& d);
+
+/// Stroke widths and dash pattern of edges (pixels), shared by the SVG and PDF writers.
+constexpr double visible_edge_width = 1.0;
+constexpr double hidden_edge_width = 0.6;
+constexpr double hidden_edge_dash[2] = {3.0, 2.0};
 
 /// svg_document written atomically to `path`. Throws output_error naming `path` on failure.
 void write_svg(const std::string& path, const viewport& vp, rgb8 background,

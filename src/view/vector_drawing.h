@@ -1,0 +1,128 @@
+// Vector output (SVG, PDF) as one intermediate list of paths: the visible-region drawing and
+// the painter's stack (DESIGN.md section 6).
+//
+// Notation: the drawing grid. A window point (x, y) (viewport.h, y up) becomes the grid point
+//   X = round(100 (x - vp.x)),  Y = round(100 (y - vp.y))
+// (integers, 1 unit = 1/100 pixel); the writers print X / 100 and (100 height - Y) / 100, so
+// every coordinate of the output is a multiple of 1/100 pixel and two regions that share a
+// grid edge share it exactly in the file.
+//
+// Visible regions: the polygons of the transform+clip stage, taken FRONT TO BACK (the reverse
+// of their back-to-front list, DESIGN.md section 3), are snapped to the grid; each loses what
+// the polygons before it already cover (Clipper's integer Booleans: covered := covered ∪ P,
+// visible(P) := P \ covered), and the visible parts of one source face are merged into one
+// region (holes kept). The screen is cut into square tiles so that each Boolean sees only the
+// coverage near its polygon, and a tile found fully covered rejects everything behind it at
+// once. Rounding makes cracks under one grid unit wide where polygons in front meet at a
+// T-junction; what shows through them is dropped: spikes (zero-area antennas, under one unit
+// wide) are cut off the rings, and rings thinner than min_region_width (their area over half
+// their perimeter) are dropped (they cannot decide any pixel).
+//
+// Underlays: anti-aliasing renderers (browsers, PDF viewers) blend each path's edge pixels
+// with what is below, so two regions sharing an edge let the background through it
+// ("conflation"): a faint line inside a flat area where faces of one colour meet. The drawing
+// therefore starts with one underlay per colour used by two or more regions: the union of those
+// regions, in that colour, under them. It adds no area (no outline grows, nothing is stroked);
+// the regions above stay one path per face.
+//
+// Edges (the hidden-line drawing): mesh edges welded by exact position; an edge is drawn when
+// it is a boundary (one face), non-manifold (three or more), a crease (the normals of its two
+// faces differ by more than crease_deg) or a silhouette (one face turned towards the eye, the
+// other away). Its projection is split into the parts inside some other face's visible region
+// (hidden: that face is in front of it) and the rest (visible); regions are shrunk by
+// edge_margin first so an edge lying on a region's border is not hidden by it.
+//
+// Curves and lines: each clipped piece (curves.h, painter's slot k: behind polygons k..n-1)
+// keeps what is outside the coverage of those polygons; drawn over the regions.
+// Effects: lighting gives each face its colour (flat per face); fog is flat per region (its
+// colour at the region's mean window point) and per curve piece (at its midpoint); depth of
+// field and antialias are raster-only (the CLI warns and ignores them for vector output).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "view/image.h"
+
+namespace exbsp::view {
+
+struct frame;
+
+/// "svg": {"mode", "edges", "crease_deg"} of a scene (DESIGN.md section 6).
+struct vector_options {
+  enum class mode_kind { visible, painter };
+  enum class edges_kind { none, visible, visible_hidden };
+  mode_kind mode = mode_kind::visible;
+  /// Default for scenes: none (a scene's picture matches its PNG); `exbsp render MESH` asks for
+  /// visible edges.
+  edges_kind edges = edges_kind::none;
+  double crease_deg = 30;  ///< 0 < crease_deg <= 180
+
+  /// The defaults for a bare mesh drawn without a scene (`exbsp render MESH`): a CAD line
+  /// drawing, visible regions with visible edges.
+  static vector_options for_mesh() { return {mode_kind::visible, edges_kind::visible, 30}; }
+};
+
+/// "visible", "painter" / "none", "visible", "visible+hidden".
+const char* to_string(vector_options::mode_kind m);
+const char* to_string(vector_options::edges_kind e);
+
+/// A grid point (notation above).
+struct grid_point {
+  long long x = 0, y = 0;
+  bool operator==(const grid_point& o) const { return x == o.x && y == o.y; }
+};
+
+/// Grid units per pixel.
+constexpr long long grid_per_pixel = 100;
+/// Regions (and holes) thinner than this many grid units are rounding slivers (notation).
+constexpr double min_region_width = 1.5;
+/// Regions are shrunk by this many grid units before they hide an edge.
+constexpr double edge_margin = 2.0;
+
+/// One path of a drawing.
+struct vector_path {
+  enum class kind_type {
+    underlay,      ///< filled rings: the union of the regions of one colour (see below)
+    region,        ///< filled rings (nonzero), one source face
+    visible_edge,  ///< stroked polylines, solid
+    hidden_edge,   ///< stroked polylines, dashed
+    curve,         ///< stroked polylines, 1 px, butt caps
+    point          ///< a 1 x 1 pixel square centred on rings[0][0] (degree-0 curve)
+  };
+  kind_type kind = kind_type::region;
+  rgb8 color;
+  std::uint32_t mesh = 0;      ///< mesh index (regions, edges)
+  std::uint32_t face = 0;      ///< regions: source face id; curves: curve index
+  std::uint32_t fragment = 0;  ///< painter regions: fragment index
+  std::vector<std::vector<grid_point>> rings;  ///< closed rings (regions) or open polylines
+};
+
+/// A drawing: background, then the paths in drawing order.
+struct vector_drawing {
+  int width = 0, height = 0;  ///< pixels (the viewport)
+  rgb8 background{255, 255, 255};
+  bool painter = false;       ///< the painter's stack (one region per fragment, back to front)
+  std::vector<vector_path> paths;
+};
+
+/// The visible-region drawing of a frame whose transform+clip stage ran (and curves and fog
+/// stages when present): underlays, regions sorted by (mesh, face), then hidden edges (when asked),
+/// visible edges, curves. Meshes come from f.mesh_face_offsets (all faces in mesh 0 when empty).
+/// Throws usage_error for a bad crease angle.
+vector_drawing visible_drawing(const frame& f);
+
+/// The painter's stack of a frame as a drawing (the PDF writer's painter mode): one region
+/// per polygon of f.polygons, back to front, with curve pieces in their slots.
+vector_drawing painter_drawing(const frame& f);
+
+/// Rounds a window coordinate (already relative to the viewport origin) to the grid.
+long long to_grid(double v);
+
+/// Counts of a drawing, for logs and the bench.
+struct drawing_counts {
+  std::size_t underlays = 0, regions = 0, rings = 0, visible_edges = 0, hidden_edges = 0, curves = 0;
+};
+drawing_counts count_paths(const vector_drawing& d);
+
+}  // namespace exbsp::view

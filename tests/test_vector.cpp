@@ -1,0 +1,531 @@
+// Vector output (view/vector_drawing.h, svg_writer.h, vector_pdf.h): visible regions, edges,
+// SVG and PDF.
+//
+// Oracles: (1) the regions themselves, sampled at pixel centres with the nonzero rule
+// (sample_regions below), against exbsp's PNG — no browser needed; (2) the SVG rasterized by
+// headless Chromium and the PDF by poppler (poppler-utils), against the PNG: at least 99.5%
+// equal pixels with anti-aliasing off (CSS shape-rendering: crispEdges on the inlined SVG;
+// pdftocairo -antialias none), and, anti-aliased as a user sees them, no interior pixel of a flat face
+// differing from its colour (no seams). The browser test SKIPS, with a message, when chromium
+// or pdftoppm is missing (scripts/setup installs both, so CI runs it).
+// Scenes are compared without their raster-only effects (antialias, depth_of_field: vector
+// output ignores them) and without fog (flat per region in vector output, per pixel in PNG).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "mesh/errors.h"
+#include "scene/demo_scene.h"
+#include "scene/render.h"
+#include "scene/scene.h"
+#include "view/camera.h"
+#include "view/effects.h"
+#include "view/png_io.h"
+#include "view/projection.h"
+#include "view/stages.h"
+#include "view/svg_writer.h"
+#include "view/vector_drawing.h"
+#include "view/vector_pdf.h"
+
+namespace fs = std::filesystem;
+using namespace exbsp;
+using namespace exbsp::view;
+
+namespace {
+
+std::string temp_dir() {
+  const fs::path d = fs::temp_directory_path() / ("exbsp_test_vector_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d.string();
+}
+
+// ---- frames -------------------------------------------------------------------------------
+
+/// A frame of a scene (or the demo when `name` is empty) ready for the per-view stages, with
+/// the effects that vector output cannot reproduce pixel for pixel removed.
+frame scene_frame(const std::string& name, scene::scene& s) {
+  s = name.empty() ? scene::demo_scene() : scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
+  s.effects.erase(std::remove_if(s.effects.begin(), s.effects.end(),
+                                 [](const std::string& e) {
+                                   return e == "antialias" || e == "depth_of_field" || e == "fog";
+                                 }),
+                  s.effects.end());
+  scene::scene_geometry g = scene::load_geometry(s);
+  frame f;
+  f.view = scene::make_view_setup(s);
+  f.background = s.background;
+  f.face_colors = std::move(g.face_colors);
+  f.soup = std::move(g.soup);
+  f.mesh_face_offsets = std::move(g.face_offsets);
+  f.settings = s.effect_settings;
+  f.curves = s.curves;
+  f.vector = s.vector;
+  return f;
+}
+
+void run(frame& f, const std::vector<std::string>& effects, output_kind out) {
+  standard_pipeline(effects, out, !f.curves.empty()).run(f, nullptr);
+}
+
+std::uint32_t add_quad(triangle_soup& s, const vec3d& a, const vec3d& b, const vec3d& c, const vec3d& d) {
+  const auto base = static_cast<std::uint32_t>(s.vertices.size());
+  for (const vec3d& p : {a, b, c, d}) s.vertices.push_back(p);
+  const std::uint32_t face = s.face_count++;
+  s.add_polygon({base, base + 1, base + 2, base + 3}, face);
+  return face;
+}
+
+frame perspective_frame(triangle_soup soup, std::vector<rgb8> colors, const camera& cam, int width, int height) {
+  frame f;
+  f.soup = std::move(soup);
+  f.face_colors = std::move(colors);
+  f.view.kind = projection_kind::perspective;
+  f.view.cam = cam;
+  f.view.model_view = look_at(cam);
+  f.view.projection = perspective(45, static_cast<double>(width) / height, 0.5, 100);
+  f.view.vp = {0, 0, width, height, 0, 1};
+  return f;
+}
+
+// ---- the region oracle -------------------------------------------------------------------
+
+/// Nonzero winding number of the rings at grid point (x, y) (crossing count, half-open rule).
+int winding(const std::vector<std::vector<grid_point>>& rings, double x, double y) {
+  int w = 0;
+  for (const auto& r : rings)
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      const grid_point& a = r[k];
+      const grid_point& b = r[(k + 1) % r.size()];
+      const double ay = static_cast<double>(a.y), by = static_cast<double>(b.y);
+      if ((ay <= y) == (by <= y)) continue;
+      const double t = (y - ay) / (by - ay);
+      const double xi = static_cast<double>(a.x) + t * static_cast<double>(b.x - a.x);
+      if (xi > x) w += by > ay ? 1 : -1;
+    }
+  return w;
+}
+
+struct sampled {
+  image picture;
+  int max_overlap = 0;          ///< most regions covering one pixel centre
+  std::size_t overlapping = 0;  ///< pixel centres covered by two or more regions
+};
+
+/// The drawing's regions painted at pixel centres (nonzero rule), in the drawing's order.
+sampled sample_regions(const vector_drawing& d) {
+  sampled out{image(d.width, d.height, d.background), 0};
+  std::vector<int> count(static_cast<std::size_t>(d.width) * d.height, 0);
+  for (const vector_path& p : d.paths) {
+    if (p.kind != vector_path::kind_type::region) continue;  // underlays lie under regions
+    long long x0 = p.rings[0][0].x, x1 = x0, y0 = p.rings[0][0].y, y1 = y0;
+    for (const auto& r : p.rings)
+      for (const grid_point& q : r) {
+        x0 = std::min(x0, q.x);
+        x1 = std::max(x1, q.x);
+        y0 = std::min(y0, q.y);
+        y1 = std::max(y1, q.y);
+      }
+    for (long long j = std::max(0LL, y0 / 100 - 1); j <= std::min<long long>(d.height - 1, y1 / 100 + 1); ++j)
+      for (long long i = std::max(0LL, x0 / 100 - 1); i <= std::min<long long>(d.width - 1, x1 / 100 + 1); ++i)
+        if (winding(p.rings, 100.0 * i + 50, 100.0 * j + 50) != 0) {
+          out.picture.set_pixel(static_cast<int>(i), static_cast<int>(j), p.color);
+          int& c = count[static_cast<std::size_t>(j * d.width + i)];
+          out.max_overlap = std::max(out.max_overlap, ++c);
+          if (c == 2) ++out.overlapping;
+        }
+  }
+  return out;
+}
+
+double equal_fraction(const image& a, const image& b) {
+  if (a.width() != b.width() || a.height() != b.height()) return 0;
+  std::size_t same = 0;
+  for (int j = 0; j < a.height(); ++j)
+    for (int i = 0; i < a.width(); ++i) same += a.pixel(i, j) == b.pixel(i, j);
+  return static_cast<double>(same) / (static_cast<double>(a.width()) * a.height());
+}
+
+/// Pixels whose 5 x 5 neighbourhood in `reference` has one colour (inside a flat face or the
+/// background, two pixels from any edge) and whose colour in `shot` differs by more than
+/// `tolerance` levels in a channel: seams. (Anti-aliased renderers blend a region's edge over
+/// its underlay of the same colour with 8-bit arithmetic, which may round c to c - 1; a seam
+/// lets the background through, tens of levels.)
+std::size_t interior_differences(const image& reference, const image& shot, std::size_t* interior = nullptr,
+                                 int tolerance = 2) {
+  auto near = [&](rgb8 a, rgb8 b) {
+    return std::abs(a.r - b.r) <= tolerance && std::abs(a.g - b.g) <= tolerance && std::abs(a.b - b.b) <= tolerance;
+  };
+  std::size_t bad = 0, inner = 0;
+  for (int j = 2; j + 2 < reference.height(); ++j)
+    for (int i = 2; i + 2 < reference.width(); ++i) {
+      const rgb8 c = reference.pixel(i, j);
+      bool flat = true;
+      for (int dj = -2; dj <= 2 && flat; ++dj)
+        for (int di = -2; di <= 2 && flat; ++di) flat = reference.pixel(i + di, j + dj) == c;
+      if (!flat) continue;
+      ++inner;
+      bad += !near(shot.pixel(i, j), c);
+    }
+  if (interior) *interior = inner;
+  return bad;
+}
+
+const std::vector<std::string>& scene_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n{""};  // the built-in demo
+    for (const auto& e : fs::directory_iterator(std::string(EXBSP_SOURCE_DIR) + "/scenes"))
+      if (e.path().extension() == ".json") n.push_back(e.path().stem().string());
+    std::sort(n.begin() + 1, n.end());
+    return n;
+  }();
+  return names;
+}
+
+std::string label(const std::string& name) { return name.empty() ? std::string("(demo)") : name; }
+
+// ---- degenerate visibility ---------------------------------------------------------------
+
+std::vector<const vector_path*> regions_of(const vector_drawing& d) {
+  std::vector<const vector_path*> r;
+  for (const vector_path& p : d.paths)
+    if (p.kind == vector_path::kind_type::region) r.push_back(&p);
+  return r;
+}
+
+TEST(VisibleRegions, AFaceSeenEdgeOnHasNoRegion) {
+  triangle_soup s;
+  add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});          // faces the eye
+  add_quad(s, {-0.5, 0, -1}, {0.5, 0, -1}, {0.5, 0, 1}, {-0.5, 0, 1});  // in the plane y = 0 through the eye
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
+  run(f, {}, output_kind::svg);
+  const vector_drawing d = visible_drawing(f);
+  const auto r = regions_of(d);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0]->face, 0u);
+  EXPECT_EQ(r[0]->rings.size(), 1u);  // the edge-on face cuts no slit into it
+  // Its edges are still drawn (as a line) when edges are asked for.
+  f.vector.edges = vector_options::edges_kind::visible;
+  EXPECT_GT(count_paths(visible_drawing(f)).visible_edges, 0u);
+}
+
+TEST(VisibleRegions, CoplanarOverlappingFacesOfTwoMeshesTileTheirUnion) {
+  triangle_soup s;
+  add_quad(s, {-1, -1, 0}, {0.5, -1, 0}, {0.5, 1, 0}, {-1, 1, 0});
+  add_quad(s, {-0.5, -0.5, 0}, {1, -0.5, 0}, {1, 0.5, 0}, {-0.5, 0.5, 0});
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0.3, 0.2, 5}, {0, 0, 0}, {0, 1, 0}}, 160, 120);
+  f.mesh_face_offsets = {0, 1, 2};  // one face per mesh
+  run(f, {}, output_kind::png);
+  const image png = f.picture;
+  const vector_drawing d = visible_drawing(f);
+  const auto r = regions_of(d);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_NE(r[0]->mesh, r[1]->mesh);
+  const sampled got = sample_regions(d);
+  EXPECT_EQ(got.max_overlap, 1);  // no pixel centre in both
+  EXPECT_GE(equal_fraction(got.picture, png), 0.995);
+  EXPECT_EQ(svg_document(d).find("<g id=\"mesh-1\">") != std::string::npos, true);
+}
+
+TEST(VisibleRegions, AFaceExactlyBehindAnotherOfTheSameOutlineIsHidden) {
+  triangle_soup s;
+  add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
+  // Behind it, the same outline as seen from the eye (scaled about the eye at (0, 0, 5)).
+  add_quad(s, {-2, -2, -5}, {2, -2, -5}, {2, 2, -5}, {-2, 2, -5});
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
+  run(f, {}, output_kind::svg);
+  const auto r = regions_of(visible_drawing(f));
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0]->face, 0u);
+}
+
+TEST(VisibleRegions, TJunctionsLeaveNoCrackForTheFaceBehind) {
+  triangle_soup s;
+  // Front: one big quad on the left; two quads on the right meet its edge at a T (x = 0, y = 0.1).
+  add_quad(s, {-1, -1, 0}, {0, -1, 0}, {0, 1, 0}, {-1, 1, 0});
+  add_quad(s, {0, -1, 0}, {1, -1, 0}, {1, 0.1, 0}, {0, 0.1, 0});
+  add_quad(s, {0, 0.1, 0}, {1, 0.1, 0}, {1, 1, 0}, {0, 1, 0});
+  add_quad(s, {-0.5, -0.5, -1}, {0.5, -0.5, -1}, {0.5, 0.5, -1}, {-0.5, 0.5, -1});  // hidden behind
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {190, 0, 0}, {180, 0, 0}, {0, 0, 255}},
+                              {{0.1, 0.05, 4}, {0, 0, 0}, {0, 1, 0}}, 400, 300);
+  run(f, {}, output_kind::svg);
+  const vector_drawing d = visible_drawing(f);
+  for (const vector_path* p : regions_of(d)) EXPECT_NE(p->face, 3u) << "the face behind shows through";
+  EXPECT_EQ(regions_of(d).size(), 3u);
+  EXPECT_EQ(sample_regions(d).max_overlap, 1);
+}
+
+TEST(VisibleRegions, OneRegionPerFaceWithItsHole) {
+  // A small quad in front of a big one: the big face's region is one path with a hole.
+  triangle_soup s;
+  add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
+  add_quad(s, {-0.2, -0.2, 1}, {0.2, -0.2, 1}, {0.2, 0.2, 1}, {-0.2, 0.2, 1});
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
+  run(f, {}, output_kind::svg);
+  const auto r = regions_of(visible_drawing(f));
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[0]->face, 0u);
+  EXPECT_EQ(r[0]->rings.size(), 2u);  // outline and hole
+  EXPECT_EQ(r[1]->rings.size(), 1u);
+}
+
+TEST(VisibleRegions, CoordinatesAreHundredthsOfAPixel) {
+  scene::scene s;
+  frame f = scene_frame("", s);
+  run(f, s.effects, output_kind::svg);
+  const std::string& svg = f.svg;
+  // Every number in a path's d attribute has at most two decimals.
+  for (std::size_t at = svg.find(" d=\""); at != std::string::npos; at = svg.find(" d=\"", at + 1)) {
+    const std::size_t end = svg.find('"', at + 4);
+    std::size_t decimals = 0;
+    bool in_fraction = false;
+    for (std::size_t k = at + 4; k < end; ++k) {
+      const char c = svg[k];
+      if (c == '.') {
+        in_fraction = true;
+        decimals = 0;
+      } else if (c >= '0' && c <= '9') {
+        if (in_fraction) {
+          ASSERT_LE(++decimals, 2u) << svg.substr(at, 80);
+        }
+      } else {
+        in_fraction = false;
+      }
+    }
+  }
+  EXPECT_EQ(svg.find("stroke=\"#"), std::string::npos);  // no seam stroke on regions
+}
+
+TEST(VisibleRegions, EveryFaceAtMostOnceAndGroupedPerMesh) {
+  scene::scene s;
+  frame f = scene_frame("perspective", s);
+  run(f, s.effects, output_kind::svg);
+  const vector_drawing d = visible_drawing(f);
+  std::set<std::uint32_t> faces;
+  std::uint32_t last_mesh = 0;
+  for (const vector_path* p : regions_of(d)) {
+    EXPECT_TRUE(faces.insert(p->face).second) << "face " << p->face << " twice";
+    EXPECT_GE(p->mesh, last_mesh);
+    last_mesh = p->mesh;
+  }
+  EXPECT_GT(last_mesh, 0u);
+  EXPECT_EQ(std::count(f.svg.begin(), f.svg.end(), '\n') > 0, true);
+  std::size_t groups = 0;
+  for (std::size_t at = f.svg.find("<g id=\"mesh-"); at != std::string::npos; at = f.svg.find("<g id=\"mesh-", at + 1))
+    ++groups;
+  std::set<std::uint32_t> meshes;
+  for (const vector_path* p : regions_of(d)) meshes.insert(p->mesh);
+  EXPECT_EQ(groups, meshes.size());
+}
+
+TEST(VisibleRegions, MatchThePngAtPixelCentresOnEveryScene) {
+  for (const std::string& name : scene_names()) {
+    scene::scene s;
+    frame f = scene_frame(name, s);
+    f.curves.clear();  // regions only (the browser test checks curves)
+    run(f, s.effects, output_kind::png);
+    const image png = f.picture;
+    const sampled got = sample_regions(visible_drawing(f));
+    // Regions share boundaries up to Clipper's rounding of intersection points (< 1/100 px):
+    // a pixel centre lying within that of two boundaries may be in both (0 to 2 per scene).
+    EXPECT_LE(got.overlapping * 20000, static_cast<std::size_t>(s.width) * s.height) << label(name);
+    EXPECT_GE(equal_fraction(got.picture, png), 0.995) << label(name);
+  }
+}
+
+// ---- edges ------------------------------------------------------------------------------
+
+TEST(Edges, ACubeShowsNineVisibleEdgesAndThreeHidden) {
+  // A unit cube seen from a generic corner direction: 9 visible edges (silhouette hexagon and
+  // the three at the near corner), 3 hidden ones (at the far corner).
+  triangle_soup s;
+  const vec3d p[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const int q[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+  for (const auto& f4 : q) add_quad(s, p[f4[0]], p[f4[1]], p[f4[2]], p[f4[3]]);
+  frame f = perspective_frame(std::move(s), std::vector<rgb8>(6, {180, 180, 180}), {{4, 3.1, 2.3}, {0.5, 0.5, 0.5}, {0, 0, 1}},
+                              200, 150);
+  f.vector.edges = vector_options::edges_kind::visible_hidden;
+  run(f, {}, output_kind::svg);
+  const vector_drawing d = visible_drawing(f);
+  const drawing_counts c = count_paths(d);
+  EXPECT_EQ(c.regions, 3u);
+  EXPECT_EQ(c.visible_edges, 9u);
+  EXPECT_EQ(c.hidden_edges, 3u);
+  const std::string svg = svg_document(d);
+  EXPECT_NE(svg.find("<g id=\"hidden-edges\""), std::string::npos);
+  EXPECT_NE(svg.find("stroke-dasharray"), std::string::npos);
+  // edges "visible": no hidden group.
+  f.vector.edges = vector_options::edges_kind::visible;
+  EXPECT_EQ(count_paths(visible_drawing(f)).hidden_edges, 0u);
+}
+
+TEST(Edges, CreaseAngleDecidesWhichEdgesAreDrawn) {
+  // Two quads meeting at 20 degrees, seen from the front: a crease at 10, none at 30.
+  triangle_soup s;
+  const double t = std::tan(20 * M_PI / 180);
+  add_quad(s, {-1, -1, 0}, {0, -1, 0}, {0, 1, 0}, {-1, 1, 0});
+  add_quad(s, {0, -1, 0}, {1, -1, -t}, {1, 1, -t}, {0, 1, 0});
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 160, 120);
+  f.vector.edges = vector_options::edges_kind::visible;
+  run(f, {}, output_kind::svg);
+  f.vector.crease_deg = 30;
+  const std::size_t without = count_paths(visible_drawing(f)).visible_edges;
+  f.vector.crease_deg = 10;
+  EXPECT_EQ(count_paths(visible_drawing(f)).visible_edges, without + 1);
+  f.vector.crease_deg = 0;
+  EXPECT_THROW(visible_drawing(f), usage_error);
+}
+
+// ---- PDF --------------------------------------------------------------------------------
+
+TEST(Pdf, IsAPdfWithOnePageOfTheViewportSize) {
+  scene::scene s;
+  frame f = scene_frame("", s);
+  run(f, s.effects, output_kind::pdf);
+  ASSERT_GT(f.pdf.size(), 100u);
+  EXPECT_EQ(f.pdf.compare(0, 5, "%PDF-"), 0);
+  EXPECT_NE(f.pdf.find("/MediaBox [ 0 0 " + std::to_string(s.width) + " " + std::to_string(s.height) + " ]"),
+            std::string::npos);
+  f.vector.mode = vector_options::mode_kind::painter;
+  run(f, s.effects, output_kind::pdf);
+  EXPECT_EQ(f.pdf.compare(0, 5, "%PDF-"), 0);
+}
+
+// ---- scene options and the command ------------------------------------------------------
+
+TEST(Options, BadSvgOptionsNameTheirKey) {
+  const std::string base = R"({"meshes": [], "camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0], "up": [0, 1, 0]},
+    "projection": {"type": "perspective", "fovy_deg": 40, "near": 1, "far": 100},
+    "viewport": {"width": 64, "height": 48}, "svg": )";
+  auto key_of = [&](const std::string& svg) {
+    try {
+      scene::parse_scene_text(base + svg + "}", "s.json");
+    } catch (const scene_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(key_of(R"({"mode": "stack"})").find("/svg/mode"), std::string::npos);
+  EXPECT_NE(key_of(R"({"edges": "all"})").find("/svg/edges"), std::string::npos);
+  EXPECT_NE(key_of(R"({"crease_deg": 0})").find("/svg/crease_deg"), std::string::npos);
+  EXPECT_NE(key_of(R"({"crease_deg": "30"})").find("/svg/crease_deg"), std::string::npos);
+  EXPECT_NE(key_of(R"({"colour": 1})").find("/svg/colour"), std::string::npos);
+  const scene::scene s = scene::parse_scene_text(base + R"({"mode": "painter", "edges": "visible+hidden", "crease_deg": 45})" + "}", "s.json");
+  EXPECT_EQ(s.vector.mode, vector_options::mode_kind::painter);
+  EXPECT_EQ(s.vector.edges, vector_options::edges_kind::visible_hidden);
+  EXPECT_EQ(s.vector.crease_deg, 45);
+}
+
+TEST(Options, TheCommandWritesPdfAndSvgByExtension) {
+  const std::string dir = temp_dir();
+  std::ostringstream log;
+  render_command({"", dir + "/cmd.pdf", false}, log);
+  render_command({"", dir + "/cmd.svg", false}, log);
+  std::ifstream pdf(dir + "/cmd.pdf", std::ios::binary), svg(dir + "/cmd.svg");
+  std::string head(5, ' ');
+  pdf.read(&head[0], 5);
+  EXPECT_EQ(head, "%PDF-");
+  std::stringstream text;
+  text << svg.rdbuf();
+  EXPECT_NE(text.str().find("<g id=\"mesh-0\">"), std::string::npos);
+  EXPECT_EQ(text.str().find("data-fragment"), std::string::npos);  // visible regions, not the stack
+  EXPECT_THROW(render_command({"", dir + "/cmd.eps", false}, log), usage_error);
+}
+
+// ---- browsers ---------------------------------------------------------------------------
+
+std::string find_program(const char* env, std::initializer_list<const char*> candidates) {
+  if (const char* e = std::getenv(env)) return e;
+  for (const char* c : candidates)
+    if (fs::exists(c)) return c;
+  return "";
+}
+
+bool run_quiet(const std::string& command, const std::string& log) {
+  return std::system((command + " >" + log + " 2>&1").c_str()) == 0;
+}
+
+/// Headless Chromium screenshot of an HTML page at width x height.
+bool chromium_screenshot(const std::string& chromium, const std::string& html, int width, int height,
+                         const std::string& png) {
+  const std::string profile = html + ".profile";
+  fs::remove_all(profile);
+  fs::create_directories(profile);
+  const std::string cmd = chromium +
+                          " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
+                          " --disable-background-networking --disable-component-update --disable-sync"
+                          " --hide-scrollbars --force-device-scale-factor=1 --force-color-profile=srgb"
+                          " --user-data-dir=" + profile + " --screenshot=" + png + " --window-size=" +
+                          std::to_string(width) + "," + std::to_string(height) + " file://" + html;
+  fs::remove(png);
+  const bool ok = run_quiet(cmd, html + ".log") && fs::exists(png);
+  fs::remove_all(profile);
+  return ok;
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+const char* page_style = "<style>html,body{margin:0;padding:0;overflow:hidden}img,svg{display:block}</style>";
+
+TEST(Browser, SvgInChromiumAndPdfInPopplerMatchThePng) {
+  const std::string chromium = find_program("EXBSP_CHROMIUM", {"/usr/bin/chromium", "/usr/bin/chromium-browser"});
+  const std::string pdftoppm = find_program("EXBSP_PDFTOPPM", {"/usr/bin/pdftoppm"});
+  const std::string pdftocairo = find_program("EXBSP_PDFTOCAIRO", {"/usr/bin/pdftocairo"});
+  if (chromium.empty() || pdftoppm.empty() || pdftocairo.empty())
+    GTEST_SKIP() << "SKIPPED: headless Chromium (" << (chromium.empty() ? "missing" : chromium) << ") and pdftoppm ("
+                 << (pdftoppm.empty() ? "missing" : pdftoppm) << ", pdftocairo"
+                 << ") are needed to rasterize the SVG and PDF; run scripts/setup (apt-get install chromium poppler-utils)";
+  const std::string dir = temp_dir();
+  for (const std::string& name : scene_names()) {
+    const std::string base = dir + "/" + (name.empty() ? std::string("demo") : name);
+    scene::scene s;
+    frame f = scene_frame(name, s);
+    run(f, s.effects, output_kind::png);
+    const image png = f.picture;
+    run(f, s.effects, output_kind::svg);
+    run(f, s.effects, output_kind::pdf);
+    write_text(base + ".svg", f.svg);
+    write_text(base + ".pdf", f.pdf);
+    const int w = s.width, h = s.height;
+
+    // Aliased: the SVG inlined with crispEdges; the PDF without anti-aliasing.
+    const std::string inline_svg = f.svg.substr(f.svg.find("<svg"));
+    write_text(base + "_crisp.html", std::string("<!DOCTYPE html><html><head>") + page_style +
+                                         "<style>svg *{shape-rendering:crispEdges}</style></head><body>" + inline_svg +
+                                         "</body></html>");
+    ASSERT_TRUE(chromium_screenshot(chromium, base + "_crisp.html", w, h, base + "_crisp.png")) << label(name);
+    EXPECT_GE(equal_fraction(read_png(base + "_crisp.png"), png), 0.995) << label(name) << ": Chromium, crispEdges";
+    // (pdftocairo, poppler's cairo back end, samples pixel centres without anti-aliasing;
+    // pdftoppm's aliased mode paints every pixel a path touches, thin slivers included.)
+    ASSERT_TRUE(run_quiet(pdftocairo + " -png -r 72 -singlefile -antialias none " + base + ".pdf " + base + "_pdf",
+                          base + "_pdf.log"))
+        << label(name);
+    EXPECT_GE(equal_fraction(read_png(base + "_pdf.png"), png), 0.995) << label(name) << ": pdftocairo, no anti-aliasing";
+
+    // Anti-aliased as shipped: no seam inside a flat face.
+    write_text(base + ".html", std::string("<!DOCTYPE html><html><head>") + page_style + "</head><body><img src=\"" +
+                                   base + ".svg\" width=\"" + std::to_string(w) + "\" height=\"" + std::to_string(h) +
+                                   "\"></body></html>");
+    ASSERT_TRUE(chromium_screenshot(chromium, base + ".html", w, h, base + "_aa.png")) << label(name);
+    // Allowed: one interior pixel in 10,000, the anti-aliased tips of true slivers narrower than
+    // a pixel that the PNG's centre sampling misses (a seam is a line: hundreds of pixels).
+    std::size_t interior = 0;
+    const std::size_t seams = interior_differences(png, read_png(base + "_aa.png"), &interior);
+    EXPECT_GT(interior, 0u);
+    EXPECT_LE(seams * 10000, interior) << label(name) << ": Chromium seams: " << seams;
+    ASSERT_TRUE(run_quiet(pdftoppm + " -r 72 -png -singlefile " + base + ".pdf " + base + "_pdf_aa", base + "_pdf.log"))
+        << label(name);
+    const std::size_t pdf_seams = interior_differences(png, read_png(base + "_pdf_aa.png"));
+    EXPECT_LE(pdf_seams * 10000, interior) << label(name) << ": pdftoppm seams: " << pdf_seams;
+  }
+}
+
+}  // namespace
