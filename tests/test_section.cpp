@@ -29,6 +29,9 @@
 #include "clip/section.h"
 #include "mesh/errors.h"
 #include "mesh/mesh_io.h"
+#include "scene/render.h"
+#include "scene/scene.h"
+#include "view/png_io.h"
 
 namespace {
 
@@ -553,6 +556,113 @@ TEST_F(section_cli, bad_input_exits_2_names_the_option_and_writes_nothing) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("bad.off"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "a.json"));
+}
+
+// --- scenes: "clip_planes" and "caps" ----------------------------------------------------
+
+/// Writes the box [lo, hi] (outward) as an OFF file.
+void write_box_off(const fs::path& path, const vec3d& lo, const vec3d& hi) {
+  triangle_soup s;
+  add_box(s, lo, hi);
+  std::ofstream out(path);
+  out.precision(17);
+  out << "OFF\n" << s.vertices.size() << " " << s.triangles.size() << " 0\n";
+  for (const vec3d& v : s.vertices) out << v[0] << " " << v[1] << " " << v[2] << "\n";
+  for (const auto& t : s.triangles) out << "3 " << t.v[0] << " " << t.v[1] << " " << t.v[2] << "\n";
+}
+
+class section_scene : public section_cli {
+protected:
+  /// A scene of a grey cube [0,1]^3 and a blue slab crossing it, seen from above in glOrtho,
+  /// with `extra` spliced in (clip planes, caps).
+  std::string scene_text(const std::string& extra) {
+    write_box_off(dir / "box.off", {0, 0, 0}, {1, 1, 1});
+    write_box_off(dir / "slab.off", {-0.5, 0.4, 0.2}, {1.5, 0.6, 0.4});
+    return R"({"meshes": [{"file": "box.off", "color": [100, 100, 100]}, {"file": "slab.off", "color": [0, 0, 255]}],
+ "camera": {"eye": [0.5, 0.5, 5], "look_at": [0.5, 0.5, 0], "up": [0, 1, 0]},
+ "projection": {"type": "orthographic", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 10},
+ "viewport": {"width": 200, "height": 200}, "background": [255, 255, 255])" +
+           extra + "}";
+  }
+  /// The key of the scene_error that parsing `extra` raises ("" when it parses).
+  std::string error_key(const std::string& extra) {
+    try {
+      exbsp::scene::parse_scene_text(scene_text(extra), (dir / "s.json").string());
+    } catch (const exbsp::scene_error& e) {
+      return e.key();
+    }
+    return "";
+  }
+};
+
+TEST_F(section_scene, bad_clip_planes_and_caps_name_their_key) {
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, -1, 0.5]], "caps": {"color": [255, 0, 0]})"), "");
+  EXPECT_EQ(error_key(R"(, "clip_planes": 3)"), "/clip_planes");
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0]])"),
+            "/clip_planes");
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0], [0, 0, 1]])"), "/clip_planes/1");
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0], [0, 0, 1, "x"]])"), "/clip_planes/1/3");
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 0, 1]])"), "/clip_planes/0");
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 1e999]])"), "");  // a JSON syntax error: no key
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0]], "caps": 1)"), "/caps");
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0]], "caps": {"color": [256, 0, 0]})"), "/caps/color/0");
+}
+
+TEST_F(section_scene, bad_scene_exits_2_naming_the_key_and_writes_nothing) {
+  std::ofstream(dir / "bad.json") << scene_text(R"(, "clip_planes": [[0, 0, 0, 1]])");
+  const run_result r = run("render bad.json -o out.png");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("/clip_planes/0"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+TEST_F(section_scene, geometry_is_cut_with_caps_in_their_colour_and_stays_closed) {
+  const auto s = exbsp::scene::parse_scene_text(
+      scene_text(R"(, "clip_planes": [[0, 0, -1, 0.5], [1, 0, 0, -0.25]], "caps": {"color": [255, 0, 0]})"),
+      (dir / "s.json").string());
+  const exbsp::scene::scene_geometry g = exbsp::scene::load_geometry(s);
+  // box: 12 triangle faces + 2 caps; slab: 12 + 2 (the slab is cut by x >= 0.25 too).
+  ASSERT_EQ(g.soup.face_count, 28u);
+  EXPECT_EQ(g.face_offsets, (std::vector<std::uint32_t>{0, 14, 28}));
+  for (std::uint32_t f : {12u, 13u, 26u, 27u}) EXPECT_EQ(g.face_colors[f], (exbsp::view::rgb8{255, 0, 0})) << f;
+  for (std::uint32_t f : {0u, 11u}) EXPECT_EQ(g.face_colors[f], (exbsp::view::rgb8{100, 100, 100})) << f;
+  EXPECT_EQ(g.face_colors[14], (exbsp::view::rgb8{0, 0, 255}));
+  for (const auto& t : g.soup.triangles)
+    for (std::uint32_t v : t.v) {
+      EXPECT_LE(g.soup.vertices[v][2], 0.5);
+      EXPECT_GE(g.soup.vertices[v][0], 0.25);
+    }
+  // Dyadic coordinates round exactly: the soup read back is closed, caps and all.
+  expect_closed_section(exbsp::section(g.soup, {0, 0, 1, 100}));
+}
+
+TEST_F(section_scene, cut_part_renders_in_one_bsp_with_an_uncut_intersecting_part) {
+  std::ofstream(dir / "s.json") << scene_text(R"(, "clip_planes": [[0, 0, -1, 0.5]], "caps": {"color": [255, 0, 0]})");
+  std::ostringstream log;
+  exbsp::render_command({(dir / "s.json").string(), (dir / "s.png").string(), false}, log);
+  const exbsp::view::image img = exbsp::view::read_png((dir / "s.png").string());
+  // Pixel (i, j) sees world (x, y) = (i/100 - 0.5, j/100 - 0.5) from above.
+  const exbsp::view::rgb8 cap{255, 0, 0}, slab{0, 0, 255}, white{255, 255, 255};
+  EXPECT_EQ(img.pixel(100, 100), cap);   // the cap hides the slab inside the box
+  EXPECT_EQ(img.pixel(75, 75), cap);
+  EXPECT_EQ(img.pixel(25, 100), slab);   // the slab outside the box, uncut
+  EXPECT_EQ(img.pixel(175, 100), slab);
+  EXPECT_EQ(img.pixel(180, 180), white);
+  // Without caps the open box shows its inside: the slab through it and the floor.
+  std::ofstream(dir / "n.json") << scene_text(R"(, "clip_planes": [[0, 0, -1, 0.5]])");
+  exbsp::render_command({(dir / "n.json").string(), (dir / "n.png").string(), false}, log);
+  const exbsp::view::image open = exbsp::view::read_png((dir / "n.png").string());
+  EXPECT_EQ(open.pixel(100, 100), slab);
+  EXPECT_EQ(open.pixel(75, 75), (exbsp::view::rgb8{100, 100, 100}));
+}
+
+TEST(section_scene_example, example_scene_renders) {
+  const std::string path = std::string(EXBSP_SOURCE_DIR) + "/scenes/section.json";
+  const auto s = exbsp::scene::load_scene(path);
+  EXPECT_EQ(s.clip_planes.size(), 2u);
+  EXPECT_TRUE(s.caps);
+  const exbsp::scene::scene_geometry g = exbsp::scene::load_geometry(s);
+  EXPECT_GT(g.soup.face_count, g.face_offsets.size());
 }
 
 }  // namespace
