@@ -194,11 +194,17 @@ using cdt_fb = CGAL::Triangulation_face_base_with_info_2<face_info, K, CGAL::Con
 using cdt_tds = CGAL::Triangulation_data_structure_2<cdt_vb, cdt_fb>;
 using cdt = CGAL::Constrained_Delaunay_triangulation_2<K, cdt_tds, CGAL::Exact_intersections_tag>;
 
+/// Interior points of the outline edges the triangulation subdivided: key (lo, hi) -> the
+/// points strictly between, ordered from lo to hi.
+using subdivision = std::unordered_map<std::uint64_t, std::vector<std::uint32_t>>;
+
 /// Triangles covering the region the outline winds around, each face -w times (reversed
 /// when w > 0) so that the cap's boundary is the outline reversed. Steiner points (crossing
-/// outline edges) are lifted to the plane and appended to m.
+/// outline edges) are lifted to the plane and appended to m; outline edges that pass through
+/// other outline points or Steiner points are reported in `split` (non-conforming or
+/// self-intersecting input only).
 std::vector<tri> build_cap(exact_mesh& m, const cut_plane& plane, const std::vector<directed_edge>& outline,
-                           std::uint32_t cap_face, section_stats& stats) {
+                           std::uint32_t cap_face, section_stats& stats, subdivision& split) {
   std::vector<tri> cap;
   if (outline.empty()) return cap;
   std::unordered_map<std::uint64_t, int> net;  // lo->hi multiplicity
@@ -230,23 +236,58 @@ std::vector<tri> build_cap(exact_mesh& m, const cut_plane& plane, const std::vec
                          handle.at(static_cast<std::uint32_t>(key & 0xffffffffu)));
   }
 
-  // Net multiplicity of the outline along the triangulation edge u->v.
+  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+    if (v->info().id != no_point) continue;
+    v->info().id = m.add(plane.lift(v->point()), {NAN, NAN, NAN});
+    ++stats.cap_steiner_points;
+  }
+  // Subdivided constraints (no triangulation edge joins their ends): walk each from lo to
+  // hi along collinear constrained edges and record the points passed.
+  for (const auto& [key, n] : constraints) {
+    if (n == 0) continue;
+    const cdt::Vertex_handle va = handle.at(static_cast<std::uint32_t>(key >> 32));
+    const cdt::Vertex_handle vb = handle.at(static_cast<std::uint32_t>(key & 0xffffffffu));
+    if (tr.is_edge(va, vb)) continue;
+    std::vector<std::uint32_t> mids;
+    for (cdt::Vertex_handle v = va; v != vb;) {
+      cdt::Vertex_handle next;
+      auto ec = tr.incident_edges(v);
+      const auto done = ec;
+      do {
+        if (tr.is_infinite(*ec) || !tr.is_constrained(*ec)) continue;
+        const cdt::Face_handle f = ec->first;
+        const int i = ec->second;
+        const cdt::Vertex_handle w = f->vertex(cdt::cw(i)) == v ? f->vertex(cdt::ccw(i)) : f->vertex(cdt::cw(i));
+        if (CGAL::collinear(va->point(), vb->point(), w->point()) &&
+            CGAL::collinear_are_strictly_ordered_along_line(v->point(), w->point(), vb->point()))
+          next = w;
+        else if (w == vb)
+          next = w;
+      } while (next == cdt::Vertex_handle() && ++ec != done);
+      if (next == cdt::Vertex_handle()) break;  // cannot happen for a constraint of tr
+      if (next != vb) mids.push_back(next->info().id);
+      v = next;
+    }
+    if (!mids.empty()) {
+      ++stats.split_constraints;
+      split.emplace(key, std::move(mids));
+    }
+  }
+
+  // Net multiplicity of the outline along the triangulation edge u->v: the outline edge u-v
+  // itself, plus every subdivided outline edge that contains u-v.
   auto multiplicity = [&](cdt::Vertex_handle u, cdt::Vertex_handle v) {
     const std::uint32_t a = u->info().id, b = v->info().id;
-    if (a != no_point && b != no_point) {
-      const auto it = net.find(a < b ? edge_key(a, b) : edge_key(b, a));
-      if (it != net.end()) return a < b ? it->second : -it->second;
-    }
-    // A piece of a subdivided outline edge: sum the outline edges that contain it.
-    ++stats.split_constraints;
-    int w = 0;
-    for (const auto& [key, n] : constraints) {
-      const point2& p = flat.at(static_cast<std::uint32_t>(key >> 32));
-      const point2& q = flat.at(static_cast<std::uint32_t>(key & 0xffffffffu));
-      if (n == 0 || !CGAL::collinear(p, q, u->point()) || !CGAL::collinear(p, q, v->point())) continue;
+    const auto it = net.find(a < b ? edge_key(a, b) : edge_key(b, a));
+    int w = it == net.end() ? 0 : a < b ? it->second : -it->second;
+    for (const auto& entry : split) {
+      const point2& p = flat.at(static_cast<std::uint32_t>(entry.first >> 32));
+      const point2& q = flat.at(static_cast<std::uint32_t>(entry.first & 0xffffffffu));
+      if (!CGAL::collinear(p, q, u->point()) || !CGAL::collinear(p, q, v->point())) continue;
       if (!CGAL::collinear_are_ordered_along_line(p, u->point(), q) ||
           !CGAL::collinear_are_ordered_along_line(p, v->point(), q))
         continue;
+      const int n = net.at(entry.first);
       w += CGAL::collinear_are_ordered_along_line(p, u->point(), v->point()) ? n : -n;
     }
     return w;
@@ -268,17 +309,61 @@ std::vector<tri> build_cap(exact_mesh& m, const cut_plane& plane, const std::vec
     }
   }
 
-  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
-    if (v->info().id != no_point) continue;
-    v->info().id = m.add(plane.lift(v->point()), {NAN, NAN, NAN});
-    ++stats.cap_steiner_points;
-  }
   for (auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f) {
     const int w = f->info().winding;
     const std::uint32_t a = f->vertex(0)->info().id, b = f->vertex(1)->info().id, c = f->vertex(2)->info().id;
     for (int k = 0; k < std::abs(w); ++k) cap.push_back(w > 0 ? tri{{a, c, b}, cap_face} : tri{{a, b, c}, cap_face});
   }
   return cap;
+}
+
+/// Splits kept triangles along the subdivided outline edges (fans from the opposite
+/// corner, one edge at a time, with a worklist) so that kept and cap share every edge.
+void refine_kept(std::vector<tri>& kept, const subdivision& split) {
+  std::vector<tri> out, work;
+  for (const tri& t : kept) {
+    work.push_back(t);
+    while (!work.empty()) {
+      const tri u = work.back();
+      work.pop_back();
+      bool done = true;
+      for (int k = 0; k < 3 && done; ++k) {
+        const std::uint32_t a = u.v[k], b = u.v[(k + 1) % 3], c = u.v[(k + 2) % 3];
+        const auto it = split.find(a < b ? edge_key(a, b) : edge_key(b, a));
+        if (it == split.end()) continue;
+        std::vector<std::uint32_t> chain{a};
+        if (a < b)
+          chain.insert(chain.end(), it->second.begin(), it->second.end());
+        else
+          chain.insert(chain.end(), it->second.rbegin(), it->second.rend());
+        chain.push_back(b);
+        for (std::size_t i = chain.size() - 1; i > 0; --i) work.push_back(tri{{chain[i - 1], chain[i], c}, u.face});
+        done = false;
+      }
+      if (done) out.push_back(u);
+    }
+  }
+  kept.swap(out);
+}
+
+/// The outline with subdivided edges replaced by their pieces.
+std::vector<directed_edge> refine_outline(const std::vector<directed_edge>& outline, const subdivision& split) {
+  std::vector<directed_edge> out;
+  for (const directed_edge& e : outline) {
+    const auto it = split.find(e.from < e.to ? edge_key(e.from, e.to) : edge_key(e.to, e.from));
+    if (it == split.end()) {
+      out.push_back(e);
+      continue;
+    }
+    std::vector<std::uint32_t> chain{e.from};
+    if (e.from < e.to)
+      chain.insert(chain.end(), it->second.begin(), it->second.end());
+    else
+      chain.insert(chain.end(), it->second.rbegin(), it->second.rend());
+    chain.push_back(e.to);
+    for (std::size_t i = 1; i < chain.size(); ++i) out.push_back({chain[i - 1], chain[i]});
+  }
+  return out;
 }
 
 // --- passes 1 to 3a: split, merge, count, outline ------------------------------------------
@@ -426,8 +511,13 @@ cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32
   stats.outline_edges += r.outline.size();
 
   if (r.closed && want_cap) {
-    r.cap = build_cap(m, plane, r.outline, cap_face, stats);
+    subdivision split;
+    r.cap = build_cap(m, plane, r.outline, cap_face, stats, split);
     stats.cap_triangles += r.cap.size();
+    if (!split.empty()) {
+      refine_kept(r.kept, split);
+      r.outline = refine_outline(r.outline, split);
+    }
   }
   return r;
 }

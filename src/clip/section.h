@@ -26,10 +26,13 @@
 //     kept part is the face alone and the cap is that face reversed (a flat double-sided
 //     sheet, still closed); a plane that only touches the mesh along an edge or at a vertex
 //     cuts nothing (no outline, no cap).
-//   - Loops of the outline that cross or touch along an edge (self-intersecting or
-//     non-conforming input) give the triangulation Steiner points or split constraints;
-//     the cap still covers the right region but kept ∪ cap then has T-junctions
-//     (counted in section_stats::cap_steiner_points and split_constraints).
+//   - Loops of the outline that cross or overlap along an edge (self-intersecting or
+//     non-conforming input, e.g. two solids sharing part of a face) make the triangulation
+//     subdivide outline edges (at Steiner points where loops cross, or at outline points on
+//     another loop's edge): the kept triangles on those edges are then split by a fan from
+//     the opposite corner and the outline edges replaced by their pieces, so kept ∪ cap stays
+//     closed (counted in section_stats::cap_steiner_points and split_constraints; only there
+//     does the kept list differ from the plain section 3 pieces).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -79,7 +82,7 @@ struct section_stats {
   std::size_t outline_edges = 0;      ///< directed outline edges (with multiplicity)
   std::size_t cap_triangles = 0;
   std::size_t cap_steiner_points = 0; ///< triangulation vertices not on the outline (crossing loops)
-  std::size_t split_constraints = 0;  ///< outline edges the triangulation had to subdivide
+  std::size_t split_constraints = 0;  ///< outline edges the triangulation subdivided (kept refined there)
   double seconds = 0;                 ///< wall time of the section
 };
 
