@@ -17,6 +17,16 @@ std::string num(double x) {
   return buf;
 }
 
+/// A pixel coordinate rounded to 1/100, without trailing zeros.
+std::string px(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.2f", x);
+  std::string t = buf;
+  while (t.back() == '0') t.pop_back();
+  if (t.back() == '.') t.pop_back();
+  return t == "-0" ? "0" : t;
+}
+
 void append_point(std::string& out, const section_point& p) {
   out += "[" + num(p.v[0]) + ", " + num(p.v[1]) + ", " + num(p.v[2]) + "]";
 }
@@ -137,14 +147,14 @@ std::string section_svg(const section_result& r, const std::array<unsigned char,
   if (!(lo[0] <= hi[0])) lo[0] = hi[0] = lo[1] = hi[1] = 0;
   const double scale = side / extent;
   const double width = (hi[0] - lo[0]) * scale + 2 * margin, height = (hi[1] - lo[1]) * scale + 2 * margin;
-  auto x = [&](std::uint32_t p) { return num(std::round(((uv[p][0] - lo[0]) * scale + margin) * 100) / 100); };
-  auto y = [&](std::uint32_t p) { return num(std::round(((hi[1] - uv[p][1]) * scale + margin) * 100) / 100); };
+  auto x = [&](std::uint32_t p) { return px((uv[p][0] - lo[0]) * scale + margin); };
+  auto y = [&](std::uint32_t p) { return px((hi[1] - uv[p][1]) * scale + margin); };
   char colour[16];
   std::snprintf(colour, sizeof colour, "#%02x%02x%02x", cap_color[0], cap_color[1], cap_color[2]);
 
-  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(std::ceil(width)) + "\" height=\"" +
-                    num(std::ceil(height)) + "\" viewBox=\"0 0 " + num(std::ceil(width)) + " " +
-                    num(std::ceil(height)) + "\">\n";
+  const std::string w = px(std::ceil(width)), h = px(std::ceil(height));
+  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + w + "\" height=\"" + h +
+                    "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
   out += "<!-- exbsp section by the plane " + num(r.plane[0]) + "*x + " + num(r.plane[1]) + "*y + " +
          num(r.plane[2]) + "*z + " + num(r.plane[3]) + " = 0, seen from the kept side; u = (" +
          num(basis[0][0]) + ", " + num(basis[0][1]) + ", " + num(basis[0][2]) + ") to the right, v = (" +
