@@ -25,6 +25,7 @@
 #include <set>
 #include <sstream>
 
+#include "bsp/exact_output.h"
 #include "clip/exact_triangle_clip.h"
 #include "clip/section.h"
 #include "mesh/errors.h"
@@ -528,7 +529,7 @@ protected:
 };
 
 TEST_F(section_cli, json_has_kept_outline_and_cap_with_exact_rationals) {
-  const run_result r = run("section cube.off --plane 0,0,1,-0.3");
+  const run_result r = run("section cube.off --plane 0.1,0.2,1,-0.3");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j.at("closed").get<bool>());
@@ -540,10 +541,27 @@ TEST_F(section_cli, json_has_kept_outline_and_cap_with_exact_rationals) {
   }
   ASSERT_EQ(j.at("outline").size(), 1u);
   EXPECT_TRUE(j.at("outline")[0].at("closed").get<bool>());
-  // 0.3 is not 3/10: the exact coordinate is the double nearest to 0.3.
-  mpq_class z(j.at("outline")[0].at("exact")[0][2].get<std::string>());
-  EXPECT_EQ(z, mpq_class(0.3));
+  // On the plane exactly, with 0.1 and 0.2 and 0.3 meaning their doubles (not 1/10...).
+  for (const auto& p : j.at("outline")[0].at("exact")) {
+    q3 x;
+    for (int k = 0; k < 3; ++k) x[k] = mpq_class(p[k].get<std::string>());
+    EXPECT_EQ(plane_value({0.1, 0.2, 1, -0.3}, x), 0);
+  }
   EXPECT_FALSE(j.at("cap").empty());
+  // Every printed double is the nearest double of its exact rational (cut points included).
+  for (const char* list : {"kept", "outline", "cap"})
+    for (const auto& f : j.at(list))
+      for (std::size_t i = 0; i < f.at("v").size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+          mpq_class q(f.at("exact")[i][k].get<std::string>());
+          q.canonicalize();
+          EXPECT_EQ(q.get_str(), f.at("exact")[i][k].get<std::string>()) << "not reduced";
+          EXPECT_EQ(exbsp::rational_to_double(q.get_mpq_t()), f.at("v")[i][k].get<double>());
+        }
+  // A negative first number is a value, not an option.
+  const run_result neg = run("section cube.off --plane -1,0,0,0.5");
+  ASSERT_EQ(neg.status, 0) << neg.err;
+  EXPECT_EQ(nlohmann::json::parse(neg.out).at("plane")[0], -1);
 }
 
 TEST_F(section_cli, off_output_is_a_closed_mesh_and_svg_draws_the_loop) {
