@@ -294,6 +294,24 @@ TEST(section, one_ulp_off_a_face) {
   expect_tiling(unit_cube(), tilt);
 }
 
+TEST(section, collinear_sliver_closing_a_t_junction) {
+  // A cube whose top face has an extra vertex m in the middle of its edge a-b (y = 0); the
+  // wall below still uses a-b, and the collinear triangle (a, m, b) closes the T-junction.
+  triangle_soup s;
+  s.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {0.5, 0, 1}};
+  const std::vector<std::vector<std::uint32_t>> faces{{0, 2, 3, 1}, {8, 5, 7, 6, 4}, {0, 1, 5, 4}, {2, 6, 7, 3},
+                                                      {0, 4, 6, 2}, {1, 3, 7, 5}, {4, 5, 8}};
+  for (const auto& f : faces) s.add_polygon(f, s.face_count++);
+  for (const section_plane& p : {section_plane{1, 0, 0, -0.25}, section_plane{1, 0, 0, -0.5},
+                                 section_plane{1, 0.5, -1, 0.5}, section_plane{-1, 0, 0, 0.75}}) {
+    SCOPED_TRACE(testing::Message() << p[0] << "," << p[1] << "," << p[2] << "," << p[3]);
+    const section_result r = exbsp::section(s, p);
+    EXPECT_EQ(r.stats.degenerate_input, 1u);
+    expect_closed_section(r);
+    expect_tiling(s, p);
+  }
+}
+
 TEST(section, holes_and_nested_islands) {
   triangle_soup s;
   add_box(s, {0, 0, 0}, {10, 10, 10});
