@@ -361,6 +361,33 @@ TEST(section, overlapping_solids_cover_the_overlap_twice) {
   EXPECT_EQ(cap_area2_along_n(r), -2 * (4 + 4));  // two squares of area 4, the overlap twice
 }
 
+TEST(section, many_small_integer_planes_hit_vertices_edges_and_faces_and_stay_closed) {
+  // Planes with coefficients in -2..2 and D in -6..6 (halves) through boxes on a unit grid:
+  // most pass through vertices, along edges or contain faces. Fixed seed.
+  triangle_soup s;
+  add_box(s, {0, 0, 0}, {4, 4, 4});
+  add_box(s, {1, 1, 1}, {3, 3, 3}, true);     // cavity
+  add_box(s, {4, 1, 0}, {5, 3, 2});           // touching the outer box along part of a face
+  add_box(s, {-1, -1, -1}, {0, 0, 0});        // touching at the vertex (0,0,0)
+  std::uint64_t state = 12;
+  auto next = [&state](int lo, int hi) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return lo + static_cast<int>((state >> 33) % static_cast<std::uint64_t>(hi - lo + 1));
+  };
+  int cut = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    const section_plane p{double(next(-2, 2)), double(next(-2, 2)), double(next(-2, 2)), next(-12, 12) / 2.0};
+    if (p[0] == 0 && p[1] == 0 && p[2] == 0) continue;
+    SCOPED_TRACE(testing::Message() << p[0] << "," << p[1] << "," << p[2] << "," << p[3]);
+    const section_result r = exbsp::section(s, p);
+    expect_closed_section(r);
+    expect_tiling(s, p);
+    cut += !r.cap.empty();
+    if (HasFailure()) break;
+  }
+  EXPECT_GT(cut, 50);
+}
+
 TEST(section, open_input_gives_open_polylines_and_no_cap) {
   triangle_soup s = unit_cube();
   s.triangles.erase(s.triangles.begin() + 2, s.triangles.begin() + 4);  // drop the top face

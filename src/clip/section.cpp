@@ -172,6 +172,10 @@ struct directed_edge {
   std::uint32_t from, to;
 };
 
+bool by_ends(const directed_edge& a, const directed_edge& b) {
+  return a.from != b.from ? a.from < b.from : a.to < b.to;
+}
+
 /// Result of one cut of an exact mesh.
 struct cut_result {
   std::vector<tri> kept;
@@ -346,13 +350,15 @@ void refine_kept(std::vector<tri>& kept, const subdivision& split) {
   kept.swap(out);
 }
 
-/// The outline with subdivided edges replaced by their pieces.
+/// The outline with subdivided edges replaced by their pieces; pieces that overlap in
+/// opposite directions cancel (net use per edge, as the outline itself is made).
 std::vector<directed_edge> refine_outline(const std::vector<directed_edge>& outline, const subdivision& split) {
-  std::vector<directed_edge> out;
+  std::unordered_map<std::uint64_t, int> net;
+  auto add = [&net](std::uint32_t a, std::uint32_t b) { net[a < b ? edge_key(a, b) : edge_key(b, a)] += a < b ? 1 : -1; };
   for (const directed_edge& e : outline) {
     const auto it = split.find(e.from < e.to ? edge_key(e.from, e.to) : edge_key(e.to, e.from));
     if (it == split.end()) {
-      out.push_back(e);
+      add(e.from, e.to);
       continue;
     }
     std::vector<std::uint32_t> chain{e.from};
@@ -361,8 +367,14 @@ std::vector<directed_edge> refine_outline(const std::vector<directed_edge>& outl
     else
       chain.insert(chain.end(), it->second.rbegin(), it->second.rend());
     chain.push_back(e.to);
-    for (std::size_t i = 1; i < chain.size(); ++i) out.push_back({chain[i - 1], chain[i]});
+    for (std::size_t i = 1; i < chain.size(); ++i) add(chain[i - 1], chain[i]);
   }
+  std::vector<directed_edge> out;
+  for (const auto& [key, n] : net) {
+    const std::uint32_t lo = static_cast<std::uint32_t>(key >> 32), hi = static_cast<std::uint32_t>(key & 0xffffffffu);
+    for (int k = 0; k < std::abs(n); ++k) out.push_back(n > 0 ? directed_edge{lo, hi} : directed_edge{hi, lo});
+  }
+  std::sort(out.begin(), out.end(), by_ends);
   return out;
 }
 
@@ -505,9 +517,7 @@ cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32
         r.outline.push_back({u.first_from, u.first_to});
     }
   }
-  std::sort(r.outline.begin(), r.outline.end(), [](const directed_edge& a, const directed_edge& b) {
-    return a.from != b.from ? a.from < b.from : a.to < b.to;
-  });
+  std::sort(r.outline.begin(), r.outline.end(), by_ends);
   stats.outline_edges += r.outline.size();
 
   if (r.closed && want_cap) {
