@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bsp/bsp_tree.h"
+#include "bsp/geometry_cgal.h"
 #include "bsp/fast_orientation.h"
 #include "bsp/kernel_double.h"
 #include "bsp/kernel_epeck.h"

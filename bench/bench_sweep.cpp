@@ -29,6 +29,8 @@
 
 #include "alloc_counter.h"
 #include "bsp/bsp_tree.h"
+#include "bsp/geometry_cgal.h"
+#include "bsp/geometry_exact.h"
 #include "bsp/kernel_double.h"
 #include "bsp/kernel_epeck.h"
 #include "bsp/kernel_epick.h"
@@ -125,14 +127,26 @@ json defects_json(const defect_report& d) {
           {"seconds_parts", {d.seconds_plane, d.seconds_tiling, d.seconds_classification, d.seconds_order}}};
 }
 
+/// The CGAL kernel behind a geometry (void for exbsp's own exact geometry).
+template <class G>
+struct cgal_kernel_of {
+  using type = void;
+};
 template <class K>
-constexpr bool checkable = !std::is_same_v<K, gmpq_kernel>;
+struct cgal_kernel_of<cgal_geometry<K>> {
+  using type = K;
+};
+/// Defects are checked for the CGAL kernels but gmpq (too slow; identical to epeck); the exact
+/// kernel's tree is identical to epeck's (tests/test_exact_kernel.cpp), so it has epeck's zeros.
+template <class G>
+constexpr bool checkable =
+    !std::is_void_v<typename cgal_kernel_of<G>::type> && !std::is_same_v<typename cgal_kernel_of<G>::type, gmpq_kernel>;
 
 /// Phase 1: the counted build, statistics and defects.
-template <class K>
+template <class G>
 void counted_build(const triangle_soup& soup, const std::string& heuristic, const sweep_options& o, run_state& st) {
   const build_options options = make_options(st.kernel, heuristic, o);
-  std::optional<bsp_tree<K>> tree;
+  std::optional<basic_bsp_tree<G>> tree;
   alloc_counter::start();
   try {
     tree.emplace(soup, options);
@@ -162,18 +176,18 @@ void counted_build(const triangle_soup& soup, const std::string& heuristic, cons
   r["allocations"] = alloc_counter::allocations();
   r["peak_heap_bytes_per_fragment"] =
       s.fragments ? static_cast<double>(alloc_counter::peak()) / static_cast<double>(s.fragments) : 0.0;
-  if constexpr (checkable<K>) {
-    const bool control = kernel_traits<K>::exact;
+  if constexpr (checkable<G>) {
+    const bool control = G::exact;
     if (o.defects && (!control || s.input_triangles <= o.control_max_triangles))
       r["defects"] = defects_json(check_defects(*tree, soup, o.defect));
   }
 }
 
 /// Phase 2: one timed build, accounting off.
-template <class K>
+template <class G>
 void timed_build(const triangle_soup& soup, const std::string& heuristic, const sweep_options& o, run_state& st) {
   const build_options options = make_options(st.kernel, heuristic, o);
-  std::optional<bsp_tree<K>> tree;
+  std::optional<basic_bsp_tree<G>> tree;
   const double cpu0 = process_cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
   try {
@@ -206,10 +220,11 @@ template <template <class> class Fn>
 struct dispatch {
   template <class... Args>
   static void run(const std::string& kernel, Args&&... args) {
-    if (kernel == "double") return Fn<double_kernel>::run(std::forward<Args>(args)...);
-    if (kernel == "epick") return Fn<epick_kernel>::run(std::forward<Args>(args)...);
-    if (kernel == "epeck") return Fn<epeck_kernel>::run(std::forward<Args>(args)...);
-    if (kernel == "gmpq") return Fn<gmpq_kernel>::run(std::forward<Args>(args)...);
+    if (kernel == "exact") return Fn<exact_geometry>::run(std::forward<Args>(args)...);
+    if (kernel == "double") return Fn<cgal_geometry<double_kernel>>::run(std::forward<Args>(args)...);
+    if (kernel == "epick") return Fn<cgal_geometry<epick_kernel>>::run(std::forward<Args>(args)...);
+    if (kernel == "epeck") return Fn<cgal_geometry<epeck_kernel>>::run(std::forward<Args>(args)...);
+    if (kernel == "gmpq") return Fn<cgal_geometry<gmpq_kernel>>::run(std::forward<Args>(args)...);
     throw std::invalid_argument("unknown kernel " + kernel);
   }
 };

@@ -36,6 +36,7 @@
 #include <cstdint>
 
 #include "bsp/bsp_tree.h"
+#include "bsp/geometry_cgal.h"
 #include "mesh/soup.h"
 
 namespace exbsp::bench {

@@ -28,7 +28,7 @@ MESHES = os.path.join(REPO, "data", "meshes")
 CAD = ["fandisk", "rotor", "pinion", "anchor_dense", "blade", "turbine", "couplingdown", "ALSTOM_TEST4",
        "b9_mesh", "spool", "part", "joint"]
 ORGANIC = ["elephant", "bunny00", "armadillo", "refined_elephant"]
-KERNELS = ["double", "epick", "epeck", "gmpq"]
+KERNELS = ["double", "epick", "exact", "epeck", "gmpq"]
 HEURISTICS = ["naive", "min-split", "sampled", "random"]
 
 FULL = {

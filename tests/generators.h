@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "bsp/bsp_tree.h"
+#include "bsp/geometry_cgal.h"
 #include "bsp/engine.h"
 #include "bsp/kernel_double.h"
 #include "bsp/kernel_epeck.h"
@@ -493,6 +494,14 @@ inline const soup_case* cad_mesh(const std::string& name) {
     it = cache.emplace(name, std::move(c)).first;
   }
   return it->second.get();
+}
+
+/// The CAD meshes of the corpus used by the subset generators, those present.
+inline std::vector<std::string> present_cad_meshes() {
+  std::vector<std::string> out;
+  for (const char* name : {"fandisk.off", "part.off", "couplingdown.off", "rotor.off", "ALSTOM_TEST4.off", "anchor.off"})
+    if (cad_mesh(name)) out.push_back(name);
+  return out;
 }
 
 /// A rigid motion of a soup: exact (axis permutation, reflections, power-of-two scale: every

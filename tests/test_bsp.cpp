@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "bsp/bsp_tree.h"
+#include "bsp/geometry_cgal.h"
 #include "bsp/engine.h"
 #include "bsp/kernel_epeck.h"
 #include "bsp/kernel_gmpq.h"

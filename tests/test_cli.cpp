@@ -170,7 +170,7 @@ TEST_F(cli, a_missing_mesh_file_exits_2_naming_it) {
 TEST_F(cli, build_json_has_every_key_of_design_section_4_and_matches_the_library) {
   const fs::path cyclic = write_cyclic_triple();
   for (const std::string& mesh : {data_dir + "/cube.off", data_dir + "/fan.off", cyclic.string()}) {
-    for (const char* kernel : {"epeck", "gmpq", "epick", "double"}) {
+    for (const char* kernel : {"exact", "epeck", "gmpq", "epick", "double"}) {
       SCOPED_TRACE(mesh + " " + kernel);
       const result r = run("build " + quoted(mesh) + " --kernel " + kernel + " --heuristic min-split --json");
       ASSERT_EQ(r.status, 0) << r.err;
@@ -199,11 +199,11 @@ TEST_F(cli, build_json_has_every_key_of_design_section_4_and_matches_the_library
       EXPECT_EQ(j["depth"].get<std::size_t>(), s.depth);
     }
   }
-  // Defaults: kernel epeck, the default heuristic.
+  // Defaults: kernel exact, the default heuristic.
   const result d = run("build " + quoted(cyclic.string()) + " --json");
   ASSERT_EQ(d.status, 0) << d.err;
   const json j = json::parse(d.out);
-  EXPECT_EQ(j["kernel"], "epeck");
+  EXPECT_EQ(j["kernel"], "exact");
   EXPECT_EQ(j["heuristic"], exbsp::default_heuristic());
   EXPECT_GE(j["splits"].get<std::size_t>(), 1u);
 }
@@ -292,7 +292,7 @@ TEST_F(cli, order_json_has_eye_or_direction_faces_17_digit_doubles_and_reduced_e
                                      {exact_decimal, "--eye 1,2,3", "eye", {1, 2, 3}},
                                      {data_dir + "/cube.off", "--eye 0.5,0.5,5", "eye", {0.5, 0.5, 5}}};
   for (const view_case& vc : cases) {
-    for (const char* kernel : {"epeck", "gmpq"}) {
+    for (const char* kernel : {"exact", "epeck", "gmpq"}) {
       SCOPED_TRACE(vc.mesh + " " + vc.option + " " + kernel);
       const result r = run("order " + quoted(vc.mesh) + " " + vc.option + " --kernel " + kernel +
                            " --heuristic naive -o OUT.json");

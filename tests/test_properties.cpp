@@ -450,13 +450,6 @@ RC_GTEST_PROP(facade, bsp_build_matches_the_kernel_tree_stats_faces_ancestors_an
 
 // --- Real CAD meshes --------------------------------------------------------------------------
 
-std::vector<std::string> present_cad_meshes() {
-  std::vector<std::string> out;
-  for (const char* name : {"fandisk.off", "part.off", "couplingdown.off", "rotor.off", "ALSTOM_TEST4.off", "anchor.off"})
-    if (cad_mesh(name)) out.push_back(name);
-  return out;
-}
-
 TEST(cad_meshes, contiguous_subsets_under_rigid_motions_satisfy_every_invariant) {
   const auto files = present_cad_meshes();
   if (files.empty()) GTEST_SKIP() << "data/meshes/ is missing: run scripts/setup";

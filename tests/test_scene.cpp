@@ -552,7 +552,9 @@ view::image zbuffer_render(const view::frame& f, bool cull) {
 }
 
 TEST(Render, ExampleScenesMatchAZBufferOracle) {
-  for (const char* name : {"demo", "perspective", "orthographic", "oblique", "frustum", "inside", "cyclic"}) {
+  for (const char* name : {"demo", "perspective", "orthographic", "oblique", "frustum", "inside", "cyclic", "groups",
+                           "camera_look", "camera_polar", "camera_pilot", "phigs_perspective", "phigs_oblique",
+                           "viewport", "trackball"}) {
     const scene::scene s = std::string(name) == "demo"
                                ? scene::demo_scene()
                                : scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");

@@ -16,6 +16,7 @@
 #include "clip/section.h"
 #include "mesh/errors.h"
 #include "mesh/mesh_io.h"
+#include "scene/clip_input.h"
 #include "scene/render.h"
 
 namespace {
@@ -86,7 +87,7 @@ void write_atomically(const std::string& path, const std::string& content) {
 
 struct build_cli {
   std::string mesh;
-  std::string kernel = "epeck";
+  std::string kernel = exbsp::to_string(exbsp::build_options{}.kernel);
   std::string heuristic = exbsp::default_heuristic();
   std::uint64_t seed = 0;
   std::size_t max_fragments = 0;
@@ -96,9 +97,10 @@ struct build_cli {
 void add_build_options(CLI::App* cmd, build_cli& o) {
   cmd->add_option("MESH", o.mesh, "mesh file: .off, .obj, .ply or .stl")->required();
   cmd->add_option("--kernel", o.kernel,
-                  "number type: epeck (lazy exact, default), gmpq (plain exact rationals), "
-                  "epick (exact predicates, rounded splits), double (plain double)")
-      ->check(CLI::IsMember({"epeck", "epick", "double", "gmpq"}))
+                  "number type: exact (exbsp's own exact points, default), epeck (CGAL lazy exact), "
+                  "gmpq (plain exact rationals), epick (exact predicates, rounded splits), "
+                  "double (plain double)")
+      ->check(CLI::IsMember({"exact", "epeck", "gmpq", "epick", "double"}))
       ->capture_default_str();
   cmd->add_option("--heuristic", o.heuristic,
                   "splitter choice: naive (first triangle), min-split (fewest straddlers), "
@@ -279,6 +281,11 @@ int main(int argc, char** argv) {
   render->add_option("--orbit-drag", orbit_drag,
                      "trackball orbit: screen pixel path X0,Y0:X1,Y1:... (y down) dragged over an "
                      "arcball; writes OUT_0000.png, OUT_0001.png, ... from one BSP build");
+  std::string trackball;
+  render->add_option("--trackball", trackball,
+                     "orbit rotation: arcball (Shoemake, twice the arc; default) or virtual (the classic "
+                     "virtual trackball: the point under the cursor follows it); overrides the scene's \"trackball\"")
+      ->check(CLI::IsMember({"arcball", "virtual"}));
   render->add_option("--frames", orbit_frames,
                      "number of orbit frames (the drag path resampled evenly; default: one per point)");
 
@@ -292,6 +299,19 @@ int main(int argc, char** argv) {
   section->add_option("-o,--output", section_out,
                       "OUT.json (kept, outline, cap with exact rationals; default: standard output), "
                       "OUT.off (kept and cap as one mesh) or OUT.svg (the outline in the cut plane)");
+
+  std::string clip_in, clip_out, clip_algorithm;
+  bool clip_verbose = false;
+  auto* clip = app.add_subcommand(
+      "clip", "clip the segments and polygons of INPUT.json against its region (rect, box, convex, halfspaces)");
+  clip->add_option("INPUT", clip_in, "clip input (JSON): {\"region\": ..., \"segments\": ..., \"polygons\": ...}")
+      ->required();
+  clip->add_option("--algorithm", clip_algorithm,
+                   "segment clipper: cohen-sutherland (default) or liang-barsky (rect or box regions); "
+                   "polygons are always clipped by sutherland-hodgman (any convex region)")
+      ->check(CLI::IsMember({"cohen-sutherland", "liang-barsky", "sutherland-hodgman"}));
+  clip->add_option("-o,--output", clip_out, "output .json or .svg (default: JSON on standard output)");
+  clip->add_flag("-v,--verbose", clip_verbose, "print each segment endpoint's Cohen-Sutherland outcode");
 
   try {
     app.parse(argc, argv);
@@ -312,10 +332,15 @@ int main(int argc, char** argv) {
       return run_order(order_opts, eye, direction, order_out);
     }
     if (*section) return run_section(section_mesh, section_plane_text, section_out);
+    if (*clip) {
+      exbsp::scene::clip_command(clip_in, clip_out, clip_algorithm, clip_verbose, std::cout, std::cerr);
+      return 0;
+    }
     if (*render) {
       exbsp::render_request request{scene_path, render_out, verbose};
       if (!orbit_drag.empty()) request.orbit_drag = exbsp::parse_drag_path(orbit_drag);
       request.frames = orbit_frames;
+      request.trackball = trackball;
       exbsp::render_command(request, std::cerr);
       return 0;
     }

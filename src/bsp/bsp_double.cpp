@@ -1,5 +1,6 @@
 // Explicit instantiation of the BSP for the double kernel (one object per CGAL header set).
 #include "bsp/kernel_double.h"
 #include "bsp/bsp_tree_impl.h"
+#include "bsp/geometry_cgal.h"
 
-EXBSP_INSTANTIATE_BSP(exbsp::double_kernel, double)
+EXBSP_INSTANTIATE_BSP(exbsp::cgal_geometry<exbsp::double_kernel>, double)

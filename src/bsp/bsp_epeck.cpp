@@ -1,5 +1,6 @@
 // Explicit instantiation of the BSP for the epeck kernel (one object per CGAL header set).
 #include "bsp/kernel_epeck.h"
 #include "bsp/bsp_tree_impl.h"
+#include "bsp/geometry_cgal.h"
 
-EXBSP_INSTANTIATE_BSP(exbsp::epeck_kernel, epeck)
+EXBSP_INSTANTIATE_BSP(exbsp::cgal_geometry<exbsp::epeck_kernel>, epeck)

@@ -1,5 +1,6 @@
 // Explicit instantiation of the BSP for the epick kernel (one object per CGAL header set).
 #include "bsp/kernel_epick.h"
 #include "bsp/bsp_tree_impl.h"
+#include "bsp/geometry_cgal.h"
 
-EXBSP_INSTANTIATE_BSP(exbsp::epick_kernel, epick)
+EXBSP_INSTANTIATE_BSP(exbsp::cgal_geometry<exbsp::epick_kernel>, epick)

@@ -20,6 +20,7 @@ public:
   virtual std::vector<bsp::ancestor> ancestors(std::size_t i) const = 0;
 };
 
+std::unique_ptr<bsp_impl> make_bsp_exact(const triangle_soup&, const build_options&);
 std::unique_ptr<bsp_impl> make_bsp_epeck(const triangle_soup&, const build_options&);
 std::unique_ptr<bsp_impl> make_bsp_epick(const triangle_soup&, const build_options&);
 std::unique_ptr<bsp_impl> make_bsp_double(const triangle_soup&, const build_options&);

@@ -1,8 +1,7 @@
-// Definitions of bsp_tree<K> and the split functions. Included only by the per-kernel
-// translation units (bsp_<kernel>.cpp), which instantiate them explicitly.
+// Definitions of basic_bsp_tree<G>. Included only by the per-kernel translation units
+// (bsp_<kernel>.cpp), which instantiate them explicitly.
 // Notation: see bsp_tree.h. Heuristic indices: 0 naive, 1 min-split, 2 sampled, 3 random.
 #pragma once
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -13,15 +12,12 @@
 #include <exception>
 #include <iterator>
 #include <limits>
-#include <optional>
 #include <string>
 #include <utility>
 
 #include "bsp/bsp_impl.h"
 #include "bsp/bsp_tree.h"
 #include "bsp/exact_output.h"
-#include "bsp/fast_orientation.h"
-#include "bsp/kernel_traits.h"
 #include "mesh/errors.h"
 
 namespace exbsp {
@@ -38,141 +34,51 @@ inline std::uint64_t mix64(std::uint64_t x) {
 
 int heuristic_index(const std::string& name);
 
-/// Sign of orientation(plane, vertex k of f): the certified double filter first where the
-/// kernel allows it and the vertex has exact double coordinates, else the kernel's predicate.
-template <class K, class Fragment>
-inline int vertex_sign(const std::array<typename K::Point_3, 3>& plane, const fast_plane& fast,
-                       const Fragment& f, int k) {
-  if constexpr (kernel_traits<K>::fast_path) {
-    if ((f.double_mask >> k) & 1) {
-      const int s = fast_sign(fast, f.d[k], f.r[k]);
-      if (s != 2) return s;
-    }
-  }
-  return static_cast<int>(K().orientation_3_object()(plane[0], plane[1], plane[2], f.v[k]));
-}
-
-template <class K, class Fragment>
-inline std::array<int, 3> signs_against(const std::array<typename K::Point_3, 3>& plane,
-                                        const fast_plane& fast, const Fragment& f) {
-  return {vertex_sign<K>(plane, fast, f, 0), vertex_sign<K>(plane, fast, f, 1),
-          vertex_sign<K>(plane, fast, f, 2)};
-}
-
 /// OpenMP team size for a requested thread count (0: all cores).
 inline int threads_for(unsigned requested) {
   return requested ? static_cast<int>(requested) : omp_get_max_threads();
 }
 
-/// True when f straddles the plane; sets `coplanar` when all three signs are 0.
-/// Skips the third predicate when the first two already have opposite signs.
-template <class K, class Fragment>
-inline bool straddles(const std::array<typename K::Point_3, 3>& plane, const fast_plane& fast,
-                      const Fragment& f, bool& coplanar) {
-  const int s0 = vertex_sign<K>(plane, fast, f, 0);
-  const int s1 = vertex_sign<K>(plane, fast, f, 1);
-  coplanar = false;
-  if (s0 * s1 < 0) return true;
-  const int s2 = vertex_sign<K>(plane, fast, f, 2);
-  if (s0 == 0 && s1 == 0 && s2 == 0) {
-    coplanar = true;
-    return false;
+/// Collects the first exception thrown inside an OpenMP loop body (an exception must not
+/// leave a parallel region: that would terminate the process) and rethrows it outside.
+class parallel_failure {
+public:
+  template <class Body>
+  void run(Body&& body) {
+    if (failed_.load(std::memory_order_relaxed)) return;
+    try {
+      body();
+    } catch (...) {
+#pragma omp critical(exbsp_parallel_failure)
+      if (!error_) error_ = std::current_exception();
+      failed_.store(true);
+    }
   }
-  const int lo = std::min({s0, s1, s2}), hi = std::max({s0, s1, s2});
-  return lo < 0 && hi > 0;
-}
+  bool failed() const { return failed_.load(std::memory_order_relaxed); }
+  void rethrow() {
+    if (error_) std::rethrow_exception(error_);
+  }
+
+private:
+  std::atomic<bool> failed_{false};
+  std::exception_ptr error_;
+};
 
 }  // namespace detail
 
-namespace detail {
-/// The point where [p,q] meets the plane through `a` with normal n (n = (b-a)x(c-a)).
-template <class K>
-typename K::Point_3 intersect_with_normal(const typename K::Point_3& a, const typename K::Vector_3& n,
-                                          const typename K::Point_3& p, const typename K::Point_3& q) {
-  if constexpr (kernel_traits<K>::direct_intersection) {
-    return kernel_traits<K>::intersection(a, n, p, q);
-  }
-  using FT = typename K::FT;
-  const FT fp = n * (p - a);
-  const FT fq = n * (q - a);
-  const FT t = fp / (fp - fq);
-  typename K::Point_3 x = p + t * (q - p);
-  kernel_traits<K>::collapse(x);
-  return x;
-}
-
-template <class K>
-typename K::Vector_3 plane_normal(const std::array<typename K::Point_3, 3>& plane) {
-  typename K::Vector_3 n = CGAL::cross_product(plane[1] - plane[0], plane[2] - plane[0]);
-  kernel_traits<K>::collapse_vector(n);
-  return n;
-}
-
-template <class K>
-split_pieces<K> split_with_normal(const std::array<typename K::Point_3, 3>& plane,
-                                  const typename K::Vector_3& normal,
-                                  const std::array<typename K::Point_3, 3>& t,
-                                  const std::array<int, 3>& s);
-}  // namespace detail
-
-template <class K>
-typename K::Point_3 plane_segment_intersection(const std::array<typename K::Point_3, 3>& plane,
-                                               const typename K::Point_3& p,
-                                               const typename K::Point_3& q) {
-  return detail::intersect_with_normal<K>(plane[0], detail::plane_normal<K>(plane), p, q);
-}
-
-template <class K>
-split_pieces<K> split_triangle(const std::array<typename K::Point_3, 3>& plane,
-                               const std::array<typename K::Point_3, 3>& t,
-                               const std::array<int, 3>& s) {
-  if (classify_signs(s) != classification::straddling)
-    throw usage_error("split_triangle: the triangle does not straddle the plane");
-  return detail::split_with_normal<K>(plane, detail::plane_normal<K>(plane), t, s);
-}
-
-template <class K>
-split_pieces<K> detail::split_with_normal(const std::array<typename K::Point_3, 3>& plane,
-                                          const typename K::Vector_3& normal,
-                                          const std::array<typename K::Point_3, 3>& t,
-                                          const std::array<int, 3>& s) {
-  split_pieces<K> out;
-  const int zero = s[0] == 0 ? 0 : s[1] == 0 ? 1 : s[2] == 0 ? 2 : -1;
-  if (zero < 0) {
-    // c is the vertex alone on its side; (a,b,c) is a cyclic relabelling of t.
-    int lone = 0;
-    for (int i = 0; i < 3; ++i)
-      if (s[i] != s[(i + 1) % 3] && s[i] != s[(i + 2) % 3]) lone = i;
-    const auto& c = t[lone];
-    const auto& a = t[(lone + 1) % 3];
-    const auto& b = t[(lone + 2) % 3];
-    const auto A = intersect_with_normal<K>(plane[0], normal, c, a);
-    const auto B = intersect_with_normal<K>(plane[0], normal, b, c);
-    out.piece[0] = {a, b, A};
-    out.piece[1] = {b, B, A};
-    out.piece[2] = {A, B, c};
-    out.side = {s[(lone + 1) % 3], s[(lone + 1) % 3], s[lone]};
-    const int ia = (lone + 1) % 3, ib = (lone + 2) % 3, ic = lone;
-    out.origin = {{{ia, ib, -1}, {ib, -1, -1}, {-1, -1, ic}}};
-    out.count = 3;
-  } else {
-    const auto& z = t[zero];
-    const auto& a = t[(zero + 1) % 3];
-    const auto& b = t[(zero + 2) % 3];
-    const auto X = intersect_with_normal<K>(plane[0], normal, a, b);
-    out.piece[0] = {z, a, X};
-    out.piece[1] = {z, X, b};
-    out.side = {s[(zero + 1) % 3], s[(zero + 2) % 3], 0};
-    const int ia = (zero + 1) % 3, ib = (zero + 2) % 3;
-    out.origin = {{{zero, ia, -1}, {zero, -1, ib}, {-1, -1, -1}}};
-    out.count = 2;
-  }
-  return out;
+/// Classification of f against the plane; skips the third predicate when the first two
+/// already have opposite signs.
+template <class G>
+classification basic_bsp_tree<G>::classify(std::uint32_t plane, const fragment& f) const {
+  const int s0 = geom_.sign(plane, f, 0);
+  const int s1 = geom_.sign(plane, f, 1);
+  if (s0 * s1 < 0) return classification::straddling;
+  return classify_signs({s0, s1, geom_.sign(plane, f, 2)});
 }
 
 /// Shared state of one build: options, counters updated by all threads, the failure flag.
-template <class K>
-struct bsp_tree<K>::build_context {
+template <class G>
+struct basic_bsp_tree<G>::build_context {
   build_context(const build_options& o, int h, std::chrono::steady_clock::time_point t)
       : options(o), heuristic(h), start(t) {}
   const build_options& options;
@@ -189,12 +95,12 @@ struct bsp_tree<K>::build_context {
   }
 };
 
-template <class K>
-bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
+template <class G>
+basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options& options) : geom_(soup) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   const int heuristic = detail::heuristic_index(options.heuristic);
-  stats_.kernel = to_string(kernel_traits<K>::id);
+  stats_.kernel = to_string(G::id);
   stats_.heuristic = options.heuristic;
   stats_.input_triangles = soup.triangles.size();
 
@@ -203,34 +109,20 @@ bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
       if (!std::isfinite(x))
         throw usage_error("bsp build: vertex " + std::to_string(i) + " has a non-finite coordinate");
 
-  // Input points, and the exactly degenerate (collinear) triangles skipped: Epick's collinear
-  // predicate is exact on double input, so every kernel skips the same triangles.
-  const auto collinear = CGAL::Epick().collinear_3_object();
-  sources_.resize(soup.triangles.size());
-  fast_.resize(soup.triangles.size());
+  // Input triangles; the exactly degenerate (collinear) ones are skipped and counted.
   // Fragments live in pool_ (split parents stay there, dead, until the build ends); work
   // lists hold indices, so moving a list down the tree moves 4 bytes per fragment.
   pool_.reserve(soup.triangles.size());
   std::vector<std::uint32_t> root_list;
   root_list.reserve(soup.triangles.size());
   for (std::size_t i = 0; i < soup.triangles.size(); ++i) {
-    const soup_triangle& st = soup.triangles[i];
-    std::array<CGAL::Epick::Point_3, 3> q;
-    for (int k = 0; k < 3; ++k) {
-      const vec3d& v = soup.vertices.at(st.v[k]);
-      q[k] = CGAL::Epick::Point_3(v[0], v[1], v[2]);
-      sources_[i][k] = point(v[0], v[1], v[2]);
-    }
-    if (collinear(q[0], q[1], q[2])) {
+    fragment f;
+    if (!geom_.add_source(soup, static_cast<std::uint32_t>(i), f)) {
       ++stats_.degenerate_input;
       continue;
     }
-    const vec3d& a = soup.vertices[st.v[0]];
-    const vec3d& b = soup.vertices[st.v[1]];
-    const vec3d& c = soup.vertices[st.v[2]];
-    fast_[i] = make_fast_plane(a, b, c);
     root_list.push_back(static_cast<std::uint32_t>(pool_.size()));
-    pool_.push_back({sources_[i], {a, b, c}, {0, 0, 0}, 7, static_cast<std::uint32_t>(i), st.face});
+    pool_.push_back(f);
   }
 
   // The build runs in two phases with the same per-node step (grow): the top levels
@@ -264,29 +156,25 @@ bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
   std::vector<work> frontier(std::make_move_iterator(queue.begin()), std::make_move_iterator(queue.end()));
   queue.clear();
   std::vector<subtree> parts(frontier.size());
-  std::exception_ptr failure;
+  detail::parallel_failure failure;
   const long long count = static_cast<long long>(frontier.size());
 #pragma omp parallel for schedule(dynamic, 1) num_threads(detail::threads_for(options.threads))
   for (long long i = 0; i < count; ++i) {
-    try {
+    failure.run([&] {
       subtree& part = parts[static_cast<std::size_t>(i)];
       part.root_parent = frontier[static_cast<std::size_t>(i)].parent;
       part.root_side = frontier[static_cast<std::size_t>(i)].side;
       frontier[static_cast<std::size_t>(i)].parent = -1;  // local to the part from here on
       std::vector<work> stack;
       stack.push_back(std::move(frontier[static_cast<std::size_t>(i)]));
-      while (!stack.empty() && !ctx.failed.load(std::memory_order_relaxed)) {
+      while (!stack.empty() && !failure.failed()) {
         work w = std::move(stack.back());
         stack.pop_back();
         grow_node(std::move(w), part, ctx, [&](work&& child) { stack.push_back(std::move(child)); });
       }
-    } catch (...) {
-#pragma omp critical(exbsp_bsp_failure)
-      if (!failure) failure = std::current_exception();
-      ctx.failed.store(true);
-    }
+    });
   }
-  if (failure) std::rethrow_exception(failure);
+  failure.rethrow();
   for (subtree& part : parts) {
     const auto base = static_cast<std::uint32_t>(pool_.size());
     for (fragment& f : part.pieces) pool_.push_back(std::move(f));
@@ -308,8 +196,8 @@ bsp_tree<K>::bsp_tree(const triangle_soup& soup, const build_options& options) {
     options.progress({fragments_.size(), ctx.total_fragments.load(), nodes_.size(), stats_.build_seconds});
 }
 
-template <class K>
-void bsp_tree<K>::append_subtree(subtree& part) {
+template <class G>
+void basic_bsp_tree<G>::append_subtree(subtree& part) {
   const auto node_base = static_cast<std::int32_t>(nodes_.size());
   const auto fragment_base = static_cast<std::uint32_t>(node_fragments_.size());
   node_fragments_.insert(node_fragments_.end(), part.node_fragments.begin(), part.node_fragments.end());
@@ -332,16 +220,13 @@ void bsp_tree<K>::append_subtree(subtree& part) {
   part.node_fragments.clear();
 }
 
-template <class K>
+template <class G>
 template <class PushChild>
-void bsp_tree<K>::grow_node(work&& w, subtree& part, build_context& ctx, PushChild&& push_child) {
+void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx, PushChild&& push_child) {
   const auto fragment_at = [&](std::uint32_t ref) -> const fragment& { return resolve(part, ref); };
   const build_options& options = ctx.options;
   const std::size_t splitter = choose_splitter(w.list, part, ctx.heuristic, options.seed, w.key, options.threads);
   const std::uint32_t plane_source = fragment_at(w.list[splitter]).source;
-  const triangle& plane = sources_[plane_source];
-  const fast_plane& fast = fast_[plane_source];
-  std::optional<vector> normal;  // computed once per node, at its first split
 
   const auto id = static_cast<std::int32_t>(part.nodes.size());
   node nd;
@@ -357,20 +242,24 @@ void bsp_tree<K>::grow_node(work&& w, subtree& part, build_context& ctx, PushChi
   const std::size_t n = w.list.size();
   std::vector<std::array<std::int8_t, 3>> signs(n);
   const long long nn = static_cast<long long>(n);
+  detail::parallel_failure failure;
 #pragma omp parallel for schedule(static) if (n > 65536) num_threads(detail::threads_for(options.threads))
   for (long long jj = 0; jj < nn; ++jj) {
-    const auto j = static_cast<std::size_t>(jj);
-    // A fragment lies exactly in its source's plane: coplanar by construction. (Exact
-    // kernels would find the same; rounded ones could not, and would loop forever.)
-    const fragment& f = fragment_at(w.list[j]);
-    if (f.source == plane_source) {
-      signs[j] = {0, 0, 0};
-      continue;
-    }
-    const std::array<int, 3> sj = detail::signs_against<K>(plane, fast, f);
-    signs[j] = {static_cast<std::int8_t>(sj[0]), static_cast<std::int8_t>(sj[1]),
-                static_cast<std::int8_t>(sj[2])};
+    failure.run([&] {
+      const auto j = static_cast<std::size_t>(jj);
+      // A fragment lies exactly in its source's plane: coplanar by construction. (Exact
+      // kernels would find the same; rounded ones could not, and would loop forever.)
+      const fragment& f = fragment_at(w.list[j]);
+      if (f.source == plane_source) {
+        signs[j] = {0, 0, 0};
+        return;
+      }
+      const std::array<int, 3> sj = signs_against(plane_source, f);
+      signs[j] = {static_cast<std::int8_t>(sj[0]), static_cast<std::int8_t>(sj[1]),
+                  static_cast<std::int8_t>(sj[2])};
+    });
   }
+  failure.rethrow();
   std::vector<std::uint32_t> negative, positive;
   for (std::size_t j = 0; j < n; ++j) {
     const std::uint32_t ref = w.list[j];
@@ -380,15 +269,15 @@ void bsp_tree<K>::grow_node(work&& w, subtree& part, build_context& ctx, PushChi
       case classification::positive: positive.push_back(ref); break;
       case classification::negative: negative.push_back(ref); break;
       case classification::straddling: {
-        if (!normal) normal = detail::plane_normal<K>(plane);
-        const fragment parent = fragment_at(ref);  // a copy: part.pieces may grow below
-        const split_pieces<K> pieces = detail::split_with_normal<K>(plane, *normal, parent.v, s);
+        const split_pattern pattern = make_split_pattern(s);
+        std::array<fragment, 3> pieces;
+        geom_.split(plane_source, fragment_at(ref), pattern, pieces, part.scratch);
         ctx.splits.fetch_add(1, std::memory_order_relaxed);
-        ctx.check_limit(static_cast<std::size_t>(pieces.count - 1));
-        for (int k = 0; k < pieces.count; ++k) {
-          (pieces.side[k] > 0 ? positive : negative)
+        ctx.check_limit(static_cast<std::size_t>(pattern.pieces - 1));
+        for (int k = 0; k < pattern.pieces; ++k) {
+          (pattern.side[k] > 0 ? positive : negative)
               .push_back(local_ref | static_cast<std::uint32_t>(part.pieces.size()));
-          part.pieces.push_back(make_piece(parent, pieces, k));
+          part.pieces.push_back(pieces[k]);
         }
         break;
       }
@@ -410,28 +299,8 @@ void bsp_tree<K>::grow_node(work&& w, subtree& part, build_context& ctx, PushChi
                       std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx.start).count()});
 }
 
-template <class K>
-typename bsp_tree<K>::fragment bsp_tree<K>::make_piece(const fragment& parent,
-                                                       const split_pieces<K>& pieces, int i) {
-  // Vertices taken from the parent keep their approximations; constructed ones get one from
-  // the kernel where it has one (Epick: the point itself; Epeck: its interval approximation).
-  const triangle& piece = pieces.piece[i];
-  fragment out{piece, {}, {0, 0, 0}, 0, parent.source, parent.face};
-  for (int k = 0; k < 3; ++k) {
-    const int m = pieces.origin[i][k];
-    if (m >= 0 && ((parent.double_mask >> m) & 1)) {
-      out.d[k] = parent.d[m];
-      out.r[k] = parent.r[m];
-      out.double_mask |= static_cast<std::uint8_t>(1u << k);
-    } else if (m < 0 && kernel_traits<K>::approximate(piece[k], out.d[k], out.r[k])) {
-      out.double_mask |= static_cast<std::uint8_t>(1u << k);
-    }
-  }
-  return out;
-}
-
-template <class K>
-std::size_t bsp_tree<K>::choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part,
+template <class G>
+std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part,
                                          int heuristic, std::uint64_t seed, std::uint64_t node_key,
                                          unsigned threads) const {
   if (list.size() <= 1) return 0;
@@ -449,8 +318,8 @@ std::size_t bsp_tree<K>::choose_splitter(const std::vector<std::uint32_t>& list,
 // with 0 straddlers is found at i, every later candidate is skipped at once. A fragment found
 // coplanar with an earlier candidate has the same count and loses the tie: it is skipped.
 // Candidates run in parallel; the result does not depend on scheduling.
-template <class K>
-std::size_t bsp_tree<K>::choose_min_split(const std::vector<std::uint32_t>& list, const subtree& part,
+template <class G>
+std::size_t basic_bsp_tree<G>::choose_min_split(const std::vector<std::uint32_t>& list, const subtree& part,
                                           unsigned threads) const {
   const auto fragment_at = [&](std::uint32_t ref) -> const fragment& { return resolve(part, ref); };
   const std::size_t n = list.size();
@@ -459,43 +328,42 @@ std::size_t bsp_tree<K>::choose_min_split(const std::vector<std::uint32_t>& list
   const auto key = [](std::uint64_t count, std::uint64_t index) { return count << 32 | index; };
   std::atomic<std::uint64_t> best{std::numeric_limits<std::uint64_t>::max()};
   const long long nn = static_cast<long long>(n);
+  detail::parallel_failure failure;
 #pragma omp parallel for schedule(dynamic, 8) if (n > 64) num_threads(detail::threads_for(threads))
   for (long long ii = 0; ii < nn; ++ii) {
-    const auto i = static_cast<std::uint64_t>(ii);
-    if (same_plane[i].load(std::memory_order_relaxed)) continue;
-    if (key(0, i) >= best.load(std::memory_order_relaxed)) continue;
-    const fragment& candidate = fragment_at(list[i]);
-    const triangle& plane = sources_[candidate.source];
-    const fast_plane& fast = fast_[candidate.source];
-    std::uint64_t c = 0;
-    bool complete = true;
-    for (std::size_t j = 0; j < n; ++j) {
-      if (j == i) continue;
-      const fragment& other = fragment_at(list[j]);
-      bool coplanar = other.source == candidate.source;
-      if (!coplanar && detail::straddles<K>(plane, fast, other, coplanar)) {
-        if (key(++c, i) >= best.load(std::memory_order_relaxed)) {
-          complete = false;
-          break;
+    failure.run([&] {
+      const auto i = static_cast<std::uint64_t>(ii);
+      if (same_plane[i].load(std::memory_order_relaxed)) return;
+      if (key(0, i) >= best.load(std::memory_order_relaxed)) return;
+      const fragment& candidate = fragment_at(list[i]);
+      std::uint64_t c = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (j == i) continue;
+        const fragment& other = fragment_at(list[j]);
+        const classification cls =
+            other.source == candidate.source ? classification::coplanar : classify(candidate.source, other);
+        const bool coplanar = cls == classification::coplanar;
+        if (cls == classification::straddling) {
+          if (key(++c, i) >= best.load(std::memory_order_relaxed)) return;  // cannot win
+        } else if (coplanar && j > i) {
+          same_plane[j].store(1, std::memory_order_relaxed);
         }
-      } else if (coplanar && j > i) {
-        same_plane[j].store(1, std::memory_order_relaxed);
       }
-    }
-    if (!complete) continue;
-    std::uint64_t b = best.load(std::memory_order_relaxed);
-    const std::uint64_t mine = key(c, i);
-    while (mine < b && !best.compare_exchange_weak(b, mine, std::memory_order_relaxed)) {
-    }
+      std::uint64_t b = best.load(std::memory_order_relaxed);
+      const std::uint64_t mine = key(c, i);
+      while (mine < b && !best.compare_exchange_weak(b, mine, std::memory_order_relaxed)) {
+      }
+    });
   }
+  failure.rethrow();
   return static_cast<std::size_t>(best.load() & 0xffffffffu);
 }
 
 // sampled: up to 16 candidates drawn with the seed, each scored on an evenly spaced sample
 // of at most 512 fragments by 8 * splits + |positive - negative| (the split/balance score of
 // classic BSP compilers); lowest score wins, ties to the earliest candidate.
-template <class K>
-std::size_t bsp_tree<K>::choose_sampled(const std::vector<std::uint32_t>& list, const subtree& part,
+template <class G>
+std::size_t basic_bsp_tree<G>::choose_sampled(const std::vector<std::uint32_t>& list, const subtree& part,
                                         std::uint64_t seed, std::uint64_t node_key) const {
   const auto fragment_at = [&](std::uint32_t ref) -> const fragment& { return resolve(part, ref); };
   const std::size_t n = list.size();
@@ -514,14 +382,12 @@ std::size_t bsp_tree<K>::choose_sampled(const std::vector<std::uint32_t>& list, 
   long long best_score = std::numeric_limits<long long>::max();
   for (std::size_t i : candidates) {
     const fragment& candidate = fragment_at(list[i]);
-    const triangle& plane = sources_[candidate.source];
-    const fast_plane& fast = fast_[candidate.source];
     long long splits = 0, pos = 0, neg = 0, score = 0;
     for (std::size_t k = 0; k < m && score < best_score; ++k) {
       const std::size_t j = k * n / m;
       const fragment& other = fragment_at(list[j]);
       if (other.source == candidate.source) continue;  // coplanar by construction
-      switch (classify_signs(detail::signs_against<K>(plane, fast, other))) {
+      switch (classify(candidate.source, other)) {
         case classification::straddling: ++splits; break;
         case classification::positive: ++pos; break;
         case classification::negative: ++neg; break;
@@ -538,8 +404,8 @@ std::size_t bsp_tree<K>::choose_sampled(const std::vector<std::uint32_t>& list, 
   return best;
 }
 
-template <class K>
-std::size_t bsp_tree<K>::node_of_fragment(std::size_t i) const {
+template <class G>
+std::size_t basic_bsp_tree<G>::node_of_fragment(std::size_t i) const {
   // Nodes are created in build order and append their fragments as they are created,
   // so node.first is non-decreasing with the node index.
   if (i >= fragments_.size()) throw usage_error("node_of_fragment: index out of range");
@@ -548,91 +414,38 @@ std::size_t bsp_tree<K>::node_of_fragment(std::size_t i) const {
   return static_cast<std::size_t>(std::prev(it) - nodes_.begin());
 }
 
-template <class K>
-template <class SideOf>
-std::vector<std::uint32_t> bsp_tree<K>::traverse(SideOf side_of, bool back_to_front) const {
-  std::vector<std::uint32_t> out;
-  out.reserve(fragments_.size());
-  if (nodes_.empty()) return out;
-  struct task {
-    std::int32_t node;
-    bool emit;
-  };
-  std::vector<task> stack{{0, false}};
-  while (!stack.empty()) {
-    const task t = stack.back();
-    stack.pop_back();
-    const node& nd = nodes_[t.node];
-    if (t.emit) {
-      for (std::uint32_t k = 0; k < nd.count; ++k) out.push_back(nd.first + k);
-      continue;
-    }
-    const int s = side_of(sources_[nd.plane_source]);
-    // s > 0: negative, list, positive; s < 0: positive, list, negative; s = 0: as s > 0.
-    const std::int32_t first = s < 0 ? nd.positive : nd.negative;
-    const std::int32_t second = s < 0 ? nd.negative : nd.positive;
-    if (second >= 0) stack.push_back({second, false});
-    stack.push_back({t.node, true});
-    if (first >= 0) stack.push_back({first, false});
-  }
-  if (!back_to_front) std::reverse(out.begin(), out.end());
-  return out;
+template <class G>
+std::vector<std::uint32_t> basic_bsp_tree<G>::order_from_eye(const vec3d& eye, bool back_to_front) const {
+  return traverse([&](std::uint32_t plane) { return geom_.side_of_eye(plane, eye); }, back_to_front);
 }
 
-template <class K>
-std::vector<std::uint32_t> bsp_tree<K>::order_from_eye(const point& eye, bool back_to_front) const {
-  const auto orientation = K().orientation_3_object();
-  return traverse([&](const triangle& p) { return static_cast<int>(orientation(p[0], p[1], p[2], eye)); },
-                  back_to_front);
-}
-
-template <class K>
-std::vector<std::uint32_t> bsp_tree<K>::order_for_direction(const vector& d, bool back_to_front) const {
-  const vector towards_eye = -d;
-  return traverse(
-      [&](const triangle& p) {
-        return static_cast<int>(CGAL::sign(CGAL::cross_product(p[1] - p[0], p[2] - p[0]) * towards_eye));
-      },
-      back_to_front);
+template <class G>
+std::vector<std::uint32_t> basic_bsp_tree<G>::order_for_direction(const vec3d& d, bool back_to_front) const {
+  return traverse([&](std::uint32_t plane) { return geom_.side_of_direction(plane, d); }, back_to_front);
 }
 
 /// The kernel-specific implementation behind exbsp::bsp.
-template <class K>
+template <class G>
 class bsp_kernel_impl final : public bsp_impl {
 public:
   bsp_kernel_impl(const triangle_soup& soup, const build_options& options) : tree_(soup, options) {}
   const build_stats& stats() const override { return tree_.stats(); }
-  kernel_id kernel() const override { return kernel_traits<K>::id; }
+  kernel_id kernel() const override { return G::id; }
   std::size_t fragment_count() const override { return tree_.fragments().size(); }
   fragment_d fragment(std::size_t i) const override {
-    const auto& f = tree_.fragments().at(i);
-    fragment_d out{f.face, {}};
-    for (int k = 0; k < 3; ++k)
-      out.v[k] = {kernel_traits<K>::to_double(f.v[k].x()), kernel_traits<K>::to_double(f.v[k].y()),
-                  kernel_traits<K>::to_double(f.v[k].z())};
-    return out;
+    if (i >= tree_.fragments().size()) throw usage_error("fragment: index out of range");
+    tree_.geometry().prepare_output(tree_.fragments());
+    return tree_.geometry().to_double(tree_.fragments()[i]);
   }
   exact_triangle fragment_exact(std::size_t i) const override {
-    if constexpr (kernel_traits<K>::exact) {
-      const auto& f = tree_.fragments().at(i);
-      exact_triangle out;
-      for (int k = 0; k < 3; ++k) {
-        out[k][0] = rational_to_string(kernel_traits<K>::rational(f.v[k].x()));
-        out[k][1] = rational_to_string(kernel_traits<K>::rational(f.v[k].y()));
-        out[k][2] = rational_to_string(kernel_traits<K>::rational(f.v[k].z()));
-      }
-      return out;
-    } else {
-      (void)i;
-      throw usage_error("exact coordinates need an exact kernel (epeck or gmpq), not " +
-                        to_string(kernel_traits<K>::id));
-    }
+    if (i >= tree_.fragments().size()) throw usage_error("fragment_exact: index out of range");
+    return tree_.geometry().to_exact(tree_.fragments()[i]);
   }
   std::vector<std::uint32_t> order_from_eye(const vec3d& e, bool back_to_front) const override {
-    return tree_.order_from_eye(typename K::Point_3(e[0], e[1], e[2]), back_to_front);
+    return tree_.order_from_eye(e, back_to_front);
   }
   std::vector<std::uint32_t> order_for_direction(const vec3d& d, bool back_to_front) const override {
-    return tree_.order_for_direction(typename K::Vector_3(d[0], d[1], d[2]), back_to_front);
+    return tree_.order_for_direction(d, back_to_front);
   }
   std::vector<bsp::ancestor> ancestors(std::size_t i) const override {
     std::vector<bsp::ancestor> out;
@@ -647,23 +460,17 @@ public:
   }
 
 private:
-  bsp_tree<K> tree_;
+  basic_bsp_tree<G> tree_;
 };
 
 }  // namespace exbsp
 
-/// Explicit instantiation of everything kernel-specific, for one kernel K, with the factory
-/// make_bsp_<NAME>. Used once per kernel translation unit.
-#define EXBSP_INSTANTIATE_BSP(K, NAME)                                                          \
+/// Explicit instantiation of the tree for one geometry G, with the factory make_bsp_<NAME>.
+/// Used once per kernel translation unit.
+#define EXBSP_INSTANTIATE_BSP(G, NAME)                                                          \
   namespace exbsp {                                                                             \
-  template struct split_pieces<K>;                                                              \
-  template split_pieces<K> split_triangle<K>(const std::array<K::Point_3, 3>&,                  \
-                                             const std::array<K::Point_3, 3>&,                  \
-                                             const std::array<int, 3>&);                        \
-  template K::Point_3 plane_segment_intersection<K>(const std::array<K::Point_3, 3>&,           \
-                                                    const K::Point_3&, const K::Point_3&);      \
-  template class bsp_tree<K>;                                                                   \
+  template class basic_bsp_tree<G>;                                                                   \
   std::unique_ptr<bsp_impl> make_bsp_##NAME(const triangle_soup& soup, const build_options& o) { \
-    return std::make_unique<bsp_kernel_impl<K>>(soup, o);                                       \
+    return std::make_unique<bsp_kernel_impl<G>>(soup, o);                                       \
   }                                                                                             \
   }

@@ -11,6 +11,7 @@ namespace exbsp {
 
 std::string to_string(kernel_id k) {
   switch (k) {
+    case kernel_id::exact: return "exact";
     case kernel_id::epeck: return "epeck";
     case kernel_id::epick: return "epick";
     case kernel_id::double_: return "double";
@@ -20,12 +21,12 @@ std::string to_string(kernel_id k) {
 }
 
 kernel_id parse_kernel(const std::string& name) {
-  for (kernel_id k : {kernel_id::epeck, kernel_id::epick, kernel_id::double_, kernel_id::gmpq})
+  for (kernel_id k : {kernel_id::exact, kernel_id::epeck, kernel_id::epick, kernel_id::double_, kernel_id::gmpq})
     if (to_string(k) == name) return k;
-  throw usage_error("unknown kernel '" + name + "' (expected epeck, epick, double or gmpq)");
+  throw usage_error("unknown kernel '" + name + "' (expected exact, epeck, gmpq, epick or double)");
 }
 
-bool is_exact(kernel_id k) { return k == kernel_id::epeck || k == kernel_id::gmpq; }
+bool is_exact(kernel_id k) { return k == kernel_id::exact || k == kernel_id::epeck || k == kernel_id::gmpq; }
 
 const std::vector<std::string>& heuristic_names() {
   static const std::vector<std::string> names{"naive", "min-split", "sampled", "random"};
@@ -45,18 +46,10 @@ int heuristic_index(const std::string& name) {
 }
 }  // namespace detail
 
-classification classify_signs(const std::array<int, 3>& s) {
-  const bool any_pos = s[0] > 0 || s[1] > 0 || s[2] > 0;
-  const bool any_neg = s[0] < 0 || s[1] < 0 || s[2] < 0;
-  if (any_pos && any_neg) return classification::straddling;
-  if (any_pos) return classification::positive;
-  if (any_neg) return classification::negative;
-  return classification::coplanar;
-}
-
 bsp bsp::build(const triangle_soup& soup, const build_options& options) {
   detail::heuristic_index(options.heuristic);  // fail fast on a bad name
   switch (options.kernel) {
+    case kernel_id::exact: return bsp(make_bsp_exact(soup, options));
     case kernel_id::epeck: return bsp(make_bsp_epeck(soup, options));
     case kernel_id::epick: return bsp(make_bsp_epick(soup, options));
     case kernel_id::double_: return bsp(make_bsp_double(soup, options));

@@ -1,12 +1,12 @@
 // exbsp public API: build an exact BSP tree of a triangle soup and read back-to-front orders.
 //
-// This header hides CGAL: the kernel is chosen at run time and the tree is one of four
+// This header hides CGAL: the kernel is chosen at run time and the tree is one of five
 // explicit instantiations (src/bsp/bsp_<kernel>.cpp). Fragments are the triangles stored in
 // the tree (input triangles and the pieces of split ones); each keeps its source face id.
 //
 // Typical use (a CAD viewer):
 //   exbsp::triangle_soup soup = exbsp::read_mesh("part.off");
-//   exbsp::bsp tree = exbsp::bsp::build(soup, {});          // Epeck, default heuristic
+//   exbsp::bsp tree = exbsp::bsp::build(soup, {});          // exact kernel, default heuristic
 //   auto frags = tree.fragments_double();                    // convert once
 //   for (auto i : tree.order_from_eye({0, 0, 10})) draw(frags[i]);
 #pragma once
@@ -23,17 +23,18 @@ namespace exbsp {
 
 /// The number type behind classification and splitting.
 enum class kernel_id {
-  epeck,   ///< CGAL Epeck: lazy exact (filtered intervals, GMP rationals on demand). Default.
+  exact,   ///< exbsp's own exact points (filter, structural signs, GMP on demand). Default.
+  epeck,   ///< CGAL Epeck: lazy exact (filtered intervals, GMP rationals on demand).
   epick,   ///< CGAL Epick: exact predicates, rounded (double) constructions.
   double_, ///< Simple_cartesian<double>: plain double, no filter, no epsilon.
   gmpq     ///< Simple_cartesian<CGAL::Gmpq>: exact rationals, no filter.
 };
 
-/// "epeck", "epick", "double", "gmpq".
+/// "exact", "epeck", "epick", "double", "gmpq".
 std::string to_string(kernel_id k);
 /// Parses a kernel name; throws usage_error for an unknown name.
 kernel_id parse_kernel(const std::string& name);
-/// True for kernels whose constructions are exact (epeck, gmpq).
+/// True for kernels whose constructions are exact (exact, epeck, gmpq).
 bool is_exact(kernel_id k);
 
 /// Names of the splitter heuristics: "naive", "min-split", "sampled", "random".
@@ -50,7 +51,7 @@ struct build_progress {
 };
 
 struct build_options {
-  kernel_id kernel = kernel_id::epeck;
+  kernel_id kernel = kernel_id::exact;
   std::string heuristic = default_heuristic();
   std::uint64_t seed = 0;          ///< for randomised heuristics; same seed, same tree
   std::size_t max_fragments = 0;   ///< 0: no limit; otherwise throw limit_error beyond it

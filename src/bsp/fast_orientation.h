@@ -17,6 +17,8 @@ namespace exbsp {
 struct fast_plane {
   vec3d a{}, b{}, c{};    ///< the plane's three points
   vec3d n{}, err{};       ///< rounded normal, error bound per normal component
+  vec3d coef{};           ///< err + 8u|n| per component: |f - f^| <= coef . |p - a| (before scaling)
+  double spread = 0;      ///< sum of |n| + err: how far f moves per unit of a point's radius
   bool valid = false;
 };
 
@@ -46,32 +48,41 @@ inline fast_plane make_fast_plane(const vec3d& a, const vec3d& b, const vec3d& c
     // e1, e2 carry a relative error <= u each, products <= 3u, the difference u more.
     p.err[k] = 8 * u * (std::fabs(t[2 * k]) + std::fabs(t[2 * k + 1]));
     if (!detail::safe_magnitude(p.n[k]) && p.n[k] != 0) return p;
+    p.coef[k] = p.err[k] + 8 * u * std::fabs(p.n[k]);
+    p.spread += std::fabs(p.n[k]) + p.err[k];
   }
   p.valid = true;
   return p;
+}
+
+/// Evaluates f(x) = orientation value of a point x known to lie within `radius` (max norm)
+/// of the double point `point` (radius 0: x is exactly `point`): writes the double value v
+/// and a bound such that |f(x) - v| <= bound. Returns false when the magnitudes leave the
+/// range where the bound holds (the caller must then compute exactly).
+inline bool fast_eval(const fast_plane& p, const vec3d& point, double radius, double& v, double& bound) {
+  constexpr double u = 1.1102230246251565e-16;
+  if (!p.valid) return false;
+  // The plane's magnitudes were checked once (make_fast_plane). Here a difference q_k is exact
+  // when it is subnormal, a product that underflows errs by less than 2^-1074 (covered by the
+  // absolute 1e-290 term), and anything that overflows makes v or the bound infinite or NaN,
+  // which is refused below.
+  const double q0 = point[0] - p.a[0], q1 = point[1] - p.a[1], q2 = point[2] - p.a[2];
+  v = p.n[0] * q0 + p.n[1] * q1 + p.n[2] * q2;
+  const double b = p.coef[0] * std::fabs(q0) + p.coef[1] * std::fabs(q1) + p.coef[2] * std::fabs(q2);
+  // A point known only to within `radius` moves f by at most |n| . (radius, radius, radius).
+  bound = (b + radius * p.spread) * (1 + 8 * u) + 1e-290;  // products stay normal
+  // Finite v means no sum or product overflowed; NaN fails both comparisons.
+  return std::fabs(v) < HUGE_VAL && bound < HUGE_VAL;
 }
 
 /// Sign of orientation(a, b, c, x) for a point x known to lie within `radius` (max norm) of
 /// the double point `point` (radius 0: x is exactly `point`): -1, 0 or +1 when certified,
 /// 2 when the caller must use the exact predicate.
 inline int fast_sign(const fast_plane& p, const vec3d& point, double radius = 0) {
-  constexpr double u = 1.1102230246251565e-16;
-  if (!p.valid) return 2;
-  const double q0 = point[0] - p.a[0], q1 = point[1] - p.a[1], q2 = point[2] - p.a[2];
-  if (!detail::safe_magnitude(q0) || !detail::safe_magnitude(q1) || !detail::safe_magnitude(q2) ||
-      !(radius <= 1e80))
-    return 2;
-  const double v = p.n[0] * q0 + p.n[1] * q1 + p.n[2] * q2;
-  const double bound = (p.err[0] + 8 * u * std::fabs(p.n[0])) * std::fabs(q0) +
-                       (p.err[1] + 8 * u * std::fabs(p.n[1])) * std::fabs(q1) +
-                       (p.err[2] + 8 * u * std::fabs(p.n[2])) * std::fabs(q2);
-  // A point known only to within `radius` moves f by at most |n| . (radius, radius, radius).
-  const double spread = radius == 0 ? 0
-                                    : radius * ((std::fabs(p.n[0]) + p.err[0]) + (std::fabs(p.n[1]) + p.err[1]) +
-                                                (std::fabs(p.n[2]) + p.err[2]));
-  const double safe_bound = (bound + spread) * (1 + 8 * u) + 1e-290;  // products stay normal
-  if (v > safe_bound) return 1;
-  if (v < -safe_bound) return -1;
+  double v, bound;
+  if (!fast_eval(p, point, radius, v, bound)) return 2;
+  if (v > bound) return 1;
+  if (v < -bound) return -1;
   // A vertex shared with the plane's triangle (adjacent mesh triangles): exactly on it.
   if (radius == 0 && (point == p.a || point == p.b || point == p.c)) return 0;
   return 2;

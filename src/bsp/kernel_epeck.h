@@ -19,9 +19,8 @@ mpq_srcptr mpq_of(const Number& q) { return q.backend().data(); }
 using epeck_kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 
 template <>
-struct kernel_traits<epeck_kernel> {
+struct kernel_traits<epeck_kernel> : kernel_traits_defaults<epeck_kernel> {
   static constexpr kernel_id id = kernel_id::epeck;
-  /// Whether the certified double filter (fast_orientation.h) may answer side tests.
   static constexpr bool fast_path = true;
   /// Centre and radius (max norm, rounded up) of the point's interval approximation, which
   /// is tight once the point has been collapsed to its exact value.

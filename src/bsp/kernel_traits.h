@@ -1,6 +1,7 @@
-// Kernel traits: what the BSP code needs to know about a CGAL kernel beyond its types.
-// Each kernel's specialisation lives in its own header (kernel_<name>.h) so that a
-// translation unit includes only the CGAL headers of the kernel it instantiates.
+// Kernel traits: what the BSP's CGAL geometry (geometry_cgal.h) needs to know about a CGAL
+// kernel beyond its types. Each kernel's specialisation lives in its own header
+// (kernel_<name>.h) so that a translation unit includes only the CGAL headers of the kernel
+// it instantiates; it derives from kernel_traits_defaults and states only what differs.
 #pragma once
 #include <gmp.h>
 
@@ -8,14 +9,26 @@
 
 namespace exbsp {
 
-/// Primary template, specialised per kernel:
-///   static constexpr kernel_id id; static constexpr bool exact;
-///   static constexpr bool fast_path;          // may the certified double filter answer?
-///   static void collapse(Point_3&);           // drop lazy DAGs after a construction
-///   static bool approximate(Point_3, vec3d& centre, double& radius);  // for the filter
-///   static double to_double(const FT&);       // nearest double
-///   static mpq_srcptr rational(const FT&);    // exact kernels only
+/// Primary template, specialised per kernel (each states id and exact).
 template <class K>
 struct kernel_traits;
+
+/// What a kernel has unless it says otherwise: no double filter, nothing to collapse, the
+/// generic intersection formula in the kernel's own FT, no rationals.
+template <class K>
+struct kernel_traits_defaults {
+  /// May the certified double filter (fast_orientation.h) answer side tests?
+  static constexpr bool fast_path = false;
+  /// Centre and radius (max norm) of a double box around the point, for the filter.
+  static bool approximate(const typename K::Point_3&, vec3d&, double&) { return false; }
+  /// Drop lazy DAGs after a construction (Epeck).
+  static void collapse(const typename K::Point_3&) {}
+  static void collapse_vector(const typename K::Vector_3&) {}
+  /// Whether intersection() replaces the generic formula.
+  static constexpr bool direct_intersection = false;
+  template <class... A>
+  static typename K::Point_3 intersection(const A&...) { return {}; }
+  static mpq_srcptr rational(const typename K::FT&) { return nullptr; }
+};
 
 }  // namespace exbsp

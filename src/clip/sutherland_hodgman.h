@@ -15,6 +15,21 @@
 //
 // The result is exact for convex input polygons (the clipped part, in the input's order and
 // orientation); a concave input can produce degenerate connecting edges along a boundary.
+//
+// Concave input (the textbook's known defect): when a concave polygon leaves and re-enters a
+// half-space, the single output polygon walks along the boundary line between the pieces, so
+// the result is one polygon whose "connecting edges" run twice over the same stretch of the
+// line (zero area, but drawn as a spurious edge and wrong for anything that needs a simple
+// polygon). sutherland_hodgman_pieces() keeps the textbook's crossing points and vertex order
+// but splits the result into its pieces: per half-space, the output is cut into chains (maximal
+// runs of vertices with f >= 0, from an entry point on the line to an exit point), the chain
+// ends are sorted along the boundary line in the direction t = n_h x N (N: the input's normal
+// by Newell's formula; t runs along the line with the kept side on the left when seen from N,
+// the direction in which a piece's boundary follows the line), and the k-th exit is joined to
+// the k-th entry. For a simple input this gives exactly the connected pieces of the clipped
+// region, each a simple polygon with the input's orientation; a chain that touches the line
+// without area (all its points on the line) is dropped. A self-intersecting input is handled
+// the same way, but then the pieces are only as meaningful as the input.
 #pragma once
 #include <vector>
 
@@ -44,6 +59,15 @@ std::vector<vec2> sutherland_hodgman_clip(const std::vector<vec2>& polygon,
 /// 3D version: a planar polygon clipped by half-spaces; same guarantees and errors.
 std::vector<vec3> sutherland_hodgman_clip(const std::vector<vec3>& polygon,
                                           const std::vector<half_space3>& region);
+
+/// sutherland_hodgman_clip split into pieces (see the file comment): each piece is a polygon
+/// of at least 3 vertices; a convex input gives at most one piece, equal to
+/// sutherland_hodgman_clip's result. Throws usage_error on NaN/infinite input.
+std::vector<std::vector<vec2>> sutherland_hodgman_pieces(const std::vector<vec2>& polygon,
+                                                         const std::vector<half_plane2>& region);
+/// 3D version for a planar polygon; same guarantees and errors.
+std::vector<std::vector<vec3>> sutherland_hodgman_pieces(const std::vector<vec3>& polygon,
+                                                         const std::vector<half_space3>& region);
 
 /// The four half-planes of the closed window: x >= xmin, x <= xmax, y >= ymin, y <= ymax
 /// (in that order). Throws usage_error on NaN/infinite bounds or min > max.

@@ -15,6 +15,8 @@
 #include "scene/demo_scene.h"
 #include "view/atomic_file.h"
 #include "view/effects.h"
+#include "view/mesh_reject.h"
+#include "view/placement.h"
 #include "view/png_io.h"
 #include "view/stages.h"
 #include "view/trackball.h"
@@ -119,7 +121,11 @@ std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(const scene::s
                                                                   std::size_t frames) {
   if (path.empty()) throw usage_error("orbit: the drag path is empty");
   const std::vector<std::array<double, 2>> points = frames == 0 ? path : resample_path(path, frames);
-  const arcball ball(s.width, s.height, screen_y::down);
+  if (s.form == scene::camera_form::phigs)
+    throw usage_error("orbit: a phigs camera is fixed (its projection is tied to its view reference frame); "
+                      "use eye/look_at/up, position/look/up, polar or pilot");
+  const arcball ball(s.width, s.height, screen_y::down,
+                     s.trackball == "virtual" ? trackball_kind::virtual_ : trackball_kind::arcball);
   const std::vector<quaternion> turns = ball.drag_path(points);
   const view::camera_basis b0 = view::look_at_basis(s.camera.eye, s.camera.look_at, s.camera.up);
   const view::vector3& d = s.projection.direction;
@@ -151,7 +157,12 @@ void render_command(const render_request& request, std::ostream& log) {
   if (!orbit && request.frames != 0) throw usage_error("render: --frames needs --orbit-drag");
 
   const auto t0 = std::chrono::steady_clock::now();
-  const scene::scene s = request.scene_path.empty() ? scene::demo_scene() : scene::load_scene(request.scene_path, &log);
+  scene::scene s = request.scene_path.empty() ? scene::demo_scene() : scene::load_scene(request.scene_path, &log);
+  if (!request.trackball.empty()) {
+    if (request.trackball != "arcball" && request.trackball != "virtual")
+      throw usage_error("render: --trackball must be arcball or virtual, got " + request.trackball);
+    s.trackball = request.trackball;
+  }
   scene::scene_geometry geometry = scene::load_geometry(s);
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -162,6 +173,7 @@ void render_command(const render_request& request, std::ostream& log) {
   f.soup = std::move(geometry.soup);
   f.settings = s.effect_settings;
   f.curves = s.curves;
+  f.mesh_face_offsets = geometry.face_offsets;
 
   for (const std::string& name : view::effects_without_stage(s.effects, kind))
     log << "exbsp: warning: " << s.path << ": /effects/" << name << ": applies to PNG output only; ignored for " << out
@@ -172,19 +184,28 @@ void render_command(const render_request& request, std::ostream& log) {
 
   if (request.verbose) {
     log << "scene: " << s.path << ": " << s.meshes.size() << " meshes, " << f.soup.triangles.size() << " triangles, "
-        << s.curves.size() << " curves, " << view::to_string(s.projection.kind) << " " << s.width << "x" << s.height
-        << "\n";
+        << s.curves.size() - s.line_count << " curves, " << s.line_count << " lines, "
+        << view::to_string(s.projection.kind) << " " << s.width << "x" << s.height << "\n";
     log << "stage load: " << seconds_text(load_seconds) << " s (meshes read, transformed, appended into one soup)\n";
-    std::string names = "build";
+    std::string names = orbit ? "build" : "reject, build";
     for (const std::string& n : per_view.names()) names += ", " + n;
+    if (f.view.needs_placement()) names += ", place";
     log << "stages: " << names << ", write\n";
   }
 
   if (!orbit) {
-    view::pipeline p = view::standard_pipeline(s.effects, kind, curves);
+    view::pipeline p;
+    p.add("reject", view::mesh_reject_stage);
+    const view::pipeline standard = view::standard_pipeline(s.effects, kind, curves);
+    for (const view::stage& st : standard.stages()) p.add(st.name, st.run);
+    if (f.view.needs_placement()) p.add("place", view::place_stage);
     const view::stage w = write_stage(out, kind);
     p.add(w.name, w.run);
     p.run(f, stage_log);
+    if (request.verbose)
+      for (std::size_t k : f.rejected_meshes)
+        log << "reject: " << s.meshes[k].key << " (" << s.meshes[k].file
+            << ") is outside the view volume (bounding box): not built, not drawn\n";
     return;
   }
 
@@ -196,6 +217,8 @@ void render_command(const render_request& request, std::ostream& log) {
     scene::scene turned = s;
     turned.camera = cam;
     turned.projection.direction = direction;
+    turned.view_matrix.reset();  // polar, pilot, look: the turned camera is a gluLookAt one
+    turned.form = scene::camera_form::look_at;
     views.push_back(scene::make_view_setup(turned));
   }
   if (request.verbose)
@@ -213,6 +236,7 @@ void render_command(const render_request& request, std::ostream& log) {
       log << buf << "\n";
     }
     view::pipeline p = per_view;
+    if (f.view.needs_placement()) p.add("place", view::place_stage);
     const view::stage w = write_stage(frame_path(out, k), kind);
     p.add(w.name, w.run);
     p.run(f, stage_log);

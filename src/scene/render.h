@@ -1,7 +1,12 @@
 // `exbsp render`: scene file (or the built-in demo) -> PNG or SVG, or an orbit animation.
 //
+// Still image: a "reject" stage first drops whole meshes whose bounding box is outside the view
+// volume (view/mesh_reject.h; --verbose names them), then build and the per-view stages, then
+// "place" when the viewport is smaller than the image (view/placement.h), then write.
+//
 // Orbit (trackball): a drag path of screen pixels (x right, y DOWN, origin at the top-left
-// corner of the image, as mouse events) over Shoemake's arcball of the viewport (ball centred
+// corner of the image, as mouse events) over Shoemake's arcball (or, with "trackball":
+// "virtual" or --trackball virtual, the classic virtual trackball) of the viewport (ball centred
 // in the viewport, radius min(width, height) / 2; view/trackball.h). The path is resampled to
 // `frames` points evenly spaced along its length (its own points when frames is 0); frame k
 // shows the camera orbit_camera(scene camera, drag_path(points)[k]): the eye turns about
@@ -31,6 +36,8 @@ struct render_request {
   bool verbose = false;     ///< print which pipeline stages ran, timings
   /// Orbit drag path in screen pixels (y down); empty: one still image.
   std::vector<std::array<double, 2>> orbit_drag;
+  /// Orbit rotation rule: "arcball" or "virtual" (empty: the scene's "trackball", default arcball).
+  std::string trackball;
   /// Orbit frames (0: one per drag point). Frame k is written to frame_path(output_path, k).
   std::size_t frames = 0;
 };

@@ -12,6 +12,8 @@
 #include "clip/section.h"
 #include "mesh/errors.h"
 #include "mesh/mesh_io.h"
+#include "scene/json_reader.h"
+#include "scene/scene_parts.h"
 #include "view/effects.h"
 #include "view/projection.h"
 
@@ -20,138 +22,6 @@ namespace exbsp::scene {
 using nlohmann::json;
 
 namespace {
-
-std::string number_text(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
-
-/// JSON reading with JSON-pointer error messages.
-class reader {
-public:
-  reader(std::string file, std::ostream* warnings) : file_(std::move(file)), warnings_(warnings) {}
-
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const { throw scene_error(file_, key, what); }
-
-  void warn(const std::string& key, const std::string& what) const {
-    if (warnings_) *warnings_ << "exbsp: warning: " << file_ << ": " << key << ": " << what << "\n";
-  }
-
-  const json& object(const json& v, const std::string& key) const {
-    if (!v.is_object()) fail(key, std::string("must be an object (got ") + v.type_name() + ")");
-    return v;
-  }
-
-  /// The member `name` of object `obj` at pointer `key`; fails when absent or null.
-  const json& require(const json& obj, const std::string& key, const char* name) const {
-    auto it = obj.find(name);
-    if (it == obj.end() || it->is_null()) fail(key + "/" + name, "missing key");
-    return *it;
-  }
-
-  /// Pointer to the member or nullptr when absent or null.
-  const json* optional(const json& obj, const char* name) const {
-    auto it = obj.find(name);
-    if (it == obj.end() || it->is_null()) return nullptr;
-    return &*it;
-  }
-
-  void warn_unknown(const json& obj, const std::string& key, std::initializer_list<const char*> known) const {
-    for (auto it = obj.begin(); it != obj.end(); ++it) {
-      const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; });
-      if (!ok) warn(key + "/" + it.key(), "unknown key ignored");
-    }
-  }
-
-  double number(const json& v, const std::string& key) const {
-    if (!v.is_number()) fail(key, std::string("must be a number (got ") + v.type_name() + ")");
-    const double d = v.get<double>();
-    if (!std::isfinite(d)) fail(key, "must be a finite number");
-    return d;
-  }
-
-  long long integer(const json& v, const std::string& key) const {
-    if (v.is_number_integer()) {
-      if (v.is_number_unsigned() && v.get<unsigned long long>() > 1ull << 62) fail(key, "integer out of range");
-      return v.get<long long>();
-    }
-    const double d = number(v, key);
-    if (d != std::floor(d) || std::fabs(d) > 4.0e18) fail(key, "must be an integer (got " + number_text(d) + ")");
-    return static_cast<long long>(d);
-  }
-
-  view::vector3 triple(const json& v, const std::string& key) const {
-    if (!v.is_array() || v.size() != 3) fail(key, "must be an array of 3 numbers");
-    return {number(v[0], key + "/0"), number(v[1], key + "/1"), number(v[2], key + "/2")};
-  }
-
-  view::rgb8 color(const json& v, const std::string& key) const {
-    if (!v.is_array() || v.size() != 3) fail(key, "must be an array of 3 integers in 0..255");
-    std::uint8_t c[3];
-    for (int k = 0; k < 3; ++k) {
-      const std::string ck = key + "/" + std::to_string(k);
-      if (!v[k].is_number()) fail(ck, std::string("must be an integer in 0..255 (got ") + v[k].type_name() + ")");
-      const double d = v[k].get<double>();
-      if (!(d >= 0 && d <= 255) || d != std::floor(d))
-        fail(ck, "colour component must be an integer in 0..255 (got " + number_text(d) + ")");
-      c[k] = static_cast<std::uint8_t>(d);
-    }
-    return {c[0], c[1], c[2]};
-  }
-
-  const std::string& file() const { return file_; }
-
-private:
-  std::string file_;
-  std::ostream* warnings_;
-};
-
-view::point3 as_point(const view::vector3& v) { return {v.x, v.y, v.z}; }
-
-void parse_meshes(const reader& r, const json& doc, const std::string& path, scene& s) {
-  const json& meshes = r.require(doc, "", "meshes");
-  if (!meshes.is_array()) r.fail("/meshes", std::string("must be an array (got ") + meshes.type_name() + ")");
-  const std::filesystem::path base = std::filesystem::path(path).parent_path();
-  for (std::size_t i = 0; i < meshes.size(); ++i) {
-    const std::string key = "/meshes/" + std::to_string(i);
-    const json& m = r.object(meshes[i], key);
-    r.warn_unknown(m, key, {"file", "color", "transform"});
-    mesh_spec spec;
-    spec.key = key;
-    const json& file = r.require(m, key, "file");
-    if (!file.is_string() || file.get<std::string>().empty())
-      r.fail(key + "/file", "must be a non-empty string (a mesh file path)");
-    spec.file = file.get<std::string>();
-    const std::filesystem::path fp(spec.file);
-    spec.path = fp.is_absolute() ? fp.string() : (base / fp).string();
-    if (const json* c = r.optional(m, "color")) spec.color = r.color(*c, key + "/color");
-    if (const json* t = r.optional(m, "transform")) {
-      if (!t->is_array() || t->size() != 16) r.fail(key + "/transform", "must be an array of 16 numbers (row-major 4x4)");
-      std::array<double, 16> rows{};
-      for (int k = 0; k < 16; ++k) rows[k] = r.number((*t)[k], key + "/transform/" + std::to_string(k));
-      spec.transform = view::mat4::from_rows(rows);
-    }
-    s.meshes.push_back(std::move(spec));
-  }
-}
-
-void parse_camera(const reader& r, const json& doc, scene& s) {
-  const json& cam = r.object(r.require(doc, "", "camera"), "/camera");
-  r.warn_unknown(cam, "/camera", {"eye", "look_at", "up"});
-  s.camera.eye = as_point(r.triple(r.require(cam, "/camera", "eye"), "/camera/eye"));
-  s.camera.look_at = as_point(r.triple(r.require(cam, "/camera", "look_at"), "/camera/look_at"));
-  s.camera.up = r.triple(r.require(cam, "/camera", "up"), "/camera/up");
-  const view::vector3 g = s.camera.look_at - s.camera.eye;
-  if (!(view::length(g) > 0)) r.fail("/camera/look_at", "must differ from /camera/eye");
-  if (!(view::length(s.camera.up) > 0)) r.fail("/camera/up", "must not be the zero vector");
-  try {
-    view::look_at_basis(s.camera.eye, s.camera.look_at, s.camera.up);
-  } catch (const usage_error&) {
-    r.fail("/camera/up", "is parallel to the view direction (look_at - eye)");
-  }
-}
 
 void parse_projection(const reader& r, const json& doc, scene& s) {
   const json& p = r.object(r.require(doc, "", "projection"), "/projection");
@@ -174,20 +44,34 @@ void parse_projection(const reader& r, const json& doc, scene& s) {
       r.warn_unknown(p, "/projection", {"type", "left", "right", "bottom", "top", "near", "far", "direction"});
     else
       r.warn_unknown(p, "/projection", {"type", "left", "right", "bottom", "top", "near", "far"});
+  } else if (t == "ortho2d") {
+    ps.kind = view::projection_kind::orthographic;
+    ps.ortho2d = true;
+    r.warn_unknown(p, "/projection", {"type", "left", "right", "bottom", "top"});
+  } else {
+    r.fail("/projection/type",
+           "unknown projection type \"" + t + "\" (expected perspective, frustum, orthographic, oblique or ortho2d)");
+  }
+  if (t == "frustum" || t == "orthographic" || t == "oblique" || t == "ortho2d") {
     ps.left = num("left");
     ps.right = num("right");
     ps.bottom = num("bottom");
     ps.top = num("top");
     if (!(ps.right > ps.left)) r.fail("/projection/right", "must be greater than /projection/left");
     if (!(ps.top > ps.bottom)) r.fail("/projection/top", "must be greater than /projection/bottom");
-  } else {
-    r.fail("/projection/type", "unknown projection type \"" + t + "\" (expected perspective, frustum, orthographic or oblique)");
+  }
+  if (ps.ortho2d) {
+    ps.near_dist = -1;
+    ps.far_dist = 1;
+    return;
   }
   ps.near_dist = num("near");
   ps.far_dist = num("far");
-  if (!(ps.near_dist > 0))
+  if (ps.kind == view::projection_kind::orthographic) {  // glOrtho: any distinct near and far
+    if (ps.near_dist == ps.far_dist) r.fail("/projection/far", "must differ from /projection/near (glOrtho)");
+  } else if (!(ps.near_dist > 0))
     r.fail("/projection/near", "must be a positive distance in front of the eye (got " + number_text(ps.near_dist) + ")");
-  if (!(ps.far_dist > ps.near_dist))
+  if (ps.kind != view::projection_kind::orthographic && !(ps.far_dist > ps.near_dist))
     r.fail("/projection/far", "must be greater than /projection/near (near " + number_text(ps.near_dist) + ", far " +
                                   number_text(ps.far_dist) + ")");
   if (ps.kind == view::projection_kind::oblique) {
@@ -198,19 +82,6 @@ void parse_projection(const reader& r, const json& doc, scene& s) {
     if (!(cos_angle > 1e-6))
       r.fail("/projection/direction", "must point into the scene (positive component along look_at - eye)");
   }
-}
-
-void parse_viewport(const reader& r, const json& doc, scene& s) {
-  const json& vp = r.object(r.require(doc, "", "viewport"), "/viewport");
-  r.warn_unknown(vp, "/viewport", {"width", "height"});
-  const long long w = r.integer(r.require(vp, "/viewport", "width"), "/viewport/width");
-  const long long h = r.integer(r.require(vp, "/viewport", "height"), "/viewport/height");
-  if (w < 1 || w > max_viewport_side)
-    r.fail("/viewport/width", "must be in 1.." + std::to_string(max_viewport_side) + " (got " + std::to_string(w) + ")");
-  if (h < 1 || h > max_viewport_side)
-    r.fail("/viewport/height", "must be in 1.." + std::to_string(max_viewport_side) + " (got " + std::to_string(h) + ")");
-  s.width = static_cast<int>(w);
-  s.height = static_cast<int>(h);
 }
 
 /// Fails naming KEY/PARAM for a member of `params` not in `known`.
@@ -407,15 +278,20 @@ void parse_clip_planes(const reader& r, const json& doc, scene& s) {
 scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings) {
   const reader r(path, warnings);
   if (!doc.is_object()) r.fail("", std::string("the scene must be a JSON object (got ") + doc.type_name() + ")");
-  r.warn_unknown(doc, "", {"meshes", "curves", "camera", "projection", "viewport", "background", "effects",
-                       "clip_planes", "caps"});
+  r.warn_unknown(doc, "", {"meshes", "groups", "curves", "lines", "camera", "projection", "viewport", "image", "aspect",
+                           "background", "effects", "trackball", "clip_planes", "caps"});
   scene s;
   s.path = path;
-  parse_meshes(r, doc, path, s);
+  detail::parse_mesh_tree(r, doc, path, s);
   parse_curves(r, doc, s);
-  parse_camera(r, doc, s);
-  parse_projection(r, doc, s);
-  parse_viewport(r, doc, s);
+  detail::parse_lines(r, doc, s);
+  detail::parse_any_camera(r, doc, s);
+  if (s.form != camera_form::phigs)
+    parse_projection(r, doc, s);
+  else if (r.optional(doc, "projection"))
+    r.fail("/projection", "a phigs camera defines its own projection (window, front, back, projection): remove this key");
+  detail::parse_viewport_and_image(r, doc, s);
+  detail::parse_trackball(r, doc, s);
   if (const json* b = r.optional(doc, "background")) s.background = r.color(*b, "/background");
   parse_effects(r, doc, s);
   parse_clip_planes(r, doc, s);
@@ -447,16 +323,20 @@ view::view_setup make_view_setup(const scene& s) {
   const projection_spec& p = s.projection;
   v.kind = p.kind;
   v.cam = s.camera;
-  v.vp = view::viewport{0, 0, s.width, s.height, 0.0, 1.0};
+  detail::place_viewport(s, v);
   try {
-    v.model_view = view::look_at(s.camera);
+    v.model_view = s.view_matrix ? *s.view_matrix : view::look_at(s.camera);
   } catch (const usage_error& e) {
     throw scene_error(s.path, "/camera/up", e.what());
   }
   try {
-    switch (p.kind) {
+    if (s.phigs) {
+      v.projection = s.phigs->projection;
+      v.direction = s.phigs->direction;
+    } else switch (p.kind) {
       case view::projection_kind::perspective:
-        v.projection = view::perspective(p.fovy_deg, static_cast<double>(s.width) / s.height, p.near_dist, p.far_dist);
+        v.projection =
+            view::perspective(p.fovy_deg, static_cast<double>(v.vp.width) / v.vp.height, p.near_dist, p.far_dist);
         break;
       case view::projection_kind::frustum:
         v.projection = view::frustum(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist);
@@ -507,7 +387,8 @@ scene_geometry load_geometry(const scene& s) {
         const view::hpoint h = m.transform * view::to_point(part.vertices[k]);
         vec3d p = h.w == 1 ? vec3d{h.x, h.y, h.z} : vec3d{h.x / h.w, h.y / h.w, h.z / h.w};
         if (!(h.w != 0) || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-          throw scene_error(s.path, m.key + "/transform", "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
+          throw scene_error(s.path, m.transform_key.empty() ? m.key + "/transform" : m.transform_key,
+                            "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
         part.vertices[k] = p;
       }
     }

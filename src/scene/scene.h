@@ -13,7 +13,33 @@
 //   oblique       left, right, bottom, top, near, far, direction   direction = world-space
 //                 direction of projection (eye into the scene, positive component along the
 //                 gaze); the window lies in the view plane through look_at (view/projection.h)
-// near and far are distances in front of the eye with 0 < near < far for every type.
+//   ortho2d       left, right, bottom, top                         gluOrtho2D (near -1, far 1)
+// near and far are distances in front of the eye with 0 < near < far, except orthographic
+// (glOrtho: any two distinct numbers; negative = behind the eye).
+//
+// Modelling: "meshes" and nested "groups" ({"transforms", "meshes", "groups"}) are read in
+// document order (a group's meshes, then its groups, depth first; face ids follow that order)
+// with a view::matrix_stack: a group pushes, applies its "transforms" list, and pops when done;
+// a mesh's matrix is the stack's top times its own "transform" or "transforms". Each list
+// entry post-multiplies like glTranslated / glRotated / glScaled / glMultMatrixd:
+// {"translate": [x,y,z]}, {"rotate": [deg, ax, ay, az]}, {"scale": [sx,sy,sz]},
+// {"matrix": [16 numbers], "order": "row-major" | "column-major"} (order required). Nesting
+// deeper than max_group_depth is refused. Parsed iteratively (scene_parts.cpp).
+//
+// Cameras (one form): {"eye","look_at","up"}; {"position","look","up"}; {"polar": {"distance",
+// "twist_deg","elevation_deg","azimuth_deg","look_at"}}; {"pilot": {"position","roll_deg",
+// "pitch_deg","heading_deg"}}; {"phigs": {"vrp","vpn","vup","prp","window","front","back",
+// "projection"}} (view/camera.h, view/phigs.h). A phigs camera defines the projection: the
+// scene then has no "projection". "ortho2d" (left, right, bottom, top; gluOrtho2D) needs no
+// camera (default: eye at the origin looking down -z, up +y). Orthographic near and far may
+// be any distinct numbers.
+// Viewport: "viewport": {"width","height","x","y"} inside "image": {"width","height"}, and
+// "aspect": "stretch" | "fit" (letterbox: the viewport shrinks, centred, to the aspect of the
+// projection's window; perspective views already use the viewport's aspect).
+// Lines: "lines": [{"points": [[x,y,z], ...] (2 .. max_line_points), "color" (default black),
+// "clipper": "cohen-sutherland" | "liang-barsky" (default)}]: polylines in world space drawn
+// like curves (view/curves.h), each segment clipped in clip space by the named algorithm.
+// Trackball: "trackball": "arcball" (default) | "virtual" for orbit drags (render.h).
 //
 // Curves: "curves": [{"bezier": [[x,y,z], ...], "color": [r,g,b]}]: at least one and at most
 // max_curve_control_points finite control points (world space, no transform), colour default
@@ -45,6 +71,7 @@
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -53,12 +80,17 @@
 #include "view/camera.h"
 #include "view/image.h"
 #include "view/matrix.h"
+#include "view/phigs.h"
 #include "view/pipeline.h"
 
 namespace exbsp::scene {
 
 /// Largest accepted viewport side in pixels.
 constexpr int max_viewport_side = 16384;
+/// Deepest accepted nesting of "groups" (a group inside a group inside ... counts each level).
+constexpr std::size_t max_group_depth = 64;
+/// Largest accepted number of points of one "lines" polyline.
+constexpr std::size_t max_line_points = 1u << 20;
 /// Largest accepted number of control points of one curve.
 /// (Flattening splits a curve with de Casteljau, O(degree^2) per split, up to 2^16 pieces.)
 constexpr std::size_t max_curve_control_points = 128;
@@ -71,6 +103,7 @@ struct mesh_spec {
   std::string file;                          ///< as written in the scene
   std::string path;                          ///< resolved against the scene file's directory
   std::string key;                           ///< JSON pointer of the entry, e.g. "/meshes/0"
+  std::string transform_key;                 ///< key named when the transform fails (default key + "/transform")
   view::rgb8 color{160, 160, 160};           ///< default grey
   view::mat4 transform = view::mat4::identity();
   std::shared_ptr<const triangle_soup> soup; ///< inline geometry (built-in demo): file not read
@@ -83,7 +116,17 @@ struct projection_spec {
   double left = 0, right = 0, bottom = 0, top = 0; ///< frustum, orthographic, oblique
   double near_dist = 0, far_dist = 0;
   view::vector3 direction;                         ///< oblique: world-space direction of projection
+  bool ortho2d = false;                            ///< "ortho2d": orthographic with near -1, far 1
 };
+
+/// How the view volume's window meets a viewport of another aspect ratio ("aspect").
+enum class aspect_policy {
+  stretch,  ///< OpenGL: the window fills the viewport, distorted when the aspects differ
+  fit       ///< letterbox: the largest centred part of the viewport with the window's aspect
+};
+
+/// The camera forms of DESIGN.md section 5 ("camera").
+enum class camera_form { look_at, look, polar, pilot, phigs };
 
 /// A validated scene.
 struct scene {
@@ -95,7 +138,18 @@ struct scene {
   view::rgb8 background{255, 255, 255};
   std::vector<std::string> effects;  ///< enabled effects (names from view::effect_catalog())
   view::effect_settings effect_settings;  ///< parameters of the enabled effects, defaults filled in
-  std::vector<view::curve_spec> curves;   ///< "curves" (empty when absent)
+  std::vector<view::curve_spec> curves;   ///< "curves", then "lines" (empty when absent)
+  std::size_t line_count = 0;             ///< the last line_count entries of curves are "lines"
+
+  camera_form form = camera_form::look_at;
+  /// Viewing matrix of the polar, pilot and phigs forms (absent: look_at(camera)). `camera` is
+  /// then the equivalent gluLookAt camera (view::camera_of): its eye orders the BSP.
+  std::optional<view::mat4> view_matrix;
+  std::optional<view::phigs_matrices> phigs;  ///< phigs form: its projection replaces "projection"
+  int viewport_x = 0, viewport_y = 0;     ///< glViewport x, y (from the image's lower left)
+  int image_width = 0, image_height = 0;  ///< "image" (default: the viewport's size)
+  aspect_policy aspect = aspect_policy::stretch;
+  std::string trackball = "arcball";      ///< "arcball" or "virtual" (orbit drags)
   std::vector<std::array<double, 4>> clip_planes;  ///< "clip_planes" (A, B, C, D), keep >= 0
   bool caps = false;                                ///< "caps" present: draw the cut faces
   view::rgb8 cap_color{200, 60, 50};                ///< "caps": {"color"}

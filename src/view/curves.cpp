@@ -233,6 +233,14 @@ std::string curves_stage(frame& f) {
   std::vector<curve_piece> pieces;
   std::size_t chords = 0, forced = 0;
   for (std::uint32_t k = 0; k < f.curves.size(); ++k) {
+    if (f.curves[k].polyline) {  // "lines": the segments are the chords
+      const std::vector<vec3d>& pts = f.curves[k].control_points;
+      for (std::size_t s = 0; s + 1 < pts.size(); ++s) {
+        ++chords;
+        place_chord(cells, cv, pts[s], pts[s + 1], k, s, false, pieces);
+      }
+      continue;
+    }
     const bezier_curve curve(f.curves[k].control_points);
     if (curve.degree() == 0) {
       const vec3d p = curve.control_points()[0];
@@ -268,7 +276,9 @@ std::string curves_stage(frame& f) {
   // 3. Clip in homogeneous coordinates, divide, viewport.
   for (const curve_piece& piece : pieces) {
     hpoint ca, cb;
-    if (!clip_segment_to_view_volume(pm * to_point(piece.a), pm * to_point(piece.b), ca, cb)) continue;
+    if (!clip_segment_to_view_volume(pm * to_point(piece.a), pm * to_point(piece.b), ca, cb, nullptr, nullptr,
+                                     f.curves[piece.curve].clipper))
+      continue;
     if (!(ca.w > 0) || !(cb.w > 0)) continue;
     screen_line line;
     line.a = to_window(vp, ca.x / ca.w, ca.y / ca.w, ca.z / ca.w);

@@ -37,7 +37,9 @@
 //    child the traversal visits first at each node is read off f.order's traversal, so slots
 //    agree with the BSP's exact order even where a double classification of the eye would not.
 // 3. Clipping. Every piece is clipped in clip coordinates against -w <= x, y, z <= w
-//    (segment_clip.h, Liang–Barsky in 4D), then divided and mapped to the window.
+//    (segment_clip.h: Liang–Barsky in 4D, or Cohen–Sutherland for a line that names it),
+//    then divided and mapped to the window.
+// Lines (curve_spec::polyline, a scene's "lines") skip step 1: their segments are the chords.
 // Pieces are drawn as 1-pixel lines (line_raster.h) in PNG and as stroked polylines in SVG.
 #pragma once
 #include <cstdint>

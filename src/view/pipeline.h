@@ -44,6 +44,16 @@ struct view_setup {
   /// Parallel kinds only: unit direction of projection in WORLD space, from the eye into the
   /// scene (the gaze for orthographic, the oblique direction for oblique).
   vector3 direction;
+  /// The output image and where the viewport's picture goes in it (window coordinates: x, y
+  /// of its lower-left corner). 0 x 0: the image is the viewport. The render command's
+  /// "place" stage composes it (placement.h).
+  int image_width = 0, image_height = 0;
+  int place_x = 0, place_y = 0;
+
+  /// True when the image is larger than the viewport.
+  bool needs_placement() const {
+    return image_width > 0 && (image_width != vp.width || image_height != vp.height || place_x != 0 || place_y != 0);
+  }
 
   bool is_parallel() const { return kind == projection_kind::orthographic || kind == projection_kind::oblique; }
 };
@@ -60,7 +70,8 @@ struct frame {
   view_setup view;
   rgb8 background{255, 255, 255};
   effect_settings settings;         ///< parameters of the named effects (the others are ignored)
-  std::vector<curve_spec> curves;   ///< world-space Bézier curves ("curves" stage)
+  std::vector<curve_spec> curves;   ///< world-space Bézier curves and polylines ("curves" stage)
+  std::vector<std::uint32_t> mesh_face_offsets;  ///< first face id of mesh k (size meshes + 1; "reject")
 
   // Products.
   std::optional<bsp> tree;                 ///< "build"
@@ -77,6 +88,7 @@ struct frame {
   // Counters for --verbose.
   std::size_t culled = 0;         ///< fragments removed by backface_culling
   std::size_t fully_clipped = 0;  ///< fragments entirely outside the view volume
+  std::vector<std::size_t> rejected_meshes;  ///< "reject": meshes dropped by their bounding boxes
 
   /// Colour of a face id (grey when the id has no colour).
   rgb8 color_of(std::uint32_t face) const {

@@ -12,10 +12,17 @@
 
 namespace exbsp::view {
 
-/// One entry of a scene's "curves": a Bézier curve of degree control_points.size() - 1.
+/// The segment clipper of a polyline (clip space, clip/homogeneous_segment.h).
+enum class segment_clipper { liang_barsky, cohen_sutherland };
+
+/// One entry of a scene's "curves": a Bézier curve of degree control_points.size() - 1; or of
+/// its "lines": a polyline through control_points (polyline = true; no flattening), clipped by
+/// `clipper`. Curves are clipped by Liang–Barsky.
 struct curve_spec {
   std::vector<vec3d> control_points;  ///< >= 1 finite points, world space
   rgb8 color{0, 0, 0};
+  bool polyline = false;
+  segment_clipper clipper = segment_clipper::liang_barsky;
 };
 
 /// A clipped piece of a flattened curve in window coordinates (x right, y up, z depth).

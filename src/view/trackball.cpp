@@ -156,6 +156,24 @@ quaternion arcball_rotation(const vec3d& p, const vec3d& q) {
   return normalize({dot3(a, b), axis[0], axis[1], axis[2]});
 }
 
+quaternion virtual_trackball_rotation(const vec3d& p, const vec3d& q) {
+  const vec3d a = unit(p, "virtual_trackball_rotation: first point");
+  const vec3d b = unit(q, "virtual_trackball_rotation: second point");
+  const vec3d axis = cross(a, b);
+  const double c = dot3(a, b);
+  if (a == b) return quaternion{};
+  if (1.0 + c < 1e-12 && std::hypot(axis[0], axis[1], axis[2]) < 1e-6) {
+    // Opposite points: half turn about the screen-plane axis perpendicular to p (or x).
+    const double r = std::hypot(a[0], a[1]);
+    return r > 0 ? quaternion{0.0, -a[1] / r, a[0] / r, 0.0} : quaternion{0.0, 1.0, 0.0, 0.0};
+  }
+  return normalize({1.0 + c, axis[0], axis[1], axis[2]});
+}
+
+arcball::arcball(double width, double height, screen_y y_axis, trackball_kind kind) : arcball(width, height, y_axis) {
+  kind_ = kind;
+}
+
 arcball::arcball(double width, double height, screen_y y_axis)
     : centre_{0.5 * width, 0.5 * height}, radius_(0.5 * std::min(width, height)), y_axis_(y_axis) {
   if (!(std::isfinite(width) && std::isfinite(height) && width > 0.0 && height > 0.0))
@@ -181,7 +199,8 @@ vec3d arcball::sphere_point(const vec2d& screen) const {
 }
 
 quaternion arcball::drag(const vec2d& from, const vec2d& to) const {
-  return arcball_rotation(sphere_point(from), sphere_point(to));
+  return kind_ == trackball_kind::virtual_ ? virtual_trackball_rotation(sphere_point(from), sphere_point(to))
+                                           : arcball_rotation(sphere_point(from), sphere_point(to));
 }
 
 std::vector<quaternion> arcball::drag_path(const std::vector<vec2d>& path,

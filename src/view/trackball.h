@@ -21,6 +21,12 @@
 //   rotation of a whole drag depend only on its end points: drag(b, c) * drag(a, b) =
 //   drag(a, c) (up to sign), and dragging back gives the identity. The angle can exceed pi
 //   (rim points up to 180 degrees apart): then to_axis_angle reports 2 pi - angle about -axis.
+// - Classic virtual trackball (Chen, Mountford and Sellen 1988; the "trackball.c" of SGI's GLUT
+//   examples, on a sphere without their hyperbolic sheet): the drag from p to q rotates by the
+//   angle between p and q itself, about p x q, so p goes exactly to q: the point under the
+//   cursor stays under the cursor. As a quaternion it is the square root of the arcball's,
+//   normalize(1 + p.q, p x q). It is not path independent: a closed drag can leave a net
+//   rotation (which the arcball's doubling avoids), and a full turn needs twice the drag.
 //   The rotation turns the scene as seen from the camera (in eye coordinates); orbit_camera()
 //   turns the camera the other way about the look-at point to get the same picture.
 // Precondition failures throw exbsp::usage_error (src/mesh/errors.h); nothing aborts.
@@ -87,6 +93,18 @@ quaternion slerp(const quaternion& a, const quaternion& b, double t);
 /// Equal points give exactly the identity. Throws usage_error for zero or non-finite points.
 quaternion arcball_rotation(const vec3d& p, const vec3d& q);
 
+/// Virtual-trackball rotation between two points on the unit sphere (normalised first): axis
+/// p x q, angle = the angle between p and q (p goes to q). Equal points give exactly the
+/// identity; opposite points (rim points 180 degrees apart) the half turn about an axis
+/// perpendicular to p in the screen plane. Throws usage_error for zero or non-finite points.
+quaternion virtual_trackball_rotation(const vec3d& p, const vec3d& q);
+
+/// Which rotation a drag gives.
+enum class trackball_kind {
+  arcball,  ///< Shoemake: twice the arc (path independent; the default)
+  virtual_  ///< classic virtual trackball: the arc itself (follows the cursor)
+};
+
 /// Direction of the screen y axis.
 enum class screen_y {
   down,  ///< y = 0 at the top edge (mouse events, PNG rows)
@@ -99,6 +117,8 @@ public:
   /// Ball centred in the viewport [0, width] x [0, height], radius min(width, height) / 2.
   /// Throws usage_error unless width and height are finite and > 0.
   arcball(double width, double height, screen_y y_axis = screen_y::down);
+  /// The same ball with the rotation rule `kind` (virtual trackball or arcball).
+  arcball(double width, double height, screen_y y_axis, trackball_kind kind);
   /// Ball with the given centre and radius in pixels (both in the screen convention y_axis).
   /// Throws usage_error unless centre is finite and radius finite and > 0.
   arcball(const vec2d& centre, double radius, screen_y y_axis);
@@ -106,11 +126,12 @@ public:
   const vec2d& centre() const { return centre_; }
   double radius() const { return radius_; }
   screen_y y_axis() const { return y_axis_; }
+  trackball_kind kind() const { return kind_; }
 
   /// The unit-sphere point under a screen point (eye coordinates; rim point when outside the
   /// ball). Throws usage_error for a non-finite screen point.
   vec3d sphere_point(const vec2d& screen) const;
-  /// The arcball rotation of a drag from screen point `from` to `to`.
+  /// The rotation (arcball or virtual trackball, by kind()) of a drag from screen point `from` to `to`.
   /// Throws usage_error for non-finite screen points.
   quaternion drag(const vec2d& from, const vec2d& to) const;
   /// Cumulative rotations along a drag path: result[0] = start and
@@ -123,6 +144,7 @@ private:
   vec2d centre_;
   double radius_;
   screen_y y_axis_;
+  trackball_kind kind_ = trackball_kind::arcball;
 };
 
 /// A gluLookAt camera.

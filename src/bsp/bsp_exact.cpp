@@ -1,0 +1,5 @@
+// Explicit instantiation of the BSP for exbsp's own exact geometry (geometry_exact.h).
+#include "bsp/bsp_tree_impl.h"
+#include "bsp/geometry_exact.h"
+
+EXBSP_INSTANTIATE_BSP(exbsp::exact_geometry, exact)

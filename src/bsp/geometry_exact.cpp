@@ -1,0 +1,312 @@
+// exbsp's exact geometry: point table, certified approximations, exact fallback.
+// Notation: see geometry_exact.h. u = 2^-53 (unit roundoff).
+#include "bsp/geometry_exact.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+
+#include "bsp/exact_output.h"
+#include "mesh/errors.h"
+
+namespace exbsp {
+
+/// A point's exact coordinates as reduced rationals.
+struct exact_geometry::exact_value {
+  std::array<mpq_class, 3> x;
+};
+/// Plane of an input triangle (a, b, c): normal n = (b-a)x(c-a) and offset d = n.a, exact, so
+/// that orientation(a, b, c, x) = sign(n.x - d).
+struct exact_geometry::exact_plane {
+  std::array<mpq_class, 3> n;
+  mpq_class d;
+};
+
+namespace {
+constexpr double u = 1.1102230246251565e-16;
+
+int sign_of(const mpq_class& q) { return sgn(q); }
+
+/// Distance from x to the next double away from zero (an upper bound on the rounding error
+/// of a round-to-nearest result x, with room to spare).
+double ulp_of(double x) {
+  const double a = std::fabs(x);
+  return std::nextafter(a, std::numeric_limits<double>::infinity()) - a;
+}
+}  // namespace
+
+exact_geometry::exact_geometry(const triangle_soup& soup)
+    : sources_(soup.triangles.size()),
+      fast_(soup.triangles.size()),
+      exact_planes_(soup.triangles.size()),
+      chunks_(std::size_t{1} << (max_point_bits - chunk_bits)) {
+  if (soup.vertices.size() >= (std::size_t{1} << (max_point_bits - 1)))
+    throw limit_error("bsp build: too many vertices for the exact kernel's point table");
+  // Input vertices are points 0 .. V-1, exactly their doubles.
+  scratch sc;
+  for (std::size_t i = 0; i < soup.vertices.size(); ++i) {
+    const std::uint32_t id = allocate(sc);
+    at(id).c = soup.vertices[i];
+  }
+  inputs_ = static_cast<std::uint32_t>(soup.vertices.size());
+  for (auto& p : exact_planes_) p.store(nullptr, std::memory_order_relaxed);
+}
+
+exact_geometry::~exact_geometry() {
+  for (auto& p : exact_planes_) delete p.load(std::memory_order_relaxed);
+  for (std::uint32_t id = 0; id < claimed_; ++id) delete at(id).exact.load(std::memory_order_relaxed);
+}
+
+void exact_geometry::claim_block(scratch& sc) {
+  const std::lock_guard<std::mutex> lock(claim_mutex_);
+  if (claimed_ > (std::uint32_t{1} << max_point_bits) - 2 * block)
+    throw limit_error("bsp build: more than 2^28 points in the exact kernel's point table");
+  sc.next = claimed_;
+  sc.end = claimed_ + block;
+  claimed_ += block;
+  for (std::uint32_t c = sc.next >> chunk_bits; c <= (sc.end - 1) >> chunk_bits; ++c)
+    if (!chunks_[c]) chunks_[c].reset(new point[chunk_size]);
+}
+
+std::uint32_t exact_geometry::allocate(scratch& sc) {
+  if (sc.next == sc.end) claim_block(sc);
+  return sc.next++;
+}
+
+bool exact_geometry::add_source(const triangle_soup& soup, std::uint32_t i, fragment& out) {
+  const soup_triangle& st = soup.triangles[i];
+  const vec3d& a = soup.vertices.at(st.v[0]);
+  const vec3d& b = soup.vertices.at(st.v[1]);
+  const vec3d& c = soup.vertices.at(st.v[2]);
+  sources_[i] = st.v;
+  using E = CGAL::Epick;
+  if (E().collinear_3_object()(E::Point_3(a[0], a[1], a[2]), E::Point_3(b[0], b[1], b[2]),
+                               E::Point_3(c[0], c[1], c[2])))
+    return false;
+  fast_[i] = make_fast_plane(a, b, c);
+  out = {st.v, i, st.face};
+  return true;
+}
+
+const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane) const {
+  if (const exact_plane* p = exact_planes_[plane].load(std::memory_order_acquire)) return *p;
+  auto made = std::make_unique<exact_plane>();
+  std::array<std::array<mpq_class, 3>, 3> v;
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) v[k][j] = at(sources_[plane][k]).c[j];
+  std::array<mpq_class, 3> e1, e2;
+  for (int j = 0; j < 3; ++j) {
+    e1[j] = v[1][j] - v[0][j];
+    e2[j] = v[2][j] - v[0][j];
+  }
+  made->n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  made->n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  made->n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  made->d = made->n[0] * v[0][0] + made->n[1] * v[0][1] + made->n[2] * v[0][2];
+  const exact_plane* expected = nullptr;
+  if (exact_planes_[plane].compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel))
+    return *made.release();
+  return *expected;  // another thread made the same plane first
+}
+
+const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) const {
+  // Iterative over the points x depends on (their ids are smaller: a point is made after its
+  // endpoints), so a long chain of nested split points cannot overflow the stack.
+  std::vector<std::uint32_t> stack{x};
+  while (!stack.empty()) {
+    const std::uint32_t id = stack.back();
+    const point& pt = at(id);
+    if (pt.exact.load(std::memory_order_acquire)) {
+      stack.pop_back();
+      continue;
+    }
+    auto made = std::make_unique<exact_value>();
+    if (pt.p == none) {
+      for (int j = 0; j < 3; ++j) made->x[j] = pt.c[j];  // exact: a double is a dyadic rational
+    } else {
+      const exact_value* ep = at(pt.p).exact.load(std::memory_order_acquire);
+      const exact_value* eq = at(pt.q).exact.load(std::memory_order_acquire);
+      if (!ep || !eq) {
+        if (!ep) stack.push_back(pt.p);
+        if (!eq) stack.push_back(pt.q);
+        continue;
+      }
+      // x = (fp q - fq p) / (fp - fq), fp = n.p - d, fq = n.q - d.
+      const exact_plane& pl = plane_of(pt.plane);
+      const mpq_class fp = pl.n[0] * ep->x[0] + pl.n[1] * ep->x[1] + pl.n[2] * ep->x[2] - pl.d;
+      const mpq_class fq = pl.n[0] * eq->x[0] + pl.n[1] * eq->x[1] + pl.n[2] * eq->x[2] - pl.d;
+      const mpq_class den = fp - fq;
+      for (int j = 0; j < 3; ++j) made->x[j] = (fp * eq->x[j] - fq * ep->x[j]) / den;
+    }
+    const exact_value* expected = nullptr;
+    if (pt.exact.compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel)) made.release();
+    stack.pop_back();
+  }
+  return *at(x).exact.load(std::memory_order_acquire);
+}
+
+int exact_geometry::exact_sign(std::uint32_t plane, std::uint32_t x) const {
+  const exact_plane& pl = plane_of(plane);
+  const exact_value& v = exact_of(x);
+  return sign_of(pl.n[0] * v.x[0] + pl.n[1] * v.x[1] + pl.n[2] * v.x[2] - pl.d);
+}
+
+int exact_geometry::point_sign_slow(std::uint32_t plane, std::uint32_t x, int& budget) const {
+  const point& pt = at(x);
+  if (pt.p == none) {
+    // An input vertex: Epick's orientation is exact on doubles (filtered, exact fallback).
+    using E = CGAL::Epick;
+    const auto& s = sources_[plane];
+    const auto P = [&](std::uint32_t id) { return E::Point_3(at(id).c[0], at(id).c[1], at(id).c[2]); };
+    return static_cast<int>(E().orientation_3_object()(P(s[0]), P(s[1]), P(s[2]), P(x)));
+  }
+  if (pt.plane == plane) {
+    counters_.on_own_plane.fetch_add(1, std::memory_order_relaxed);
+    return 0;
+  }
+  if (budget > 0) {
+    --budget;
+    const int sp = point_sign(plane, pt.p, budget);
+    const int sq = point_sign(plane, pt.q, budget);
+    if (sp * sq >= 0) {
+      // x lies strictly between p and q: not strictly opposite, they decide.
+      counters_.structural.fetch_add(1, std::memory_order_relaxed);
+      return (sp + sq > 0) - (sp + sq < 0);
+    }
+  }
+  counters_.exact.fetch_add(1, std::memory_order_relaxed);
+  return exact_sign(plane, x);
+}
+
+std::uint32_t exact_geometry::construct(std::uint32_t plane, std::uint32_t p, std::uint32_t q, scratch& sc) {
+  if (sc.plane != plane) {
+    sc.made.clear();
+    sc.plane = plane;
+  }
+  const std::uint64_t key = std::uint64_t{std::min(p, q)} << 32 | std::max(p, q);
+  const auto found = sc.made.find(key);
+  if (found != sc.made.end()) return found->second;
+  const std::uint32_t id = allocate(sc);
+  point& x = at(id);
+  x.p = p;
+  x.q = q;
+  x.plane = plane;
+  const point& pp = at(p);
+  const point& pq = at(q);
+  // Certified approximation: x = p + t (q - p), t = |fp| / (|fp| + |fq|) in (0, 1), with
+  // |fp - vp| <= ep and |fq - vq| <= eq from the filter. t is monotone in |fp| and |fq|, so
+  // [t_lo, t_hi] below holds the true t; the rest is the spread of p and q and rounding.
+  double vp, ep, vq, eq;
+  bool certified = false;
+  if (fast_eval(fast_[plane], pp.c, pp.r, vp, ep) && fast_eval(fast_[plane], pq.c, pq.r, vq, eq) &&
+      std::fabs(vp) > ep && std::fabs(vq) > eq && (vp > 0) != (vq > 0)) {
+    const double alpha = std::fabs(vp), beta = std::fabs(vq);
+    const double t = alpha / (alpha + beta);
+    const double t_lo = (alpha - ep) / ((alpha - ep) + (beta + eq));
+    const double t_hi = (alpha + ep) / ((alpha + ep) + (beta - eq));
+    const double dt = std::max(t_hi - t, t - t_lo) * (1 + 8 * u) + 16 * u;
+    if (dt < 1e-3 && std::isfinite(dt)) {
+      double r = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double diff = pq.c[k] - pp.c[k];
+        x.c[k] = pp.c[k] + t * diff;
+        const double err = std::max(pp.r, pq.r) + dt * (std::fabs(diff) + pp.r + pq.r) +
+                           4 * u * (std::fabs(pp.c[k]) + std::fabs(diff));
+        r = std::max(r, err);
+      }
+      x.r = r * (1 + 16 * u) + DBL_MIN;
+      certified = std::isfinite(x.r) && x.r <= 1e80;
+    }
+  }
+  if (!certified) {
+    // Too close to call in doubles (or out of the filter's range): the exact value, rounded.
+    const exact_value& e = exact_of(id);
+    double r = 0;
+    for (int k = 0; k < 3; ++k) {
+      x.c[k] = rational_to_double(e.x[k].get_mpq_t());
+      r = std::max(r, ulp_of(x.c[k]));
+    }
+    x.r = r;
+  }
+  sc.made.emplace(key, id);
+  return id;
+}
+
+void exact_geometry::split(std::uint32_t plane, const fragment& f, const split_pattern& pat,
+                           std::array<fragment, 3>& out, scratch& sc) {
+  std::array<std::uint32_t, 5> ids{f.v[0], f.v[1], f.v[2], none, none};
+  for (int j = 0; j < pat.new_points; ++j) ids[3 + j] = construct(plane, f.v[pat.from[j]], f.v[pat.to[j]], sc);
+  for (int i = 0; i < pat.pieces; ++i)
+    out[i] = {{ids[pat.corner[i][0]], ids[pat.corner[i][1]], ids[pat.corner[i][2]]}, f.source, f.face};
+}
+
+int exact_geometry::side_of_eye(std::uint32_t plane, const vec3d& eye) const {
+  const int s = fast_sign(fast_[plane], eye, 0);
+  if (s != 2) return s;
+  using E = CGAL::Epick;
+  const auto& src = sources_[plane];
+  const auto P = [&](const vec3d& v) { return E::Point_3(v[0], v[1], v[2]); };
+  return static_cast<int>(
+      E().orientation_3_object()(P(at(src[0]).c), P(at(src[1]).c), P(at(src[2]).c), P(eye)));
+}
+
+int exact_geometry::side_of_direction(std::uint32_t plane, const vec3d& d) const {
+  // sign(n . (-d)): the double normal's error bound first, exact rationals when too close.
+  const fast_plane& fp = fast_[plane];
+  if (fp.valid) {
+    const double v = -(fp.n[0] * d[0] + fp.n[1] * d[1] + fp.n[2] * d[2]);
+    double bound = 0;
+    for (int k = 0; k < 3; ++k) bound += (fp.err[k] + 4 * u * std::fabs(fp.n[k])) * std::fabs(d[k]);
+    bound = bound * (1 + 8 * u) + 1e-290;
+    if (std::isfinite(v) && std::isfinite(bound)) {
+      if (v > bound) return 1;
+      if (v < -bound) return -1;
+    }
+  }
+  const exact_plane& pl = plane_of(plane);
+  return -sign_of(pl.n[0] * mpq_class(d[0]) + pl.n[1] * mpq_class(d[1]) + pl.n[2] * mpq_class(d[2]));
+}
+
+void exact_geometry::prepare_output(const std::vector<fragment>& fragments) const {
+  std::call_once(output_once_, [&] {
+    rounded_.assign(claimed_, vec3d{});
+    std::vector<char> done(claimed_, 0);
+    for (const fragment& f : fragments)
+      for (std::uint32_t id : f.v) {
+        if (done[id]) continue;
+        done[id] = 1;
+        const point& pt = at(id);
+        if (pt.p == none) {
+          rounded_[id] = {pt.c[0] + 0.0, pt.c[1] + 0.0, pt.c[2] + 0.0};  // -0 prints as the exact 0
+          continue;
+        }
+        const exact_value& e = exact_of(id);
+        for (int k = 0; k < 3; ++k) rounded_[id][k] = rational_to_double(e.x[k].get_mpq_t());
+      }
+  });
+}
+
+fragment_d exact_geometry::to_double(const fragment& f) const {
+  return {f.face, {rounded_[f.v[0]], rounded_[f.v[1]], rounded_[f.v[2]]}};
+}
+
+exact_triangle exact_geometry::to_exact(const fragment& f) const {
+  exact_triangle out;
+  for (int k = 0; k < 3; ++k) {
+    const exact_value& e = exact_of(f.v[k]);
+    for (int j = 0; j < 3; ++j) out[k][j] = rational_to_string(e.x[j].get_mpq_t());
+  }
+  return out;
+}
+
+std::size_t exact_geometry::points_memory() const {
+  std::size_t chunks = 0;
+  for (const auto& c : chunks_) chunks += c ? 1 : 0;
+  return chunks * chunk_size * sizeof(point) + chunks_.size() * sizeof(chunks_[0]);
+}
+
+}  // namespace exbsp

@@ -1,0 +1,130 @@
+// exbsp's own exact geometry (`--kernel exact`): the same tree and order as gmpq and epeck,
+// at close to double speed.
+//
+// Notation: a point is an input vertex (exact double coordinates) or SEG(p, q, P), the point
+// where the plane P of an input triangle meets the segment between points p and q (which
+// lie strictly on opposite sides of P). Points live in one table shared by all fragments; a
+// fragment is three point ids, its source triangle and its face id (20 bytes). Each point
+// caches a double centre c and a certified radius r: the exact point lies within r of c in
+// the max norm (r = 0 for input vertices). Side of point x against plane Q, in order:
+//   1. filter: the double orientation of c with an error bound that covers r (fast_sign);
+//   2. structure: x = SEG(p, q, Q) lies on Q; otherwise, when p and q are not strictly on
+//      opposite sides of Q, x (strictly between them) takes their sign (both 0: 0) — the
+//      structural zeros (a split point on an edge that Q contains) cost no arithmetic;
+//   3. exact: the point's exact rational value (GMP, computed once and memoised, iteratively
+//      over the points it depends on) against Q's exact plane.
+// Rational "p/q" strings and correctly rounded doubles are produced once per point, at output.
+// Hand-written rather than a CGAL kernel because no CGAL kernel offers (2): the structure of
+// the construction is what makes most exact answers free.
+#pragma once
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <unordered_map>
+#include <vector>
+
+#include "bsp/engine.h"
+#include "bsp/fast_orientation.h"
+#include "bsp/split_pattern.h"
+
+namespace exbsp {
+
+class exact_geometry {
+public:
+  static constexpr kernel_id id = kernel_id::exact;
+  static constexpr bool exact = true;
+  static constexpr std::uint32_t none = ~0u;
+
+  struct fragment {
+    std::array<std::uint32_t, 3> v;  ///< point ids
+    std::uint32_t source;
+    std::uint32_t face;
+  };
+  /// A run of point ids owned by one subtree builder (ids are claimed in blocks, so builders
+  /// on other threads never touch the same slots), and the split points made at the current
+  /// node, for sharing: the point SEG(p, q, P) of two neighbouring fragments is made once.
+  struct scratch {
+    std::uint32_t next = 0, end = 0;
+    std::uint32_t plane = none;
+    std::unordered_map<std::uint64_t, std::uint32_t> made;
+  };
+
+  explicit exact_geometry(const triangle_soup& soup);
+  ~exact_geometry();
+  exact_geometry(const exact_geometry&) = delete;
+  exact_geometry& operator=(const exact_geometry&) = delete;
+
+  bool add_source(const triangle_soup& soup, std::uint32_t i, fragment& out);
+
+  int sign(std::uint32_t plane, const fragment& f, int k) const {
+    int budget = 32;
+    return point_sign(plane, f.v[k], budget);
+  }
+  void split(std::uint32_t plane, const fragment& f, const split_pattern& pat, std::array<fragment, 3>& out,
+             scratch& sc);
+
+  int side_of_eye(std::uint32_t plane, const vec3d& eye) const;
+  int side_of_direction(std::uint32_t plane, const vec3d& d) const;
+
+  /// Computes the correctly rounded doubles of the fragments' points (once; thread-safe).
+  /// Precondition of to_double.
+  void prepare_output(const std::vector<fragment>& fragments) const;
+  fragment_d to_double(const fragment& f) const;
+  exact_triangle to_exact(const fragment& f) const;
+  /// Bytes held by the point table (for the memory benchmark).
+  std::size_t points_memory() const;
+
+  /// Counters of how side tests of constructed points were answered (for tests and bench).
+  struct counters {
+    std::atomic<std::uint64_t> filter{0}, on_own_plane{0}, structural{0}, exact{0};
+  };
+  const counters& stats() const { return counters_; }
+
+private:
+  struct exact_value;
+  struct exact_plane;
+  struct point {
+    vec3d c{};
+    double r = 0;
+    std::uint32_t p = none, q = none, plane = none;  ///< SEG(p, q, plane); none: input vertex
+    mutable std::atomic<const exact_value*> exact{nullptr};
+  };
+  static constexpr unsigned chunk_bits = 15;
+  static constexpr unsigned max_point_bits = 28;  ///< 2^28 points (15 GB of them) at most
+  static constexpr std::uint32_t chunk_size = 1u << chunk_bits;
+  static constexpr std::uint32_t block = 512;
+
+  const point& at(std::uint32_t id) const { return chunks_[id >> chunk_bits][id & (chunk_size - 1)]; }
+  point& at(std::uint32_t id) { return chunks_[id >> chunk_bits][id & (chunk_size - 1)]; }
+  std::uint32_t allocate(scratch& sc);
+  void claim_block(scratch& sc);
+
+  int point_sign(std::uint32_t plane, std::uint32_t x, int& budget) const {
+    const point& pt = at(x);
+    const int s = fast_sign(fast_[plane], pt.c, pt.r);
+    if (s != 2) {
+      return s;
+    }
+    return point_sign_slow(plane, x, budget);
+  }
+  int point_sign_slow(std::uint32_t plane, std::uint32_t x, int& budget) const;
+  int exact_sign(std::uint32_t plane, std::uint32_t x) const;
+  const exact_value& exact_of(std::uint32_t x) const;
+  const exact_plane& plane_of(std::uint32_t plane) const;
+  std::uint32_t construct(std::uint32_t plane, std::uint32_t p, std::uint32_t q, scratch& sc);
+
+  std::vector<std::array<std::uint32_t, 3>> sources_;  ///< input vertex ids (= point ids)
+  std::vector<fast_plane> fast_;
+  mutable std::vector<std::atomic<const exact_plane*>> exact_planes_;
+  std::vector<std::unique_ptr<point[]>> chunks_;  ///< sized once: never reallocated
+  std::mutex claim_mutex_;
+  std::uint32_t claimed_ = 0;  ///< ids below this are claimed (guarded by claim_mutex_)
+  std::uint32_t inputs_ = 0;
+  mutable std::once_flag output_once_;
+  mutable std::vector<vec3d> rounded_;  ///< correctly rounded doubles per point, after prepare_output
+  mutable counters counters_;
+};
+
+}  // namespace exbsp

@@ -1,0 +1,110 @@
+// Segment clipping in clip space: Liang–Barsky and Cohen–Sutherland (notation in
+// homogeneous_segment.h).
+#include "clip/homogeneous_segment.h"
+
+#include <cmath>
+
+#include "clip/homogeneous.h"
+
+namespace exbsp::clip {
+
+namespace {
+
+/// d_k(p) for the six planes, in the order of homogeneous_segment.h.
+double plane_distance(int k, const vec4& p) {
+  switch (k) {
+    case 0: return p[3] + p[0];
+    case 1: return p[3] - p[0];
+    case 2: return p[3] + p[1];
+    case 3: return p[3] - p[1];
+    case 4: return p[3] + p[2];
+    default: return p[3] - p[2];
+  }
+}
+
+/// Puts p exactly on plane k (the coordinate the plane constrains becomes +-w).
+void snap_to_plane(int k, vec4& p) {
+  const std::size_t axis = static_cast<std::size_t>(k / 2);
+  p[axis] = k % 2 == 0 ? -p[3] : p[3];
+}
+
+vec4 lerp(const vec4& a, const vec4& b, double t) {
+  return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2]), a[3] + t * (b[3] - a[3])};
+}
+
+bool finite(const vec4& p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) && std::isfinite(p[3]); }
+
+}  // namespace
+
+bool homogeneous_liang_barsky(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b, double* t0_out,
+                              double* t1_out) {
+  if (!finite(a) || !finite(b)) return false;
+  double t0 = 0, t1 = 1;
+  int enter_plane = -1, leave_plane = -1;
+  for (int k = 0; k < 6; ++k) {
+    const double da = plane_distance(k, a), db = plane_distance(k, b);
+    if (da < 0 && db < 0) return false;
+    if (da < 0) {  // enters through plane k
+      const double t = da / (da - db);
+      if (t > t0) {
+        t0 = t;
+        enter_plane = k;
+      }
+    } else if (db < 0) {  // leaves through plane k
+      const double t = da / (da - db);
+      if (t < t1) {
+        t1 = t;
+        leave_plane = k;
+      }
+    }
+  }
+  if (t0 > t1) return false;
+  out_a = enter_plane < 0 ? a : lerp(a, b, t0);
+  out_b = leave_plane < 0 ? b : lerp(a, b, t1);
+  if (enter_plane >= 0) snap_to_plane(enter_plane, out_a);
+  if (leave_plane >= 0) snap_to_plane(leave_plane, out_b);
+  if (t0_out) *t0_out = t0;
+  if (t1_out) *t1_out = t1;
+  return true;
+}
+
+bool homogeneous_cohen_sutherland(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b, double* t0_out,
+                                  double* t1_out) {
+  if (!finite(a) || !finite(b)) return false;
+  double t0 = 0, t1 = 1;
+  int enter_plane = -1, leave_plane = -1;
+  vec4 pa = a, pb = b;
+  for (int moves = 0; moves < 12; ++moves) {
+    const unsigned ca = homogeneous_outcode(pa), cb = homogeneous_outcode(pb);
+    if ((ca | cb) == 0) break;
+    if ((ca & cb) != 0) return false;
+    const bool move_a = ca != 0;
+    const unsigned code = move_a ? ca : cb;
+    int k = 0;
+    while (!((code >> k) & 1u)) ++k;
+    const double da = plane_distance(k, a), db = plane_distance(k, b);
+    if (!(da != db)) return false;  // parallel to the plane and outside it: rounding noise only
+    const double t = da / (da - db);
+    if (move_a) {
+      if (t > t0) t0 = t;
+      enter_plane = k;
+      pa = lerp(a, b, t0);
+      snap_to_plane(k, pa);
+    } else {
+      if (t < t1) t1 = t;
+      leave_plane = k;
+      pb = lerp(a, b, t1);
+      snap_to_plane(k, pb);
+    }
+    if (t0 > t1) return false;
+  }
+  // After 12 moves only rounding can leave a bit set (each move snaps its end onto a plane).
+  if ((homogeneous_outcode(pa) & homogeneous_outcode(pb)) != 0) return false;
+  if (t0_out) *t0_out = t0;
+  if (t1_out) *t1_out = t1;
+  out_a = enter_plane < 0 ? a : pa;
+  out_b = leave_plane < 0 ? b : pb;
+  return true;
+}
+
+}  // namespace exbsp::clip

@@ -1,0 +1,36 @@
+// Parts of the scene parser kept out of scene.cpp (notation in scene.h; internal to
+// src/scene): the modelling hierarchy ("meshes", "groups", "transforms"), the camera forms,
+// "viewport"/"image"/"aspect", "lines" and "trackball". Each throws scene_error naming its key.
+#pragma once
+#include <string>
+
+#include "scene/json_reader.h"
+#include "scene/scene.h"
+
+namespace exbsp::scene::detail {
+
+/// "meshes" and "groups" (at least one of them present) into s.meshes, each with its matrix.
+void parse_mesh_tree(const reader& r, const json& doc, const std::string& path, scene& s);
+
+/// "camera" in any form into s.camera (and s.view_matrix / s.phigs / s.form). A phigs camera
+/// also fills s.projection; "camera" may be absent only for an ortho2d projection, which must
+/// then be parsed first (needs_camera false).
+void parse_any_camera(const reader& r, const json& doc, scene& s);
+
+/// True when "projection" is {"type": "ortho2d", ...} (the camera is then optional).
+bool is_ortho2d(const json& doc);
+
+/// "viewport" (width, height, x, y), "image" and "aspect".
+void parse_viewport_and_image(const reader& r, const json& doc, scene& s);
+
+/// v.vp (the viewport, letterboxed for aspect "fit") and where it lies in the image
+/// (v.image_width, v.image_height, v.place_x, v.place_y).
+void place_viewport(const scene& s, view::view_setup& v);
+
+/// "lines" appended to s.curves as polylines.
+void parse_lines(const reader& r, const json& doc, scene& s);
+
+/// "trackball": "arcball" | "virtual".
+void parse_trackball(const reader& r, const json& doc, scene& s);
+
+}  // namespace exbsp::scene::detail

@@ -1,0 +1,21 @@
+// The "place" stage: the viewport's picture inside a larger image (glViewport x, y inside the
+// window; DESIGN.md section 5 "image", and the letterbox bars of aspect "fit").
+//
+// Notation: window coordinates as viewport.h (y up, origin at the image's lower-left corner);
+// the viewport's picture has its lower-left corner at (place_x, place_y) of the image
+// (view_setup). PNG: the image is the background colour with the picture copied in; image row
+// r = image_height - 1 - j. SVG: an outer <svg> of the image's size with a background
+// rectangle, the viewport's document nested as an <svg> at x = place_x, y = image_height -
+// place_y - viewport height (SVG's y points down).
+#pragma once
+#include <string>
+
+#include "view/pipeline.h"
+
+namespace exbsp::view {
+
+/// Composes f.picture (PNG) or f.svg (SVG, when not empty) into the image of f.view.
+/// Precondition: the viewport lies inside the image. Returns a note for the verbose log.
+std::string place_stage(frame& f);
+
+}  // namespace exbsp::view

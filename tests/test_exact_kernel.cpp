@@ -1,0 +1,285 @@
+// exbsp's own exact kernel (`exact`, geometry_exact.h): its three ways of answering a side
+// test each on points built to sit exactly on a plane and one ulp off it, and the contract
+// that it gives the same tree and byte-identical orders as gmpq and epeck (DESIGN.md section 3)
+// on every generator of the property suite and on the CGAL corpus.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <set>
+
+#include "bsp/geometry_exact.h"
+#include "generators.h"
+
+namespace {
+
+using namespace exbsp_test;
+using exbsp::exact_geometry;
+using exbsp::vec3d;
+
+/// A soup of the given triangles, one face each.
+exbsp::triangle_soup soup_of(const std::vector<std::array<vec3d, 3>>& tris) {
+  exbsp::triangle_soup s;
+  for (const auto& t : tris) s.add_triangle(t[0], t[1], t[2]);
+  return s;
+}
+
+/// The geometry of `soup` with every triangle added as a source; fragments[i] for triangle i.
+struct geometry_fixture {
+  explicit geometry_fixture(const exbsp::triangle_soup& s) : soup(s), geom(soup) {
+    for (std::uint32_t i = 0; i < soup.triangles.size(); ++i) {
+      exact_geometry::fragment f{};
+      EXPECT_TRUE(geom.add_source(soup, i, f));
+      fragments.push_back(f);
+    }
+  }
+  /// Splits fragment `f` by the plane of source `plane` (it must straddle it).
+  std::vector<exact_geometry::fragment> split(const exact_geometry::fragment& f, std::uint32_t plane) {
+    const std::array<int, 3> s{geom.sign(plane, f, 0), geom.sign(plane, f, 1), geom.sign(plane, f, 2)};
+    EXPECT_EQ(exbsp::classify_signs(s), exbsp::classification::straddling);
+    const exbsp::split_pattern pat = exbsp::make_split_pattern(s);
+    std::array<exact_geometry::fragment, 3> out;
+    geom.split(plane, f, pat, out, scratch);
+    return {out.begin(), out.begin() + pat.pieces};
+  }
+  exbsp::triangle_soup soup;
+  exact_geometry geom;
+  exact_geometry::scratch scratch;
+  std::vector<exact_geometry::fragment> fragments;
+};
+
+/// Sign of orientation(plane triangle, point) computed with Gmpq from exact strings.
+int reference_sign(const std::array<vec3d, 3>& plane, const std::array<std::string, 3>& point) {
+  using GK = exbsp::gmpq_kernel;
+  const auto P = [](const vec3d& v) { return GK::Point_3(v[0], v[1], v[2]); };
+  const GK::Point_3 x{CGAL::Gmpq(point[0]), CGAL::Gmpq(point[1]), CGAL::Gmpq(point[2])};
+  return static_cast<int>(CGAL::orientation(P(plane[0]), P(plane[1]), P(plane[2]), x));
+}
+
+// Triangle 0 (z = 0) is the fragment; triangle 1 (x = 1/4) splits it at (1/4, -1, 0) on edge
+// [v0, v1] and at (1/4, 1/2, 0) on edge [v1, v2]; triangle 2 contains the edge
+// [v1, v2] = [(1,-1,0), (0,1,0)] of triangle 0 but is tilted out of z = 0.
+const std::array<vec3d, 3> fragment_triangle{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}};
+const std::array<vec3d, 3> cutter{{{0.25, -5, -5}, {0.25, 5, -5}, {0.25, 0, 5}}};
+const std::array<vec3d, 3> through_edge{{{1, -1, 0}, {0, 1, 0}, {1, -1, 3}}};
+
+/// The plane y = y0 (normal +y).
+std::array<vec3d, 3> plane_y(double y0) { return {{{-5, y0, 5}, {5, y0, 5}, {0, y0, -5}}}; }
+
+TEST(exact_kernel, a_split_point_on_its_own_plane_is_zero_without_arithmetic) {
+  geometry_fixture g(soup_of({fragment_triangle, cutter}));
+  const auto pieces = g.split(g.fragments[0], 1);
+  int zeros = 0;
+  for (const auto& p : pieces)
+    for (int k = 0; k < 3; ++k) zeros += g.geom.sign(1, p, k) == 0;
+  EXPECT_EQ(zeros, 5);  // A in three pieces, B in two
+  EXPECT_EQ(g.geom.stats().exact.load(), 0u);
+  EXPECT_GT(g.geom.stats().on_own_plane.load(), 0u);
+}
+
+TEST(exact_kernel, structural_zero_a_split_point_on_an_edge_the_plane_contains) {
+  geometry_fixture g(soup_of({fragment_triangle, cutter, through_edge}));
+  const auto pieces = g.split(g.fragments[0], 1);
+  // The split point on the edge [(0,1,0), (-1,-1,0)] lies in plane 2: zero, and the answer came
+  // from the endpoints' signs (both 0), not from arithmetic.
+  int zeros = 0;
+  for (const auto& p : pieces)
+    for (int k = 0; k < 3; ++k) {
+      const int s = g.geom.sign(2, p, k);
+      const auto exact = g.geom.to_exact(p)[static_cast<std::size_t>(k)];
+      EXPECT_EQ(s, reference_sign(through_edge, exact));
+      zeros += s == 0;
+    }
+  EXPECT_GT(zeros, 0);
+  EXPECT_GT(g.geom.stats().structural.load(), 0u);
+  EXPECT_EQ(g.geom.stats().exact.load(), 0u);
+}
+
+TEST(exact_kernel, on_and_one_ulp_off_a_crossing_plane_the_exact_fallback_decides) {
+  // The plane y = 1/2 crosses edge [v1, v2] exactly at the split point (1/4, 1/2, 0): the
+  // endpoints are strictly on opposite sides, the centre is within its radius of the plane,
+  // so only exact arithmetic can say 0. One ulp above or below, it must say -1 or +1.
+  for (const double y0 : {0.5, std::nextafter(0.5, 1.0), std::nextafter(0.5, 0.0)}) {
+    const auto plane = plane_y(y0);
+    geometry_fixture g(soup_of({fragment_triangle, cutter, plane}));
+    const auto pieces = g.split(g.fragments[0], 1);
+    int checked = 0;
+    for (const auto& p : pieces)
+      for (int k = 0; k < 3; ++k) {
+        const auto exact = g.geom.to_exact(p)[static_cast<std::size_t>(k)];
+        if (exact[1] != "1/2") continue;  // the split point on [v1, v2]
+        const int s = g.geom.sign(2, p, k);
+        EXPECT_EQ(s, reference_sign(plane, exact)) << y0;
+        EXPECT_EQ(s, y0 == 0.5 ? 0 : (y0 > 0.5 ? -1 : 1)) << y0;
+        ++checked;
+      }
+    EXPECT_GT(checked, 0);
+    EXPECT_GT(g.geom.stats().exact.load(), 0u) << y0;
+  }
+}
+
+TEST(exact_kernel, the_filter_answers_far_planes_without_fallback) {
+  const std::array<vec3d, 3> far{{{-9, -9, 7}, {9, -9, 7}, {0, 9, 7}}};
+  geometry_fixture g(soup_of({fragment_triangle, cutter, far}));
+  const auto pieces = g.split(g.fragments[0], 1);
+  for (const auto& p : pieces)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(g.geom.sign(2, p, k), -1);
+  EXPECT_EQ(g.geom.stats().structural.load(), 0u);
+  EXPECT_EQ(g.geom.stats().exact.load(), 0u);
+}
+
+TEST(exact_kernel, one_ulp_off_an_edge_the_sign_still_follows_from_the_endpoints) {
+  // Plane 2 through v2 = (0,1,0) but one ulp off v1: the split point on [v1, v2] is off it
+  // by about an ulp; v2 on the plane and v1 off it decide the sign with no arithmetic.
+  std::array<vec3d, 3> off = through_edge;
+  off[0][0] = std::nextafter(1.0, 2.0);
+  off[2][0] = std::nextafter(1.0, 2.0);
+  geometry_fixture g(soup_of({fragment_triangle, cutter, off}));
+  const auto pieces = g.split(g.fragments[0], 1);
+  int nonzero = 0;
+  for (const auto& p : pieces)
+    for (int k = 0; k < 3; ++k) {
+      const int s = g.geom.sign(2, p, k);
+      EXPECT_EQ(s, reference_sign(off, g.geom.to_exact(p)[static_cast<std::size_t>(k)]));
+      nonzero += s != 0;
+    }
+  EXPECT_GT(nonzero, 0);
+  EXPECT_EQ(g.geom.stats().exact.load(), 0u);
+}
+
+TEST(exact_kernel, shared_split_points_are_made_once) {
+  // Two triangles sharing the edge [(0,-1,0), (0,1,0)] crossed by the plane y = 0.
+  // Vertex ids are shared, as in a mesh file.
+  exbsp::triangle_soup s;
+  s.vertices = {{0, -1, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 0.5, 0}, {-5, 0, -5}, {5, 0, -5}, {0, 0, 5}};
+  s.add_polygon({0, 1, 2}, 0);
+  s.add_polygon({1, 0, 3}, 1);
+  s.add_polygon({4, 5, 6}, 2);
+  geometry_fixture g(s);
+  const auto a = g.split(g.fragments[0], 2);
+  const auto b = g.split(g.fragments[1], 2);
+  std::set<std::uint32_t> ids_a, ids_b;
+  for (const auto& f : a) ids_a.insert(f.v.begin(), f.v.end());
+  for (const auto& f : b) ids_b.insert(f.v.begin(), f.v.end());
+  std::vector<std::uint32_t> common;
+  std::set_intersection(ids_a.begin(), ids_a.end(), ids_b.begin(), ids_b.end(), std::back_inserter(common));
+  EXPECT_EQ(common.size(), 3u);  // the two shared vertices and the one shared split point
+}
+
+// --- exact = gmpq = epeck --------------------------------------------------------------------
+
+/// Everything a user can observe of a tree, as one string: stats (no timings), exact and
+/// double coordinates, ancestors, and orders for several eyes and directions.
+std::string observable(const exbsp::bsp& t, const std::vector<vec3d>& eyes) {
+  const auto& s = t.stats();
+  std::string out = std::to_string(s.input_triangles) + " " + std::to_string(s.degenerate_input) + " " +
+                    std::to_string(s.fragments) + " " + std::to_string(s.splits) + " " + std::to_string(s.nodes) +
+                    " " + std::to_string(s.depth) + " " + s.heuristic + "\n";
+  char buf[64];
+  for (std::size_t i = 0; i < t.fragment_count(); ++i) {
+    const auto d = t.fragment(i);
+    out += std::to_string(d.face);
+    for (const auto& p : t.fragment_exact(i))
+      for (const auto& x : p) out += " " + x;
+    for (const auto& p : d.v)
+      for (double x : p) {
+        std::snprintf(buf, sizeof buf, " %.17g", x);
+        out += buf;
+      }
+    for (const auto& a : t.ancestors(i)) out += " " + std::to_string(a.plane_face) + (a.side > 0 ? "+" : "-");
+    out += "\n";
+  }
+  for (const vec3d& e : eyes) {
+    out += "eye:";
+    for (const auto i : t.order_from_eye(e)) out += std::to_string(i) + ",";
+    out += "\n";
+    if (e == vec3d{0, 0, 0}) continue;
+    out += "direction:";
+    for (const auto i : t.order_for_direction(e)) out += std::to_string(i) + ",";
+    out += "\n";
+  }
+  return out;
+}
+
+/// Eyes for a soup: fixed far points, and input vertices (eyes exactly on node planes).
+std::vector<vec3d> eyes_for(const exbsp::triangle_soup& soup) {
+  std::vector<vec3d> eyes{{0.3, -7, 11}, {-5, 2, -3}, {1, 1, 1}};
+  for (std::size_t i = 0; i < soup.vertices.size() && i < 9; i += 4) eyes.push_back(soup.vertices[i]);
+  return eyes;
+}
+
+void expect_exact_equals(exbsp::kernel_id other, const exbsp::triangle_soup& soup, const std::string& h,
+                         std::uint64_t seed, const std::string& what) {
+  exbsp::build_options a, b;
+  a.heuristic = b.heuristic = h;
+  a.seed = b.seed = seed;
+  a.kernel = exbsp::kernel_id::exact;
+  b.kernel = other;
+  const auto eyes = eyes_for(soup);
+  const std::string x = observable(exbsp::bsp::build(soup, a), eyes);
+  const std::string y = observable(exbsp::bsp::build(soup, b), eyes);
+  if (x == y) return;
+  // Report the first line that differs, not megabytes of both.
+  std::size_t line = 0, at = 0;
+  while (at < x.size() && at < y.size() && x[at] == y[at]) line += x[at++] == '\n';
+  const auto line_of = [&](const std::string& s) {
+    const std::size_t begin = s.rfind('\n', at == 0 ? 0 : at - 1);
+    const std::size_t from = begin == std::string::npos ? 0 : begin + 1;
+    return s.substr(from, std::min<std::size_t>(400, s.find('\n', from) - from));
+  };
+  const std::string message = what + " / exact vs " + exbsp::to_string(other) + " / " + h + ": line " +
+                              std::to_string(line) + "\n exact: " + line_of(x) + "\n other: " + line_of(y);
+  ADD_FAILURE() << message;
+  RC_FAIL(message);
+}
+
+RC_GTEST_PROP(exact_kernel, equals_gmpq_and_epeck_on_every_generator_and_heuristic, ()) {
+  const soup_case c = *rc::gen::oneOf(any_small_soup(), coplanar_stack(), vertex_on_plane(), near_coplanar(),
+                                      scale_disparity(), slivers(), mesh_like(), cyclic_sticks());
+  const exbsp::triangle_soup soup = c.soup();
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  for (const std::string& h : exbsp::heuristic_names()) {
+    expect_exact_equals(exbsp::kernel_id::gmpq, soup, h, seed, c.kind);
+    expect_exact_equals(exbsp::kernel_id::epeck, soup, h, seed, c.kind);
+  }
+}
+
+RC_GTEST_PROP(exact_kernel, equals_epeck_on_cad_subsets, ()) {
+  const auto files = present_cad_meshes();
+  RC_PRE(!files.empty());
+  const soup_case c = *cad_subset(files, 150);
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  expect_exact_equals(exbsp::kernel_id::epeck, c.soup(), *rc::gen::elementOf(exbsp::heuristic_names()), seed,
+                      c.kind);
+}
+
+TEST(exact_kernel, equals_epeck_and_gmpq_on_corpus_meshes) {
+  // Every small corpus mesh against gmpq, larger ones against epeck (gmpq takes minutes).
+  std::size_t checked = 0;
+  for (const char* name : {"cube.off", "tetrahedron.off", "cross.off", "pyramid.off", "joint.off", "elephant.off",
+                           "fandisk.off", "cheese.off", "blade.off"}) {
+    const soup_case* mesh = cad_mesh(name);
+    if (!mesh) continue;
+    const exbsp::triangle_soup soup = mesh->soup();
+    if (soup.triangles.size() <= 3000) expect_exact_equals(exbsp::kernel_id::gmpq, soup, "sampled", 0, name);
+    expect_exact_equals(exbsp::kernel_id::epeck, soup, "sampled", 0, name);
+    ++checked;
+  }
+  if (checked == 0) GTEST_SKIP() << "CGAL corpus missing (run scripts/setup)";
+}
+
+TEST(exact_kernel, is_the_default_and_identical_for_1_and_2_threads) {
+  EXPECT_EQ(exbsp::build_options{}.kernel, exbsp::kernel_id::exact);
+  const soup_case* mesh = cad_mesh("fandisk.off");
+  if (!mesh) GTEST_SKIP() << "CGAL corpus missing (run scripts/setup)";
+  exbsp::build_options o;
+  o.threads = 1;
+  const auto eyes = eyes_for(mesh->soup());
+  const std::string one = observable(exbsp::bsp::build(mesh->soup(), o), eyes);
+  o.threads = 2;
+  EXPECT_EQ(one, observable(exbsp::bsp::build(mesh->soup(), o), eyes));
+}
+
+}  // namespace
