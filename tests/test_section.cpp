@@ -26,6 +26,7 @@
 #include <sstream>
 
 #include "bsp/exact_output.h"
+#include "cli_fixture.h"
 #include "clip/exact_triangle_clip.h"
 #include "clip/section.h"
 #include "mesh/errors.h"
@@ -534,43 +535,16 @@ INSTANTIATE_TEST_SUITE_P(meshes, corpus,
 
 // --- the command line ----------------------------------------------------------------------
 
-struct run_result {
-  int status;
-  std::string out, err;
-};
+using exbsp_test::run_result;
+using exbsp_test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class section_cli : public testing::Test {
+class section_cli : public exbsp_test::cli_fixture {
 protected:
   void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "exbsp_section_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir = tmpl;
-    std::ofstream(dir / "cube.off") << "OFF\n8 6 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
-                                       "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n";
+    cli_fixture::SetUp();
+    write("cube.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
+                      "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n");
   }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
-  run_result run(const std::string& args) {
-    const std::string cmd = "cd '" + dir.string() + "' && '" + EXBSP_CLI + "' " + args + " >.out 2>.err </dev/null";
-    const int raw = std::system(cmd.c_str());
-    run_result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / ".out"), slurp(dir / ".err")};
-    fs::remove(dir / ".out");
-    fs::remove(dir / ".err");
-    return r;
-  }
-  std::size_t file_count() const {
-    return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
-  }
-  fs::path dir;
 };
 
 TEST_F(section_cli, json_has_kept_outline_and_cap_with_exact_rationals) {
