@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli_fixture.h"
 #include "clip/convex_region.h"
 #include "clip/sutherland_hodgman.h"
 #include "mesh/errors.h"
@@ -266,40 +267,10 @@ TEST(ClipInput, ConcavePolygonReportsPieces) {
 
 // --- exbsp clip: the command line -------------------------------------------------------------
 
-struct run_result {
-  int status;
-  std::string out, err;
-};
+using exbsp_test::run_result;
+using exbsp_test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class clip_cli : public ::testing::Test {
-protected:
-  void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "exbsp_clip_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir = tmpl;
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
-  run_result run(const std::string& args) {
-    const std::string cmd = "cd '" + dir.string() + "' && '" + EXBSP_CLI + "' " + args + " >.out 2>.err </dev/null";
-    const int raw = std::system(cmd.c_str());
-    run_result r{raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / ".out"), slurp(dir / ".err")};
-    fs::remove(dir / ".out");
-    fs::remove(dir / ".err");
-    return r;
-  }
-  void write(const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; }
-  fs::path dir;
-};
+class clip_cli : public exbsp_test::cli_fixture {};
 
 TEST_F(clip_cli, JsonSvgAndVerbose) {
   write("in.json", R"({"region": {"rect": [0, 0, 4, 2]}, "segments": [[[-1, 1], [5, 1]]],

@@ -9,8 +9,10 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -19,6 +21,7 @@
 
 #include "bsp/engine.h"
 #include "mesh/atomic_file.h"
+#include "clip/section.h"
 #include "mesh/errors.h"
 #include "mesh/gmp_memory.h"
 #include "mesh/mesh_io.h"
@@ -47,6 +50,23 @@ vec3d parse_triple(const std::string& text, const std::string& option) {
   }
   if (p != end) throw exbsp::usage_error(option + " expects exactly three numbers, got '" + text + "'");
   return v;
+}
+
+/// Parses "A,B,C,D" into four finite doubles; throws usage_error naming --plane otherwise.
+exbsp::section_plane parse_plane(const std::string& text) {
+  exbsp::section_plane p{};
+  const char* s = text.data();
+  const char* end = text.data() + text.size();
+  for (int k = 0; k < 4; ++k) {
+    const auto r = std::from_chars(s, end, p[k]);
+    if (r.ec != std::errc() || !std::isfinite(p[k]) || (k < 3 && (r.ptr == end || *r.ptr != ',')) ||
+        (k == 3 && r.ptr != end))
+      throw exbsp::usage_error("--plane expects four finite numbers A,B,C,D (the plane A*x+B*y+C*z+D = 0), got '" +
+                               text + "'");
+    s = r.ptr + (k < 3 ? 1 : 0);
+  }
+  exbsp::check_section_plane(p, "--plane");
+  return p;
 }
 
 std::string format_double(double x) {
@@ -279,6 +299,28 @@ int run_order(const build_cli& o, const std::string& eye, const std::string& dir
   return 0;
 }
 
+/// `exbsp section`: JSON (default, to standard output), OFF or SVG by the output's extension.
+int run_section(const std::string& mesh, const std::string& plane_text, const std::string& out_path) {
+  const exbsp::section_plane plane = parse_plane(plane_text);
+  const auto ends_with = [&](const char* ext) {
+    const std::size_t n = std::strlen(ext);
+    return out_path.size() >= n && out_path.compare(out_path.size() - n, n, ext) == 0;
+  };
+  const bool off = ends_with(".off"), svg = ends_with(".svg");
+  if (!out_path.empty() && !off && !svg && !ends_with(".json"))
+    throw exbsp::usage_error("-o/--output: section writes .json, .off or .svg, not '" + out_path + "'");
+  const exbsp::triangle_soup soup = exbsp::read_mesh(mesh);
+  exbsp::section_options options;
+  options.exact_text = !off && !svg;
+  const exbsp::section_result r = exbsp::section(soup, plane, options);
+  const std::string text = off ? exbsp::section_off(r) : svg ? exbsp::section_svg(r) : exbsp::section_json(r);
+  if (out_path.empty())
+    std::cout << text;
+  else
+    write_atomically(out_path, text);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -337,6 +379,17 @@ int main(int argc, char** argv) {
   render->add_option("--frames", orbit_frames,
                      "number of orbit frames (the drag path resampled evenly; default: one per point)");
 
+  std::string section_mesh, section_plane_text, section_out;
+  auto* section = app.add_subcommand(
+      "section", "cut MESH exactly by a plane: kept part, outline loops and (closed meshes) the cap");
+  section->add_option("MESH", section_mesh, "mesh file: .off, .obj, .ply or .stl")->required();
+  section->add_option("--plane", section_plane_text,
+                      "A,B,C,D: the plane A*x+B*y+C*z+D = 0; the side where it is >= 0 is kept")
+      ->required();
+  section->add_option("-o,--output", section_out,
+                      "OUT.json (kept, outline, cap with exact rationals; default: standard output), "
+                      "OUT.off (kept and cap as one mesh) or OUT.svg (the outline in the cut plane)");
+
   std::string clip_in, clip_out, clip_algorithm;
   bool clip_verbose = false;
   auto* clip = app.add_subcommand(
@@ -369,6 +422,7 @@ int main(int argc, char** argv) {
         throw exbsp::usage_error("order needs --eye X,Y,Z or --direction X,Y,Z");
       return run_order(order_opts, eye, direction, order_out);
     }
+    if (*section) return run_section(section_mesh, section_plane_text, section_out);
     if (*clip) {
       exbsp::scene::clip_command(clip_in, clip_out, clip_algorithm, clip_verbose, std::cout, std::cerr);
       return 0;

@@ -9,6 +9,7 @@
 #include <limits>
 #include <sstream>
 
+#include "clip/section.h"
 #include "mesh/errors.h"
 #include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"
@@ -279,13 +280,38 @@ void parse_vector(const reader& r, const json& doc, scene& s) {
   }
 }
 
+/// "clip_planes" and "caps" (notation in scene.h).
+void parse_clip_planes(const reader& r, const json& doc, scene& s) {
+  if (const json* c = r.optional(doc, "clip_planes")) {
+    if (!c->is_array()) r.fail("/clip_planes", std::string("must be an array of [A, B, C, D] (got ") + c->type_name() + ")");
+    if (c->size() > max_clip_planes)
+      r.fail("/clip_planes", "at most " + std::to_string(max_clip_planes) + " planes (got " + std::to_string(c->size()) + ")");
+    for (std::size_t i = 0; i < c->size(); ++i) {
+      const std::string key = "/clip_planes/" + std::to_string(i);
+      const json& p = (*c)[i];
+      if (!p.is_array() || p.size() != 4) r.fail(key, "must be an array of 4 numbers [A, B, C, D] (A*x+B*y+C*z+D >= 0 is kept)");
+      std::array<double, 4> plane{};
+      for (int k = 0; k < 4; ++k) plane[k] = r.number(p[k], key + "/" + std::to_string(k));
+      if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0) r.fail(key, "the normal (A, B, C) must not be zero");
+      s.clip_planes.push_back(plane);
+    }
+  }
+  if (const json* caps = r.optional(doc, "caps")) {
+    r.object(*caps, "/caps");
+    r.warn_unknown(*caps, "/caps", {"color"});
+    s.caps = true;
+    if (const json* col = r.optional(*caps, "color")) s.cap_color = r.color(*col, "/caps/color");
+    if (s.clip_planes.empty()) r.warn("/caps", "has no effect without /clip_planes");
+  }
+}
+
 }  // namespace
 
 scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings, bool strict) {
   const reader r(path, warnings, strict);
   if (!doc.is_object()) r.fail("", std::string("the scene must be a JSON object (got ") + doc.type_name() + ")");
   r.warn_unknown(doc, "", {"meshes", "groups", "curves", "lines", "camera", "projection", "viewport", "image", "aspect",
-                           "background", "effects", "trackball", "svg"});
+                           "background", "effects", "trackball", "svg", "clip_planes", "caps"});
   scene s;
   s.path = path;
   detail::parse_mesh_tree(r, doc, path, s);
@@ -301,6 +327,7 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   if (const json* b = r.optional(doc, "background")) s.background = r.color(*b, "/background");
   parse_effects(r, doc, s);
   parse_vector(r, doc, s);
+  parse_clip_planes(r, doc, s);
   make_view_setup(s);  // reject cameras and projections whose matrices overflow, before any work
   return s;
 }
@@ -409,8 +436,11 @@ scene_geometry load_geometry(const scene& s) {
                               " is too large to view: its clip coordinates exceed " + number_text(max_clip) +
                               " (the largest double / 16; scale the mesh down)");
     }
+    const std::uint32_t first_face = g.soup.face_count, own_faces = part.face_count;
+    if (!s.clip_planes.empty()) part = clip_soup(part, s.clip_planes, s.caps);
     g.soup.append(part);
     g.face_colors.resize(g.soup.face_count, m.color);
+    for (std::uint32_t f = first_face + own_faces; f < g.soup.face_count; ++f) g.face_colors[f] = s.cap_color;
     g.face_offsets.push_back(g.soup.face_count);
   }
   return g;

@@ -45,6 +45,13 @@
 // max_curve_control_points finite control points (world space, no transform), colour default
 // black. Drawn as described in view/curves.h.
 //
+// Sections: "clip_planes": [[A,B,C,D], ...] (at most max_clip_planes; finite, (A,B,C) not zero;
+// world coordinates) keep A*x+B*y+C*z+D >= 0 of every mesh, cut exactly after its transform
+// and before the BSP (clip/section.h, clip_soup); "caps": {"color": [r,g,b]} (default
+// [200,60,50]) adds, for each closed mesh and each plane, the exact cap of the cut as one new
+// face of that mesh in the cap colour; caps of earlier planes are cut by later ones. The cut
+// pieces enter the BSP as the nearest doubles of their exact points, like every other input.
+//
 // Effects: "effects": {NAME: true | false | {PARAM: value, ...}}; NAME from
 // view::effect_catalog(); `true` or {} takes every default; an unknown NAME or PARAM, or a bad
 // value, is a scene_error naming /effects/NAME or /effects/NAME/PARAM. Parameters and defaults:
@@ -91,6 +98,9 @@ constexpr std::size_t max_line_points = 1u << 20;
 /// Largest accepted number of control points of one curve.
 /// (Flattening splits a curve with de Casteljau, O(degree^2) per split, up to 2^16 pieces.)
 constexpr std::size_t max_curve_control_points = 128;
+
+/// Largest number of "clip_planes" (glClipPlane's GL_MAX_CLIP_PLANES minimum).
+constexpr std::size_t max_clip_planes = 6;
 
 /// One entry of "meshes".
 struct mesh_spec {
@@ -145,6 +155,9 @@ struct scene {
   aspect_policy aspect = aspect_policy::stretch;
   std::string trackball = "arcball";      ///< "arcball" or "virtual" (orbit drags)
   view::vector_options vector;            ///< "svg": vector output options (SVG and PDF)
+  std::vector<std::array<double, 4>> clip_planes;  ///< "clip_planes" (A, B, C, D), keep >= 0
+  bool caps = false;                                ///< "caps" present: draw the cut faces
+  view::rgb8 cap_color{200, 60, 50};                ///< "caps": {"color"}
 };
 
 /// Validates a parsed JSON document. `path` names the file in messages and anchors relative
@@ -169,7 +182,8 @@ scene load_scene(const std::string& path, std::ostream* warnings = nullptr, bool
 /// Throws scene_error naming the key if the scene was not validated and is impossible.
 view::view_setup make_view_setup(const scene& s);
 
-/// All meshes of a scene, transformed to world space and appended into one soup.
+/// All meshes of a scene, transformed to world space, cut by the clip planes (with their caps
+/// as extra faces of each mesh) and appended into one soup.
 struct scene_geometry {
   triangle_soup soup;
   std::vector<view::rgb8> face_colors;       ///< colour by face id of `soup`

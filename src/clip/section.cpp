@@ -1,0 +1,685 @@
+// Exact sections (notation in section.h). One cut is three passes over an "exact mesh"
+// (Epeck points, triangles as point indices with face ids):
+//   1. signs and split: each triangle is classified by the exact signs of its points and
+//      split by the section 3 convention; a cut point is made once per crossing edge (keyed
+//      by its two point indices), so neighbouring pieces share it combinatorially;
+//   2. the points on the plane are merged by exact comparison (only non-conforming input
+//      makes two of them equal), then the in-plane edges of kept and removed pieces are
+//      counted: net use (u,v) - (v,u) in kept pieces, kept uses, removed uses;
+//   3. the outline edges are chained into loops and polylines, and for a closed input the
+//      cap is the constrained Delaunay triangulation (Epeck, Exact_intersections_tag) of the
+//      outline projected along the dominant axis of n, each face covered w times where w is
+//      the outline's winding number around it, found by an explicit-stack traversal from
+//      the infinite face (w changes by the net use of each constrained edge crossed).
+// The split is written here on point indices rather than calling clip::split_triangle on
+// points: the outline and the cap need to know which edge made each cut point (test_section
+// checks that the pieces equal split_triangle's exactly).
+#include "clip/section.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <unordered_map>
+
+#include "bsp/exact_output.h"
+#include "mesh/errors.h"
+
+namespace exbsp {
+
+namespace {
+
+using K = CGAL::Exact_predicates_exact_constructions_kernel;
+using point3 = K::Point_3;
+using point2 = K::Point_2;
+constexpr std::uint32_t no_point = std::numeric_limits<std::uint32_t>::max();
+
+// Epeck's exact number type is mpq_class or boost's gmp_rational depending on CGAL's
+// configuration (as in bsp/kernel_epeck.h, which this module must not depend on).
+inline mpq_srcptr mpq_of(const mpq_class& q) { return q.get_mpq_t(); }
+template <class Number>
+mpq_srcptr mpq_of(const Number& q) {
+  return q.backend().data();
+}
+
+struct tri {
+  std::array<std::uint32_t, 3> v;
+  std::uint32_t face;
+};
+
+/// Points (with the input double where a point is an input vertex) and triangles.
+struct exact_mesh {
+  std::vector<point3> pts;
+  std::vector<vec3d> input;  ///< the input double, NaN for constructed points
+  std::vector<tri> tris;
+  std::uint32_t add(const point3& p, const vec3d& d) {
+    pts.push_back(p);
+    input.push_back(d);
+    return static_cast<std::uint32_t>(pts.size() - 1);
+  }
+};
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; }
+
+struct vec3d_hash {
+  std::size_t operator()(const vec3d& v) const {
+    std::size_t h = 0;
+    for (double x : v) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      h = (h ^ bits) * 0x100000001b3ull + (h >> 29);
+    }
+    return h;
+  }
+};
+
+/// The soup as an exact mesh, vertices with equal coordinates merged (-0 equals +0).
+exact_mesh from_soup(const triangle_soup& soup) {
+  exact_mesh m;
+  std::unordered_map<vec3d, std::uint32_t, vec3d_hash> index;
+  std::vector<std::uint32_t> id(soup.vertices.size(), no_point);
+  m.tris.reserve(soup.triangles.size());
+  for (const soup_triangle& t : soup.triangles) {
+    tri out{{}, t.face};
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = t.v[k];
+      if (id[v] == no_point) {
+        const vec3d& p = soup.vertices[v];
+        const vec3d q{p[0] + 0.0, p[1] + 0.0, p[2] + 0.0};
+        auto [it, fresh] = index.emplace(q, 0u);
+        if (fresh) it->second = m.add(point3(q[0], q[1], q[2]), q);
+        id[v] = it->second;
+      }
+      out.v[k] = id[v];
+    }
+    m.tris.push_back(out);
+  }
+  return m;
+}
+
+/// Every directed edge used as often as its reverse.
+bool is_closed(const std::vector<tri>& tris) {
+  std::unordered_map<std::uint64_t, int> net;
+  net.reserve(tris.size() * 2);
+  for (const tri& t : tris)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = t.v[k], b = t.v[(k + 1) % 3];
+      if (a == b) continue;
+      net[a < b ? edge_key(a, b) : edge_key(b, a)] += a < b ? 1 : -1;
+    }
+  return std::all_of(net.begin(), net.end(), [](const auto& e) { return e.second == 0; });
+}
+
+bool collinear_triangle(const exact_mesh& m, const tri& t) {
+  return CGAL::collinear(m.pts[t.v[0]], m.pts[t.v[1]], m.pts[t.v[2]]);
+}
+
+/// The plane with exact coefficients and its dominant axis.
+struct cut_plane {
+  section_plane d;
+  K::Plane_3 p;
+  int axis;  ///< index of the largest |n_k|
+  explicit cut_plane(const section_plane& c) : d(c), p(c[0], c[1], c[2], c[3]) {
+    axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::fabs(c[k]) > std::fabs(c[axis])) axis = k;
+  }
+  int side(const point3& q) const { return static_cast<int>(p.oriented_side(q)); }
+  point2 project(const point3& q) const { return {q[(axis + 1) % 3], q[(axis + 2) % 3]}; }
+  /// The point of the plane above the 2D point (inverse of project).
+  point3 lift(const point2& q) const {
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const K::FT n[3] = {p.a(), p.b(), p.c()};
+    K::FT c[3];
+    c[i] = q.x();
+    c[j] = q.y();
+    c[axis] = -(p.d() + n[i] * c[i] + n[j] * c[j]) / n[axis];
+    return {c[0], c[1], c[2]};
+  }
+};
+
+/// The exact point where [a, b] (strictly opposite sides) meets the plane: X = (fa b - fb a) /
+/// (fa - fb) computed on the exact values and wrapped as a one-level lazy point.
+point3 crossing(const cut_plane& plane, const point3& a, const point3& b) {
+  using ET = K::Exact_kernel::FT;
+  const auto& ea = CGAL::exact(a);
+  const auto& eb = CGAL::exact(b);
+  const auto& ep = CGAL::exact(plane.p);
+  const ET fa = ep.a() * ea.x() + ep.b() * ea.y() + ep.c() * ea.z() + ep.d();
+  const ET fb = ep.a() * eb.x() + ep.b() * eb.y() + ep.c() * eb.z() + ep.d();
+  const ET den = fa - fb;
+  point3 out{K::FT(ET((fa * eb.x() - fb * ea.x()) / den)), K::FT(ET((fa * eb.y() - fb * ea.y()) / den)),
+             K::FT(ET((fa * eb.z() - fb * ea.z()) / den))};
+  return out;
+}
+
+/// In-plane edge uses (key: smaller index first).
+struct edge_use {
+  int net = 0;              ///< uses lo->hi minus hi->lo in kept pieces
+  std::uint32_t kept = 0;   ///< uses in kept pieces
+  std::uint32_t removed = 0;
+  std::uint32_t first_from = no_point, first_to = no_point;  ///< first kept use
+};
+
+struct directed_edge {
+  std::uint32_t from, to;
+};
+
+bool by_ends(const directed_edge& a, const directed_edge& b) {
+  return a.from != b.from ? a.from < b.from : a.to < b.to;
+}
+
+/// Result of one cut of an exact mesh.
+struct cut_result {
+  std::vector<tri> kept;
+  std::vector<directed_edge> outline;  ///< with multiplicity, sorted
+  std::vector<tri> cap;
+  bool closed = false;
+};
+
+// --- pass 3b: the cap -------------------------------------------------------------------
+
+struct vertex_info {
+  std::uint32_t id = no_point;
+};
+struct face_info {
+  int winding = 0;
+  bool seen = false;
+};
+using cdt_vb = CGAL::Triangulation_vertex_base_with_info_2<vertex_info, K>;
+using cdt_fb = CGAL::Triangulation_face_base_with_info_2<face_info, K, CGAL::Constrained_triangulation_face_base_2<K>>;
+using cdt_tds = CGAL::Triangulation_data_structure_2<cdt_vb, cdt_fb>;
+using cdt = CGAL::Constrained_Delaunay_triangulation_2<K, cdt_tds, CGAL::Exact_intersections_tag>;
+
+/// Interior points of the outline edges the triangulation subdivided: key (lo, hi) -> the
+/// points strictly between, ordered from lo to hi.
+using subdivision = std::unordered_map<std::uint64_t, std::vector<std::uint32_t>>;
+
+/// Triangles covering the region the outline winds around, each face -w times (reversed
+/// when w > 0) so that the cap's boundary is the outline reversed. Steiner points (crossing
+/// outline edges) are lifted to the plane and appended to m; outline edges that pass through
+/// other outline points or Steiner points are reported in `split` (non-conforming or
+/// self-intersecting input only).
+std::vector<tri> build_cap(exact_mesh& m, const cut_plane& plane, const std::vector<directed_edge>& outline,
+                           std::uint32_t cap_face, section_stats& stats, subdivision& split) {
+  std::vector<tri> cap;
+  if (outline.empty()) return cap;
+  std::unordered_map<std::uint64_t, int> net;  // lo->hi multiplicity
+  std::vector<std::uint32_t> ids;
+  for (const directed_edge& e : outline) {
+    const bool up = e.from < e.to;
+    net[up ? edge_key(e.from, e.to) : edge_key(e.to, e.from)] += up ? 1 : -1;
+    ids.push_back(e.from);
+    ids.push_back(e.to);
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+
+  cdt tr;
+  std::unordered_map<std::uint32_t, cdt::Vertex_handle> handle;
+  std::unordered_map<std::uint32_t, point2> flat;
+  for (std::uint32_t id : ids) {
+    const point2 q = plane.project(m.pts[id]);
+    flat.emplace(id, q);
+    cdt::Vertex_handle h = tr.insert(q);
+    h->info().id = id;
+    handle.emplace(id, h);
+  }
+  std::vector<std::pair<std::uint64_t, int>> constraints(net.begin(), net.end());
+  std::sort(constraints.begin(), constraints.end());
+  for (const auto& [key, n] : constraints) {
+    if (n == 0) continue;
+    tr.insert_constraint(handle.at(static_cast<std::uint32_t>(key >> 32)),
+                         handle.at(static_cast<std::uint32_t>(key & 0xffffffffu)));
+  }
+
+  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+    if (v->info().id != no_point) continue;
+    v->info().id = m.add(plane.lift(v->point()), {NAN, NAN, NAN});
+    ++stats.cap_steiner_points;
+  }
+  // Subdivided constraints (no triangulation edge joins their ends): walk each from lo to
+  // hi along collinear constrained edges and record the points passed.
+  for (const auto& [key, n] : constraints) {
+    if (n == 0) continue;
+    const cdt::Vertex_handle va = handle.at(static_cast<std::uint32_t>(key >> 32));
+    const cdt::Vertex_handle vb = handle.at(static_cast<std::uint32_t>(key & 0xffffffffu));
+    if (tr.is_edge(va, vb)) continue;
+    std::vector<std::uint32_t> mids;
+    for (cdt::Vertex_handle v = va; v != vb;) {
+      cdt::Vertex_handle next;
+      auto ec = tr.incident_edges(v);
+      const auto done = ec;
+      do {
+        if (tr.is_infinite(*ec) || !tr.is_constrained(*ec)) continue;
+        const cdt::Face_handle f = ec->first;
+        const int i = ec->second;
+        const cdt::Vertex_handle w = f->vertex(cdt::cw(i)) == v ? f->vertex(cdt::ccw(i)) : f->vertex(cdt::cw(i));
+        if (CGAL::collinear(va->point(), vb->point(), w->point()) &&
+            CGAL::collinear_are_strictly_ordered_along_line(v->point(), w->point(), vb->point()))
+          next = w;
+        else if (w == vb)
+          next = w;
+      } while (next == cdt::Vertex_handle() && ++ec != done);
+      if (next == cdt::Vertex_handle()) break;  // cannot happen for a constraint of tr
+      if (next != vb) mids.push_back(next->info().id);
+      v = next;
+    }
+    if (!mids.empty()) {
+      ++stats.split_constraints;
+      split.emplace(key, std::move(mids));
+    }
+  }
+
+  // Net multiplicity of the outline along the triangulation edge u->v: the outline edge u-v
+  // itself, plus every subdivided outline edge that contains u-v.
+  auto multiplicity = [&](cdt::Vertex_handle u, cdt::Vertex_handle v) {
+    const std::uint32_t a = u->info().id, b = v->info().id;
+    const auto it = net.find(a < b ? edge_key(a, b) : edge_key(b, a));
+    int w = it == net.end() ? 0 : a < b ? it->second : -it->second;
+    for (const auto& entry : split) {
+      const point2& p = flat.at(static_cast<std::uint32_t>(entry.first >> 32));
+      const point2& q = flat.at(static_cast<std::uint32_t>(entry.first & 0xffffffffu));
+      if (!CGAL::collinear(p, q, u->point()) || !CGAL::collinear(p, q, v->point())) continue;
+      if (!CGAL::collinear_are_ordered_along_line(p, u->point(), q) ||
+          !CGAL::collinear_are_ordered_along_line(p, v->point(), q))
+        continue;
+      const int n = net.at(entry.first);
+      w += CGAL::collinear_are_ordered_along_line(p, u->point(), v->point()) ? n : -n;
+    }
+    return w;
+  };
+
+  std::vector<cdt::Face_handle> stack{tr.infinite_face()};
+  tr.infinite_face()->info().seen = true;
+  while (!stack.empty()) {
+    const cdt::Face_handle f = stack.back();
+    stack.pop_back();
+    for (int i = 0; i < 3; ++i) {
+      const cdt::Face_handle g = f->neighbor(i);
+      if (g->info().seen) continue;
+      int w = f->info().winding;
+      if (f->is_constrained(i)) w -= multiplicity(f->vertex(cdt::ccw(i)), f->vertex(cdt::cw(i)));
+      g->info().winding = w;
+      g->info().seen = true;
+      stack.push_back(g);
+    }
+  }
+
+  for (auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f) {
+    const int w = f->info().winding;
+    const std::uint32_t a = f->vertex(0)->info().id, b = f->vertex(1)->info().id, c = f->vertex(2)->info().id;
+    for (int k = 0; k < std::abs(w); ++k) cap.push_back(w > 0 ? tri{{a, c, b}, cap_face} : tri{{a, b, c}, cap_face});
+  }
+  return cap;
+}
+
+/// Splits kept triangles along the subdivided outline edges (fans from the opposite
+/// corner, one edge at a time, with a worklist) so that kept and cap share every edge.
+void refine_kept(std::vector<tri>& kept, const subdivision& split) {
+  std::vector<tri> out, work;
+  for (const tri& t : kept) {
+    work.push_back(t);
+    while (!work.empty()) {
+      const tri u = work.back();
+      work.pop_back();
+      bool done = true;
+      for (int k = 0; k < 3 && done; ++k) {
+        const std::uint32_t a = u.v[k], b = u.v[(k + 1) % 3], c = u.v[(k + 2) % 3];
+        const auto it = split.find(a < b ? edge_key(a, b) : edge_key(b, a));
+        if (it == split.end()) continue;
+        std::vector<std::uint32_t> chain{a};
+        if (a < b)
+          chain.insert(chain.end(), it->second.begin(), it->second.end());
+        else
+          chain.insert(chain.end(), it->second.rbegin(), it->second.rend());
+        chain.push_back(b);
+        for (std::size_t i = chain.size() - 1; i > 0; --i) work.push_back(tri{{chain[i - 1], chain[i], c}, u.face});
+        done = false;
+      }
+      if (done) out.push_back(u);
+    }
+  }
+  kept.swap(out);
+}
+
+/// The outline with subdivided edges replaced by their pieces; pieces that overlap in
+/// opposite directions cancel (net use per edge, as the outline itself is made).
+std::vector<directed_edge> refine_outline(const std::vector<directed_edge>& outline, const subdivision& split) {
+  std::unordered_map<std::uint64_t, int> net;
+  auto add = [&net](std::uint32_t a, std::uint32_t b) { net[a < b ? edge_key(a, b) : edge_key(b, a)] += a < b ? 1 : -1; };
+  for (const directed_edge& e : outline) {
+    const auto it = split.find(e.from < e.to ? edge_key(e.from, e.to) : edge_key(e.to, e.from));
+    if (it == split.end()) {
+      add(e.from, e.to);
+      continue;
+    }
+    std::vector<std::uint32_t> chain{e.from};
+    if (e.from < e.to)
+      chain.insert(chain.end(), it->second.begin(), it->second.end());
+    else
+      chain.insert(chain.end(), it->second.rbegin(), it->second.rend());
+    chain.push_back(e.to);
+    for (std::size_t i = 1; i < chain.size(); ++i) add(chain[i - 1], chain[i]);
+  }
+  std::vector<directed_edge> out;
+  for (const auto& [key, n] : net) {
+    const std::uint32_t lo = static_cast<std::uint32_t>(key >> 32), hi = static_cast<std::uint32_t>(key & 0xffffffffu);
+    for (int k = 0; k < std::abs(n); ++k) out.push_back(n > 0 ? directed_edge{lo, hi} : directed_edge{hi, lo});
+  }
+  std::sort(out.begin(), out.end(), by_ends);
+  return out;
+}
+
+// --- passes 1 to 3a: split, merge, count, outline ------------------------------------------
+
+cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32_t cap_face, section_stats& stats) {
+  cut_result r;
+  r.closed = is_closed(m.tris);
+  stats.input_triangles += m.tris.size();
+
+  std::vector<signed char> sign(m.pts.size(), 2);  // 2: not computed yet
+  auto side = [&](std::uint32_t i) {
+    if (sign[i] == 2) sign[i] = static_cast<signed char>(plane.side(m.pts[i]));
+    return static_cast<int>(sign[i]);
+  };
+  std::unordered_map<std::uint64_t, std::uint32_t> cut_point;  // crossing edge -> point
+  auto cross = [&](std::uint32_t a, std::uint32_t b) {
+    const std::uint64_t key = a < b ? edge_key(a, b) : edge_key(b, a);
+    auto [it, fresh] = cut_point.emplace(key, 0u);
+    if (fresh) {
+      it->second = m.add(crossing(plane, m.pts[std::min(a, b)], m.pts[std::max(a, b)]), {NAN, NAN, NAN});
+      sign.push_back(0);
+      ++stats.cut_points;
+    }
+    return it->second;
+  };
+
+  // Pass 1: split (section 3 convention). Removed pieces only leave their in-plane edges.
+  std::vector<directed_edge> removed_edges;
+  auto in_plane_edges = [&](const tri& t, std::vector<directed_edge>& out) {
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = t.v[k], b = t.v[(k + 1) % 3];
+      if (a != b && sign[a] == 0 && sign[b] == 0) out.push_back({a, b});
+    }
+  };
+  auto emit = [&](int s, const tri& t) {
+    if (s > 0)
+      r.kept.push_back(t);
+    else
+      in_plane_edges(t, removed_edges);
+  };
+  for (const tri& t : m.tris) {
+    if (collinear_triangle(m, t)) ++stats.degenerate_input;
+    const int s[3] = {side(t.v[0]), side(t.v[1]), side(t.v[2])};
+    const bool any_pos = s[0] > 0 || s[1] > 0 || s[2] > 0;
+    const bool any_neg = s[0] < 0 || s[1] < 0 || s[2] < 0;
+    if (!any_neg) {
+      r.kept.push_back(t);
+      ++stats.kept_whole;
+      if (!any_pos) ++stats.in_plane;
+      continue;
+    }
+    if (!any_pos) {
+      ++stats.removed;
+      in_plane_edges(t, removed_edges);
+      continue;
+    }
+    ++stats.split;
+    int zero = -1;
+    for (int i = 0; i < 3; ++i)
+      if (s[i] == 0) zero = i;
+    if (zero >= 0) {  // (z, a, b): X on [a, b]; (z, a, X) on a's side, (z, X, b) on b's side
+      const int ia = (zero + 1) % 3, ib = (zero + 2) % 3;
+      const std::uint32_t z = t.v[zero], a = t.v[ia], b = t.v[ib];
+      const std::uint32_t x = cross(a, b);
+      emit(s[ia], tri{{z, a, x}, t.face});
+      emit(s[ib], tri{{z, x, b}, t.face});
+      continue;
+    }
+    int lone = 0;  // c: alone on its side
+    if (s[1] != s[0] && s[1] != s[2]) lone = 1;
+    if (s[2] != s[0] && s[2] != s[1]) lone = 2;
+    const std::uint32_t c = t.v[lone], a = t.v[(lone + 1) % 3], b = t.v[(lone + 2) % 3];
+    const std::uint32_t pa = cross(c, a), pb = cross(b, c);
+    emit(s[(lone + 1) % 3], tri{{a, b, pa}, t.face});
+    emit(s[(lone + 1) % 3], tri{{b, pb, pa}, t.face});
+    emit(s[lone], tri{{pa, pb, c}, t.face});
+  }
+
+  // Pass 2: merge equal points on the plane (non-conforming input only), count edge uses.
+  std::vector<std::uint32_t> on_plane;
+  for (const tri& t : r.kept)
+    for (std::uint32_t v : t.v)
+      if (sign[v] == 0) on_plane.push_back(v);
+  for (const directed_edge& e : removed_edges) {
+    on_plane.push_back(e.from);
+    on_plane.push_back(e.to);
+  }
+  std::sort(on_plane.begin(), on_plane.end());
+  on_plane.erase(std::unique(on_plane.begin(), on_plane.end()), on_plane.end());
+  std::sort(on_plane.begin(), on_plane.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const CGAL::Comparison_result c = CGAL::compare_xyz(m.pts[a], m.pts[b]);
+    return c == CGAL::SMALLER || (c == CGAL::EQUAL && a < b);
+  });
+  std::unordered_map<std::uint32_t, std::uint32_t> same;  // point -> first equal point
+  for (std::size_t i = 1; i < on_plane.size(); ++i)
+    if (m.pts[on_plane[i]] == m.pts[on_plane[i - 1]])
+      same[on_plane[i]] = same.count(on_plane[i - 1]) ? same[on_plane[i - 1]] : on_plane[i - 1];
+  if (!same.empty()) {
+    auto remap = [&](std::uint32_t& v) {
+      const auto it = same.find(v);
+      if (it != same.end()) v = it->second;
+    };
+    for (tri& t : r.kept)
+      for (std::uint32_t& v : t.v) remap(v);
+    for (directed_edge& e : removed_edges) {
+      remap(e.from);
+      remap(e.to);
+    }
+  }
+
+  std::unordered_map<std::uint64_t, edge_use> uses;
+  std::vector<directed_edge> kept_edges;
+  for (const tri& t : r.kept) in_plane_edges(t, kept_edges);
+  for (const directed_edge& e : kept_edges) {
+    if (e.from == e.to) continue;
+    const bool up = e.from < e.to;
+    edge_use& u = uses[up ? edge_key(e.from, e.to) : edge_key(e.to, e.from)];
+    u.net += up ? 1 : -1;
+    ++u.kept;
+    if (u.first_from == no_point) {
+      u.first_from = e.from;
+      u.first_to = e.to;
+    }
+  }
+  for (const directed_edge& e : removed_edges) {
+    if (e.from == e.to) continue;
+    ++uses[e.from < e.to ? edge_key(e.from, e.to) : edge_key(e.to, e.from)].removed;
+  }
+
+  // Pass 3a: outline edges.
+  for (const auto& [key, u] : uses) {
+    const std::uint32_t lo = static_cast<std::uint32_t>(key >> 32), hi = static_cast<std::uint32_t>(key & 0xffffffffu);
+    if (r.closed) {
+      for (int k = 0; k < std::abs(u.net); ++k) r.outline.push_back(u.net > 0 ? directed_edge{lo, hi} : directed_edge{hi, lo});
+    } else if (u.kept > 0 && u.removed > 0) {
+      if (u.net != 0)
+        r.outline.push_back(u.net > 0 ? directed_edge{lo, hi} : directed_edge{hi, lo});
+      else
+        r.outline.push_back({u.first_from, u.first_to});
+    }
+  }
+  std::sort(r.outline.begin(), r.outline.end(), by_ends);
+  stats.outline_edges += r.outline.size();
+
+  if (r.closed && want_cap) {
+    subdivision split;
+    r.cap = build_cap(m, plane, r.outline, cap_face, stats, split);
+    stats.cap_triangles += r.cap.size();
+    if (!split.empty()) {
+      refine_kept(r.kept, split);
+      r.outline = refine_outline(r.outline, split);
+    }
+  }
+  return r;
+}
+
+/// Chains directed edges into open polylines (from points with more out- than in-edges)
+/// and then simple closed loops (a walk is cut at the first repeated point).
+std::vector<section_chain> chain_edges(const std::vector<directed_edge>& edges) {
+  std::unordered_map<std::uint32_t, std::vector<std::size_t>> out;  // edges by start, in order
+  std::unordered_map<std::uint32_t, int> excess;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    out[edges[i].from].push_back(i);
+    ++excess[edges[i].from];
+    --excess[edges[i].to];
+  }
+  std::unordered_map<std::uint32_t, std::size_t> next_out;  // first unused index in out[p]
+  std::vector<bool> used(edges.size(), false);
+  auto take = [&](std::uint32_t p) -> std::size_t {
+    auto it = out.find(p);
+    if (it == out.end()) return edges.size();
+    std::size_t& k = next_out[p];
+    while (k < it->second.size() && used[it->second[k]]) ++k;
+    if (k == it->second.size()) return edges.size();
+    used[it->second[k]] = true;
+    return it->second[k];
+  };
+
+  std::vector<section_chain> polylines, loops;
+  std::vector<std::uint32_t> starts;
+  for (const auto& [p, x] : excess)
+    if (x > 0) starts.push_back(p);
+  std::sort(starts.begin(), starts.end());
+  for (std::uint32_t s : starts)
+    for (int k = 0; k < excess[s]; ++k) {
+      section_chain c{{s}, false};
+      for (std::size_t e = take(s); e != edges.size(); e = take(c.p.back())) c.p.push_back(edges[e].to);
+      if (c.p.size() > 1) polylines.push_back(std::move(c));
+    }
+  for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
+    if (used[e0]) continue;
+    used[e0] = true;
+    std::vector<std::uint32_t> path{edges[e0].from};
+    std::unordered_map<std::uint32_t, std::size_t> pos{{edges[e0].from, 0}};
+    std::uint32_t cur = edges[e0].to;
+    while (true) {
+      const auto it = pos.find(cur);
+      if (it != pos.end()) {
+        const std::size_t i = it->second;
+        loops.push_back({std::vector<std::uint32_t>(path.begin() + static_cast<std::ptrdiff_t>(i), path.end()), true});
+        for (std::size_t k = i + 1; k < path.size(); ++k) pos.erase(path[k]);
+        path.resize(i + 1);
+        if (path.size() == 1) break;
+      } else {
+        pos.emplace(cur, path.size());
+        path.push_back(cur);
+      }
+      const std::size_t e = take(path.back());
+      if (e == edges.size()) {  // only for unbalanced input
+        if (path.size() > 1) polylines.push_back({path, false});
+        break;
+      }
+      cur = edges[e].to;
+    }
+  }
+  loops.insert(loops.end(), std::make_move_iterator(polylines.begin()), std::make_move_iterator(polylines.end()));
+  return loops;
+}
+
+double coordinate_double(const exact_mesh& m, std::uint32_t i, int k) {
+  const double d = m.input[i][k];
+  if (!std::isnan(d)) return d;
+  return rational_to_double(mpq_of(CGAL::exact(m.pts[i][k])));
+}
+
+}  // namespace
+
+void check_section_plane(const section_plane& plane, const std::string& what) {
+  for (double x : plane)
+    if (!std::isfinite(x)) throw usage_error(what + ": A, B, C, D must be finite numbers");
+  if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0)
+    throw usage_error(what + ": the normal (A, B, C) must not be zero");
+}
+
+section_result section(const triangle_soup& soup, const section_plane& plane, const section_options& options) {
+  check_section_plane(plane);
+  const auto t0 = std::chrono::steady_clock::now();
+  section_result out;
+  out.plane = plane;
+  out.cap_face = soup.face_count;
+  exact_mesh m = from_soup(soup);
+  const cut_plane cp(plane);
+  cut_result r = cut(m, cp, options.cap, soup.face_count, out.stats);
+  out.closed = r.closed;
+  const std::vector<section_chain> chains = chain_edges(r.outline);
+
+  // Compact the points used, in order of first use: kept, cap, outline.
+  std::vector<std::uint32_t> index(m.pts.size(), no_point);
+  auto use = [&](std::uint32_t i) {
+    if (index[i] == no_point) {
+      index[i] = static_cast<std::uint32_t>(out.points.size());
+      section_point p;
+      for (int k = 0; k < 3; ++k) {
+        p.v[k] = coordinate_double(m, i, k);
+        if (options.exact_text) p.exact[k] = rational_to_string(mpq_of(CGAL::exact(m.pts[i][k])));
+      }
+      out.points.push_back(std::move(p));
+    }
+    return index[i];
+  };
+  auto convert = [&](const std::vector<tri>& in, std::vector<section_triangle>& to) {
+    to.reserve(in.size());
+    for (const tri& t : in) to.push_back({{use(t.v[0]), use(t.v[1]), use(t.v[2])}, t.face});
+  };
+  convert(r.kept, out.kept);
+  convert(r.cap, out.cap);
+  for (const section_chain& c : chains) {
+    section_chain o{{}, c.closed};
+    for (std::uint32_t i : c.p) o.p.push_back(use(i));
+    out.outline.push_back(std::move(o));
+  }
+  out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+triangle_soup clip_soup(const triangle_soup& soup, const std::vector<section_plane>& planes, bool caps) {
+  for (std::size_t i = 0; i < planes.size(); ++i) check_section_plane(planes[i], "plane " + std::to_string(i));
+  exact_mesh m = from_soup(soup);
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    section_stats stats;
+    const std::uint32_t cap_face = soup.face_count + static_cast<std::uint32_t>(i);
+    cut_result r = cut(m, cut_plane(planes[i]), caps, cap_face, stats);
+    m.tris = std::move(r.kept);
+    m.tris.insert(m.tris.end(), r.cap.begin(), r.cap.end());
+  }
+  triangle_soup out;
+  out.source = soup.source;
+  out.face_count = soup.face_count + (caps ? static_cast<std::uint32_t>(planes.size()) : 0);
+  std::vector<std::uint32_t> index(m.pts.size(), no_point);
+  out.triangles.reserve(m.tris.size());
+  for (const tri& t : m.tris) {
+    soup_triangle s{{}, t.face};
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t& i = index[t.v[k]];
+      if (i == no_point) {
+        i = static_cast<std::uint32_t>(out.vertices.size());
+        out.vertices.push_back({coordinate_double(m, t.v[k], 0), coordinate_double(m, t.v[k], 1),
+                                coordinate_double(m, t.v[k], 2)});
+      }
+      s.v[k] = i;
+    }
+    out.triangles.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace exbsp
