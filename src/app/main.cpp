@@ -307,7 +307,7 @@ int run_section(const std::string& mesh, const std::string& plane_text, const st
     return out_path.size() >= n && out_path.compare(out_path.size() - n, n, ext) == 0;
   };
   const bool off = ends_with(".off"), svg = ends_with(".svg");
-  if (!out_path.empty() && !off && !svg && !ends_with(".json"))
+  if (!out_path.empty() && out_path != "-" && !off && !svg && !ends_with(".json"))
     throw exbsp::usage_error("-o/--output: section writes .json, .off or .svg, not '" + out_path + "'");
   const exbsp::triangle_soup soup = exbsp::read_mesh(mesh);
   exbsp::section_options options;
@@ -317,7 +317,7 @@ int run_section(const std::string& mesh, const std::string& plane_text, const st
   if (out_path.empty())
     std::cout << text;
   else
-    write_atomically(out_path, text);
+    exbsp::write_file_atomically(out_path, text);
   return 0;
 }
 
@@ -330,7 +330,7 @@ int main(int argc, char** argv) {
   start_thread_pool();
   CLI::App app{
       "exbsp: exact-predicate BSP trees of triangle meshes, back-to-front orders and rendering.\n"
-      "Classification and splitting are exact (CGAL Epeck by default), so trees and orders are\n"
+      "Classification and splitting are exact (exbsp's own exact kernel by default), so trees and orders are\n"
       "the same on every machine."};
   app.require_subcommand(1);
 
@@ -388,7 +388,8 @@ int main(int argc, char** argv) {
       ->required();
   section->add_option("-o,--output", section_out,
                       "OUT.json (kept, outline, cap with exact rationals; default: standard output), "
-                      "OUT.off (kept and cap as one mesh) or OUT.svg (the outline in the cut plane)");
+                      "OUT.off (kept and cap as one mesh) or OUT.svg (the outline in the cut plane)")
+      ->check(non_empty_path);
 
   std::string clip_in, clip_out, clip_algorithm;
   bool clip_verbose = false;
