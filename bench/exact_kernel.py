@@ -13,6 +13,7 @@ triangles (a tree of depth 100,000), the JavaScript BSPs users would otherwise p
 Node), and a callgrind profile of the exact and double builds of fandisk on one thread.
 """
 import argparse
+import re
 import json
 import os
 import statistics
@@ -42,24 +43,34 @@ def stacked_off(path, n):
             f.write(f"3 {3 * i} {3 * i + 1} {3 * i + 2}\n")
 
 
-def callgrind(outdir, mesh, kernel):
-    cg = os.path.join(outdir, f"callgrind.{kernel}.out")
-    cmd = ["valgrind", "--tool=callgrind", f"--callgrind-out-file={cg}",
-           os.path.join(base.BUILD, "bench", "bench_sweep"), "--label", "profile", "--out", os.devnull,
-           "--kernels", kernel, "--heuristics", "sampled", "--repeats", "1", "--skip-counted", "--threads", "1",
-           "--input", "mesh:" + base.mesh_path(mesh)]
+def perf_profile(outdir, mesh, kernel):
+    """Self time per function of one single-threaded build (perf sampling). Not callgrind:
+    valgrind ignores the rounding-mode switches of CGAL's interval filters, which the exact
+    kernel calls for input points, so under valgrind those predicates (and the tree) change."""
+    data = os.path.join(outdir, f"perf.{kernel}.data")
+    cmd = ["perf", "record", "-q", "-o", data, "--", os.path.join(base.BUILD, "bench", "bench_sweep"), "--label",
+           "profile", "--out", os.devnull, "--kernels", kernel, "--heuristics", "sampled", "--repeats", "3",
+           "--skip-counted", "--threads", "1", "--input", "mesh:" + base.mesh_path(mesh)]
     try:
         base.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=1800)
+        text = subprocess.run(["perf", "report", "-i", data, "--stdio", "--no-children", "--sort", "symbol"],
+                              check=True, capture_output=True, text=True).stdout
     except (OSError, subprocess.CalledProcessError, subprocess.TimeoutExpired) as e:
         return {"error": str(e)}
-    self_cost = base.annotate(cg, inclusive=False)
-    return {"instructions": self_cost["total"], "top": self_cost["rows"][:8]}
+    rows = []
+    for line in text.splitlines():
+        m = re.match(r"^\s*([\d.]+)%\s+\[[.k]\]\s+(.*)$", line)
+        if m:
+            rows.append({"percent": float(m.group(1)), "function": m.group(2).strip()})
+    return {"top": rows[:10]}
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--no-build", action="store_true", help="use the existing bench_sweep binary")
+    ap.add_argument("--report-only", action="store_true",
+                    help="rewrite the report from bench/out/ (sweep, stacked, peers); the profile is rerun")
     ap.add_argument("--reuse-sweep", action="store_true",
                     help="keep the per-mesh sweep already in bench/out/exact/ (rerun the rest)")
     ap.add_argument("--build-dir", default=base.BUILD, help="where bench/bench_sweep is (default build-bench/)")
@@ -78,34 +89,38 @@ def main():
     machine = base.machine()
 
     sweep_out = os.path.join(outdir, "sweep.jsonl")
-    reuse = args.reuse_sweep and os.path.exists(sweep_out)
-    if os.path.exists(sweep_out) and not reuse:
-        os.remove(sweep_out)
-    cfg = {"time_cap": 120}
-    for name in ([] if reuse else meshes):
-        base.sweep(cfg, sweep_out, "exact", ["mesh:" + base.mesh_path(name)], KERNELS, ["sampled"], repeats,
-                   ["--limit", "gmpq=2500", "--repeats-for", "gmpq=1", "--time-cap-for", "gmpq=30"])
     stack_path = os.path.join(outdir, f"stacked_{stack_n}.off")
-    stacked_off(stack_path, stack_n)
     stack_out = os.path.join(outdir, "stacked.jsonl")
-    if os.path.exists(stack_out):
-        os.remove(stack_out)
-    # Epeck needs minutes here (quadratic naive on a depth-100,000 tree): capped at 120 s, and
-    # only its counted build (the timed round would double that).
-    base.sweep({"time_cap": 600}, stack_out, "stacked", ["mesh:" + stack_path], ["exact", "epeck"], ["naive"], 1,
-               ["--max-fragments", str(stack_n + 1), "--time-cap-for", "epeck=120", "--repeats-for", "epeck=0"])
-
     peers_out = os.path.join(base.HERE, "out", "peers.jsonl")
-    peers_script = os.path.join(base.HERE, "peers", "run.sh")
+    reuse = (args.reuse_sweep or args.report_only) and os.path.exists(sweep_out)
+    if not reuse:
+        if os.path.exists(sweep_out):
+            os.remove(sweep_out)
+        for name in meshes:
+            base.sweep({"time_cap": 120}, sweep_out, "exact", ["mesh:" + base.mesh_path(name)], KERNELS, ["sampled"],
+                       repeats, ["--limit", "gmpq=2500", "--repeats-for", "gmpq=1", "--time-cap-for", "gmpq=30"])
+    if not args.report_only:
+        stacked_off(stack_path, stack_n)
+        if os.path.exists(stack_out):
+            os.remove(stack_out)
+        # Epeck needs minutes here (quadratic naive on a depth-100,000 tree): capped at 120 s,
+        # and only its counted build (the timed round would double that).
+        base.sweep({"time_cap": 600}, stack_out, "stacked", ["mesh:" + stack_path], ["exact", "epeck"], ["naive"], 1,
+                   ["--max-fragments", str(stack_n + 1), "--time-cap-for", "epeck=120", "--repeats-for", "epeck=0"])
+        peers_script = os.path.join(base.HERE, "peers", "run.sh")
+        if os.path.exists(peers_script):
+            try:
+                base.run(["bash", peers_script] + [base.mesh_path(m) for m in meshes], timeout=3600)
+            except (OSError, subprocess.CalledProcessError, subprocess.TimeoutExpired) as e:
+                base.log(f"warning: peers: {e}")
     peers = []
-    if os.path.exists(peers_script):
+    if os.path.exists(peers_out):
         try:
-            base.run(["bash", peers_script] + [base.mesh_path(m) for m in meshes], timeout=3600)
             peers = [json.loads(l) for l in open(peers_out) if l.strip()]
-        except (OSError, subprocess.CalledProcessError, subprocess.TimeoutExpired, ValueError) as e:
+        except ValueError as e:
             base.log(f"warning: peers: {e}")
     profile_mesh = "joint" if args.quick else "fandisk"
-    profile = {k: callgrind(outdir, profile_mesh, k) for k in ["exact", "double"]}
+    profile = {k: perf_profile(outdir, profile_mesh, k) for k in ["exact", "double"]}
     machine["load_end"] = os.getloadavg()
 
     rows = base.load_jsonl(sweep_out)
@@ -181,9 +196,9 @@ def write_report(path, plot_path, machine, meshes, rows, stack_rows, stack_n, pe
               "`epeck / exact` is how much faster the new default is than the previous one. Fragments differ "
               "between exact and double because rounded split points make a different (and wrong) tree; "
               "exact, epeck and gmpq build the identical tree (tests/test_exact_kernel.cpp).", ""]
-    lines += base.table(["mesh", "class", "triangles", "fragments (exact)", "fragments (double)", "exact s",
+    lines.append(base.table(["mesh", "class", "triangles", "fragments (exact)", "fragments (double)", "exact s",
                          "double s", "× double", "epeck s", "epeck / exact", "gmpq s", "B/fragment exact",
-                         "B/fragment epeck"], table_rows)
+                         "B/fragment epeck"], table_rows))
     # Peers.
     lines += ["", "## Peers: JavaScript BSPs with an epsilon (bench/peers)", ""]
     if peers:
@@ -213,25 +228,24 @@ def write_report(path, plot_path, machine, meshes, rows, stack_rows, stack_n, pe
         lines += [f"Tools: {versions}, run by Node {machine.get('node', '')} on the same machine in the same run "
                   "(best of 3 builds each). Pieces are polygons stored in the tree, fan-triangulated for comparison "
                   "with exbsp's triangles.", ""]
-        lines += base.table(hdr, prow)
+        lines.append(base.table(hdr, prow))
         for t in tools:
             lines.append(f"- exact faster than {t} on {faster[t][0]} of {faster[t][1]} CAD meshes "
                          "(goal: all).")
     else:
         lines.append("Skipped: node/npm missing or bench/peers absent (see bench/peers/README.md).")
     # Profile.
-    lines += ["", f"## Where the time goes ({profile_mesh}, one thread, callgrind instructions)", ""]
-    pe, pd = profile.get("exact", {}), profile.get("double", {})
-    if pe.get("instructions") and pd.get("instructions"):
-        lines.append(f"exact {pe['instructions'] / 1e6:.0f} M instructions, double {pd['instructions'] / 1e6:.0f} M "
-                     f"({pe['instructions'] / pd['instructions']:.2f}×; the double tree is larger). "
-                     "Top functions of the exact build (self):")
-        lines.append("")
-        for item in pe.get("top", []):
-            lines.append(f"- {item['ir'] / 1e6:.0f} M ({item['percent']:.1f}%)  "
-                         f"`{base.demangle_short(item['function'])[:110]}`")
-    else:
-        lines.append(f"not available: {pe.get('error', '')} {pd.get('error', '')}")
+    lines += ["", f"## Where the time goes ({profile_mesh}, one thread, perf samples, self time)", ""]
+    for k in ["exact", "double"]:
+        pk = profile.get(k, {})
+        if pk.get("top"):
+            lines.append(f"{k}:")
+            lines.append("")
+            for item in pk["top"][:8]:
+                lines.append(f"- {item['percent']:.1f}%  `{base.demangle_short(item['function'])[:110]}`")
+            lines.append("")
+        else:
+            lines.append(f"{k}: not available ({pk.get('error', 'perf missing')})")
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
     plot(plot_path, meshes, ratios, peers, by)
