@@ -75,6 +75,7 @@ def main():
                     help="keep the per-mesh sweep already in bench/out/exact/ (rerun the rest)")
     ap.add_argument("--build-dir", default=base.BUILD, help="where bench/bench_sweep is (default build-bench/)")
     args = ap.parse_args()
+    base.ensure_matplotlib()
     base.BUILD = os.path.abspath(args.build_dir)
     outdir = os.path.join(base.HERE, "out", "exact-quick" if args.quick else "exact")
     os.makedirs(outdir, exist_ok=True)
