@@ -239,7 +239,8 @@ TEST(VisibleRegions, AFaceExactlyBehindAnotherOfTheSameOutlineIsHidden) {
   add_quad(s, {-2, -2, -5}, {2, -2, -5}, {2, 2, -5}, {-2, 2, -5});
   frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
   run(f, {}, output_kind::svg);
-  const auto r = regions_of(visible_drawing(f));
+  const vector_drawing d = visible_drawing(f);  // regions_of points into it
+  const auto r = regions_of(d);
   ASSERT_EQ(r.size(), 1u);
   EXPECT_EQ(r[0]->face, 0u);
 }
@@ -267,7 +268,8 @@ TEST(VisibleRegions, OneRegionPerFaceWithItsHole) {
   add_quad(s, {-0.2, -0.2, 1}, {0.2, -0.2, 1}, {0.2, 0.2, 1}, {-0.2, 0.2, 1});
   frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
   run(f, {}, output_kind::svg);
-  const auto r = regions_of(visible_drawing(f));
+  const vector_drawing d = visible_drawing(f);  // regions_of points into it
+  const auto r = regions_of(d);
   ASSERT_EQ(r.size(), 2u);
   EXPECT_EQ(r[0]->face, 0u);
   EXPECT_EQ(r[0]->rings.size(), 2u);  // outline and hole
