@@ -1,7 +1,13 @@
 // Helpers of the tests that run the exbsp command line (EXBSP_CLI) as a separate process:
-// whole-file reads and writes, shell quoting, and one run with stdout and stderr captured.
+// whole-file reads and writes, shell quoting, one run with stdout and stderr captured, and a
+// GoogleTest fixture with a fresh temporary directory per test, the CLI run inside it.
 #pragma once
+#include <gtest/gtest.h>
+#include <stdlib.h>
 #include <sys/wait.h>
+
+#include <algorithm>
+#include <vector>
 
 #include <cstdlib>
 #include <filesystem>
@@ -53,5 +59,31 @@ inline cli_result run_cli(const std::filesystem::path& dir, const std::string& a
   std::filesystem::remove(err);
   return r;
 }
+
+/// Fixture: `dir` is a fresh temporary directory, removed after the test.
+class cli_fixture : public ::testing::Test {
+protected:
+  void SetUp() override {
+    std::string tmpl = (std::filesystem::temp_directory_path() / "exbsp_cli_XXXXXX").string();
+    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
+    dir = tmpl;
+  }
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }
+  /// Runs `PREFIX exbsp ARGS` in dir (arguments already shell-quoted where needed).
+  cli_result run(const std::string& args, const std::string& prefix = "") { return run_cli(dir, args, prefix); }
+  void write(const std::string& name, const std::string& text) { write_file(dir / name, text); }
+  /// Names of the files in dir, sorted.
+  std::vector<std::string> file_names() const {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  std::size_t file_count() const { return file_names().size(); }
+  std::filesystem::path dir;
+};
 
 }  // namespace exbsp_test

@@ -34,29 +34,8 @@ using exbsp_test::write_file;
 using result = exbsp_test::cli_result;
 
 /// A fresh temporary directory per test; the CLI runs inside it.
-class cli : public ::testing::Test {
+class cli : public exbsp_test::cli_fixture {
 protected:
-  void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "exbsp_cli_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir = tmpl;
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
-
-  /// Runs `exbsp ARGS` in dir (args already shell-quoted where needed).
-  result run(const std::string& args) { return exbsp_test::run_cli(dir, args); }
-
-  /// Files in dir other than the ones the test wrote itself.
-  std::vector<std::string> files_in_dir() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
   /// The painter's failure case (tests/test_bsp.cpp) as an OFF file: it needs splits.
   fs::path write_cyclic_triple() {
     std::string off = "OFF\n9 3 0\n";
@@ -72,8 +51,6 @@ protected:
     write_file(p, off);
     return p;
   }
-
-  fs::path dir;
 };
 
 const std::string data_dir = EXBSP_TEST_DATA;
@@ -117,7 +94,7 @@ TEST_F(cli, every_bad_input_file_exits_2_naming_file_and_line_and_writes_no_outp
     EXPECT_EQ(o.status, 2);
     EXPECT_EQ(o.err.rfind("exbsp: error: ", 0), 0u) << o.err;
     EXPECT_FALSE(fs::exists(dir / "OUT.json")) << "partial output";
-    EXPECT_TRUE(files_in_dir().empty()) << "left behind: " << files_in_dir().front();
+    EXPECT_TRUE(file_names().empty()) << "left behind: " << file_names().front();
   }
 }
 
@@ -126,7 +103,7 @@ TEST_F(cli, failed_order_leaves_an_existing_output_file_untouched) {
   const result r = run("order " + quoted(data_dir + "/bad/off_nan.off") + " --eye 0,0,10 -o OUT.json");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(read_file(dir / "OUT.json"), "previous\n");
-  EXPECT_EQ(files_in_dir(), std::vector<std::string>{"OUT.json"});
+  EXPECT_EQ(file_names(), std::vector<std::string>{"OUT.json"});
 }
 
 TEST_F(cli, a_missing_mesh_file_exits_2_naming_it) {
@@ -347,7 +324,7 @@ TEST_F(cli, max_fragments_below_what_the_splits_need_exits_3_and_writes_nothing)
   const result o = run("order " + quoted(cyclic.string()) + " --eye 0,0,10 --heuristic naive --max-fragments 3 -o OUT.json");
   EXPECT_EQ(o.status, 3);
   EXPECT_EQ(o.err.rfind("exbsp: error: ", 0), 0u) << o.err;
-  EXPECT_EQ(files_in_dir(), std::vector<std::string>{"cyclic.off"}) << "no OUT.json, no temporary file";
+  EXPECT_EQ(file_names(), std::vector<std::string>{"cyclic.off"}) << "no OUT.json, no temporary file";
   const result s = run("order " + quoted(cyclic.string()) + " --eye 0,0,10 --heuristic naive --max-fragments 3");
   EXPECT_EQ(s.status, 3);
   EXPECT_TRUE(s.out.empty()) << "nothing on standard output either";

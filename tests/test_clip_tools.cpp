@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "cli_fixture.h"
+#include "cli_support.h"
 #include "clip/convex_region.h"
 #include "clip/sutherland_hodgman.h"
 #include "mesh/errors.h"
@@ -267,8 +267,8 @@ TEST(ClipInput, ConcavePolygonReportsPieces) {
 
 // --- exbsp clip: the command line -------------------------------------------------------------
 
-using exbsp_test::run_result;
-using exbsp_test::slurp;
+using run_result = exbsp_test::cli_result;
+const auto& slurp = exbsp_test::read_file;
 
 class clip_cli : public exbsp_test::cli_fixture {};
 

@@ -94,31 +94,8 @@ std::string sticks_off(int k) {
   return off.str();
 }
 
-class hostile : public ::testing::Test {
-protected:
-  void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "exbsp_hostile_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir = tmpl;
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
-
-  /// Runs `PREFIX exbsp ARGS` in dir (args already shell-quoted where needed).
-  result run(const std::string& args, const std::string& prefix = "") { return exbsp_test::run_cli(dir, args, prefix); }
-
-  /// Names of the files in dir.
-  std::vector<std::string> files() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
-  fs::path dir;
-};
+/// Fixture: a fresh temporary directory per test; the CLI runs inside it.
+class hostile : public exbsp_test::cli_fixture {};
 
 // ---- 1. JSON nesting depth ---------------------------------------------------------------
 
@@ -198,7 +175,7 @@ TEST_F(hostile, writer_refuses_an_empty_name_and_a_directory) {
     EXPECT_EQ(e.file(), (dir / "d").string());
   }
   EXPECT_THROW(exbsp::write_file_atomically((dir / "missing" / "x.json").string(), "x"), output_error);
-  EXPECT_EQ(files(), std::vector<std::string>{"d"});
+  EXPECT_EQ(file_names(), std::vector<std::string>{"d"});
   EXPECT_EQ(exbsp::pending_temporary_files(), 0);
 }
 
@@ -210,7 +187,7 @@ TEST_F(hostile, writer_ignores_a_planted_symlink_at_the_old_predictable_temporar
   exbsp::write_file_atomically(out.string(), "new");
   EXPECT_EQ(read_file(dir / "victim"), "precious");
   EXPECT_EQ(read_file(out), "new");
-  EXPECT_EQ(files().size(), 3u);  // victim, the planted link, out.json: no temporary left
+  EXPECT_EQ(file_names().size(), 3u);  // victim, the planted link, out.json: no temporary left
 }
 
 TEST_F(hostile, writer_keeps_a_symlinked_target_a_symlink_and_writes_through_it) {
@@ -259,7 +236,7 @@ TEST_F(hostile, writer_handles_target_names_near_the_255_byte_limit) {
   EXPECT_EQ(read_file(out), "long");
   exbsp::write_file_atomically(out.string(), "again");
   EXPECT_EQ(read_file(out), "again");
-  EXPECT_EQ(files().size(), 1u);
+  EXPECT_EQ(file_names().size(), 1u);
 }
 
 TEST_F(hostile, order_to_dev_null_and_to_a_symlink_keeps_them) {
@@ -304,7 +281,7 @@ TEST_F(hostile, sigterm_during_a_write_removes_the_temporary_file_and_kills_the_
   ASSERT_EQ(::waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the write finished before the signal: status " << status;
   EXPECT_EQ(WTERMSIG(status), SIGTERM);
-  EXPECT_TRUE(files().empty()) << files().front();
+  EXPECT_TRUE(file_names().empty()) << file_names().front();
 }
 
 // ---- 3. memory exhaustion: exit 3, never abort ---------------------------------------------
@@ -351,7 +328,7 @@ TEST_P(memory_cap, order_under_an_address_space_cap_exits_3_without_output) {
   EXPECT_EQ(d.status, 3) << d.err;
   EXPECT_TRUE(contains(d.err, "--max-fragments")) << d.err;
   EXPECT_FALSE(fs::exists(dir / "out.json"));
-  EXPECT_EQ(files(), std::vector<std::string>{"sticks.off"});
+  EXPECT_EQ(file_names(), std::vector<std::string>{"sticks.off"});
 }
 
 INSTANTIATE_TEST_SUITE_P(kernels, memory_cap, ::testing::Values("exact", "epeck", "gmpq"));
@@ -520,7 +497,7 @@ TEST_F(hostile, negative_counts_and_empty_output_names_exit_2) {
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;
     EXPECT_EQ(r.err.rfind("exbsp: error: ", 0), 0u) << r.err;
   }
-  EXPECT_EQ(files(), std::vector<std::string>{"t.off"});
+  EXPECT_EQ(file_names(), std::vector<std::string>{"t.off"});
 }
 
 TEST_F(hostile, dash_output_means_standard_output) {

@@ -26,7 +26,7 @@
 #include <sstream>
 
 #include "bsp/exact_output.h"
-#include "cli_fixture.h"
+#include "cli_support.h"
 #include "clip/exact_triangle_clip.h"
 #include "clip/section.h"
 #include "mesh/errors.h"
@@ -535,8 +535,8 @@ INSTANTIATE_TEST_SUITE_P(meshes, corpus,
 
 // --- the command line ----------------------------------------------------------------------
 
-using exbsp_test::run_result;
-using exbsp_test::slurp;
+using run_result = exbsp_test::cli_result;
+const auto& slurp = exbsp_test::read_file;
 
 class section_cli : public exbsp_test::cli_fixture {
 protected:

@@ -76,7 +76,7 @@ classification basic_bsp_tree<G>::classify(std::uint32_t plane, const fragment& 
   return classify_signs({s0, s1, geom_.sign(plane, f, 2)});
 }
 
-/// Shared state of one build: options, counters updated by all threads, the failure flag.
+/// Shared state of one build: options and the counters updated by all threads.
 template <class G>
 struct basic_bsp_tree<G>::build_context {
   build_context(const build_options& o, int h, std::chrono::steady_clock::time_point t)
@@ -85,7 +85,6 @@ struct basic_bsp_tree<G>::build_context {
   int heuristic;
   std::chrono::steady_clock::time_point start;
   std::atomic<std::size_t> total_fragments{0}, splits{0}, placed{0}, nodes{0};
-  std::atomic<bool> failed{false};
   /// Counts `added` new fragments; throws limit_error beyond options.max_fragments.
   void check_limit(std::size_t added) {
     const std::size_t total = total_fragments.fetch_add(added, std::memory_order_relaxed) + added;

@@ -173,10 +173,11 @@ public:
   }
 
   int side_of_eye(std::uint32_t plane, const vec3d& eye) const {
-    const triangle& p = sources_[plane];
-    const int s = fast_sign(fast_[plane], eye, 0);
-    if (s != 2 && kernel_traits<K>::fast_path) return s;
-    return static_cast<int>(K().orientation_3_object()(p[0], p[1], p[2], point(eye[0], eye[1], eye[2])));
+    if constexpr (kernel_traits<K>::fast_path) {
+      const int s = fast_sign(fast_[plane], eye, 0);
+      if (s != 2) return s;
+    }
+    return side_of_eye(plane, point(eye[0], eye[1], eye[2]));
   }
   int side_of_eye(std::uint32_t plane, const point& eye) const {
     const triangle& p = sources_[plane];

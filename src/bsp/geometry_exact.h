@@ -18,7 +18,6 @@
 // the construction is what makes most exact answers free.
 #pragma once
 #include <array>
-#include <memory>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -79,7 +78,7 @@ public:
 
   /// Counters of how side tests of constructed points were answered (for tests and bench).
   struct counters {
-    std::atomic<std::uint64_t> filter{0}, on_own_plane{0}, structural{0}, exact{0};
+    std::atomic<std::uint64_t> on_own_plane{0}, structural{0}, exact{0};
   };
   const counters& stats() const { return counters_; }
 
