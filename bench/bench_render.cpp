@@ -34,7 +34,7 @@
 
 #include "bench_view.h"
 #include "generators.h"
-#include "view/atomic_file.h"
+#include "core/atomic_file.h"
 #include "view/camera.h"
 #include "view/projection.h"
 #include "view/paint.h"
@@ -227,7 +227,7 @@ int main(int argc, char** argv) {
       view::svg_stage(f);
       stage_times["svg"].push_back(seconds_since(t0));
       t0 = clock_type::now();
-      view::write_file_atomically(svg_path, f.svg);
+      write_file_atomically(svg_path, f.svg);
       stage_times["svg write"].push_back(seconds_since(t0));
     }
     json stages = json::object(), stages_min = json::object();

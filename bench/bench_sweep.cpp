@@ -37,7 +37,7 @@
 #include "bsp/kernel_gmpq.h"
 #include "defects.h"
 #include "generators.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::bench {
 namespace {

@@ -35,7 +35,7 @@
 #include "bsp/kernel_epeck.h"
 #include "bsp/kernel_epick.h"
 #include "bsp/kernel_gmpq.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "mesh/mesh_io.h"
 #include "mesh/soup.h"
 

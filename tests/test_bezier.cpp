@@ -12,7 +12,7 @@
 #include <limits>
 #include <vector>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/bezier.h"
 
 namespace {

@@ -12,7 +12,7 @@
 #include "bsp/engine.h"
 #include "bsp/kernel_epeck.h"
 #include "bsp/kernel_gmpq.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace {
 

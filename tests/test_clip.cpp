@@ -21,7 +21,7 @@
 #include "clip/homogeneous.h"
 #include "clip/liang_barsky.h"
 #include "clip/sutherland_hodgman.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include "cli_support.h"
 #include "clip/convex_region.h"
 #include "clip/sutherland_hodgman.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "scene/clip_input.h"
 
 namespace {

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "scene/render.h"
 #include "scene/scene.h"
 #include "view/antialias.h"

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "scene/scene.h"
 
 namespace {

@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "cli_support.h"
-#include "mesh/atomic_file.h"
-#include "mesh/errors.h"
+#include "core/atomic_file.h"
+#include "core/errors.h"
 #include "mesh/gmp_memory.h"
 #include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"

@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "mesh/mesh_io.h"
 #include "mesh/soup.h"
 

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "scene/demo_scene.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "scene/scene.h"
 #include "view/clip_stage.h"
 #include "view/effects.h"

@@ -19,7 +19,7 @@
 #include <tuple>
 #include <vector>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "scene/demo_scene.h"
 #include "scene/procedural.h"
 #include "scene/render.h"

@@ -29,7 +29,7 @@
 #include "cli_support.h"
 #include "clip/exact_triangle_clip.h"
 #include "clip/section.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "mesh/mesh_io.h"
 #include "scene/render.h"
 #include "scene/scene.h"

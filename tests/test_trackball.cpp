@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/trackball.h"
 
 namespace {

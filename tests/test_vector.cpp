@@ -20,7 +20,7 @@
 #include <set>
 #include <sstream>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "scene/demo_scene.h"
 #include "scene/render.h"
 #include "scene/scene.h"

@@ -26,9 +26,9 @@
 #include <vector>
 
 #include "bsp/engine.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "mesh/soup.h"
-#include "view/atomic_file.h"
+#include "core/atomic_file.h"
 #include "view/backface_culling.h"
 #include "view/camera.h"
 #include "view/clip_stage.h"

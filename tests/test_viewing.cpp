@@ -19,7 +19,7 @@
 #include <sstream>
 
 #include "clip/homogeneous_segment.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "scene/render.h"
 #include "scene/scene.h"
 #include "view/camera.h"

@@ -20,9 +20,10 @@
 #include <thread>
 
 #include "bsp/engine.h"
-#include "mesh/atomic_file.h"
+#include "core/atomic_file.h"
+#include "core/version.h"
 #include "clip/section.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "mesh/gmp_memory.h"
 #include "mesh/mesh_io.h"
 #include "scene/clip_input.h"
@@ -332,7 +333,9 @@ int main(int argc, char** argv) {
       "exbsp: exact-predicate BSP trees of triangle meshes, back-to-front orders and rendering.\n"
       "Classification and splitting are exact (exbsp's own exact kernel by default), so trees and orders are\n"
       "the same on every machine."};
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);
+  app.set_version_flag("--version", std::string("exbsp ") + exbsp::version_string,
+                       "print the version and exit");
 
   build_cli build_opts, order_opts;
   build_opts.max_fragments = order_opts.max_fragments = default_fragment_budget();
@@ -411,11 +414,18 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "exbsp: error: " << e.what() << "\n" << "run 'exbsp --help' for usage\n";
     return 2;
   }
 
+  if (app.get_subcommands().empty()) {
+    std::cerr << "exbsp: error: a command is required: build, order, render, section or clip\n"
+              << "run 'exbsp --help' for usage\n";
+    return 2;
+  }
   try {
     if (*build) return run_build(build_opts, json);
     if (*order) {

@@ -18,7 +18,7 @@
 #include "bsp/bsp_impl.h"
 #include "bsp/bsp_tree.h"
 #include "bsp/exact_output.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp {
 namespace detail {

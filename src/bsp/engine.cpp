@@ -5,7 +5,7 @@
 
 #include "bsp/bsp_impl.h"
 #include "bsp/bsp_tree.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp {
 

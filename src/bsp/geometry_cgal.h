@@ -17,7 +17,7 @@
 #include "bsp/fast_orientation.h"
 #include "bsp/kernel_traits.h"
 #include "bsp/split_pattern.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp {
 namespace detail {

@@ -11,7 +11,7 @@
 #include <limits>
 
 #include "bsp/exact_output.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp {
 

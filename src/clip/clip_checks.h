@@ -7,7 +7,7 @@
 #include <string>
 
 #include "clip/clip_types.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::clip::detail {
 

@@ -24,7 +24,7 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::clip {
 

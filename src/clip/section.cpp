@@ -30,7 +30,7 @@
 #include <unordered_map>
 
 #include "bsp/exact_output.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp {
 

@@ -3,7 +3,7 @@
 // outside strings. Lines are counted at '\n', and at a '\r' not followed by '\n'.
 #include "mesh/json_limits.h"
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp {
 

@@ -9,7 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "mesh/reader_util.h"
 
 namespace exbsp {

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <system_error>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::mesh_detail {
 

@@ -1,6 +1,6 @@
 #include "mesh/soup.h"
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp {
 

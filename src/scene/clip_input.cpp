@@ -11,11 +11,11 @@
 #include "clip/cohen_sutherland.h"
 #include "clip/convex_region.h"
 #include "clip/liang_barsky.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"
 #include "scene/json_reader.h"
-#include "view/atomic_file.h"
+#include "core/atomic_file.h"
 
 namespace exbsp::scene {
 
@@ -368,7 +368,7 @@ void clip_command(const std::string& input_path, const std::string& output_path,
   if (output_path.empty())
     out << text;
   else
-    view::write_file_atomically(output_path, text);
+    write_file_atomically(output_path, text);
 }
 
 }  // namespace exbsp::scene

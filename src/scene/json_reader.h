@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/image.h"
 #include "view/matrix.h"
 

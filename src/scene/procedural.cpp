@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::scene {
 

@@ -11,9 +11,9 @@
 #include <cstdio>
 #include <string_view>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "scene/demo_scene.h"
-#include "view/atomic_file.h"
+#include "core/atomic_file.h"
 #include "view/effects.h"
 #include "view/mesh_reject.h"
 #include "view/placement.h"
@@ -46,7 +46,7 @@ view::stage write_stage(const std::string& path, view::output_kind kind) {
             if (kind == view::output_kind::png)
               view::write_png(fr.picture, path);
             else
-              view::write_file_atomically(path, kind == view::output_kind::svg ? fr.svg : fr.pdf);
+              write_file_atomically(path, kind == view::output_kind::svg ? fr.svg : fr.pdf);
             return path;
           }};
 }

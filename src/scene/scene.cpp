@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "clip/section.h"
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"
 #include "scene/json_reader.h"

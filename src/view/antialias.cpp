@@ -1,7 +1,7 @@
 // N x N supersampling (notation in antialias.h).
 #include "view/antialias.h"
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/paint.h"
 
 namespace exbsp::view {

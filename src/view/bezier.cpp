@@ -12,7 +12,7 @@
 #include <cmath>
 #include <string>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp {
 namespace {

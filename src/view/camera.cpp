@@ -3,7 +3,7 @@
 // of glRotated-style rotations (transforms.h) exactly as camera.h writes them.
 #include "view/camera.h"
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/transforms.h"
 
 namespace exbsp::view {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/bezier.h"
 #include "view/segment_clip.h"
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::view {
 

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/antialias.h"
 #include "view/backface_culling.h"
 #include "view/curves.h"

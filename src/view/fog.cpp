@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::view {
 

@@ -1,7 +1,7 @@
 // RGB image storage (top row first). See image.h.
 #include "view/image.h"
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::view {
 

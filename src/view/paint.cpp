@@ -6,7 +6,7 @@
 #include <exception>
 #include <thread>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/fog.h"
 #include "view/line_raster.h"
 #include "view/rasterizer.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/projection.h"
 #include "view/transforms.h"
 

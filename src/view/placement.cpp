@@ -1,7 +1,7 @@
 // The viewport's picture inside the image (notation in placement.h).
 #include "view/placement.h"
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::view {
 

@@ -13,8 +13,8 @@
 #include <cstring>
 #include <string_view>
 
-#include "mesh/errors.h"
-#include "view/atomic_file.h"
+#include "core/errors.h"
+#include "core/atomic_file.h"
 
 namespace exbsp::view {
 

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::view {
 

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <unordered_map>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/clip_stage.h"
 #include "view/paint.h"
 #include "view/svg_writer.h"

@@ -5,7 +5,7 @@
 #include <charconv>
 #include <cstdio>
 
-#include "view/atomic_file.h"
+#include "core/atomic_file.h"
 #include "view/fog.h"
 
 namespace exbsp::view {

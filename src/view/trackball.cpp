@@ -9,7 +9,7 @@
 #include <cmath>
 #include <string>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp {
 namespace {

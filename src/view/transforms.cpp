@@ -2,7 +2,7 @@
 // rotate() is the Rodrigues matrix c I + (1 - c) a a^T + s [a]x for the unit axis a.
 #include "view/transforms.h"
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::view {
 

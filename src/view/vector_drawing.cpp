@@ -11,7 +11,7 @@
 #include <map>
 #include <unordered_map>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/fog.h"
 #include "view/pipeline.h"
 #include "view/segment_clip.h"

@@ -6,7 +6,7 @@
 
 #include <memory>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 #include "view/svg_writer.h"
 
 namespace exbsp::view {

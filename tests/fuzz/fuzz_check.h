@@ -12,7 +12,7 @@
 #include <new>
 #include <typeinfo>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp::fuzz {
 

@@ -7,7 +7,7 @@
 // filled, then published (state 2); the handler unlinks only published slots, restores the
 // default action and re-raises the signal. Everything the handler touches is a lock-free
 // atomic or a char array, and unlink/sigaction/raise are async-signal-safe.
-#include "mesh/atomic_file.h"
+#include "core/atomic_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -24,7 +24,7 @@
 #include <mutex>
 #include <random>
 
-#include "mesh/errors.h"
+#include "core/errors.h"
 
 namespace exbsp {
 

@@ -3,7 +3,7 @@
 // target's directory (created O_CREAT|O_EXCL|O_NOFOLLOW under a short random name, so a
 // planted file or symlink is never followed or overwritten), which is fsynced and renamed
 // over the target. A failed or interrupted run never leaves a partial, truncated or
-// clobbered file. It lives in exbsp_mesh because that is the lowest module.
+// clobbered file. It lives in exbsp_core, below every other module.
 #pragma once
 #include <string>
 #include <string_view>
