@@ -15,12 +15,14 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
 
 #include "app/cli_parse.h"
 #include "bsp/engine.h"
+#include "bsp/order_json.h"
 #include "core/atomic_file.h"
 #include "core/version.h"
 #include "clip/section.h"
@@ -35,18 +37,16 @@ namespace {
 
 using exbsp::vec3d;
 
-std::string format_double(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-
 // ---- resource defaults and limits (the library's defaults stay explicit: 0 = no limit) ----
 
-/// Bytes one tree fragment costs in a build, tree nodes and lists included: about 1,000
-/// measured (naive heuristic on 128 + 128 sticks: 2.1 M fragments in 2.1 GB; 121 k fragments
-/// in 108 MB resident), rounded up for the heavier gmpq numbers.
-constexpr std::uint64_t bytes_per_fragment = 1300;
+/// Bytes one tree fragment costs in a build, tree nodes, lists and the process's slack
+/// included, per kernel. Epeck and gmpq: about 1,000 measured (naive heuristic on 128 + 128
+/// sticks: 2.1 M fragments in 2.1 GB), rounded up for the heavier gmpq numbers. exact (and the
+/// double-based inexact kernels): peak heap 189-320 bytes per fragment on the CAD corpus
+/// (bench/EXACT_KERNEL.md), doubled for resident-set slack.
+std::uint64_t bytes_per_fragment(exbsp::kernel_id kernel) {
+  return kernel == exbsp::kernel_id::epeck || kernel == exbsp::kernel_id::gmpq ? 1300 : 640;
+}
 
 /// Bytes this process may still use: MemAvailable (/proc/meminfo), and no more than the
 /// address-space limit (RLIMIT_AS) when there is one. 0 when unknown.
@@ -69,13 +69,21 @@ std::uint64_t available_memory_bytes() {
   return available;
 }
 
-/// The default --max-fragments: half the available memory at bytes_per_fragment each (the
-/// other half for the input, the output and the allocator's slack), at least 10,000;
+/// The default --max-fragments: half the available memory at bytes_per_fragment(kernel) each
+/// (the other half for the input, the output and the allocator's slack), at least 10,000;
 /// 0 (no limit) when the available memory is unknown.
-std::size_t default_fragment_budget() {
+std::size_t default_fragment_budget(exbsp::kernel_id kernel) {
   const std::uint64_t bytes = available_memory_bytes();
   if (bytes == 0) return 0;
-  return static_cast<std::size_t>(std::max<std::uint64_t>(bytes / 2 / bytes_per_fragment, 10000));
+  return static_cast<std::size_t>(std::max<std::uint64_t>(bytes / 2 / bytes_per_fragment(kernel), 10000));
+}
+
+/// The --max-fragments help text, shared by build, order and render.
+std::string max_fragments_help() {
+  return "stop with exit status 3 when the tree would need more fragments (0: no limit; default: half the "
+         "available memory at " + std::to_string(bytes_per_fragment(exbsp::kernel_id::exact)) +
+         " bytes per fragment for exact, double and epick, " + std::to_string(bytes_per_fragment(exbsp::kernel_id::epeck)) +
+         " for epeck and gmpq)";
 }
 
 /// The most threads --threads accepts: 4 per hardware thread, at most 1024 (libgomp crashes
@@ -118,7 +126,7 @@ struct build_cli {
   std::string kernel = exbsp::to_string(exbsp::build_options{}.kernel);
   std::string heuristic = exbsp::default_heuristic();
   std::uint64_t seed = 0;
-  std::size_t max_fragments = 0;
+  std::optional<std::size_t> max_fragments;  ///< absent: default_fragment_budget(kernel)
   unsigned threads = 0;
 };
 
@@ -159,12 +167,7 @@ void add_build_options(CLI::App* cmd, build_cli& o) {
   cmd->add_option("--seed", o.seed, "seed of the randomised heuristics")
       ->check(not_negative)
       ->capture_default_str();
-  cmd->add_option("--max-fragments", o.max_fragments,
-                  "stop with exit status 3 when the tree would need more fragments (0: no limit; "
-                  "default: half the available memory at " + std::to_string(bytes_per_fragment) +
-                      " bytes per fragment)")
-      ->check(not_negative)
-      ->capture_default_str();
+  cmd->add_option("--max-fragments", o.max_fragments, max_fragments_help())->check(not_negative);
   cmd->add_option("--threads", o.threads, "threads for candidate evaluation (0: all cores)")
       ->check(CLI::Range(0u, max_threads()));
 }
@@ -195,7 +198,7 @@ exbsp::bsp build_tree(const build_cli& o, progress_line& progress) {
   options.kernel = exbsp::parse_kernel(o.kernel);
   options.heuristic = o.heuristic;
   options.seed = o.seed;
-  options.max_fragments = o.max_fragments;
+  options.max_fragments = o.max_fragments ? *o.max_fragments : default_fragment_budget(options.kernel);
   options.threads = o.threads;
   options.progress = [&progress](const exbsp::build_progress& p) { progress(p); };
   try {
@@ -241,37 +244,7 @@ int run_order(const build_cli& o, const std::string& eye, const std::string& dir
   progress_line progress;
   const exbsp::bsp tree = build_tree(o, progress);
   const auto order = use_eye ? tree.order_from_eye(where) : tree.order_for_direction(where);
-  const bool exact = exbsp::is_exact(tree.kernel());
-
-  std::string out;
-  out.reserve(order.size() * (exact ? 400 : 200) + 64);
-  out += use_eye ? "{\"eye\": [" : "{\"direction\": [";
-  for (int k = 0; k < 3; ++k) out += (k ? ", " : "") + format_double(where[k]);
-  out += "],\n \"kernel\": \"" + exbsp::to_string(tree.kernel()) + "\", \"heuristic\": \"" +
-         o.heuristic + "\",\n \"fragments\": [";
-  for (std::size_t n = 0; n < order.size(); ++n) {
-    const exbsp::fragment_d f = tree.fragment(order[n]);
-    out += n ? ",\n  {\"face\": " : "\n  {\"face\": ";
-    out += std::to_string(f.face) + ", \"v\": [";
-    for (int i = 0; i < 3; ++i) {
-      out += i ? ", [" : "[";
-      for (int k = 0; k < 3; ++k) out += (k ? ", " : "") + format_double(f.v[i][k]);
-      out += "]";
-    }
-    out += "]";
-    if (exact) {
-      const exbsp::exact_triangle e = tree.fragment_exact(order[n]);
-      out += ", \"exact\": [";
-      for (int i = 0; i < 3; ++i) {
-        out += i ? ", [" : "[";
-        for (int k = 0; k < 3; ++k) out += std::string(k ? ", \"" : "\"") + e[i][k] + "\"";
-        out += "]";
-      }
-      out += "]";
-    }
-    out += "}";
-  }
-  out += "\n ]}\n";
+  const std::string out = exbsp::order_json(tree, order, where, use_eye);
   if (out_path.empty())
     std::cout << out;
   else
@@ -307,8 +280,9 @@ struct render_cli {
   std::string input;               ///< scene (.json), mesh, '-' or empty (the demo)
   std::string output = "exbsp.png";
   std::string format, view = "iso", size = "800x600", edges = "visible";
-  std::string orbit_drag, trackball;
+  std::string orbit_drag, trackball, kernel;
   std::size_t frames = 0;
+  std::optional<std::size_t> max_fragments;
   bool strict = false, verbose = false, quiet = false;
 };
 
@@ -328,6 +302,10 @@ int run_render(const render_cli& r) {
   if (!r.orbit_drag.empty()) request.orbit_drag = exbsp::cli::parse_drag_path(r.orbit_drag);
   request.frames = r.frames;
   request.trackball = r.trackball;
+  request.kernel = r.kernel;
+  request.max_fragments = r.max_fragments ? *r.max_fragments
+                                          : default_fragment_budget(r.kernel.empty() ? exbsp::build_options{}.kernel
+                                                                                     : exbsp::parse_kernel(r.kernel));
   const bool mesh_input = !r.input.empty() && !is_scene_path(r.input);
   if (!mesh_input && !r.format.empty())
     throw exbsp::usage_error("--format applies to a mesh input, not to " +
@@ -381,7 +359,6 @@ int main(int argc, char** argv) {
                        "print the version and exit");
 
   build_cli build_opts, order_opts;
-  build_opts.max_fragments = order_opts.max_fragments = default_fragment_budget();
   bool json = false;
   auto* build = app.add_subcommand("build", "build the BSP tree of MESH and print its statistics");
   add_build_options(build, build_opts);
@@ -418,6 +395,10 @@ int main(int argc, char** argv) {
   render->add_option("--edges", r.edges, "a mesh's edges in SVG/PDF output: none, visible or visible+hidden")
       ->check(CLI::IsMember({"none", "visible", "visible+hidden"}))
       ->capture_default_str();
+  render->add_option("--kernel", r.kernel,
+                     "BSP kernel (default exact); epeck, gmpq; epick and double only to see what rounding does")
+      ->check(CLI::IsMember({"exact", "epeck", "gmpq", "epick", "double"}));
+  render->add_option("--max-fragments", r.max_fragments, max_fragments_help())->check(not_negative);
   render->add_flag("--strict", r.strict, "unknown scene keys are errors (exit 2), not warnings");
   render->add_flag("-v,--verbose", r.verbose, "print the pipeline stages that ran and their timings");
   render->add_flag("-q,--quiet", r.quiet, "no progress line and no summary line");
@@ -503,7 +484,7 @@ int main(int argc, char** argv) {
     }
   } catch (const exbsp::limit_error& e) {
     std::cerr << "exbsp: error: " << e.what() << "\n";
-    if (*build || *order)
+    if (*build || *order || *render)
       std::cerr << "exbsp: the limit is --max-fragments (default: from the available memory); raise it with "
                    "--max-fragments N, or 0 for no limit\n";
     return 3;

@@ -155,6 +155,8 @@ render_summary render_command(const render_request& request, std::ostream& log) 
   f.mesh_face_offsets = geometry.face_offsets;
   f.vector = s.vector;
   f.build.progress = request.progress;
+  if (!request.kernel.empty()) f.build.kernel = parse_kernel(request.kernel);
+  f.build.max_fragments = request.max_fragments;
   render_summary summary;
   summary.triangles = f.soup.triangles.size();
   const auto note_build = [&] {

@@ -38,6 +38,10 @@ struct render_request {
   /// A scene made by the caller (e.g. scene::mesh_scene for `render MESH`); used instead of
   /// reading scene_path.
   std::optional<scene::scene> preloaded;
+  /// The BSP kernel (empty: the default, exact). An inexact one is for comparisons only.
+  std::string kernel;
+  /// Stop with limit_error when the BSP would need more fragments (0: no limit).
+  std::size_t max_fragments = 0;
   /// Progress of the BSP build (build_options::progress); may be empty.
   std::function<void(const build_progress&)> progress;
   std::string output_path;  ///< .png, .svg or .pdf (by extension); "-": PNG on standard output
@@ -56,6 +60,8 @@ struct render_summary {
   std::size_t triangles = 0, fragments = 0, frames = 0;
   double build_seconds = 0, total_seconds = 0;
   std::string kernel;
+  /// Stop with limit_error when the BSP would need more fragments (0: no limit).
+  std::size_t max_fragments = 0;
   std::vector<std::string> outputs;  ///< files written (or "-")
 };
 
