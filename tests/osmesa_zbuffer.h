@@ -141,6 +141,34 @@ struct zbuffer_scene {
   bool nearer_is_smaller = true;
 };
 
+/// The state of a z-buffer oracle frame in the current context: unlit flat colours, no
+/// blending, dithering, multisampling or polygon smoothing, depth test (GL_LESS, or GL_GREATER
+/// when nearer points have greater window depth), back faces culled when asked (front =
+/// counter-clockwise in window coordinates, clockwise when the scene is drawn mirrored), and
+/// the colour and depth buffers cleared.
+inline void begin_zbuffer_frame(view::rgb8 background, bool cull_back, bool mirror_y, bool nearer_is_smaller = true) {
+  glDisable(GL_LIGHTING);
+  glDisable(GL_BLEND);
+  glDisable(GL_DITHER);
+  glDisable(GL_MULTISAMPLE);
+  glDisable(GL_POLYGON_SMOOTH);
+  glShadeModel(GL_FLAT);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(nearer_is_smaller ? GL_LESS : GL_GREATER);
+  glDepthMask(GL_TRUE);
+  if (cull_back) {
+    glEnable(GL_CULL_FACE);
+    glFrontFace(mirror_y ? GL_CW : GL_CCW);  // a mirror reverses the window-space winding
+    glCullFace(GL_BACK);
+  } else {
+    glDisable(GL_CULL_FACE);
+  }
+  glClearColor(background.r / 255.0f, background.g / 255.0f, background.b / 255.0f, 1.0f);
+  glClearDepth(nearer_is_smaller ? 1.0 : 0.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
 /// Mesa's image of `s`: one pass, 24-bit z-buffer, unlit, flat colours, no blending, no
 /// dithering, no multisampling. Throws std::runtime_error when OSMesa cannot render.
 inline view::image render_zbuffer(const zbuffer_scene& s) {
@@ -151,26 +179,7 @@ inline view::image render_zbuffer(const zbuffer_scene& s) {
   const int vp_y = s.mirror_y ? s.image_height - s.vp_y - s.vp_height : s.vp_y;
   glViewport(s.vp_x, vp_y, s.vp_width, s.vp_height);
   glDepthRange(s.depth_near, s.depth_far);
-  glDisable(GL_LIGHTING);
-  glDisable(GL_BLEND);
-  glDisable(GL_DITHER);
-  glDisable(GL_MULTISAMPLE);
-  glDisable(GL_POLYGON_SMOOTH);
-  glShadeModel(GL_FLAT);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(s.nearer_is_smaller ? GL_LESS : GL_GREATER);
-  glDepthMask(GL_TRUE);
-  if (s.cull_back) {
-    glEnable(GL_CULL_FACE);
-    glFrontFace(s.mirror_y ? GL_CW : GL_CCW);  // a mirror reverses the window-space winding
-    glCullFace(GL_BACK);
-  } else {
-    glDisable(GL_CULL_FACE);
-  }
-  glClearColor(s.background.r / 255.0f, s.background.g / 255.0f, s.background.b / 255.0f, 1.0f);
-  glClearDepth(s.nearer_is_smaller ? 1.0 : 0.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  begin_zbuffer_frame(s.background, s.cull_back, s.mirror_y, s.nearer_is_smaller);
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
   if (s.mirror_y) glScaled(1, -1, 1);

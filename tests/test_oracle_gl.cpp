@@ -256,26 +256,8 @@ view::image render_mesa(const scene::scene& s, const scene::scene_geometry& g, b
 
   glViewport(0, 0, s.width, s.height);
   glDepthRange(0, 1);
-  glDisable(GL_LIGHTING);
-  glDisable(GL_BLEND);
-  glDisable(GL_DITHER);
-  glDisable(GL_MULTISAMPLE);
-  glDisable(GL_POLYGON_SMOOTH);
-  glShadeModel(GL_FLAT);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  if (cull) {  // backface_culling: N = (b - a) x (c - a) facing away from the viewer is culled
-    glEnable(GL_CULL_FACE);
-    glFrontFace(opt.mirror_y ? GL_CW : GL_CCW);  // a mirror reverses the window-space winding
-    glCullFace(GL_BACK);
-  } else {
-    glDisable(GL_CULL_FACE);
-  }
-  glClearColor(s.background.r / 255.0f, s.background.g / 255.0f, s.background.b / 255.0f, 1.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  // backface_culling: N = (b - a) x (c - a) facing away from the viewer is culled
+  osmesa::begin_zbuffer_frame(s.background, cull, opt.mirror_y);
   load_gl_view(s, opt.mirror_y);
 
   // Draws the triangles of the untied meshes (mesh = npos) or of one tied mesh.

@@ -445,6 +445,12 @@ TEST(Pdf, APlacedViewportGetsAPageOfTheImageSize) {
                        std::to_string(f.view.image_width) + "\" height=\"" + std::to_string(f.view.image_height) + "\""),
             f.svg.find("<svg"));
   EXPECT_NE(f.svg.find("<svg x=\"" + std::to_string(f.view.place_x) + "\""), std::string::npos);
+  f.vector.mode = vector_options::mode_kind::painter;  // the painter's stack is placed the same way
+  run(f, s.effects, output_kind::svg);
+  EXPECT_NE(f.svg.find("<svg x=\"" + std::to_string(f.view.place_x) + "\""), std::string::npos);
+  EXPECT_NE(f.svg.find("data-fragment"), std::string::npos);
+  run(f, s.effects, output_kind::pdf);
+  EXPECT_NE(f.pdf.find("/MediaBox [ 0 0 " + std::to_string(f.view.image_width) + " "), std::string::npos);
 }
 
 // ---- scene options and the command ------------------------------------------------------
