@@ -671,6 +671,12 @@ void add_edges(const frame& f, const std::vector<vector_path>& regions, vector_d
 
 }  // namespace
 
+drawing_placement placement_of(const frame& f) {
+  const view_setup& v = f.view;
+  if (!v.needs_placement()) return {};
+  return {v.image_width, v.image_height, v.place_x, v.place_y, f.background};
+}
+
 vector_drawing visible_drawing(const frame& f) {
   const vector_options& opt = f.vector;
   if (!(opt.crease_deg > 0 && opt.crease_deg <= 180))
@@ -680,6 +686,7 @@ vector_drawing visible_drawing(const frame& f) {
   d.width = vp.width;
   d.height = vp.height;
   d.background = f.fog ? f.fog->settings.color : f.background;
+  d.placement = placement_of(f);
   tiled_coverage coverage(static_cast<long long>(vp.width) * grid_per_pixel,
                           static_cast<long long>(vp.height) * grid_per_pixel);
   std::unordered_map<std::uint32_t, face_accumulator> faces;
@@ -808,6 +815,7 @@ vector_drawing painter_drawing(const frame& f) {
   d.width = vp.width;
   d.height = vp.height;
   d.background = f.fog ? f.fog->settings.color : f.background;
+  d.placement = placement_of(f);
   d.painter = true;
   std::size_t next_line = 0;
   for (std::size_t k = 0; k <= f.polygons.size(); ++k) {
