@@ -532,9 +532,9 @@ def main():
             log(f"skipped: no {what} at {path} (build it, or drop --no-build)")
             return 0
     notes = []
-    node_ok = bool(shutil.which("node") and shutil.which("npm"))
-    if node_ok and not os.path.isdir(os.path.join(PEERS_DIR, "node_modules")):
-        base.run(["npm", "ci", "--no-audit", "--no-fund"], cwd=PEERS_DIR)
+    # bench/peers/setup.sh installs nodejs and npm (apt-get) and the pinned npm packages.
+    setup = os.path.join(os.path.dirname(PEERS_DIR), "setup.sh")
+    node_ok = subprocess.run([setup]).returncode == 0 and bool(shutil.which("node") and shutil.which("npm"))
     if not node_ok:
         log("three.js skipped: node and npm are needed (apt-get install nodejs npm)")
         notes.append("three.js was skipped: node/npm missing on the machine that ran this.")
