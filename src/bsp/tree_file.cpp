@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <utility>
 
 #include "bsp/bsp_impl.h"
 #include "core/atomic_file.h"
@@ -55,6 +56,16 @@ std::uint64_t read_u64_at(std::string_view bytes, std::size_t at) {
   return v;
 }
 
+/// The stats' counts in file order, for the writer and the reader alike.
+const std::pair<std::size_t build_stats::*, const char*> stats_counts[] = {
+    {&build_stats::input_triangles, "stats.input_triangles"},
+    {&build_stats::degenerate_input, "stats.degenerate_input"},
+    {&build_stats::fragments, "stats.fragments"},
+    {&build_stats::splits, "stats.splits"},
+    {&build_stats::nodes, "stats.nodes"},
+    {&build_stats::depth, "stats.depth"},
+    {&build_stats::peak_rss_bytes, "stats.peak_rss_bytes"}};
+
 /// Heuristic names are printed into JSON unescaped: letters, digits and a few marks only.
 bool plain_name(const std::string& s) {
   if (s.empty()) return false;
@@ -67,13 +78,7 @@ common_part read_common(reader& in) {
   common_part c;
   c.stats_offset = in.offset();
   build_stats& s = c.stats;
-  s.input_triangles = in.u64("stats.input_triangles");
-  s.degenerate_input = in.u64("stats.degenerate_input");
-  s.fragments = in.u64("stats.fragments");
-  s.splits = in.u64("stats.splits");
-  s.nodes = in.u64("stats.nodes");
-  s.depth = in.u64("stats.depth");
-  s.peak_rss_bytes = in.u64("stats.peak_rss_bytes");
+  for (const auto& [field, name] : stats_counts) s.*field = static_cast<std::size_t>(in.u64(name));
   s.seed = in.u64("stats.seed");
   const std::size_t seconds_at = in.offset();
   s.build_seconds = in.f64("stats.build_seconds");
@@ -174,13 +179,7 @@ void reader::fail_at(std::size_t offset, const std::string& field, const std::st
 std::string indexed(const char* field, std::size_t i) { return std::string(field) + "[" + std::to_string(i) + "]"; }
 
 void write_common(writer& out, const build_stats& s, const common_part& common) {
-  out.u64(s.input_triangles);
-  out.u64(s.degenerate_input);
-  out.u64(s.fragments);
-  out.u64(s.splits);
-  out.u64(s.nodes);
-  out.u64(s.depth);
-  out.u64(s.peak_rss_bytes);
+  for (const auto& [field, name] : stats_counts) out.u64(s.*field);
   out.u64(s.seed);
   out.f64(s.build_seconds);
   out.text(s.heuristic);
