@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -128,6 +129,8 @@ struct build_cli {
   std::uint64_t seed = 0;
   std::optional<std::size_t> max_fragments;  ///< absent: default_fragment_budget(kernel)
   unsigned threads = 0;
+  std::string save;                  ///< build --save: write the tree here
+  const CLI::App* command = nullptr;  ///< to tell options given on the command line from defaults
 };
 
 /// Rejects an empty output name (`-o ""`): it would silently mean the default output.
@@ -150,7 +153,10 @@ void add_format_option(CLI::App* cmd, std::string& format) {
 }
 
 void add_build_options(CLI::App* cmd, build_cli& o) {
-  cmd->add_option("MESH", o.mesh, "mesh file: .off, .obj, .ply or .stl ('-': standard input, with --format)")
+  o.command = cmd;
+  cmd->add_option("MESH", o.mesh,
+                  "mesh file: .off, .obj, .ply or .stl ('-': standard input, with --format), or a saved tree "
+                  "(.exbsp, from build --save)")
       ->required();
   add_format_option(cmd, o.format);
   cmd->add_option("--kernel", o.kernel,
@@ -192,7 +198,28 @@ struct progress_line {
   }
 };
 
-exbsp::bsp build_tree(const build_cli& o, progress_line& progress) {
+/// A saved tree (docs/tree-file.md): --kernel, --heuristic and --seed may only repeat what the
+/// tree was built with (they cannot change a built tree); --threads and --max-fragments, which
+/// only steer a build, are ignored.
+exbsp::bsp load_tree(const build_cli& o, double* load_seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  exbsp::bsp tree = exbsp::bsp::load(o.mesh);
+  if (load_seconds) *load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const exbsp::build_stats& s = tree.stats();
+  const auto conflict = [&](const char* option, const std::string& given, const std::string& saved) {
+    if (o.command && o.command->count(option) && given != saved)
+      throw exbsp::usage_error(o.mesh + " is a saved tree built with " + option + " " + saved + "; " + option + " " +
+                               given + " cannot change it (build from the mesh instead)");
+  };
+  conflict("--kernel", o.kernel, s.kernel);
+  conflict("--heuristic", o.heuristic, s.heuristic);
+  conflict("--seed", std::to_string(o.seed), std::to_string(s.seed));
+  return tree;
+}
+
+exbsp::bsp build_tree(const build_cli& o, progress_line& progress, double* load_seconds = nullptr) {
+  // A saved tree by its extension or magic; never standard input or a mesh given --format.
+  if (o.format.empty() && o.mesh != "-" && exbsp::bsp::is_saved_tree(o.mesh)) return load_tree(o, load_seconds);
   const exbsp::triangle_soup soup = exbsp::cli::read_mesh_input(o.mesh, o.format, std::cin);
   exbsp::build_options options;
   options.kernel = exbsp::parse_kernel(o.kernel);
@@ -221,14 +248,18 @@ nlohmann::json stats_json(const exbsp::build_stats& s) {
 
 int run_build(const build_cli& o, bool json) {
   progress_line progress;
-  const exbsp::bsp tree = build_tree(o, progress);
+  double load_seconds = -1;
+  const exbsp::bsp tree = build_tree(o, progress, &load_seconds);
+  if (!o.save.empty()) tree.save(o.save);
   const auto& s = tree.stats();
   if (json) {
     nlohmann::json j = stats_json(s);
     j["mesh"] = o.mesh == "-" ? "<stdin>" : o.mesh;
-    j["seed"] = o.seed;
+    j["seed"] = s.seed;
+    if (load_seconds >= 0) j["load_seconds"] = load_seconds;  // a saved tree: build_seconds is its build's
     std::cout << j.dump() << "\n";
   } else {
+    if (load_seconds >= 0) std::cout << "saved tree loaded in " << load_seconds << " s; ";
     std::cout << (o.mesh == "-" ? "<stdin>" : o.mesh) << ": " << s.input_triangles << " input triangles (" << s.degenerate_input
               << " degenerate, skipped) -> " << s.fragments << " fragments, " << s.splits
               << " splits, " << s.nodes << " nodes, depth " << s.depth << "; " << s.kernel << ", "
@@ -362,6 +393,8 @@ int main(int argc, char** argv) {
   bool json = false;
   auto* build = app.add_subcommand("build", "build the BSP tree of MESH and print its statistics");
   add_build_options(build, build_opts);
+  build->add_option("--save", build_opts.save, "write the tree to a saved-tree file T.exbsp, for order and build")
+      ->check(non_empty_path);
   build->add_flag("--json", json,
                   "print one JSON object: input_triangles, degenerate_input, fragments, splits, "
                   "nodes, depth, build_seconds, kernel, heuristic, ...");
