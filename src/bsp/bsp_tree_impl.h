@@ -448,7 +448,13 @@ std::vector<std::uint32_t> basic_bsp_tree<G>::order_for_direction(const vec3d& d
 template <class G>
 class bsp_kernel_impl final : public bsp_impl {
 public:
-  bsp_kernel_impl(const triangle_soup& soup, const build_options& options) : tree_(soup, options) {}
+  bsp_kernel_impl(const triangle_soup& soup, const build_options& options) : tree_(soup, options) {
+    planes_.reserve(tree_.nodes().size());
+    for (const auto& nd : tree_.nodes()) {
+      const soup_triangle& t = soup.triangles[nd.plane_source];
+      planes_.push_back({soup.vertices[t.v[0]], soup.vertices[t.v[1]], soup.vertices[t.v[2]]});
+    }
+  }
   const build_stats& stats() const override { return tree_.stats(); }
   kernel_id kernel() const override { return G::id; }
   std::size_t fragment_count() const override { return tree_.fragments().size(); }
@@ -479,8 +485,27 @@ public:
     return out;
   }
 
+  std::size_t node_count() const override { return tree_.nodes().size(); }
+  bsp_node node(std::size_t k) const override {
+    if (k >= tree_.nodes().size()) throw usage_error("node: index out of range");
+    const auto& nd = tree_.nodes()[k];
+    return {static_cast<std::uint32_t>(k), nd.plane_source, planes_[k], nd.first, nd.count,
+            nd.negative, nd.positive, nd.parent, nd.side_in_parent};
+  }
+  void traverse(const vec3d& at, bool direction, bsp_visitor& visitor, bool back_to_front) const override {
+    const auto& geom = tree_.geometry();
+    const auto side_of = [&](std::uint32_t plane) {
+      return direction ? geom.side_of_direction(plane, at) : geom.side_of_eye(plane, at);
+    };
+    tree_.walk(side_of, back_to_front,
+               [&](std::int32_t k, int s) { visitor.enter(node(static_cast<std::size_t>(k)), s); },
+               [&](std::int32_t k) { visitor.fragments(node(static_cast<std::size_t>(k))); },
+               [&](std::int32_t k, int side) { visitor.cell(node(static_cast<std::size_t>(k)), side); });
+  }
+
 private:
   basic_bsp_tree<G> tree_;
+  std::vector<std::array<vec3d, 3>> planes_;  ///< per node: its plane's three input points
 };
 
 }  // namespace exbsp

@@ -64,8 +64,6 @@ struct view_setup {
 /// front-to-back with a coverage mask. Both give the same image.
 enum class paint_order { back_to_front, front_to_back };
 
-struct bsp_cell_tree;  // curves.h: the BSP's shape, rebuilt once for placing curve pieces
-
 /// The data flowing through the stages. Inputs are set by the caller; each stage fills the
 /// products it is responsible for.
 struct frame {
@@ -97,7 +95,6 @@ struct frame {
   std::vector<rgb8> fragment_colors;       ///< "lighting": colour by fragment index (empty: face colours)
   std::vector<screen_line> lines;          ///< "curves": clipped curve pieces in painter's slots
   std::optional<fog_shading> fog;          ///< "fog": applied per pixel by raster/antialias, per path by svg
-  std::shared_ptr<const bsp_cell_tree> cells;  ///< "curves": the shape of `tree`, built once per tree
 
   // Counters for --verbose.
   std::size_t culled = 0;         ///< fragments removed by backface_culling

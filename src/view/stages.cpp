@@ -75,13 +75,11 @@ clipped_point transform_point(const mat4& pm, const viewport& vp, const vec3d& p
 std::string build_stage(frame& f) {
   if (f.soup.triangles.empty()) {  // nothing to draw: no tree, no fragments
     f.tree.reset();
-    f.cells.reset();
     f.fragments.clear();
     f.points.clear();
     f.fragment_points.clear();
     return "empty scene";
   }
-  f.cells.reset();  // the curves stage's copy of the old tree's shape
   f.tree.emplace(bsp::build(f.soup, f.build));
   f.fragments = f.tree->fragments_double();
   index_points(f);

@@ -12,9 +12,9 @@
 #include <unordered_map>
 
 #include "core/errors.h"
+#include "view/clip_stage.h"
 #include "view/fog.h"
 #include "view/pipeline.h"
-#include "view/segment_clip.h"
 
 namespace exbsp::view {
 
