@@ -69,6 +69,7 @@ std::string depth_of_field_stage(frame& f, const pipeline& per_view) {
   std::vector<screen_line> lines = std::move(f.lines);
   std::vector<rgb8> colors = std::move(f.fragment_colors);
   std::optional<fog_shading> fog = std::move(f.fog);
+  std::optional<sample_shader> shader = std::move(f.shader);
   const std::size_t culled = f.culled, fully_clipped = f.fully_clipped;
   const image centre_picture = f.picture;
 
@@ -86,6 +87,7 @@ std::string depth_of_field_stage(frame& f, const pipeline& per_view) {
   f.lines = std::move(lines);
   f.fragment_colors = std::move(colors);
   f.fog = std::move(fog);
+  f.shader = std::move(shader);
   f.culled = culled;
   f.fully_clipped = fully_clipped;
   f.picture = centre_picture;

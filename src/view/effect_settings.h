@@ -68,7 +68,7 @@ struct effect_settings {
   antialias_settings antialias;
 };
 
-/// What the "fog" stage prepares for the painters (raster, antialias, svg): the settings and
+/// What the "fog" stage computes for a view (its sample shader reads it): the settings and
 /// the inverse of the projection, to turn a window point (x, y, depth) back into eye space.
 struct fog_shading {
   fog_settings settings;

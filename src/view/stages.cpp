@@ -94,6 +94,7 @@ std::string order_stage(frame& f) {
   f.fragment_colors.clear();
   f.lines.clear();
   f.fog.reset();
+  f.shader.reset();
   if (!f.tree) {
     if (!f.fragments.empty()) throw usage_error("order_stage: the BSP has not been built");
     f.order.clear();
@@ -192,9 +193,9 @@ std::string svg_stage(frame& f) {
     f.svg = svg_document(d);
     return "visible regions: " + drawing_note(d, f.svg.size());
   }
-  f.svg = f.lines.empty() && !f.fog ? svg_document(f.view.vp, f.background, f.polygons)
-                                     : svg_document(f.view.vp, f.background, f.polygons, f.lines,
-                                                    f.fog ? &*f.fog : nullptr);
+  f.svg = f.lines.empty() && !f.shader ? svg_document(f.view.vp, f.background, f.polygons)
+                                        : svg_document(f.view.vp, f.background, f.polygons, f.lines,
+                                                       f.shader ? &*f.shader : nullptr);
   return "painter: " + std::to_string(f.polygons.size()) + " paths, " + std::to_string(f.lines.size()) +
          " curve pieces, " + std::to_string(f.svg.size()) + " bytes";
 }
