@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "view/effect_settings.h"
+#include "view/json_reader.h"
 #include "view/pipeline.h"
 #include "view/sample_shader.h"
 
@@ -38,5 +39,10 @@ rgb8 fog_color(const fog_shading& fog, rgb8 base, double d);
 /// "fog": f.fog = make_fog_shading(f.settings.fog, f.view) and f.shader = its sample
 /// shader: fog_color at each sample's eye distance; the background takes the fog colour.
 std::string fog_stage(frame& f);
+
+/// "fog" parameters into out.fog (defaults from the scene's near, far and background; warns
+/// when a linear fog ends beyond the far plane); scene_error names the bad key.
+void parse_fog_parameters(const reader& r, const json& params, const std::string& key,
+                          const effect_scene& scene, effect_settings& out);
 
 }  // namespace exbsp::view
