@@ -60,7 +60,8 @@ curve_cells make_curve_cells(const bsp& tree, const view_setup& view, const std:
 }
 
 void place_chord(const curve_cells& cells, const vec3d& a, const vec3d& b, const std::vector<vec3d>& hull,
-                 std::uint32_t curve, std::size_t segment, bool point, std::vector<curve_piece>& out) {
+                 std::uint32_t curve, std::size_t segment, bool point, std::vector<curve_piece>& out,
+                 std::vector<std::uint8_t>* hull_ranges) {
   if (cells.nodes.empty()) {
     out.push_back({a, b, 0, curve, segment, 0.0, point});
     return;
@@ -91,10 +92,16 @@ void place_chord(const curve_cells& cells, const vec3d& a, const vec3d& b, const
       if (!point && (t0 > 0 || t1 < 1) && pa == pb) return;  // a split-off sliver that rounds to a point
       out.push_back({pa, pb, cells.position[nd.index][side > 0], curve, segment, t0, point});
     };
-    int lo = 1, hi = -1;  // the hull's sign range
-    for (const vec3d& h : hull) {
-      const int s = side_of_plane(nd, h);
-      lo = std::min(lo, s), hi = std::max(hi, s);
+    int lo = 1, hi = -1;  // the hull's sign range, once per node and curve
+    std::uint8_t* cached = hull_ranges ? &(*hull_ranges)[nd.index] : nullptr;
+    if (cached && *cached != unknown_range) {
+      lo = *cached / 3 - 1, hi = *cached % 3 - 1;
+    } else {
+      for (const vec3d& h : hull) {
+        const int s = side_of_plane(nd, h);
+        lo = std::min(lo, s), hi = std::max(hi, s);
+      }
+      if (cached) *cached = static_cast<std::uint8_t>(3 * (lo + 1) + (hi + 1));
     }
     // The chord's ends decide (a convex piece of the chord lies between them): exactly.
     const int sa = clamped_side(nd, a, lo, hi), sb = clamped_side(nd, b, lo, hi);
@@ -136,6 +143,7 @@ placed_curves place_curves(const frame& f) {
     return {w.x, w.y};
   };
   std::vector<curve_piece>& pieces = out.pieces;
+  std::vector<std::uint8_t> hull_ranges;  // per node: the current curve's hull sign range
   for (std::uint32_t k = 0; k < f.curves.size(); ++k) {
     if (f.curves[k].polyline) {  // "lines": the segments are the chords
       const std::vector<vec3d>& pts = f.curves[k].control_points;
@@ -146,6 +154,7 @@ placed_curves place_curves(const frame& f) {
       continue;
     }
     const bezier_curve curve(f.curves[k].control_points);
+    hull_ranges.assign(cells.nodes.size(), unknown_range);
     if (curve.degree() == 0) {
       const vec3d p = curve.control_points()[0];
       place_chord(cells, p, p, curve.control_points(), k, 0, true, pieces);
@@ -155,7 +164,8 @@ placed_curves place_curves(const frame& f) {
     out.forced += poly.forced_chords;
     for (std::size_t s = 0; s + 1 < poly.points.size(); ++s) {
       ++out.chords;
-      place_chord(cells, poly.points[s], poly.points[s + 1], curve.control_points(), k, s, false, pieces);
+      place_chord(cells, poly.points[s], poly.points[s + 1], curve.control_points(), k, s, false, pieces,
+                  &hull_ranges);
     }
   }
   std::stable_sort(pieces.begin(), pieces.end(), [](const curve_piece& x, const curve_piece& y) {

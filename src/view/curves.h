@@ -81,11 +81,16 @@ struct curve_cells {
 /// drawn_order names a fragment the tree does not have.
 curve_cells make_curve_cells(const bsp& tree, const view_setup& view, const std::vector<std::uint32_t>& drawn_order);
 
+/// hull_ranges entry of a node whose hull sign range is not known yet (else 3 (lo + 1) + hi + 1).
+constexpr std::uint8_t unknown_range = 0xff;
+
 /// Pushes chord (a, b) of polyline segment `segment` of curve `curve` down the tree (depth
 /// rule above; `hull`: the curve's control points, or the segment's two ends) and appends
-/// its pieces to `out`. With no nodes: one piece at position 0.
+/// its pieces to `out`. With no nodes: one piece at position 0. `hull_ranges` (optional, one
+/// entry per node, unknown_range at first) keeps the hull's sign ranges for the curve's next chords.
 void place_chord(const curve_cells& cells, const vec3d& a, const vec3d& b, const std::vector<vec3d>& hull,
-                 std::uint32_t curve, std::size_t segment, bool point, std::vector<curve_piece>& out);
+                 std::uint32_t curve, std::size_t segment, bool point, std::vector<curve_piece>& out,
+                 std::vector<std::uint8_t>* hull_ranges = nullptr);
 
 /// Steps 1 and 2 for f.curves: the pieces sorted by position, then curve, then along the curve.
 struct placed_curves {
