@@ -452,10 +452,14 @@ class bsp_kernel_impl final : public bsp_impl {
 public:
   bsp_kernel_impl(const triangle_soup& soup, const build_options& options)
       : input_{{}, 0, options.sampled_candidates, options.sampled_samples, options.sampled_split_weight, soup},
-        tree_(soup, options) {}
+        tree_(soup, options) {
+    init_planes(soup);
+  }
   /// A saved tree (tree_file.h).
   bsp_kernel_impl(tree_file::reader& in, tree_file::common_part&& common)
-      : input_(std::move(common)), tree_(input_, in) {}
+      : input_(std::move(common)), tree_(input_, in) {
+    init_planes(input_.soup);
+  }
   const build_stats& stats() const override { return tree_.stats(); }
   kernel_id kernel() const override { return G::id; }
   std::size_t fragment_count() const override { return tree_.fragments().size(); }
@@ -490,9 +494,36 @@ public:
     tree_.write_tree(out);
   }
 
+  std::size_t node_count() const override { return tree_.nodes().size(); }
+  bsp_node node(std::size_t k) const override {
+    if (k >= tree_.nodes().size()) throw usage_error("node: index out of range");
+    const auto& nd = tree_.nodes()[k];
+    return {static_cast<std::uint32_t>(k), nd.plane_source, planes_[k], nd.first, nd.count,
+            nd.negative, nd.positive, nd.parent, nd.side_in_parent};
+  }
+  void traverse(const vec3d& at, bool direction, bsp_visitor& visitor, bool back_to_front) const override {
+    const auto& geom = tree_.geometry();
+    const auto side_of = [&](std::uint32_t plane) {
+      return direction ? geom.side_of_direction(plane, at) : geom.side_of_eye(plane, at);
+    };
+    tree_.walk(side_of, back_to_front,
+               [&](std::int32_t k, int s) { visitor.enter(node(static_cast<std::size_t>(k)), s); },
+               [&](std::int32_t k) { visitor.fragments(node(static_cast<std::size_t>(k))); },
+               [&](std::int32_t k, int side) { visitor.cell(node(static_cast<std::size_t>(k)), side); });
+  }
+
 private:
+  void init_planes(const triangle_soup& soup) {
+    planes_.reserve(tree_.nodes().size());
+    for (const auto& nd : tree_.nodes()) {
+      const soup_triangle& t = soup.triangles[nd.plane_source];
+      planes_.push_back({soup.vertices[t.v[0]], soup.vertices[t.v[1]], soup.vertices[t.v[2]]});
+    }
+  }
+
   tree_file::common_part input_;  ///< the soup and options, for saving (its stats are unused)
   basic_bsp_tree<G> tree_;
+  std::vector<std::array<vec3d, 3>> planes_;  ///< per node: its plane's three input points
 };
 
 }  // namespace exbsp

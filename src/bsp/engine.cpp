@@ -77,17 +77,27 @@ std::vector<fragment_d> bsp::fragments_double() const {
 
 exact_triangle bsp::fragment_exact(std::size_t i) const { return impl_->fragment_exact(i); }
 
-std::vector<std::uint32_t> bsp::order_from_eye(const vec3d& eye, bool back_to_front) const {
+namespace detail {
+void require_eye(const vec3d& eye, const char* function) {
   for (double x : eye)
-    if (!std::isfinite(x)) throw usage_error("order_from_eye: the eye must be finite");
+    if (!std::isfinite(x)) throw usage_error(std::string(function) + ": the eye must be finite");
+}
+
+void require_direction(const vec3d& d, const char* function) {
+  for (double x : d)
+    if (!std::isfinite(x)) throw usage_error(std::string(function) + ": the direction must be finite");
+  if (d[0] == 0 && d[1] == 0 && d[2] == 0)
+    throw usage_error(std::string(function) + ": the direction must not be zero");
+}
+}  // namespace detail
+
+std::vector<std::uint32_t> bsp::order_from_eye(const vec3d& eye, bool back_to_front) const {
+  detail::require_eye(eye, "order_from_eye");
   return impl_->order_from_eye(eye, back_to_front);
 }
 
 std::vector<std::uint32_t> bsp::order_for_direction(const vec3d& d, bool back_to_front) const {
-  for (double x : d)
-    if (!std::isfinite(x)) throw usage_error("order_for_direction: the direction must be finite");
-  if (d[0] == 0 && d[1] == 0 && d[2] == 0)
-    throw usage_error("order_for_direction: the direction must not be zero");
+  detail::require_direction(d, "order_for_direction");
   return impl_->order_for_direction(d, back_to_front);
 }
 

@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "bsp/traversal.h"
 #include "mesh/soup.h"
 
 namespace exbsp {
@@ -121,9 +122,22 @@ public:
   /// Throws usage_error for a zero or non-finite d.
   std::vector<std::uint32_t> order_for_direction(const vec3d& d, bool back_to_front = true) const;
 
-  /// Structure for checks and point location: for fragment i, each ancestor node's plane
-  /// (plane_face = index of the input triangle in soup.triangles whose plane it is) and the
-  /// side (+1 / -1) of it that fragment i lies on, root first. Empty for fragments at the root.
+  /// The tree's nodes and cells (traversal.h). node(k) for k < node_count(); throws
+  /// usage_error for k out of range.
+  std::size_t node_count() const;
+  bsp_node node(std::size_t k) const;
+  /// Walks the tree for an eye point (a direction of projection d) calling `visitor` in the
+  /// order of traversal.h; the fragments it visits are exactly order_from_eye(eye) (order_for_direction(d)).
+  /// Same errors as order_from_eye (order_for_direction).
+  void traverse_from_eye(const vec3d& eye, bsp_visitor& visitor, bool back_to_front = true) const;
+  void traverse_for_direction(const vec3d& d, bsp_visitor& visitor, bool back_to_front = true) const;
+
+  // For checks (tests): the tree's structure seen from one fragment. Walking the tree is
+  // traverse_from_eye's job; this is the independent path the tests compare against.
+
+  /// For fragment i, each ancestor node's plane (plane_face = index of the input triangle in
+  /// soup.triangles whose plane it is) and the side (+1 / -1) of it that fragment i lies on,
+  /// root first. Empty for fragments at the root.
   struct ancestor { std::uint32_t plane_face; int side; };
   std::vector<ancestor> ancestors(std::size_t i) const;
 
