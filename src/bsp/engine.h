@@ -67,8 +67,12 @@ struct candidate_score_input {
 };
 
 /// Which candidates the "custom" heuristic scores, counted over which fragments.
+/// `all` costs n^2 exact side tests per node of n fragments: min-split's work without the
+/// bound that lets min-split stop early (hand.off, 2 390 triangles: 82 s against 12 s), so
+/// use `sampled` on large meshes; sampled_candidates >= n there scores every fragment on the
+/// sample.
 enum class candidate_set {
-  all,     ///< every fragment of the list, counted over the whole list (n^2 tests, as min-split)
+  all,     ///< every fragment of the list, counted over the whole list
   sampled  ///< the sampled heuristic's seeded candidates, counted over its sample
 };
 
@@ -148,6 +152,12 @@ public:
 
   /// Fragment indices back to front (or front to back) for a perspective eye point
   /// (DESIGN.md section 3).
+  /// Per frame: the tree does not depend on the viewpoint, so build once and call this (or
+  /// order_for_direction) for every new camera; no rebuild. Cost: one exact side test of the
+  /// eye per node and one visit per fragment, O(nodes + fragments), allocating only the
+  /// result. Measured on fandisk (12 946 triangles; 29 123 fragments, 15 653 nodes; exact
+  /// kernel, default heuristic, 2 busy cores): build 0.91 s, order 0.58 ms median (0.43 ms
+  /// best), about 1/1500 of the build; Epeck: 3.2 s and 1.5 ms. Concurrent calls are safe.
   std::vector<std::uint32_t> order_from_eye(const vec3d& eye, bool back_to_front = true) const;
   /// Same for a parallel projection with direction of projection d (eye into the scene).
   /// Throws usage_error for a zero or non-finite d.
