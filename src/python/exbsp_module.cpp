@@ -143,11 +143,27 @@ py::dict stats_dict(const exbsp::build_stats& s) {
   return d;
 }
 
+/// A numpy array of `shape` (row-major) with element j = at(j).
+template <class T, class At>
+py::array_t<T> make_array(std::vector<py::ssize_t> shape, const At& at) {
+  py::array_t<T> out(shape);
+  T* p = out.mutable_data();
+  for (py::ssize_t j = 0; j < out.size(); ++j) p[j] = at(static_cast<std::size_t>(j));
+  return out;
+}
+
 template <class T>
 py::array_t<T> to_numpy(const std::vector<T>& v) {
-  py::array_t<T> out(static_cast<py::ssize_t>(v.size()));
-  std::copy(v.begin(), v.end(), out.mutable_data());
-  return out;
+  return make_array<T>({static_cast<py::ssize_t>(v.size())}, [&](std::size_t j) { return v[j]; });
+}
+
+/// (n, 3) uint32 corner indices and (n,) face ids of section or soup triangles.
+template <class Triangle, class Corners>
+std::pair<py::array_t<std::uint32_t>, py::array_t<std::uint32_t>> triangle_arrays(const std::vector<Triangle>& ts,
+                                                                                  Corners corners) {
+  const auto n = static_cast<py::ssize_t>(ts.size());
+  return {make_array<std::uint32_t>({n, 3}, [&](std::size_t j) { return (ts[j / 3].*corners)[j % 3]; }),
+          make_array<std::uint32_t>({n}, [&](std::size_t j) { return ts[j].face; })};
 }
 
 /// exbsp.build: see docs/python.md.
@@ -212,19 +228,8 @@ py::dict section(const py::array_t<double, py::array::c_style | py::array::force
     py::gil_scoped_release no_gil;
     r = exbsp::section(soup, plane, options);
   }
-  const auto p = static_cast<py::ssize_t>(r.points.size());
-  py::array_t<double> points({p, py::ssize_t{3}});
-  for (py::ssize_t i = 0; i < p; ++i)
-    for (py::ssize_t k = 0; k < 3; ++k) points.mutable_at(i, k) = r.points[static_cast<std::size_t>(i)].v[static_cast<std::size_t>(k)];
-  const auto triangles = [](const std::vector<exbsp::section_triangle>& ts) {
-    py::array_t<std::uint32_t> idx({static_cast<py::ssize_t>(ts.size()), py::ssize_t{3}});
-    py::array_t<std::uint32_t> face(static_cast<py::ssize_t>(ts.size()));
-    for (std::size_t i = 0; i < ts.size(); ++i) {
-      for (std::size_t k = 0; k < 3; ++k) idx.mutable_at(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(k)) = ts[i].p[k];
-      face.mutable_at(static_cast<py::ssize_t>(i)) = ts[i].face;
-    }
-    return std::make_pair(idx, face);
-  };
+  const auto points = make_array<double>({static_cast<py::ssize_t>(r.points.size()), 3},
+                                         [&](std::size_t j) { return r.points[j / 3].v[j % 3]; });
   py::dict d;
   d["plane"] = py::make_tuple(plane[0], plane[1], plane[2], plane[3]);
   d["closed"] = r.closed;
@@ -234,7 +239,7 @@ py::dict section(const py::array_t<double, py::array::c_style | py::array::force
     for (const auto& pt : r.points) ex.append(exact_point(pt.exact));
     d["exact"] = ex;
   }
-  const auto kept = triangles(r.kept);
+  const auto kept = triangle_arrays(r.kept, &exbsp::section_triangle::p);
   d["kept"] = kept.first;
   d["kept_faces"] = kept.second;
   py::list outline;
@@ -245,7 +250,7 @@ py::dict section(const py::array_t<double, py::array::c_style | py::array::force
     outline.append(chain);
   }
   d["outline"] = outline;
-  d["cap"] = triangles(r.cap).first;
+  d["cap"] = triangle_arrays(r.cap, &exbsp::section_triangle::p).first;
   d["cap_face"] = r.cap_face;
   py::dict s;
   s["input_triangles"] = r.stats.input_triangles;
@@ -271,16 +276,10 @@ py::tuple read_mesh(const std::string& path) {
     py::gil_scoped_release no_gil;
     soup = exbsp::read_mesh(path);
   }
-  py::array_t<double> v({static_cast<py::ssize_t>(soup.vertices.size()), py::ssize_t{3}});
-  for (std::size_t i = 0; i < soup.vertices.size(); ++i)
-    for (std::size_t k = 0; k < 3; ++k) v.mutable_at(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(k)) = soup.vertices[i][k];
-  py::array_t<std::uint32_t> t({static_cast<py::ssize_t>(soup.triangles.size()), py::ssize_t{3}});
-  py::array_t<std::uint32_t> f(static_cast<py::ssize_t>(soup.triangles.size()));
-  for (std::size_t i = 0; i < soup.triangles.size(); ++i) {
-    for (std::size_t k = 0; k < 3; ++k) t.mutable_at(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(k)) = soup.triangles[i].v[k];
-    f.mutable_at(static_cast<py::ssize_t>(i)) = soup.triangles[i].face;
-  }
-  return py::make_tuple(v, t, f);
+  const auto v = make_array<double>({static_cast<py::ssize_t>(soup.vertices.size()), 3},
+                                     [&](std::size_t j) { return soup.vertices[j / 3][j % 3]; });
+  const auto t = triangle_arrays(soup.triangles, &exbsp::soup_triangle::v);
+  return py::make_tuple(v, t.first, t.second);
 }
 
 /// A Python exception class named exbsp.NAME deriving from `bases` (a tuple), added to `m`.
@@ -371,14 +370,9 @@ PYBIND11_MODULE(exbsp, m) {
           "fragments",
           [](const exbsp::bsp& t) {
             const std::vector<exbsp::fragment_d> f = t.fragments_double();
-            py::array_t<double> v({static_cast<py::ssize_t>(f.size()), py::ssize_t{3}, py::ssize_t{3}});
-            py::array_t<std::uint32_t> faces(static_cast<py::ssize_t>(f.size()));
-            double* out = v.mutable_data();
-            for (std::size_t i = 0; i < f.size(); ++i) {
-              for (std::size_t a = 0; a < 3; ++a)
-                for (std::size_t k = 0; k < 3; ++k) *out++ = f[i].v[a][k];
-              faces.mutable_at(static_cast<py::ssize_t>(i)) = f[i].face;
-            }
+            const auto n = static_cast<py::ssize_t>(f.size());
+            const auto v = make_array<double>({n, 3, 3}, [&](std::size_t j) { return f[j / 9].v[j / 3 % 3][j % 3]; });
+            const auto faces = make_array<std::uint32_t>({n}, [&](std::size_t j) { return f[j].face; });
             return py::make_tuple(v, faces);
           },
           "(vertices (k, 3, 3) float64, face ids (k,) uint32) of the fragments in storage order.")
