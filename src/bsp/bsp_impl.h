@@ -6,6 +6,9 @@
 #include "bsp/engine.h"
 
 namespace exbsp {
+namespace tree_file {
+class writer;
+}
 
 class bsp_impl {
 public:
@@ -18,6 +21,8 @@ public:
   virtual std::vector<std::uint32_t> order_from_eye(const vec3d& eye, bool back_to_front) const = 0;
   virtual std::vector<std::uint32_t> order_for_direction(const vec3d& d, bool back_to_front) const = 0;
   virtual std::vector<bsp::ancestor> ancestors(std::size_t i) const = 0;
+  /// Writes the body of a saved tree (tree_file.h): the common part, then the kernel's own.
+  virtual void write_tree(tree_file::writer& out) const = 0;
 };
 
 std::unique_ptr<bsp_impl> make_bsp_exact(const triangle_soup&, const build_options&);

@@ -140,6 +140,7 @@ py::dict stats_dict(const exbsp::build_stats& s) {
   d["peak_rss_bytes"] = s.peak_rss_bytes;
   d["kernel"] = s.kernel;
   d["heuristic"] = s.heuristic;
+  d["seed"] = s.seed;
   return d;
 }
 
