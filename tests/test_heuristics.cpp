@@ -50,7 +50,9 @@ exbsp::build_options custom(std::function<double(const exbsp::candidate_score_in
   return o;
 }
 
-double min_split_score(const exbsp::candidate_score_input& in) { return static_cast<double>(in.straddling); }
+double min_split_score(const exbsp::candidate_score_input& in) {
+  return static_cast<double>(in.straddling);
+}
 
 /// The sampled heuristic's score with its default weight (8).
 double sampled_score(const exbsp::candidate_score_input& in) {
@@ -70,8 +72,10 @@ double mixed_score(const exbsp::candidate_score_input& in) {
 TEST(custom_heuristic, empty_single_and_all_degenerate_input_never_call_the_score) {
   std::atomic<int> calls{0};
   const auto o = custom([&](const exbsp::candidate_score_input&) { return ++calls, 0.0; });
-  exbsp::triangle_soup flat = soup_of({{{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}, {{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}}});
-  for (const auto& soup : {exbsp::triangle_soup{}, soup_of({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}}), flat}) {
+  exbsp::triangle_soup flat =
+      soup_of({{{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}, {{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}}});
+  for (const auto& soup :
+       {exbsp::triangle_soup{}, soup_of({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}}), flat}) {
     const auto t = exbsp::bsp::build(soup, o);
     EXPECT_EQ(t.stats().heuristic, "custom");
   }
@@ -105,17 +109,19 @@ TEST(custom_heuristic, exception_from_the_score_propagates_out_of_build) {
   exbsp::triangle_soup deep;  // 12 crossing triangles: the build reaches depth 12
   for (int k = 0; k < 12; ++k) {
     const double a = k * 0.157;
-    deep.add_triangle({std::cos(a) * 5, std::sin(a) * 5, -1}, {-std::cos(a) * 5, -std::sin(a) * 5, -1},
-                      {0.1 * k, 0.05 * k, 3});
+    deep.add_triangle({std::cos(a) * 5, std::sin(a) * 5, -1},
+                      {-std::cos(a) * 5, -std::sin(a) * 5, -1}, {0.1 * k, 0.05 * k, 3});
   }
   for (std::uint32_t at_depth : {1u, 6u})
     for (unsigned threads : {1u, 2u, 4u}) {
       auto o = custom([&](const exbsp::candidate_score_input& in) -> double {
-        if (in.depth >= at_depth) throw score_failed("no score at depth " + std::to_string(in.depth));
+        if (in.depth >= at_depth)
+          throw score_failed("no score at depth " + std::to_string(in.depth));
         return min_split_score(in);
       });
       o.threads = threads;
-      EXPECT_THROW(exbsp::bsp::build(deep, o), score_failed) << "depth " << at_depth << ", threads " << threads;
+      EXPECT_THROW(exbsp::bsp::build(deep, o), score_failed)
+          << "depth " << at_depth << ", threads " << threads;
     }
   // The build does reach that depth without the exception.
   EXPECT_GE(exbsp::bsp::build(deep, custom(min_split_score)).stats().depth, 7u);
@@ -137,7 +143,8 @@ TEST(custom_heuristic, counts_cover_the_list_and_name_the_candidate) {
   });
   exbsp::bsp::build(soup, o);
   ASSERT_EQ(root.size(), 4u);  // every fragment of the root list, once
-  std::sort(root.begin(), root.end(), [](const auto& a, const auto& b) { return a.candidate < b.candidate; });
+  std::sort(root.begin(), root.end(),
+            [](const auto& a, const auto& b) { return a.candidate < b.candidate; });
   for (std::uint32_t i = 0; i < 4; ++i) {
     EXPECT_EQ(root[i].candidate, i);
     EXPECT_EQ(root[i].face, i);
@@ -178,7 +185,8 @@ TEST(custom_heuristic, straddling_count_over_all_candidates_is_min_split_exactly
   exbsp::build_options ms;
   ms.heuristic = "min-split";
   std::size_t checked = 0;
-  for (const char* name : {"cube.off", "tetrahedron.off", "cross.off", "pyramid.off", "joint.off"}) {
+  for (const char* name :
+       {"cube.off", "tetrahedron.off", "cross.off", "pyramid.off", "joint.off"}) {
     const soup_case* mesh = cad_mesh(name);
     if (!mesh) continue;
     const auto soup = mesh->soup();
@@ -190,7 +198,8 @@ TEST(custom_heuristic, straddling_count_over_all_candidates_is_min_split_exactly
 }
 
 RC_GTEST_PROP(custom_heuristic, reproduces_min_split_and_sampled_on_every_generator, ()) {
-  const soup_case c = *rc::gen::oneOf(any_small_soup(), coplanar_stack(), vertex_on_plane(), cyclic_sticks());
+  const soup_case c =
+      *rc::gen::oneOf(any_small_soup(), coplanar_stack(), vertex_on_plane(), cyclic_sticks());
   const exbsp::triangle_soup soup = c.soup();
   exbsp::build_options ms, sa;
   ms.heuristic = "min-split";
@@ -217,7 +226,8 @@ TEST(custom_heuristic, same_tree_for_every_exact_kernel_and_thread_count) {
       auto o = custom(mixed_score, set);
       o.threads = 1;
       const std::string reference = tree_text(soup, o);
-      for (const auto kernel : {exbsp::kernel_id::exact, exbsp::kernel_id::epeck, exbsp::kernel_id::gmpq})
+      for (const auto kernel :
+           {exbsp::kernel_id::exact, exbsp::kernel_id::epeck, exbsp::kernel_id::gmpq})
         for (unsigned threads : {1u, 2u, 5u}) {
           if (kernel == exbsp::kernel_id::gmpq && soup.triangles.size() > 100) continue;  // minutes
           o.kernel = kernel;
@@ -235,7 +245,9 @@ TEST(custom_heuristic, ties_go_to_the_earliest_candidate) {
   const auto soup = cad_mesh("cross.off") ? cad_mesh("cross.off")->soup() : cyclic_soup();
   EXPECT_EQ(tree_text(soup, custom([](const auto&) { return 1.0; })), tree_text(soup, naive));
   // Scores that differ only in sign of zero tie as well.
-  EXPECT_EQ(tree_text(soup, custom([](const exbsp::candidate_score_input& in) { return in.candidate % 2 ? -0.0 : 0.0; })),
+  EXPECT_EQ(tree_text(soup, custom([](const exbsp::candidate_score_input& in) {
+                        return in.candidate % 2 ? -0.0 : 0.0;
+                      })),
             tree_text(soup, naive));
 }
 

@@ -40,7 +40,13 @@ inline std::uint64_t mix64(std::uint64_t x) {
 }
 
 /// Heuristic indices; the first four follow heuristic_names().
-enum heuristic_id : int { heuristic_naive, heuristic_min_split, heuristic_sampled, heuristic_random, heuristic_custom };
+enum heuristic_id : int {
+  heuristic_naive,
+  heuristic_min_split,
+  heuristic_sampled,
+  heuristic_random,
+  heuristic_custom
+};
 
 /// The heuristic `options` ask for (engine.cpp). Throws usage_error for an unknown name,
 /// for "custom" without options.score and for options.score with another heuristic.
@@ -88,8 +94,10 @@ std::size_t choose_min_split(std::size_t n, const Classify& cls, unsigned thread
 
 /// The sampled heuristic's candidate positions: all n when n <= max_candidates, otherwise
 /// max_candidates seeded draws, sorted, duplicates removed.
-inline std::vector<std::size_t> sampled_candidate_positions(std::size_t n, std::size_t max_candidates,
-                                                            std::uint64_t seed, std::uint64_t node_key) {
+inline std::vector<std::size_t> sampled_candidate_positions(std::size_t n,
+                                                            std::size_t max_candidates,
+                                                            std::uint64_t seed,
+                                                            std::uint64_t node_key) {
   std::vector<std::size_t> candidates;
   if (n <= max_candidates) {
     for (std::size_t i = 0; i < n; ++i) candidates.push_back(i);
@@ -103,8 +111,12 @@ inline std::vector<std::size_t> sampled_candidate_positions(std::size_t n, std::
 }
 
 /// The sample a candidate is scored on: positions k * n / m, k = 0..m-1, m = min(n, samples).
-inline std::size_t sample_size(std::size_t n, unsigned samples) { return std::min<std::size_t>(n, std::max(1u, samples)); }
-inline std::size_t sample_position(std::size_t k, std::size_t n, std::size_t m) { return k * n / m; }
+inline std::size_t sample_size(std::size_t n, unsigned samples) {
+  return std::min<std::size_t>(n, std::max(1u, samples));
+}
+inline std::size_t sample_position(std::size_t k, std::size_t n, std::size_t m) {
+  return k * n / m;
+}
 
 // sampled: up to C candidates drawn with the seed, each scored on an evenly spaced sample
 // of at most S fragments by W * splits + |positive - negative| (the split/balance score of
@@ -112,7 +124,8 @@ inline std::size_t sample_position(std::size_t k, std::size_t n, std::size_t m) 
 // build_options::sampled_candidates, sampled_samples, sampled_split_weight (16, 512, 8).
 // A candidate stops early once its splits alone cannot beat the best score.
 template <class Classify>
-std::size_t choose_sampled(std::size_t n, const Classify& cls, const build_options& o, std::uint64_t node_key) {
+std::size_t choose_sampled(std::size_t n, const Classify& cls, const build_options& o,
+                           std::uint64_t node_key) {
   const std::vector<std::size_t> candidates =
       sampled_candidate_positions(n, std::max(1u, o.sampled_candidates), o.seed, node_key);
   const std::size_t m = sample_size(n, o.sampled_samples);
@@ -123,10 +136,17 @@ std::size_t choose_sampled(std::size_t n, const Classify& cls, const build_optio
     long long splits = 0, pos = 0, neg = 0, score = 0;
     for (std::size_t k = 0; k < m && score < best_score; ++k) {
       switch (cls(i, sample_position(k, n, m))) {
-        case classification::straddling: ++splits; break;
-        case classification::positive: ++pos; break;
-        case classification::negative: ++neg; break;
-        case classification::coplanar: break;  // the candidate itself, or in its plane
+        case classification::straddling:
+          ++splits;
+          break;
+        case classification::positive:
+          ++pos;
+          break;
+        case classification::negative:
+          ++neg;
+          break;
+        case classification::coplanar:
+          break;  // the candidate itself, or in its plane
       }
       score = weight * splits;
     }
@@ -153,10 +173,18 @@ void count_sides(std::size_t i, const Classify& cls, std::size_t m, const Positi
     const std::size_t j = position(k);
     if (j == i) continue;
     switch (cls(i, j)) {
-      case classification::straddling: ++in.straddling; break;
-      case classification::positive: ++in.positive; break;
-      case classification::negative: ++in.negative; break;
-      case classification::coplanar: ++in.coplanar; break;
+      case classification::straddling:
+        ++in.straddling;
+        break;
+      case classification::positive:
+        ++in.positive;
+        break;
+      case classification::negative:
+        ++in.negative;
+        break;
+      case classification::coplanar:
+        ++in.coplanar;
+        break;
     }
   }
 }
@@ -166,8 +194,8 @@ void count_sides(std::size_t i, const Classify& cls, std::size_t m, const Positi
 inline double checked_score(const build_options& o, const candidate_score_input& in) {
   const double s = o.score(in);
   if (std::isnan(s))
-    throw usage_error("score callback returned NaN for candidate " + std::to_string(in.candidate) + " (face " +
-                      std::to_string(in.face) + ")");
+    throw usage_error("score callback returned NaN for candidate " + std::to_string(in.candidate) +
+                      " (face " + std::to_string(in.face) + ")");
   return s;
 }
 
@@ -177,8 +205,8 @@ inline double checked_score(const build_options& o, const candidate_score_input&
 // candidate_set::sampled the sampled heuristic's candidates are counted on its sample.
 // `ids(i)` gives the fragment at position i as {face, source}.
 template <class Classify, class Ids>
-std::size_t choose_scored(std::size_t n, const Classify& cls, const Ids& ids, const build_options& o,
-                          std::uint64_t node_key, std::uint32_t depth) {
+std::size_t choose_scored(std::size_t n, const Classify& cls, const Ids& ids,
+                          const build_options& o, std::uint64_t node_key, std::uint32_t depth) {
   const auto input_for = [&](std::size_t i) {
     candidate_score_input in;
     in.candidate = i;
@@ -192,11 +220,13 @@ std::size_t choose_scored(std::size_t n, const Classify& cls, const Ids& ids, co
   std::vector<std::size_t> candidates;
   std::vector<double> scores;
   if (o.score_candidates == candidate_set::sampled) {
-    candidates = sampled_candidate_positions(n, std::max(1u, o.sampled_candidates), o.seed, node_key);
+    candidates =
+        sampled_candidate_positions(n, std::max(1u, o.sampled_candidates), o.seed, node_key);
     const std::size_t m = sample_size(n, o.sampled_samples);
     for (std::size_t i : candidates) {
       candidate_score_input in = input_for(i);
-      count_sides(i, cls, m, [&](std::size_t k) { return sample_position(k, n, m); }, in);
+      count_sides(
+          i, cls, m, [&](std::size_t k) { return sample_position(k, n, m); }, in);
       scores.push_back(checked_score(o, in));
     }
   } else {
@@ -209,7 +239,8 @@ std::size_t choose_scored(std::size_t n, const Classify& cls, const Ids& ids, co
       failure.run([&] {
         const auto i = static_cast<std::size_t>(ii);
         candidate_score_input in = input_for(i);
-        count_sides(i, cls, n, [](std::size_t k) { return k; }, in);
+        count_sides(
+            i, cls, n, [](std::size_t k) { return k; }, in);
         candidates[i] = i;
         scores[i] = checked_score(o, in);
       });

@@ -18,7 +18,7 @@ inline int threads_for(unsigned requested) {
 /// Collects the first exception thrown inside an OpenMP loop body (an exception must not
 /// leave a parallel region: that would terminate the process) and rethrows it outside.
 class parallel_failure {
-public:
+ public:
   template <class Body>
   void run(Body&& body) {
     if (failed_.load(std::memory_order_relaxed)) return;
@@ -35,7 +35,7 @@ public:
     if (error_) std::rethrow_exception(error_);
   }
 
-private:
+ private:
   std::atomic<bool> failed_{false};
   std::exception_ptr error_;
 };

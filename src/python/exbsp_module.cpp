@@ -47,18 +47,21 @@ long long integer(py::handle h, const std::string& what) {
 /// faces[i][j] = v checked as an index into vertex_count vertices.
 std::uint32_t vertex_index(long long v, std::size_t i, std::size_t j, std::size_t vertex_count) {
   if (v < 0 || static_cast<unsigned long long>(v) >= vertex_count)
-    throw usage_error("faces[" + std::to_string(i) + "][" + std::to_string(j) + "] = " + std::to_string(v) +
-                      " is not a vertex index (" + std::to_string(vertex_count) + " vertices)");
+    throw usage_error("faces[" + std::to_string(i) + "][" + std::to_string(j) +
+                      "] = " + std::to_string(v) + " is not a vertex index (" +
+                      std::to_string(vertex_count) + " vertices)");
   return static_cast<std::uint32_t>(v);
 }
 std::uint32_t vertex_index(py::handle h, std::size_t i, std::size_t j, std::size_t vertex_count) {
-  return vertex_index(integer(h, "faces[" + std::to_string(i) + "][" + std::to_string(j) + "]"), i, j, vertex_count);
+  return vertex_index(integer(h, "faces[" + std::to_string(i) + "][" + std::to_string(j) + "]"), i,
+                      j, vertex_count);
 }
 
 /// A soup from numpy/sequence input (see the notation above). Throws usage_error naming the
 /// offending argument for shapes, non-integer or out-of-range indices and short polygons.
-exbsp::triangle_soup soup_from(const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
-                               const py::object& faces, const py::object& face_ids) {
+exbsp::triangle_soup soup_from(
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+    const py::object& faces, const py::object& face_ids) {
   exbsp::triangle_soup soup;
   soup.source = "<python>";
   if (vertices.size() != 0 && (vertices.ndim() != 2 || vertices.shape(1) != 3))
@@ -71,15 +74,19 @@ exbsp::triangle_soup soup_from(const py::array_t<double, py::array::c_style | py
   // Rows of `faces`: a 2-D integer array, or any sequence of sequences (polygons).
   std::vector<std::vector<std::uint32_t>> polygons;
   const bool is_array = py::isinstance<py::array>(faces);
-  if (is_array && py::reinterpret_borrow<py::array>(faces).size() != 0) {  // fast path: the integers directly
+  if (is_array &&
+      py::reinterpret_borrow<py::array>(faces).size() != 0) {  // fast path: the integers directly
     const auto a = py::reinterpret_borrow<py::array>(faces);
     const char kind = a.dtype().kind();
     if (kind != 'i' && kind != 'u')
-      throw usage_error("faces must be an integer array (got dtype " + std::string(py::str(a.dtype())) + ")");
-    if (a.ndim() != 2 || a.shape(1) < 3) throw usage_error("faces must be an (m, k) array with k >= 3");
+      throw usage_error("faces must be an integer array (got dtype " +
+                        std::string(py::str(a.dtype())) + ")");
+    if (a.ndim() != 2 || a.shape(1) < 3)
+      throw usage_error("faces must be an (m, k) array with k >= 3");
     const auto rows = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
     if (!rows) throw py::error_already_set();
-    const auto m = static_cast<std::size_t>(rows.shape(0)), k = static_cast<std::size_t>(rows.shape(1));
+    const auto m = static_cast<std::size_t>(rows.shape(0)),
+               k = static_cast<std::size_t>(rows.shape(1));
     polygons.assign(m, std::vector<std::uint32_t>(k));
     for (std::size_t i = 0; i < m; ++i)
       for (std::size_t j = 0; j < k; ++j)
@@ -105,7 +112,8 @@ exbsp::triangle_soup soup_from(const py::array_t<double, py::array::c_style | py
     for (py::handle id : py::iter(face_ids)) {
       const long long value = integer(id, "face_ids[" + std::to_string(k) + "]");
       if (value < 0 || value > 0xfffffffeLL)
-        throw usage_error("face_ids[" + std::to_string(k) + "] = " + std::to_string(value) + " is not a face id");
+        throw usage_error("face_ids[" + std::to_string(k) + "] = " + std::to_string(value) +
+                          " is not a face id");
       ids.push_back(static_cast<std::uint32_t>(value));
       ++k;
     }
@@ -120,7 +128,8 @@ exbsp::triangle_soup soup_from(const py::array_t<double, py::array::c_style | py
 
 /// fractions.Fraction of the engine's "p/q" text.
 py::object fraction(const std::string& text) {
-  static const auto* fraction_type = new py::object(py::module_::import("fractions").attr("Fraction"));
+  static const auto* fraction_type =
+      new py::object(py::module_::import("fractions").attr("Fraction"));
   return (*fraction_type)(text);
 }
 
@@ -160,19 +169,21 @@ py::array_t<T> to_numpy(const std::vector<T>& v) {
 
 /// (n, 3) uint32 corner indices and (n,) face ids of section or soup triangles.
 template <class Triangle, class Corners>
-std::pair<py::array_t<std::uint32_t>, py::array_t<std::uint32_t>> triangle_arrays(const std::vector<Triangle>& ts,
-                                                                                  Corners corners) {
+std::pair<py::array_t<std::uint32_t>, py::array_t<std::uint32_t>> triangle_arrays(
+    const std::vector<Triangle>& ts, Corners corners) {
   const auto n = static_cast<py::ssize_t>(ts.size());
-  return {make_array<std::uint32_t>({n, 3}, [&](std::size_t j) { return (ts[j / 3].*corners)[j % 3]; }),
-          make_array<std::uint32_t>({n}, [&](std::size_t j) { return ts[j].face; })};
+  return {
+      make_array<std::uint32_t>({n, 3}, [&](std::size_t j) { return (ts[j / 3].*corners)[j % 3]; }),
+      make_array<std::uint32_t>({n}, [&](std::size_t j) { return ts[j].face; })};
 }
 
 /// exbsp.build: see docs/python.md.
 exbsp::bsp build(const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
-                 const py::object& faces, const std::string& kernel, const std::optional<std::string>& heuristic,
-                 std::uint64_t seed, const py::object& score, const std::string& candidates,
-                 const std::array<unsigned, 3>& sampled, std::optional<unsigned> threads, std::size_t max_fragments,
-                 const py::object& face_ids) {
+                 const py::object& faces, const std::string& kernel,
+                 const std::optional<std::string>& heuristic, std::uint64_t seed,
+                 const py::object& score, const std::string& candidates,
+                 const std::array<unsigned, 3>& sampled, std::optional<unsigned> threads,
+                 std::size_t max_fragments, const py::object& face_ids) {
   const exbsp::triangle_soup soup = soup_from(vertices, faces, face_ids);
   exbsp::build_options o;
   o.kernel = exbsp::parse_kernel(kernel);
@@ -185,9 +196,12 @@ exbsp::bsp build(const py::array_t<double, py::array::c_style | py::array::force
   o.sampled_candidates = sampled[0];
   o.sampled_samples = sampled[1];
   o.sampled_split_weight = sampled[2];
-  if (candidates == "all") o.score_candidates = exbsp::candidate_set::all;
-  else if (candidates == "sampled") o.score_candidates = exbsp::candidate_set::sampled;
-  else throw usage_error("candidates must be 'all' or 'sampled' (got '" + candidates + "')");
+  if (candidates == "all")
+    o.score_candidates = exbsp::candidate_set::all;
+  else if (candidates == "sampled")
+    o.score_candidates = exbsp::candidate_set::sampled;
+  else
+    throw usage_error("candidates must be 'all' or 'sampled' (got '" + candidates + "')");
   if (!score.is_none()) {
     if (!PyCallable_Check(score.ptr())) throw usage_error("score must be callable");
     // Called from the build's threads without the GIL: take it for each call.
@@ -211,8 +225,9 @@ exbsp::bsp build(const py::array_t<double, py::array::c_style | py::array::force
 
 std::size_t checked_index(const exbsp::bsp& t, py::ssize_t i) {
   const auto n = static_cast<py::ssize_t>(t.fragment_count());
-  if (i < -n || i >= n) throw py::index_error("fragment index " + std::to_string(i) + " out of range (" +
-                                              std::to_string(n) + " fragments)");
+  if (i < -n || i >= n)
+    throw py::index_error("fragment index " + std::to_string(i) + " out of range (" +
+                          std::to_string(n) + " fragments)");
   return static_cast<std::size_t>(i < 0 ? i + n : i);
 }
 
@@ -278,15 +293,17 @@ py::tuple read_mesh(const std::string& path) {
     soup = exbsp::read_mesh(path);
   }
   const auto v = make_array<double>({static_cast<py::ssize_t>(soup.vertices.size()), 3},
-                                     [&](std::size_t j) { return soup.vertices[j / 3][j % 3]; });
+                                    [&](std::size_t j) { return soup.vertices[j / 3][j % 3]; });
   const auto t = triangle_arrays(soup.triangles, &exbsp::soup_triangle::v);
   return py::make_tuple(v, t.first, t.second);
 }
 
 /// A Python exception class named exbsp.NAME deriving from `bases` (a tuple), added to `m`.
-py::handle new_exception(py::module_& m, const char* name, const py::tuple& bases, const char* doc) {
+py::handle new_exception(py::module_& m, const char* name, const py::tuple& bases,
+                         const char* doc) {
   const std::string full = std::string("exbsp.") + name;
-  py::object type = py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(full.c_str(), doc, bases.ptr(), nullptr));
+  py::object type = py::reinterpret_steal<py::object>(
+      PyErr_NewExceptionWithDoc(full.c_str(), doc, bases.ptr(), nullptr));
   if (!type) throw py::error_already_set();
   m.attr(name) = type;
   return type;  // m keeps a reference
@@ -305,13 +322,17 @@ PYBIND11_MODULE(exbsp, m) {
   // Exception classes; the translator keeps them alive for the module's lifetime.
   // Handles, not objects: no Py_DECREF after the interpreter has finalized (the module holds them).
   static py::handle error_type, usage_type, input_type, limit_type;
-  error_type = new_exception(m, "Error", py::make_tuple(py::handle(PyExc_Exception)), "Base of exbsp's errors.");
-  usage_type = new_exception(m, "UsageError", py::make_tuple(error_type, py::handle(PyExc_ValueError)),
-                             "A bad argument: shape, index, name, non-finite coordinate.");
-  input_type = new_exception(m, "InputError", py::make_tuple(error_type, py::handle(PyExc_ValueError)),
-                             "A bad mesh file; .file and .line (0: none) name the place.");
-  limit_type = new_exception(m, "LimitError", py::make_tuple(error_type, py::handle(PyExc_MemoryError)),
-                             "A resource limit (max_fragments) was reached; nothing is returned.");
+  error_type = new_exception(m, "Error", py::make_tuple(py::handle(PyExc_Exception)),
+                             "Base of exbsp's errors.");
+  usage_type =
+      new_exception(m, "UsageError", py::make_tuple(error_type, py::handle(PyExc_ValueError)),
+                    "A bad argument: shape, index, name, non-finite coordinate.");
+  input_type =
+      new_exception(m, "InputError", py::make_tuple(error_type, py::handle(PyExc_ValueError)),
+                    "A bad mesh file; .file and .line (0: none) name the place.");
+  limit_type =
+      new_exception(m, "LimitError", py::make_tuple(error_type, py::handle(PyExc_MemoryError)),
+                    "A resource limit (max_fragments) was reached; nothing is returned.");
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -329,27 +350,35 @@ PYBIND11_MODULE(exbsp, m) {
     }
   });
 
-  py::class_<exbsp::candidate_score_input>(m, "Candidate",
-                                           "What a score callback sees for one candidate splitter at one node.")
-      .def_readonly("candidate", &exbsp::candidate_score_input::candidate, "position in the node's list")
+  py::class_<exbsp::candidate_score_input>(
+      m, "Candidate", "What a score callback sees for one candidate splitter at one node.")
+      .def_readonly("candidate", &exbsp::candidate_score_input::candidate,
+                    "position in the node's list")
       .def_readonly("face", &exbsp::candidate_score_input::face, "its face id")
-      .def_readonly("source", &exbsp::candidate_score_input::source, "its input triangle (whose plane it is)")
+      .def_readonly("source", &exbsp::candidate_score_input::source,
+                    "its input triangle (whose plane it is)")
       .def_readonly("positive", &exbsp::candidate_score_input::positive)
       .def_readonly("negative", &exbsp::candidate_score_input::negative)
-      .def_readonly("straddling", &exbsp::candidate_score_input::straddling, "fragments the plane would split")
+      .def_readonly("straddling", &exbsp::candidate_score_input::straddling,
+                    "fragments the plane would split")
       .def_readonly("coplanar", &exbsp::candidate_score_input::coplanar)
       .def_readonly("list_size", &exbsp::candidate_score_input::list_size)
       .def_readonly("depth", &exbsp::candidate_score_input::depth, "the node's depth (root: 1)")
       .def("__repr__", [](const exbsp::candidate_score_input& c) {
-        return "Candidate(candidate=" + std::to_string(c.candidate) + ", face=" + std::to_string(c.face) +
-               ", positive=" + std::to_string(c.positive) + ", negative=" + std::to_string(c.negative) +
-               ", straddling=" + std::to_string(c.straddling) + ", coplanar=" + std::to_string(c.coplanar) +
-               ", list_size=" + std::to_string(c.list_size) + ", depth=" + std::to_string(c.depth) + ")";
+        return "Candidate(candidate=" + std::to_string(c.candidate) +
+               ", face=" + std::to_string(c.face) + ", positive=" + std::to_string(c.positive) +
+               ", negative=" + std::to_string(c.negative) +
+               ", straddling=" + std::to_string(c.straddling) +
+               ", coplanar=" + std::to_string(c.coplanar) +
+               ", list_size=" + std::to_string(c.list_size) + ", depth=" + std::to_string(c.depth) +
+               ")";
       });
 
-  py::class_<exbsp::bsp>(m, "Tree", "A built BSP tree (exbsp.build). Immutable; safe to share between threads.")
+  py::class_<exbsp::bsp>(
+      m, "Tree", "A built BSP tree (exbsp.build). Immutable; safe to share between threads.")
       .def_property_readonly("stats", [](const exbsp::bsp& t) { return stats_dict(t.stats()); })
-      .def_property_readonly("kernel", [](const exbsp::bsp& t) { return exbsp::to_string(t.kernel()); })
+      .def_property_readonly("kernel",
+                             [](const exbsp::bsp& t) { return exbsp::to_string(t.kernel()); })
       .def("__len__", &exbsp::bsp::fragment_count)
       .def(
           "order",
@@ -360,25 +389,30 @@ PYBIND11_MODULE(exbsp, m) {
             std::vector<std::uint32_t> order;
             {
               py::gil_scoped_release no_gil;
-              order = eye ? t.order_from_eye(*eye, back_to_front) : t.order_for_direction(*direction, back_to_front);
+              order = eye ? t.order_from_eye(*eye, back_to_front)
+                          : t.order_for_direction(*direction, back_to_front);
             }
             return to_numpy(order);
           },
           py::kw_only(), py::arg("eye") = py::none(), py::arg("direction") = py::none(),
           py::arg("back_to_front") = true,
-          "Fragment indices back to front (or front to back) for an eye point or a direction of projection.")
+          "Fragment indices back to front (or front to back) for an eye point or a direction of "
+          "projection.")
       .def(
           "fragments",
           [](const exbsp::bsp& t) {
             const std::vector<exbsp::fragment_d> f = t.fragments_double();
             const auto n = static_cast<py::ssize_t>(f.size());
-            const auto v = make_array<double>({n, 3, 3}, [&](std::size_t j) { return f[j / 9].v[j / 3 % 3][j % 3]; });
-            const auto faces = make_array<std::uint32_t>({n}, [&](std::size_t j) { return f[j].face; });
+            const auto v = make_array<double>(
+                {n, 3, 3}, [&](std::size_t j) { return f[j / 9].v[j / 3 % 3][j % 3]; });
+            const auto faces =
+                make_array<std::uint32_t>({n}, [&](std::size_t j) { return f[j].face; });
             return py::make_tuple(v, faces);
           },
           "(vertices (k, 3, 3) float64, face ids (k,) uint32) of the fragments in storage order.")
       .def(
-          "exact", [](const exbsp::bsp& t, py::ssize_t i) {
+          "exact",
+          [](const exbsp::bsp& t, py::ssize_t i) {
             const exbsp::exact_triangle e = t.fragment_exact(checked_index(t, i));
             return py::make_tuple(exact_point(e[0]), exact_point(e[1]), exact_point(e[2]));
           },
@@ -387,19 +421,23 @@ PYBIND11_MODULE(exbsp, m) {
           "ancestors",
           [](const exbsp::bsp& t, py::ssize_t i) {
             py::list out;
-            for (const auto& a : t.ancestors(checked_index(t, i))) out.append(py::make_tuple(a.plane_face, a.side));
+            for (const auto& a : t.ancestors(checked_index(t, i)))
+              out.append(py::make_tuple(a.plane_face, a.side));
             return out;
           },
-          py::arg("i"), "[(input triangle whose plane it is, side +1/-1), ...] from the root down.");
+          py::arg("i"),
+          "[(input triangle whose plane it is, side +1/-1), ...] from the root down.");
 
-  m.def("build", &build, py::arg("vertices"), py::arg("faces"), py::kw_only(), py::arg("kernel") = "exact",
-        py::arg("heuristic") = py::none(), py::arg("seed") = 0, py::arg("score") = py::none(),
-        py::arg("candidates") = "all", py::arg("sampled") = std::array<unsigned, 3>{16, 512, 8},
-        py::arg("threads") = py::none(), py::arg("max_fragments") = 0, py::arg("face_ids") = py::none(),
+  m.def("build", &build, py::arg("vertices"), py::arg("faces"), py::kw_only(),
+        py::arg("kernel") = "exact", py::arg("heuristic") = py::none(), py::arg("seed") = 0,
+        py::arg("score") = py::none(), py::arg("candidates") = "all",
+        py::arg("sampled") = std::array<unsigned, 3>{16, 512, 8}, py::arg("threads") = py::none(),
+        py::arg("max_fragments") = 0, py::arg("face_ids") = py::none(),
         "Builds the exact BSP tree of a mesh; see docs/python.md.");
   m.def("section", &section, py::arg("vertices"), py::arg("faces"), py::arg("plane"), py::kw_only(),
         py::arg("cap") = true, py::arg("exact") = true, py::arg("face_ids") = py::none(),
-        "Cuts a mesh exactly by the plane A*x + B*y + C*z + D = 0, keeping >= 0; see docs/python.md.");
+        "Cuts a mesh exactly by the plane A*x + B*y + C*z + D = 0, keeping >= 0; see "
+        "docs/python.md.");
   m.def("read_mesh", &read_mesh, py::arg("path"),
         "Reads an OFF/OBJ/PLY/STL file: (vertices, triangles, face_ids).");
 }
