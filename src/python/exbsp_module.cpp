@@ -321,7 +321,7 @@ PYBIND11_MODULE(exbsp, m) {
 
   // Exception classes; the translator keeps them alive for the module's lifetime.
   // Handles, not objects: no Py_DECREF after the interpreter has finalized (the module holds them).
-  static py::handle error_type, usage_type, input_type, limit_type;
+  static py::handle error_type, usage_type, input_type, limit_type, output_type;
   error_type = new_exception(m, "Error", py::make_tuple(py::handle(PyExc_Exception)),
                              "Base of exbsp's errors.");
   usage_type =
@@ -333,6 +333,9 @@ PYBIND11_MODULE(exbsp, m) {
   limit_type =
       new_exception(m, "LimitError", py::make_tuple(error_type, py::handle(PyExc_MemoryError)),
                     "A resource limit (max_fragments) was reached; nothing is returned.");
+  output_type =
+      new_exception(m, "OutputError", py::make_tuple(error_type, py::handle(PyExc_OSError)),
+                    "A file could not be written (Tree.save); nothing partial is left.");
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -345,6 +348,8 @@ PYBIND11_MODULE(exbsp, m) {
       PyErr_SetString(usage_type.ptr(), e.what());
     } catch (const exbsp::limit_error& e) {
       PyErr_SetString(limit_type.ptr(), e.what());
+    } catch (const exbsp::output_error& e) {
+      PyErr_SetString(output_type.ptr(), e.what());
     } catch (const exbsp::error& e) {
       PyErr_SetString(error_type.ptr(), e.what());
     }
@@ -425,8 +430,16 @@ PYBIND11_MODULE(exbsp, m) {
               out.append(py::make_tuple(a.plane_face, a.side));
             return out;
           },
-          py::arg("i"),
-          "[(input triangle whose plane it is, side +1/-1), ...] from the root down.");
+          py::arg("i"), "[(input triangle whose plane it is, side +1/-1), ...] from the root down.")
+      .def("save", &exbsp::bsp::save, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
+           "Writes the tree to a file (docs/tree-file.md); exbsp.load reads it back.")
+      .def(
+          "serialize", [](const exbsp::bsp& t) { return py::bytes(t.serialize()); },
+          "The bytes save writes.")
+      .def(py::pickle([](const exbsp::bsp& t) { return py::bytes(t.serialize()); },
+                      [](const py::bytes& b) {
+                        return exbsp::bsp::deserialize(std::string(b), "<pickled exbsp.Tree>");
+                      }));
 
   m.def("build", &build, py::arg("vertices"), py::arg("faces"), py::kw_only(),
         py::arg("kernel") = "exact", py::arg("heuristic") = py::none(), py::arg("seed") = 0,
@@ -438,6 +451,12 @@ PYBIND11_MODULE(exbsp, m) {
         py::arg("cap") = true, py::arg("exact") = true, py::arg("face_ids") = py::none(),
         "Cuts a mesh exactly by the plane A*x + B*y + C*z + D = 0, keeping >= 0; see "
         "docs/python.md.");
+  m.def("load", &exbsp::bsp::load, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
+        "Reads a tree saved by Tree.save or `exbsp build --save` (InputError when it is bad).");
+  m.def(
+      "deserialize",
+      [](const py::bytes& b) { return exbsp::bsp::deserialize(std::string(b), "<bytes>"); },
+      py::arg("data"), "A tree from the bytes Tree.serialize returns.");
   m.def("read_mesh", &read_mesh, py::arg("path"),
         "Reads an OFF/OBJ/PLY/STL file: (vertices, triangles, face_ids).");
 }

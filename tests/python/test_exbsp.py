@@ -322,6 +322,24 @@ def test_trees_can_be_used_from_other_python_threads():
     assert all(np.array_equal(r, expected) for r in results)
 
 
+def test_saved_and_pickled_trees_give_the_same_tree(tmp_path):
+    import pickle
+
+    for kwargs in (dict(heuristic="min-split"), dict(score=lambda c: c.straddling - c.coplanar)):
+        t = exbsp.build(CROSSING_V, CROSSING_F, **kwargs)
+        path = tmp_path / "t.exbsp"
+        t.save(str(path))
+        for copy in (exbsp.load(str(path)), exbsp.deserialize(t.serialize()), pickle.loads(pickle.dumps(t))):
+            same_tree(copy, t)
+            assert copy.stats["heuristic"] == t.stats["heuristic"]
+    (tmp_path / "bad.exbsp").write_bytes(t.serialize()[:-5])
+    with pytest.raises(exbsp.InputError):
+        exbsp.load(str(tmp_path / "bad.exbsp"))
+    with pytest.raises(exbsp.OutputError) as info:
+        t.save(str(tmp_path / "missing" / "t.exbsp"))
+    assert isinstance(info.value, OSError)
+
+
 def test_version_and_names():
     assert exbsp.__version__ == exbsp.version and exbsp.version.count(".") == 2
     assert "min-split" in exbsp.HEURISTICS and exbsp.DEFAULT_HEURISTIC in exbsp.HEURISTICS
