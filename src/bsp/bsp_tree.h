@@ -156,17 +156,11 @@ private:
     return out;
   }
 
-  std::size_t choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part, int heuristic,
-                              std::uint64_t seed, std::uint64_t node_key, unsigned threads) const;
-  std::size_t choose_min_split(const std::vector<std::uint32_t>& list, const subtree& part,
-                               unsigned threads) const;
-  std::size_t choose_sampled(const std::vector<std::uint32_t>& list, const subtree& part,
-                             std::uint64_t seed, std::uint64_t node_key) const;
+  /// The list position of the splitter (heuristics.h).
+  std::size_t choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part,
+                              const build_context& ctx, std::uint64_t node_key, std::uint32_t depth) const;
 
   G geom_;
-  struct {
-    unsigned candidates, samples, weight;
-  } sampled_{16, 512, 8};
   std::vector<fragment> pool_;  ///< build time only: every fragment made, by index
   std::vector<std::uint32_t> node_fragments_;  ///< build time only: pool indices, node by node
   std::vector<fragment> fragments_;

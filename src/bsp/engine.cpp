@@ -5,6 +5,7 @@
 
 #include "bsp/bsp_impl.h"
 #include "bsp/bsp_tree.h"
+#include "bsp/heuristics.h"
 #include "core/errors.h"
 
 namespace exbsp {
@@ -36,18 +37,27 @@ const std::vector<std::string>& heuristic_names() {
 const char* default_heuristic() { return "sampled"; }
 
 namespace detail {
-int heuristic_index(const std::string& name) {
+heuristic_id heuristic_for(const build_options& options) {
   const auto& names = heuristic_names();
+  const std::string& name = options.heuristic;
+  if (name == "custom") {
+    if (!options.score) throw usage_error("heuristic 'custom' needs a score callback (build_options::score)");
+    return heuristic_custom;
+  }
   for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return static_cast<int>(i);
+    if (names[i] == name) {
+      if (options.score)
+        throw usage_error("a score callback is set but the heuristic is '" + name + "': use heuristic 'custom'");
+      return static_cast<heuristic_id>(i);
+    }
   std::string list;
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-  throw usage_error("unknown heuristic '" + name + "' (expected one of: " + list + ")");
+  throw usage_error("unknown heuristic '" + name + "' (expected one of: " + list + ", or custom with a score callback)");
 }
 }  // namespace detail
 
 bsp bsp::build(const triangle_soup& soup, const build_options& options) {
-  detail::heuristic_index(options.heuristic);  // fail fast on a bad name
+  detail::heuristic_for(options);  // fail fast on a bad name
   switch (options.kernel) {
     case kernel_id::exact: return bsp(make_bsp_exact(soup, options));
     case kernel_id::epeck: return bsp(make_bsp_epeck(soup, options));
