@@ -33,14 +33,7 @@ struct rendered {
 };
 
 rendered render(const scene::scene& s, kernel_id kernel) {
-  scene::scene_geometry g = scene::load_geometry(s);
-  view::frame f;
-  f.view = scene::make_view_setup(s);
-  f.background = s.background;
-  f.face_colors = std::move(g.face_colors);
-  f.soup = std::move(g.soup);
-  f.settings = s.effect_settings;
-  f.mesh_face_offsets = g.face_offsets;
+  view::frame f = scene::make_frame(s);
   f.build.kernel = kernel;
   rendered r;
   view::pipeline p = view::standard_pipeline(s.effects, view::output_kind::png);

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
+#include "view/matrix.h"
 
 namespace exbsp::scene {
 
@@ -23,8 +24,8 @@ constexpr double margin = 1.08;
 
 struct named_view {
   const char* name;
-  std::array<double, 3> towards_eye;  ///< from the centre towards the eye (any length)
-  std::array<double, 3> up;
+  view::vector3 towards_eye;  ///< from the centre towards the eye (any length)
+  view::vector3 up;
 };
 
 constexpr named_view views[] = {
@@ -33,14 +34,8 @@ constexpr named_view views[] = {
     {"bottom", {0, -1, 0}, {0, 0, 1}},
 };
 
-std::array<double, 3> unit(const std::array<double, 3>& v) {
-  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  return {v[0] / n, v[1] / n, v[2] / n};
-}
-
-std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+/// A JSON triple of the scene document.
+std::array<double, 3> triple(const view::vector3& v) { return {v.x, v.y, v.z}; }
 
 }  // namespace
 
@@ -88,26 +83,25 @@ scene mesh_scene(std::shared_ptr<const triangle_soup> soup, const std::string& n
   const double half_fovy = fovy_deg * pi / 360;
   const double half_fov = std::min(half_fovy, std::atan(std::tan(half_fovy) * aspect));
   const double distance = margin * radius / std::sin(half_fov);
-  const std::array<double, 3> w = unit(chosen->towards_eye);
+  const view::vector3 w = view::normalized(chosen->towards_eye);
   std::array<double, 3> eye{};
-  for (int k = 0; k < 3; ++k) eye[k] = centre[k] + distance * w[k];
+  for (int k = 0; k < 3; ++k) eye[k] = centre[k] + distance * triple(w)[k];
   const double near_dist = distance - 1.01 * radius, far_dist = distance + 1.01 * radius;
   const bool finite = std::isfinite(distance) && std::isfinite(far_dist) && near_dist > 0 &&
                       std::all_of(eye.begin(), eye.end(), [](double x) { return std::isfinite(x); });
   if (!finite) throw input_error(name, 0, "the mesh's coordinates are too large to fit a view in double");
 
   // Light over the viewer's left shoulder: towards the eye, up and to the left.
-  const std::array<double, 3> right = unit(cross(chosen->up, w));
-  std::array<double, 3> light{};
-  for (int k = 0; k < 3; ++k) light[k] = w[k] + 0.6 * chosen->up[k] - 0.4 * right[k];
+  const view::vector3 right = view::normalized(view::cross(chosen->up, w));
+  const view::vector3 light = w + 0.6 * chosen->up - 0.4 * right;
 
   const nlohmann::json doc = {
       {"meshes", {{{"file", name}, {"color", {176, 190, 214}}}}},
-      {"camera", {{"eye", eye}, {"look_at", centre}, {"up", chosen->up}}},
+      {"camera", {{"eye", eye}, {"look_at", centre}, {"up", triple(chosen->up)}}},
       {"projection", {{"type", "perspective"}, {"fovy_deg", fovy_deg}, {"near", near_dist}, {"far", far_dist}}},
       {"viewport", {{"width", options.width}, {"height", options.height}}},
       {"background", {250, 250, 252}},
-      {"effects", {{"lighting", {{"direction", light}, {"ambient", 0.3}, {"intensity", 0.7}}}}},
+      {"effects", {{"lighting", {{"direction", triple(light)}, {"ambient", 0.3}, {"intensity", 0.7}}}}},
       {"svg", {{"edges", options.edges}}},
   };
   scene s = parse_scene(doc, name, nullptr, true);

@@ -142,18 +142,8 @@ render_summary render_command(const render_request& request, std::ostream& log) 
       throw usage_error("render: --trackball must be arcball or virtual, got " + request.trackball);
     s.trackball = request.trackball;
   }
-  scene::scene_geometry geometry = scene::load_geometry(s);
+  view::frame f = scene::make_frame(s);
   const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
-  view::frame f;
-  f.view = scene::make_view_setup(s);
-  f.background = s.background;
-  f.face_colors = std::move(geometry.face_colors);
-  f.soup = std::move(geometry.soup);
-  f.settings = s.effect_settings;
-  f.curves = s.curves;
-  f.mesh_face_offsets = geometry.face_offsets;
-  f.vector = s.vector;
   f.build.progress = request.progress;
   if (!request.kernel.empty()) f.build.kernel = parse_kernel(request.kernel);
   f.build.max_fragments = request.max_fragments;

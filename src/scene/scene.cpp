@@ -337,6 +337,20 @@ scene_geometry load_geometry(const scene& s) {
   return g;
 }
 
+view::frame make_frame(const scene& s) {
+  scene_geometry geometry = load_geometry(s);
+  view::frame f;
+  f.view = make_view_setup(s);
+  f.background = s.background;
+  f.face_colors = std::move(geometry.face_colors);
+  f.soup = std::move(geometry.soup);
+  f.settings = s.effect_settings;
+  f.curves = s.curves;
+  f.mesh_face_offsets = std::move(geometry.face_offsets);
+  f.vector = s.vector;
+  return f;
+}
+
 std::size_t mesh_of_face(const scene_geometry& g, std::uint32_t face) {
   const auto it = std::upper_bound(g.face_offsets.begin(), g.face_offsets.end(), face);
   if (it == g.face_offsets.begin() || it == g.face_offsets.end()) return g.face_offsets.empty() ? 0 : g.face_offsets.size() - 1;

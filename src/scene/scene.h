@@ -197,6 +197,11 @@ struct scene_geometry {
 /// (/meshes/K/file when the mesh has no transform and its own coordinates do).
 scene_geometry load_geometry(const scene& s);
 
+/// The pipeline frame of a scene: its view (make_view_setup), background, effect settings,
+/// curves and vector options, and all its meshes as one soup with their face colours and
+/// offsets (load_geometry; same errors). Build options stay at their defaults.
+view::frame make_frame(const scene& s);
+
 /// The mesh index of a face id (upper bound in face_offsets); meshes.size() if out of range.
 std::size_t mesh_of_face(const scene_geometry& g, std::uint32_t face);
 
