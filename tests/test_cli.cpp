@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "bsp/engine.h"
-#include "cli_support.h"
+#include "support/cli_support.h"
 #include "mesh/mesh_io.h"
 
 namespace {
@@ -34,7 +34,7 @@ using exbsp_test::write_file;
 using result = exbsp_test::cli_result;
 
 /// A fresh temporary directory per test; the CLI runs inside it.
-class cli : public exbsp_test::cli_fixture {
+class Cli : public exbsp_test::cli_fixture {
 protected:
   /// The painter's failure case (tests/test_bsp.cpp) as an OFF file: it needs splits.
   fs::path write_cyclic_triple() {
@@ -76,7 +76,7 @@ std::vector<bad_file> bad_manifest() {
 
 // --- (1) bad input ----------------------------------------------------------------------------
 
-TEST_F(cli, every_bad_input_file_exits_2_naming_file_and_line_and_writes_no_output) {
+TEST_F(Cli, every_bad_input_file_exits_2_naming_file_and_line_and_writes_no_output) {
   const auto manifest = bad_manifest();
   ASSERT_GE(manifest.size(), 50u) << "tests/data/bad/EXPECTED.tsv";
   for (const bad_file& b : manifest) {
@@ -98,7 +98,7 @@ TEST_F(cli, every_bad_input_file_exits_2_naming_file_and_line_and_writes_no_outp
   }
 }
 
-TEST_F(cli, failed_order_leaves_an_existing_output_file_untouched) {
+TEST_F(Cli, failed_order_leaves_an_existing_output_file_untouched) {
   write_file(dir / "OUT.json", "previous\n");
   const result r = run("order " + quoted(data_dir + "/bad/off_nan.off") + " --eye 0,0,10 -o OUT.json");
   EXPECT_EQ(r.status, 2);
@@ -106,7 +106,7 @@ TEST_F(cli, failed_order_leaves_an_existing_output_file_untouched) {
   EXPECT_EQ(file_names(), std::vector<std::string>{"OUT.json"});
 }
 
-TEST_F(cli, a_missing_mesh_file_exits_2_naming_it) {
+TEST_F(Cli, a_missing_mesh_file_exits_2_naming_it) {
   const result r = run("build no_such_mesh.off");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind("exbsp: error: ", 0), 0u) << r.err;
@@ -115,7 +115,7 @@ TEST_F(cli, a_missing_mesh_file_exits_2_naming_it) {
 
 // --- (2) build --json ---------------------------------------------------------------------------
 
-TEST_F(cli, build_json_has_every_key_of_design_section_4_and_matches_the_library) {
+TEST_F(Cli, build_json_has_every_key_of_design_section_4_and_matches_the_library) {
   const fs::path cyclic = write_cyclic_triple();
   for (const std::string& mesh : {data_dir + "/cube.off", data_dir + "/fan.off", cyclic.string()}) {
     for (const char* kernel : {"exact", "epeck", "gmpq", "epick", "double"}) {
@@ -228,7 +228,7 @@ std::string g17(double x) {
   return buf;
 }
 
-TEST_F(cli, order_json_has_eye_or_direction_faces_17_digit_doubles_and_reduced_exact_rationals) {
+TEST_F(Cli, order_json_has_eye_or_direction_faces_17_digit_doubles_and_reduced_exact_rationals) {
   const fs::path cyclic = write_cyclic_triple();
   const std::string exact_decimal = data_dir + "/exact_decimal.off";
   struct view_case {
@@ -287,7 +287,7 @@ TEST_F(cli, order_json_has_eye_or_direction_faces_17_digit_doubles_and_reduced_e
   }
 }
 
-TEST_F(cli, order_with_an_inexact_kernel_has_no_exact_coordinates) {
+TEST_F(Cli, order_with_an_inexact_kernel_has_no_exact_coordinates) {
   const fs::path cyclic = write_cyclic_triple();
   const result r = run("order " + quoted(cyclic.string()) + " --eye 0,0,10 --kernel double");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -296,7 +296,7 @@ TEST_F(cli, order_with_an_inexact_kernel_has_no_exact_coordinates) {
   for (const json& f : j["fragments"]) EXPECT_FALSE(f.contains("exact"));
 }
 
-TEST_F(cli, two_runs_write_byte_identical_orders_whatever_the_thread_count) {
+TEST_F(Cli, two_runs_write_byte_identical_orders_whatever_the_thread_count) {
   // The small cyclic scene, and a real mesh big enough for the parallel build.
   std::vector<std::string> meshes{write_cyclic_triple().string()};
   const std::string anchor = std::string(EXBSP_SOURCE_DIR) + "/data/meshes/anchor.off";
@@ -311,11 +311,12 @@ TEST_F(cli, two_runs_write_byte_identical_orders_whatever_the_thread_count) {
       EXPECT_EQ(a, read_file(dir / "B.json")) << mesh << " " << h;
       EXPECT_EQ(a, read_file(dir / "C.json")) << mesh << " " << h;
     }
+  EXBSP_NEED_CORPUS(fs::exists(anchor), anchor);  // after the cyclic scene's checks
 }
 
 // --- (4) --max-fragments ------------------------------------------------------------------------
 
-TEST_F(cli, max_fragments_below_what_the_splits_need_exits_3_and_writes_nothing) {
+TEST_F(Cli, max_fragments_below_what_the_splits_need_exits_3_and_writes_nothing) {
   const fs::path cyclic = write_cyclic_triple();
   const result b = run("build " + quoted(cyclic.string()) + " --heuristic naive --max-fragments 3 --json");
   EXPECT_EQ(b.status, 3);
@@ -334,7 +335,7 @@ TEST_F(cli, max_fragments_below_what_the_splits_need_exits_3_and_writes_nothing)
 
 // --- (5) bad option values ------------------------------------------------------------------------
 
-TEST_F(cli, bad_option_values_exit_2_with_a_message_and_write_nothing) {
+TEST_F(Cli, bad_option_values_exit_2_with_a_message_and_write_nothing) {
   const std::string mesh = quoted(data_dir + "/cube.off");
   const std::vector<std::string> bad{"order " + mesh + " --eye 1,2 -o OUT.json",
                                      "order " + mesh + " --eye 1,2,3,4 -o OUT.json",

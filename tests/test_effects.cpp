@@ -35,6 +35,7 @@
 #include "view/rasterizer.h"
 #include "view/segment_clip.h"
 #include "view/stages.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -89,13 +90,7 @@ scene::scene parse(const json& doc, std::ostream* warnings = nullptr) {
 
 /// The key of the scene_error for `doc` ("(no error)" when it parses).
 std::string error_key(const json& doc, std::string* message = nullptr) {
-  try {
-    parse(doc);
-  } catch (const scene_error& e) {
-    if (message) *message = e.what();
-    return e.key();
-  }
-  return "(no error)";
+  return exbsp_test::error_key([&] { parse(doc); }, message);
 }
 
 int count_color(const image& img, rgb8 c) {

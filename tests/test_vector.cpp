@@ -32,6 +32,7 @@
 #include "view/svg_writer.h"
 #include "view/vector_drawing.h"
 #include "view/vector_pdf.h"
+#include "support/test_helpers.h"
 
 namespace fs = std::filesystem;
 using namespace exbsp;
@@ -40,9 +41,8 @@ using namespace exbsp::view;
 namespace {
 
 std::string temp_dir() {
-  const fs::path d = fs::temp_directory_path() / ("exbsp_test_vector_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d.string();
+  static const std::string dir = exbsp_test::make_temp_dir("test_vector").string();
+  return dir;
 }
 
 // ---- frames -------------------------------------------------------------------------------
