@@ -73,25 +73,8 @@ void run(frame& f, const std::vector<std::string>& effects, output_kind out) {
   standard_pipeline(effects, out, !f.curves.empty()).run(f, nullptr);
 }
 
-std::uint32_t add_quad(triangle_soup& s, const vec3d& a, const vec3d& b, const vec3d& c, const vec3d& d) {
-  const auto base = static_cast<std::uint32_t>(s.vertices.size());
-  for (const vec3d& p : {a, b, c, d}) s.vertices.push_back(p);
-  const std::uint32_t face = s.face_count++;
-  s.add_polygon({base, base + 1, base + 2, base + 3}, face);
-  return face;
-}
-
-frame perspective_frame(triangle_soup soup, std::vector<rgb8> colors, const camera& cam, int width, int height) {
-  frame f;
-  f.soup = std::move(soup);
-  f.face_colors = std::move(colors);
-  f.view.kind = projection_kind::perspective;
-  f.view.cam = cam;
-  f.view.model_view = look_at(cam);
-  f.view.projection = perspective(45, static_cast<double>(width) / height, 0.5, 100);
-  f.view.vp = {0, 0, width, height, 0, 1};
-  return f;
-}
+using exbsp_test::add_quad;
+using exbsp_test::perspective_frame;
 
 // ---- the region oracle -------------------------------------------------------------------
 

@@ -8,10 +8,12 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "view/backface_culling.h"
 #include "view/clip_stage.h"
+#include "view/projection.h"
 #include "view/rasterizer.h"
 
 namespace exbsp_test {
@@ -53,6 +55,31 @@ std::set<std::tuple<int, int, int>> colours_of(const exbsp::view::image& img) {
       c.insert({p.r, p.g, p.b});
     }
   return c;
+}
+
+std::uint32_t add_quad(exbsp::triangle_soup& s, const exbsp::vec3d& a, const exbsp::vec3d& b, const exbsp::vec3d& c,
+                       const exbsp::vec3d& d) {
+  const auto base = static_cast<std::uint32_t>(s.vertices.size());
+  s.vertices.insert(s.vertices.end(), {a, b, c, d});
+  const std::uint32_t face = s.face_count;
+  s.add_polygon({base, base + 1, base + 2, base + 3}, face);
+  return face;
+}
+
+exbsp::view::frame perspective_frame(exbsp::triangle_soup soup, std::vector<exbsp::view::rgb8> colors,
+                                     const exbsp::view::camera& cam, int width, int height, double fovy,
+                                     double near_dist, double far_dist) {
+  namespace view = exbsp::view;
+  view::frame f;
+  f.soup = std::move(soup);
+  f.face_colors = std::move(colors);
+  f.background = {255, 255, 255};
+  f.view.kind = view::projection_kind::perspective;
+  f.view.cam = cam;
+  f.view.model_view = view::look_at(cam);
+  f.view.projection = view::perspective(fovy, static_cast<double>(width) / height, near_dist, far_dist);
+  f.view.vp = {0, 0, width, height, 0, 1};
+  return f;
 }
 
 exbsp::view::image zbuffer_render(const exbsp::view::frame& f, bool cull) {

@@ -1,6 +1,6 @@
 // Small helpers of the test files, one copy each: whole-file reads and writes, temporary
 // directories, RapidCheck's fixed seed, soups from triangles, the key of a scene_error, the
-// colours of an image, a z-buffer oracle of a frame, matrices from GLM, vector arithmetic on
+// colours of an image, quads and perspective frames, a z-buffer oracle of a frame, matrices from GLM, vector arithmetic on
 // std::array<T, 3>, and the CGAL corpus (data/meshes) check.
 //
 // The corpus: tests that need data/meshes/ (extracted by scripts/setup) skip with a visible
@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -19,6 +20,7 @@
 
 #include "core/errors.h"
 #include "mesh/soup.h"
+#include "view/camera.h"
 #include "view/pipeline.h"
 #include "view/image.h"
 #include "view/matrix.h"
@@ -62,6 +64,16 @@ std::string error_key(Parse&& parse, std::string* message = nullptr) {
 
 /// The distinct colours of an image, as (r, g, b).
 std::set<std::tuple<int, int, int>> colours_of(const exbsp::view::image& img);
+
+/// Appends quad (a, b, c, d) as one face with the next face id; returns the id.
+std::uint32_t add_quad(exbsp::triangle_soup& s, const exbsp::vec3d& a, const exbsp::vec3d& b, const exbsp::vec3d& c,
+                       const exbsp::vec3d& d);
+
+/// A frame of `soup` (colours by face id, white background) seen from `cam` through
+/// gluPerspective(fovy, width / height, near_dist, far_dist) on a width x height viewport.
+exbsp::view::frame perspective_frame(exbsp::triangle_soup soup, std::vector<exbsp::view::rgb8> colors,
+                                     const exbsp::view::camera& cam, int width, int height, double fovy = 45,
+                                     double near_dist = 0.5, double far_dist = 100);
 
 /// Z-buffer rendering of the frame's unsplit soup with the painter's coverage rule (the
 /// oracle of the BSP order): triangles clipped to the view volume, depth interpolated
