@@ -518,6 +518,30 @@ TEST(Checker, accepts_the_correct_tree_and_rejects_a_reversed_order) {
   EXPECT_EQ(bad.broken.count("order"), 1u);
 }
 
+RC_GTEST_PROP(Checker, ray_candidates_from_boxes_and_interval_signs_miss_no_crossing, ()) {
+  // The order check prunes candidates (boxes widened by the rounding of the ray, interval
+  // signs); every fragment as a candidate must give the same tally, for the tree's order and
+  // for its reverse (then every pair is misordered), on the hardest generators.
+  const soup_case c = *rc::gen::oneOf(any_small_soup(), scale_disparity(), near_coplanar(), slivers());
+  const exbsp::triangle_soup soup = c.soup();
+  exbsp::build_options o;
+  o.heuristic = *rc::gen::elementOf(heuristics());
+  const exbsp::bsp_tree<EK> t(soup, o);
+  const tree_view<EK> v = view_of<EK>(t, soup);
+  for (const auto& vp : standard_viewpoints(v, *rc::gen::arbitrary<std::uint64_t>())) {
+    auto order = tree_order<EK>(t, vp);
+    for (int pass = 0; pass < 2; ++pass) {
+      check_report a, b;
+      const order_tally pruned = check_order_along_rays(v, vp, order, 160, a);
+      const order_tally all = check_order_along_rays(v, vp, order, 160, b, false);
+      RC_ASSERT(pruned.rays == all.rays);
+      RC_ASSERT(pruned.pairs == all.pairs);
+      RC_ASSERT(pruned.misordered == all.misordered);
+      std::reverse(order.begin(), order.end());
+    }
+  }
+}
+
 TEST(Checker, rejects_a_gap_an_overlap_of_equal_area_and_a_vertex_off_the_plane) {
   small_tree s;
   std::vector<std::size_t> pieces;

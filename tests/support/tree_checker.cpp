@@ -520,7 +520,7 @@ void check_stats(const tree_view<E>& v, const std::string& expected_kernel, cons
 
 template <class E>
 order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp, const std::vector<std::uint32_t>& order,
-                                   std::size_t max_rays, check_report& r) {
+                                   std::size_t max_rays, check_report& r, bool prune) {
   using FT = typename E::FT;
   order_tally tally;
   const std::size_t m = v.fragments.size();
@@ -564,17 +564,18 @@ order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp
     const auto [e, ef] = approximate(from);
     const auto [t_d, et] = approximate(to);
     const vec3d d{t_d[0] - e[0], t_d[1] - e[1], t_d[2] - e[2]};
-    const double dn = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * (1 - 1e-15) - 2 * std::sqrt(3.0) * (ef + et);
+    // std::hypot: squares of coordinates near 1e-300 (or 1e200) would underflow (overflow).
+    const double dn = std::hypot(d[0], d[1], d[2]) * (1 - 1e-15) - 2 * std::sqrt(3.0) * (ef + et);
     double reach = 0;  // farthest corner of the scene box from e
     for (int cx = 0; cx < 2; ++cx)
       for (int cy = 0; cy < 2; ++cy)
         for (int cz = 0; cz < 2; ++cz) {
           const double x = (cx ? scene.max(0) : scene.min(0)) - e[0], y = (cy ? scene.max(1) : scene.min(1)) - e[1],
                        z = (cz ? scene.max(2) : scene.min(2)) - e[2];
-          reach = std::max(reach, std::sqrt(x * x + y * y + z * z));
+          reach = std::max(reach, std::hypot(x, y, z));
         }
     const double T = (reach + std::sqrt(3.0) * ef) * (1 + 1e-12) / dn;
-    if (!(dn > 0) || !std::isfinite(T)) {  // the rounded direction says nothing: every fragment
+    if (!prune || !(dn > 0) || !std::isfinite(T)) {  // the rounded direction says nothing: every fragment
       for (std::size_t i = 0; i < m; ++i) candidates.push_back(i);
     } else {
       const double dmax = std::max({std::fabs(d[0]), std::fabs(d[1]), std::fabs(d[2])});
@@ -583,9 +584,9 @@ order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp
     }
     // Interval signs first: most candidates are rejected by two certain, different signs, so
     // that the exact predicate only runs where the ray passes close to an edge line.
-    {
+    if (prune) {
+      const interval_point a = interval_of(from), b = interval_of(to);  // before: Gmpq's to_interval rounds itself
       CGAL::Protect_FPU_rounding<true> upward;
-      const interval_point a = interval_of(from), b = interval_of(to);
       std::size_t kept = 0;
       for (std::size_t i : candidates) {
         if (!v.finite[i]) continue;
@@ -747,7 +748,8 @@ check_report check_tree(const exbsp::bsp_tree<K>& t, const exbsp::triangle_soup&
   template void check_node_planes<E>(const tree_view<E>&, check_report&);                                         \
   template void check_stats<E>(const tree_view<E>&, const std::string&, const std::string&, check_report&);      \
   template order_tally check_order_along_rays<E>(const tree_view<E>&, const viewpoint<E>&,                        \
-                                                 const std::vector<std::uint32_t>&, std::size_t, check_report&); \
+                                                 const std::vector<std::uint32_t>&, std::size_t, check_report&,  \
+                                                 bool);                                                          \
   template std::vector<viewpoint<E>> standard_viewpoints<E>(const tree_view<E>&, std::uint64_t);
 #define EXBSP_CHECKER_FOR_KERNEL(K)                                                                                 \
   template tree_view<exact_kernel_of<K>> view_of<exact_kernel_of<K>, K>(const exbsp::bsp_tree<K>&,                \

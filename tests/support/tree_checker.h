@@ -140,10 +140,11 @@ struct order_tally {
 /// when the nearer one is drawn first. At most max_rays sample points (4 per fragment while
 /// that fits, else the centroids of a stride; 0: 4 per fragment). Candidates for a ray come
 /// from a hierarchy of double boxes widened by a bound on the rounding of the ray, so no
-/// fragment the ray crosses is ever missed.
+/// fragment the ray crosses is ever missed, and interval signs reject most of them before the
+/// exact test (`prune` false: every fragment is a candidate, for testing the pruning).
 template <class E>
 order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp, const std::vector<std::uint32_t>& order,
-                                   std::size_t max_rays, check_report& r);
+                                   std::size_t max_rays, check_report& r, bool prune = true);
 
 /// Viewpoints for a view: a random eye, an eye exactly on a node's plane (outside its
 /// triangle), an eye at a fragment vertex (a split point: on several planes), an eye at an
