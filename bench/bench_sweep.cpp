@@ -127,7 +127,7 @@ json defects_json(const defect_report& d) {
           {"misclassified", d.misclassified}, {"ancestor_tests", d.ancestor_tests},
           {"eyes", d.eyes},                   {"order_samples", d.order_samples},
           {"occluding_pairs", d.occluding_pairs}, {"order_errors", d.order_errors},
-          {"exact_fallbacks", d.exact_fallbacks}, {"seconds", d.seconds},
+          {"seconds", d.seconds},
           {"seconds_parts", {d.seconds_plane, d.seconds_tiling, d.seconds_classification, d.seconds_order}}};
 }
 
@@ -356,7 +356,7 @@ int main(int argc, char** argv) {
   app.add_option("--control-max-triangles", o.control_max_triangles,
                  "defect checks of the exact control kernel (epeck) only up to N input triangles");
   app.add_flag("--skip-counted", o.skip_counted, "no counted build: only the timed ones (for profiling)");
-  app.add_option("--order-samples", o.defect.samples, "fragments sampled per eye for order errors (0: all)");
+  app.add_option("--order-samples", o.defect.samples, "sample rays per eye for order errors (fragment centroids of a stride; 0: all)");
   app.add_option("--exact-order-samples", o.defect.exact_samples,
                  "the same for the exact control kernel epeck (0: all)");
   app.add_option("--eyes", o.defect.eyes, "eyes for order errors (at most 8; 0: no order check)");

@@ -13,7 +13,6 @@ triangles (a tree of depth 100,000), the JavaScript BSPs users would otherwise p
 Node), and a callgrind profile of the exact and double builds of fandisk on one thread.
 """
 import argparse
-import re
 import json
 import os
 import statistics
@@ -21,16 +20,19 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import run as base  # noqa: E402  (the main benchmark script: build, machine, sweep helpers)
+import common  # noqa: E402
+import perf_profile  # noqa: E402
+import report as fmt  # noqa: E402  (number and table formatting)
+import run as base  # noqa: E402  (the main benchmark script: build, machine, sweep)
 
 KERNELS = ["exact", "double", "epeck", "gmpq"]
 GOAL_RATIO, GOAL_WORST, GOAL_BYTES, GOAL_ELEPHANT, GOAL_STACK = 1.5, 2.0, 120, 2.5, 60
 
 
 def build():
-    base.run(["cmake", "-S", base.REPO, "-B", base.BUILD, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
+    common.run(["cmake", "-S", common.REPO, "-B", base.BUILD, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
               "-DEXBSP_BUILD_BENCH=ON", "-DEXBSP_BUILD_TESTS=OFF"], stdout=subprocess.DEVNULL)
-    base.run(["ninja", "-C", base.BUILD, "bench_sweep"])
+    common.run(["ninja", "-C", base.BUILD, "bench_sweep"])
 
 
 def stacked_off(path, n):
@@ -43,28 +45,6 @@ def stacked_off(path, n):
             f.write(f"3 {3 * i} {3 * i + 1} {3 * i + 2}\n")
 
 
-def perf_profile(outdir, mesh, kernel):
-    """Self time per function of one single-threaded build (perf sampling). Not callgrind:
-    valgrind ignores the rounding-mode switches of CGAL's interval filters, which the exact
-    kernel calls for input points, so under valgrind those predicates (and the tree) change."""
-    data = os.path.join(outdir, f"perf.{kernel}.data")
-    cmd = ["perf", "record", "-q", "-o", data, "--", os.path.join(base.BUILD, "bench", "bench_sweep"), "--label",
-           "profile", "--out", os.devnull, "--kernels", kernel, "--heuristics", "sampled", "--repeats", "3",
-           "--skip-counted", "--threads", "1", "--input", "mesh:" + base.mesh_path(mesh)]
-    try:
-        base.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=1800)
-        text = subprocess.run(["perf", "report", "-i", data, "--stdio", "--no-children", "--sort", "symbol"],
-                              check=True, capture_output=True, text=True).stdout
-    except (OSError, subprocess.CalledProcessError, subprocess.TimeoutExpired) as e:
-        return {"error": str(e)}
-    rows = []
-    for line in text.splitlines():
-        m = re.match(r"^\s*([\d.]+)%\s+\[[.k]\]\s+(.*)$", line)
-        if m:
-            rows.append({"percent": float(m.group(1)), "function": m.group(2).strip()})
-    return {"top": rows[:10]}
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--quick", action="store_true")
@@ -75,16 +55,16 @@ def main():
                     help="keep the per-mesh sweep already in bench/out/exact/ (rerun the rest)")
     ap.add_argument("--build-dir", default=base.BUILD, help="where bench/bench_sweep is (default build-bench/)")
     args = ap.parse_args()
-    base.ensure_matplotlib()
+    common.ensure_matplotlib()
     base.BUILD = os.path.abspath(args.build_dir)
-    outdir = os.path.join(base.HERE, "out", "exact-quick" if args.quick else "exact")
+    outdir = os.path.join(common.HERE, "out", "exact-quick" if args.quick else "exact")
     os.makedirs(outdir, exist_ok=True)
-    report_path = os.path.join(outdir, "EXACT_KERNEL.md") if args.quick else os.path.join(base.HERE, "EXACT_KERNEL.md")
-    plot_path = os.path.join(outdir, "exact_kernel.png") if args.quick else os.path.join(base.HERE, "plots",
+    report_path = os.path.join(outdir, "EXACT_KERNEL.md") if args.quick else os.path.join(common.HERE, "EXACT_KERNEL.md")
+    plot_path = os.path.join(outdir, "exact_kernel.png") if args.quick else os.path.join(common.HERE, "plots",
                                                                                             "exact_kernel.png")
     if not args.no_build:
         build()
-    meshes = base.available(["joint", "part", "fandisk"] if args.quick else base.CAD + base.ORGANIC)
+    meshes = common.available(["joint", "part", "fandisk"] if args.quick else common.CAD + common.ORGANIC)
     repeats = 1 if args.quick else 3
     stack_n = 20000 if args.quick else 100000
     machine = base.machine()
@@ -92,13 +72,13 @@ def main():
     sweep_out = os.path.join(outdir, "sweep.jsonl")
     stack_path = os.path.join(outdir, f"stacked_{stack_n}.off")
     stack_out = os.path.join(outdir, "stacked.jsonl")
-    peers_out = os.path.join(base.HERE, "out", "peers.jsonl")
+    peers_out = os.path.join(common.HERE, "out", "peers.jsonl")
     reuse = (args.reuse_sweep or args.report_only) and os.path.exists(sweep_out)
     if not reuse:
         if os.path.exists(sweep_out):
             os.remove(sweep_out)
         for name in meshes:
-            base.sweep({"time_cap": 120}, sweep_out, "exact", ["mesh:" + base.mesh_path(name)], KERNELS, ["sampled"],
+            base.sweep({"time_cap": 120}, sweep_out, "exact", ["mesh:" + common.mesh_path(name)], KERNELS, ["sampled"],
                        repeats, ["--limit", "gmpq=2500", "--repeats-for", "gmpq=1", "--time-cap-for", "gmpq=30"])
     if not args.report_only:
         stacked_off(stack_path, stack_n)
@@ -108,27 +88,27 @@ def main():
         # and only its counted build (the timed round would double that).
         base.sweep({"time_cap": 600}, stack_out, "stacked", ["mesh:" + stack_path], ["exact", "epeck"], ["naive"], 1,
                    ["--max-fragments", str(stack_n + 1), "--time-cap-for", "epeck=120", "--repeats-for", "epeck=0"])
-        peers_script = os.path.join(base.HERE, "peers", "run.sh")
+        peers_script = os.path.join(common.HERE, "peers", "run.sh")
         if os.path.exists(peers_script):
             try:
-                base.run(["bash", peers_script] + [base.mesh_path(m) for m in meshes], timeout=3600)
+                common.run(["bash", peers_script] + [common.mesh_path(m) for m in meshes], timeout=3600)
             except (OSError, subprocess.CalledProcessError, subprocess.TimeoutExpired) as e:
-                base.log(f"warning: peers: {e}")
+                common.log(f"warning: peers: {e}")
     peers = []
     if os.path.exists(peers_out):
         try:
             peers = [json.loads(l) for l in open(peers_out) if l.strip()]
         except ValueError as e:
-            base.log(f"warning: peers: {e}")
+            common.log(f"warning: peers: {e}")
     profile_mesh = "joint" if args.quick else "fandisk"
-    profile = {k: perf_profile(outdir, profile_mesh, k) for k in ["exact", "double"]}
+    profile = {k: perf_profile.profile(base.BUILD, outdir, profile_mesh, k) for k in ["exact", "double"]}
     machine["load_end"] = os.getloadavg()
 
-    rows = base.load_jsonl(sweep_out)
-    stack_rows = base.load_jsonl(stack_out)
+    rows = common.load_jsonl(sweep_out)
+    stack_rows = common.load_jsonl(stack_out)
     write_report(report_path, plot_path, machine, meshes, rows, stack_rows, stack_n, peers, profile, profile_mesh,
                  args.quick)
-    base.log(f"wrote {report_path}")
+    common.log(f"wrote {report_path}")
 
 
 def median_wall(r):
@@ -158,21 +138,21 @@ def write_report(path, plot_path, machine, meshes, rows, stack_rows, stack_n, pe
         if e.get("cpu_seconds_median") and d.get("cpu_seconds_median"):
             cpu_ratios[m] = e["cpu_seconds_median"] / d["cpu_seconds_median"]
         bytes_pf[m] = e.get("peak_heap_bytes_per_fragment")
-        table_rows.append([m, "CAD" if m in base.CAD else "organic", base.fmt_int(e.get("input_triangles")),
-                           base.fmt_int(e.get("fragments")), base.fmt_int(d.get("fragments")), base.fmt_s(we),
-                           base.fmt_s(wd), base.fmt_ratio(r), base.fmt_s(wp), base.fmt_ratio(wp / we if wp and we else None),
-                           base.fmt_s(wg) if wg else "–",
+        table_rows.append([m, "CAD" if m in common.CAD else "organic", fmt.fmt_int(e.get("input_triangles")),
+                           fmt.fmt_int(e.get("fragments")), fmt.fmt_int(d.get("fragments")), fmt.fmt_s(we),
+                           fmt.fmt_s(wd), fmt.fmt_ratio(r), fmt.fmt_s(wp), fmt.fmt_ratio(wp / we if wp and we else None),
+                           fmt.fmt_s(wg) if wg else "–",
                            f"{bytes_pf[m]:.0f}" if bytes_pf[m] else "–",
                            f"{p.get('peak_heap_bytes_per_fragment', 0):.0f}" if p else "–"])
-    cad = [ratios[m] for m in meshes if m in base.CAD and ratios.get(m)]
+    cad = [ratios[m] for m in meshes if m in common.CAD and ratios.get(m)]
     lines += ["## Goals (issue 10)", ""]
     if cad:
         med, worst = statistics.median(cad), max(cad)
-        worst_mesh = max((m for m in meshes if m in base.CAD and ratios.get(m)), key=lambda m: ratios[m])
+        worst_mesh = max((m for m in meshes if m in common.CAD and ratios.get(m)), key=lambda m: ratios[m])
         lines.append(f"- exact / double build time, same heuristic (sampled), CAD meshes: **median {med:.2f}×** "
                      f"(goal ≤ {GOAL_RATIO}×: {'met' if med <= GOAL_RATIO else 'not met'}), **worst {worst:.2f}×** on "
                      f"{worst_mesh} (goal ≤ {GOAL_WORST}×: {'met' if worst <= GOAL_WORST else 'not met'}).")
-        cpu = [cpu_ratios[m] for m in meshes if m in base.CAD and cpu_ratios.get(m)]
+        cpu = [cpu_ratios[m] for m in meshes if m in common.CAD and cpu_ratios.get(m)]
         if cpu:
             lines.append(f"  In CPU time: median {statistics.median(cpu):.2f}×.")
     bpf = [b for b in bytes_pf.values() if b]
@@ -197,7 +177,7 @@ def write_report(path, plot_path, machine, meshes, rows, stack_rows, stack_n, pe
               "`epeck / exact` is how much faster the new default is than the previous one. Fragments differ "
               "between exact and double because rounded split points make a different (and wrong) tree; "
               "exact, epeck and gmpq build the identical tree (tests/test_exact_kernel.cpp).", ""]
-    lines.append(base.table(["mesh", "class", "triangles", "fragments (exact)", "fragments (double)", "exact s",
+    lines.append(fmt.table(["mesh", "class", "triangles", "fragments (exact)", "fragments (double)", "exact s",
                          "double s", "× double", "epeck s", "epeck / exact", "gmpq s", "B/fragment exact",
                          "B/fragment epeck"], table_rows))
     # Peers.
@@ -214,14 +194,14 @@ def write_report(path, plot_path, machine, meshes, rows, stack_rows, stack_n, pe
         for m in meshes:
             e = by.get((m, "exact"))
             we = median_wall(e) if e else None
-            row = [m, base.fmt_s(we), base.fmt_int(e.get("fragments")) if e else "–"]
+            row = [m, fmt.fmt_s(we), fmt.fmt_int(e.get("fragments")) if e else "–"]
             for t in tools:
                 r = pby.get((m, t), {})
                 s = r.get("build_seconds")
-                row += [base.fmt_s(s) if s else (r.get("error", "–")[:30] if r else "–"),
-                        base.fmt_int(r.get("pieces_triangulated")) if r.get("pieces_triangulated") is not None else "–",
+                row += [fmt.fmt_s(s) if s else (r.get("error", "–")[:30] if r else "–"),
+                        fmt.fmt_int(r.get("pieces_triangulated")) if r.get("pieces_triangulated") is not None else "–",
                         (f"{s / we:.1f}×" if s and we else "–")]
-                if s and we and m in base.CAD:
+                if s and we and m in common.CAD:
                     faster[t][1] += 1
                     faster[t][0] += s > we
             prow.append(row)
@@ -229,7 +209,7 @@ def write_report(path, plot_path, machine, meshes, rows, stack_rows, stack_n, pe
         lines += [f"Tools: {versions}, run by Node {machine.get('node', '')} on the same machine in the same run "
                   "(best of 3 builds each). Pieces are polygons stored in the tree, fan-triangulated for comparison "
                   "with exbsp's triangles.", ""]
-        lines.append(base.table(hdr, prow))
+        lines.append(fmt.table(hdr, prow))
         for t in tools:
             lines.append(f"- exact faster than {t} on {faster[t][0]} of {faster[t][1]} CAD meshes "
                          "(goal: all).")
@@ -239,11 +219,11 @@ def write_report(path, plot_path, machine, meshes, rows, stack_rows, stack_n, pe
     lines += ["", f"## Where the time goes ({profile_mesh}, one thread, perf samples, self time)", ""]
     for k in ["exact", "double"]:
         pk = profile.get(k, {})
-        if pk.get("top"):
+        if pk.get("rows"):
             lines.append(f"{k}:")
             lines.append("")
-            for item in pk["top"][:8]:
-                lines.append(f"- {item['percent']:.1f}%  `{base.demangle_short(item['function'])[:110]}`")
+            for item in pk["rows"][:8]:
+                lines.append(f"- {item['percent']:.1f}%  `{fmt.short_function(item['function'])[:110]}`")
             lines.append("")
         else:
             lines.append(f"{k}: not available ({pk.get('error', 'perf missing')})")

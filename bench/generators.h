@@ -1,40 +1,17 @@
-// Generated benchmark inputs (deterministic for a seed, the same on every machine).
-//
-// random soup (n, seed): n triangles at constant density: centres uniform in a cube of side
-//   L = n^(1/3) (one triangle per unit volume), each vertex = centre + a random offset in
-//   [-0.6, 0.6]^3. Triangles intersect their neighbours: about as many crossings per triangle
-//   at every n, so growth in fragments comes from the splitting planes, not from denser input.
-// sticks (k): the quadratic worst case of autopartitions. Layer A: k thin vertical sticks in
-//   the planes y = i (i = 0..k-1), x in [-1, k], z in [0, h]; layer B, above it: k sticks in
-//   the planes x = j + 1/2, y in [-1, k], z in [1, 1 + h]. Every plane of one layer crosses
-//   every stick of the other and no input plane separates the layers, so every BSP whose
-//   planes are input planes has Omega(k^2) fragments. Each stick is one rectangle = 2
-//   triangles: n = 4k.
+// Benchmark inputs: a mesh file or a generated soup (random soup, sticks: their definitions are
+// at the top of tests/support/inputs.h, shared with the tests), named by a spec string.
 #pragma once
 #include <cstdint>
 #include <string>
 
 #include "mesh/soup.h"
+#include "support/inputs.h"
 
 namespace exbsp::bench {
 
-/// splitmix64 stream: portable, unlike std:: distributions.
-class split_mix {
-public:
-  explicit split_mix(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next();
-  /// Uniform double in [0, 1) with 53 random bits.
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
-private:
-  std::uint64_t state_;
-};
-
-/// n random triangles at constant density (see the top of this file).
-triangle_soup make_random_soup(std::size_t n, std::uint64_t seed);
-
-/// The two-layer grid of k + k sticks (see the top of this file); 4k triangles.
-triangle_soup make_sticks(std::size_t k);
+using exbsp_test::make_random_soup;
+using exbsp_test::make_sticks;
+using exbsp_test::split_mix;
 
 /// An input described by a spec: "mesh:PATH", "soup:N[:SEED]" or "sticks:K".
 struct input_spec {

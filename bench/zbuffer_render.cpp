@@ -1,4 +1,4 @@
-// zbuffer_render: Mesa's off-screen z-buffer (OSMesa, tests/osmesa_zbuffer.h) image of
+// zbuffer_render: Mesa's off-screen z-buffer (OSMesa, tests/support/osmesa_zbuffer.h) image of
 // flat-coloured triangles under a given 4x4 matrix: the reference images of bench/vector_peers.py,
 // which compares exbsp's, matplotlib's and three.js's vector drawings with them.
 //
@@ -18,7 +18,7 @@
 #include <iostream>
 #include <string>
 
-#include "osmesa_zbuffer.h"
+#include "support/osmesa_zbuffer.h"
 #include "view/png_io.h"
 
 int main(int argc, char** argv) {

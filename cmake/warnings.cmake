@@ -14,6 +14,16 @@ if(EXBSP_SANITIZE)
     target_compile_options(exbsp_options INTERFACE -Wno-maybe-uninitialized)
   endif()
 endif()
+if(EXBSP_TSAN)
+  if(EXBSP_SANITIZE)
+    message(FATAL_ERROR "EXBSP_TSAN and EXBSP_SANITIZE cannot be combined")
+  endif()
+  # GCC's libgomp is not instrumented and synchronises its thread pool with futexes TSan cannot
+  # see (false races between parallel regions); clang's libomp with archer tells TSan about
+  # OpenMP's barriers and tasks. scripts/test --tsan builds with clang++.
+  target_compile_options(exbsp_options INTERFACE -fsanitize=thread -fno-omit-frame-pointer)
+  target_link_options(exbsp_options INTERFACE -fsanitize=thread)
+endif()
 # Installed consumers write #include <exbsp/bsp/engine.h>; exbsp's own headers include
 # "bsp/..." relative to include/exbsp (each module adds that directory).
 target_include_directories(exbsp_options INTERFACE $<INSTALL_INTERFACE:include>)

@@ -14,6 +14,7 @@
 
 #include "core/errors.h"
 #include "view/bezier.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -21,18 +22,13 @@ using exbsp::bezier_curve;
 using exbsp::vec2d;
 using exbsp::vec3d;
 
-// Fixed RapidCheck seed (DESIGN.md section 7) unless the caller sets RC_PARAMS.
-[[maybe_unused]] const bool fixed_seed = [] {
-  setenv("RC_PARAMS", "seed=20240611", 0);
-  return true;
-}();
+using exbsp_test::cross;
+using exbsp_test::dist;
+using exbsp_test::dot;
+using exbsp_test::sub;
 
-vec3d sub(const vec3d& a, const vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const vec3d& a, const vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-vec3d cross(const vec3d& a, const vec3d& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dist(const vec3d& a, const vec3d& b) { return std::sqrt(dot(sub(a, b), sub(a, b))); }
+[[maybe_unused]] const bool fixed_seed = exbsp_test::fixed_rc_seed();
+
 bool finite(const vec3d& p) {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }

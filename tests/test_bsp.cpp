@@ -13,6 +13,7 @@
 #include "bsp/kernel_epeck.h"
 #include "bsp/kernel_gmpq.h"
 #include "core/errors.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -42,7 +43,7 @@ std::array<int, 3> signs(const tri& plane, const tri& t) {
 
 const tri plane_z0{P(0, 0, 0), P(1, 0, 0), P(0, 1, 0)};  // normal +z
 
-TEST(classify, signs_to_classes) {
+TEST(Classify, signs_to_classes) {
   using exbsp::classification;
   EXPECT_EQ(exbsp::classify_signs({0, 0, 0}), classification::coplanar);
   EXPECT_EQ(exbsp::classify_signs({1, 0, 0}), classification::positive);
@@ -53,7 +54,7 @@ TEST(classify, signs_to_classes) {
 }
 
 // Each of the three cyclic positions of the lone vertex c, on each side.
-TEST(split, lone_vertex_each_relabelling_keeps_order_and_orientation) {
+TEST(Split, lone_vertex_each_relabelling_keeps_order_and_orientation) {
   for (int lone = 0; lone < 3; ++lone) {
     for (int side : {+1, -1}) {
       tri t;
@@ -92,7 +93,7 @@ TEST(split, lone_vertex_each_relabelling_keeps_order_and_orientation) {
   }
 }
 
-TEST(split, one_vertex_on_plane_each_relabelling) {
+TEST(Split, one_vertex_on_plane_each_relabelling) {
   for (int z = 0; z < 3; ++z) {
     tri t;
     const P base[3] = {P(0, 0, 0), P(3, 0, 0), P(0, 3, 0)};
@@ -117,12 +118,12 @@ TEST(split, one_vertex_on_plane_each_relabelling) {
   }
 }
 
-TEST(split, non_straddling_input_is_rejected_not_aborted) {
+TEST(Split, non_straddling_input_is_rejected_not_aborted) {
   const tri t{P(0, 0, 1), P(1, 0, 1), P(0, 1, 1)};
   EXPECT_THROW(exbsp::split_triangle<K>(plane_z0, t, signs(plane_z0, t)), exbsp::usage_error);
 }
 
-TEST(split, exact_intersection_of_inexact_decimals) {
+TEST(Split, exact_intersection_of_inexact_decimals) {
   // 0.1 and 0.3 are not representable; the split point must still be exactly on the plane.
   const tri plane{P(0.1, 0, 0), P(0.1, 1, 0), P(0.1, 0, 1)};  // x = 0.1 plane
   const tri t{P(0, 0.3, 0.7), P(0.3, 0.1, 0.2), P(0.2, 0.9, 0.1)};
@@ -133,13 +134,9 @@ TEST(split, exact_intersection_of_inexact_decimals) {
     }
 }
 
-exbsp::triangle_soup soup_of(const std::vector<std::array<vec3d, 3>>& tris) {
-  exbsp::triangle_soup soup;
-  for (const auto& t : tris) soup.add_triangle(t[0], t[1], t[2]);
-  return soup;
-}
+using exbsp_test::soup_of;
 
-TEST(tree, coplanar_both_orientations_stay_at_the_node) {
+TEST(Tree, coplanar_both_orientations_stay_at_the_node) {
   const auto soup = soup_of({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}},
                              {{{5, 5, 0}, {4, 6, 0}, {6, 6, 0}}},   // same plane, flipped
                              {{{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}},   // same triangle, flipped
@@ -170,7 +167,7 @@ TEST(tree, coplanar_both_orientations_stay_at_the_node) {
   EXPECT_EQ(tree.order_for_direction({0, 0, 1}), below);
 }
 
-TEST(tree, degenerate_triangles_are_skipped_and_counted) {
+TEST(Tree, degenerate_triangles_are_skipped_and_counted) {
   auto soup = soup_of({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}},
                        {{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}},     // collinear
                        {{{3, 3, 3}, {3, 3, 3}, {3, 3, 3}}}});   // a point
@@ -180,7 +177,7 @@ TEST(tree, degenerate_triangles_are_skipped_and_counted) {
   EXPECT_EQ(tree.stats().fragments, 1u);
 }
 
-TEST(tree, empty_and_all_degenerate_input_give_an_empty_tree) {
+TEST(Tree, empty_and_all_degenerate_input_give_an_empty_tree) {
   exbsp::triangle_soup soup;
   const exbsp::bsp tree = exbsp::bsp::build(soup, {});
   EXPECT_EQ(tree.stats().nodes, 0u);
@@ -188,13 +185,13 @@ TEST(tree, empty_and_all_degenerate_input_give_an_empty_tree) {
   EXPECT_TRUE(tree.order_from_eye({0, 0, 0}).empty());
 }
 
-TEST(tree, non_finite_input_is_an_error) {
+TEST(Tree, non_finite_input_is_an_error) {
   exbsp::triangle_soup soup;
   soup.add_triangle({0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0});
   EXPECT_THROW(exbsp::bsp::build(soup, {}), exbsp::usage_error);
 }
 
-TEST(tree, unknown_heuristic_is_an_error) {
+TEST(Tree, unknown_heuristic_is_an_error) {
   exbsp::build_options o;
   o.heuristic = "best";
   EXPECT_THROW(exbsp::bsp::build(soup_of({}), o), exbsp::usage_error);
@@ -218,7 +215,7 @@ std::vector<std::array<vec3d, 3>> cyclic_triple() {
   return tris;
 }
 
-TEST(painter, cyclic_overlap_has_no_depth_order_but_bsp_splits_it) {
+TEST(Painter, cyclic_overlap_has_no_depth_order_but_bsp_splits_it) {
   const auto tris = cyclic_triple();
   const auto soup = soup_of(tris);
   // Pairwise "over" relation along the view direction -z (eye above at z = +100).
@@ -279,7 +276,7 @@ TEST(painter, cyclic_overlap_has_no_depth_order_but_bsp_splits_it) {
 }
 
 // A degenerate tree: naive on n parallel stacked triangles has depth n. Everything is iterative.
-TEST(depth, naive_on_100000_stacked_triangles_builds_traverses_and_frees) {
+TEST(Depth, naive_on_100000_stacked_triangles_builds_traverses_and_frees) {
   // Naive is quadratic here (every level classifies the rest): 100000 in the normal build,
   // 20000 under the sanitizers (still far deeper than any recursion could survive there).
   const std::size_t n = std::getenv("EXBSP_SANITIZED") ? 20000 : 100000;
@@ -304,7 +301,7 @@ TEST(depth, naive_on_100000_stacked_triangles_builds_traverses_and_frees) {
   }  // destroyed here: flat vectors, no recursion
 }
 
-TEST(limits, max_fragments_stops_with_limit_error) {
+TEST(Limits, max_fragments_stops_with_limit_error) {
   const auto soup = soup_of(cyclic_triple());
   exbsp::build_options o;
   o.heuristic = "naive";
@@ -314,7 +311,7 @@ TEST(limits, max_fragments_stops_with_limit_error) {
   EXPECT_NO_THROW(exbsp::bsp::build(soup, o));
 }
 
-TEST(kernels, epeck_and_gmpq_give_identical_trees_and_orders) {
+TEST(Kernels, epeck_and_gmpq_give_identical_trees_and_orders) {
   const auto soup = soup_of(cyclic_triple());
   for (const char* h : {"naive", "min-split", "sampled", "random"}) {
     exbsp::build_options a, b;
@@ -329,14 +326,14 @@ TEST(kernels, epeck_and_gmpq_give_identical_trees_and_orders) {
   }
 }
 
-TEST(kernels, inexact_kernels_refuse_exact_output) {
+TEST(Kernels, inexact_kernels_refuse_exact_output) {
   exbsp::build_options o;
   o.kernel = exbsp::kernel_id::double_;
   const auto t = exbsp::bsp::build(soup_of(cyclic_triple()), o);
   EXPECT_THROW(t.fragment_exact(0), exbsp::usage_error);
 }
 
-TEST(min_split, picks_the_plane_with_fewest_straddlers_ties_to_earliest) {
+TEST(MinSplit, picks_the_plane_with_fewest_straddlers_ties_to_earliest) {
   // Triangle 0's plane (x = 0) cuts both others; the planes of 1 (z = 0) and 2 (z = 5) each
   // cut only triangle 0: min-split must take 1, the earliest of the one-split planes.
   const auto soup = soup_of({{{{0, -1, -1}, {0, 1, -1}, {0, 0, 6}}},

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "bsp/engine.h"
-#include "cli_support.h"
+#include "support/cli_support.h"
 #include "app/cli_parse.h"
 #include "core/errors.h"
 #include "core/version.h"
@@ -40,7 +40,7 @@ using exbsp_test::write_file;
 using result = exbsp_test::cli_result;
 
 /// A fresh temporary directory per test; the CLI runs inside it.
-class cli : public exbsp_test::cli_fixture {
+class Cli : public exbsp_test::cli_fixture {
 protected:
   /// The painter's failure case (tests/test_bsp.cpp) as an OFF file: it needs splits.
   fs::path write_cyclic_triple() {
@@ -82,7 +82,7 @@ std::vector<bad_file> bad_manifest() {
 
 // --- (1) bad input ----------------------------------------------------------------------------
 
-TEST_F(cli, every_bad_input_file_exits_2_naming_file_and_line_and_writes_no_output) {
+TEST_F(Cli, every_bad_input_file_exits_2_naming_file_and_line_and_writes_no_output) {
   const auto manifest = bad_manifest();
   ASSERT_GE(manifest.size(), 50u) << "tests/data/bad/EXPECTED.tsv";
   for (const bad_file& b : manifest) {
@@ -104,7 +104,7 @@ TEST_F(cli, every_bad_input_file_exits_2_naming_file_and_line_and_writes_no_outp
   }
 }
 
-TEST_F(cli, failed_order_leaves_an_existing_output_file_untouched) {
+TEST_F(Cli, failed_order_leaves_an_existing_output_file_untouched) {
   write_file(dir / "OUT.json", "previous\n");
   const result r = run("order " + quoted(data_dir + "/bad/off_nan.off") + " --eye 0,0,10 -o OUT.json");
   EXPECT_EQ(r.status, 2);
@@ -112,7 +112,7 @@ TEST_F(cli, failed_order_leaves_an_existing_output_file_untouched) {
   EXPECT_EQ(file_names(), std::vector<std::string>{"OUT.json"});
 }
 
-TEST_F(cli, a_missing_mesh_file_exits_2_naming_it) {
+TEST_F(Cli, a_missing_mesh_file_exits_2_naming_it) {
   const result r = run("build no_such_mesh.off");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind("exbsp: error: ", 0), 0u) << r.err;
@@ -121,7 +121,7 @@ TEST_F(cli, a_missing_mesh_file_exits_2_naming_it) {
 
 // --- (2) build --json ---------------------------------------------------------------------------
 
-TEST_F(cli, build_json_has_every_key_of_design_section_4_and_matches_the_library) {
+TEST_F(Cli, build_json_has_every_key_of_design_section_4_and_matches_the_library) {
   const fs::path cyclic = write_cyclic_triple();
   for (const std::string& mesh : {data_dir + "/cube.off", data_dir + "/fan.off", cyclic.string()}) {
     for (const char* kernel : {"exact", "epeck", "gmpq", "epick", "double"}) {
@@ -234,7 +234,7 @@ std::string g17(double x) {
   return buf;
 }
 
-TEST_F(cli, order_json_has_eye_or_direction_faces_17_digit_doubles_and_reduced_exact_rationals) {
+TEST_F(Cli, order_json_has_eye_or_direction_faces_17_digit_doubles_and_reduced_exact_rationals) {
   const fs::path cyclic = write_cyclic_triple();
   const std::string exact_decimal = data_dir + "/exact_decimal.off";
   struct view_case {
@@ -293,7 +293,7 @@ TEST_F(cli, order_json_has_eye_or_direction_faces_17_digit_doubles_and_reduced_e
   }
 }
 
-TEST_F(cli, order_with_an_inexact_kernel_has_no_exact_coordinates) {
+TEST_F(Cli, order_with_an_inexact_kernel_has_no_exact_coordinates) {
   const fs::path cyclic = write_cyclic_triple();
   const result r = run("order " + quoted(cyclic.string()) + " --eye 0,0,10 --kernel double");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -302,7 +302,7 @@ TEST_F(cli, order_with_an_inexact_kernel_has_no_exact_coordinates) {
   for (const json& f : j["fragments"]) EXPECT_FALSE(f.contains("exact"));
 }
 
-TEST_F(cli, two_runs_write_byte_identical_orders_whatever_the_thread_count) {
+TEST_F(Cli, two_runs_write_byte_identical_orders_whatever_the_thread_count) {
   // The small cyclic scene, and a real mesh big enough for the parallel build.
   std::vector<std::string> meshes{write_cyclic_triple().string()};
   const std::string anchor = std::string(EXBSP_SOURCE_DIR) + "/data/meshes/anchor.off";
@@ -317,11 +317,12 @@ TEST_F(cli, two_runs_write_byte_identical_orders_whatever_the_thread_count) {
       EXPECT_EQ(a, read_file(dir / "B.json")) << mesh << " " << h;
       EXPECT_EQ(a, read_file(dir / "C.json")) << mesh << " " << h;
     }
+  EXBSP_NEED_CORPUS(fs::exists(anchor), anchor);  // after the cyclic scene's checks
 }
 
 // --- (4) --max-fragments ------------------------------------------------------------------------
 
-TEST_F(cli, max_fragments_below_what_the_splits_need_exits_3_and_writes_nothing) {
+TEST_F(Cli, max_fragments_below_what_the_splits_need_exits_3_and_writes_nothing) {
   const fs::path cyclic = write_cyclic_triple();
   const result b = run("build " + quoted(cyclic.string()) + " --heuristic naive --max-fragments 3 --json");
   EXPECT_EQ(b.status, 3);
@@ -340,7 +341,7 @@ TEST_F(cli, max_fragments_below_what_the_splits_need_exits_3_and_writes_nothing)
 
 // --- (5) bad option values ------------------------------------------------------------------------
 
-TEST_F(cli, bad_option_values_exit_2_with_a_message_and_write_nothing) {
+TEST_F(Cli, bad_option_values_exit_2_with_a_message_and_write_nothing) {
   const std::string mesh = quoted(data_dir + "/cube.off");
   const std::vector<std::string> bad{"order " + mesh + " --eye 1,2 -o OUT.json",
                                      "order " + mesh + " --eye 1,2,3,4 -o OUT.json",
@@ -371,7 +372,7 @@ TEST_F(cli, bad_option_values_exit_2_with_a_message_and_write_nothing) {
 
 // --- (6) a friendlier command line: version, suggestions, standard input, render MESH ---------
 
-TEST_F(cli, version_prints_the_library_version_and_no_command_is_a_clear_error) {
+TEST_F(Cli, version_prints_the_library_version_and_no_command_is_a_clear_error) {
   const result v = run("--version");
   EXPECT_EQ(v.status, 0) << v.err;
   EXPECT_EQ(v.out, std::string("exbsp ") + exbsp::version_string + "\n");
@@ -381,7 +382,7 @@ TEST_F(cli, version_prints_the_library_version_and_no_command_is_a_clear_error) 
       << none.err;
 }
 
-TEST_F(cli, misspelled_commands_and_options_get_the_closest_valid_name) {
+TEST_F(Cli, misspelled_commands_and_options_get_the_closest_valid_name) {
   const std::string mesh = quoted(data_dir + "/cube.off");
   const std::vector<std::pair<std::string, std::string>> cases{
       {"bild " + mesh, "unknown command 'bild'; did you mean 'build'?"},
@@ -402,7 +403,7 @@ TEST_F(cli, misspelled_commands_and_options_get_the_closest_valid_name) {
   EXPECT_EQ(run("xyzzy").err.find("did you mean"), std::string::npos);
 }
 
-TEST_F(cli, negative_numbers_for_unsigned_options_are_refused) {
+TEST_F(Cli, negative_numbers_for_unsigned_options_are_refused) {
   const std::string mesh = quoted(data_dir + "/cube.off");
   for (const std::string& args : {"build " + mesh + " --seed -1", "build " + mesh + " --max-fragments -5",
                                   "build " + mesh + " --threads -2", std::string("render -o OUT.png --orbit-drag 1,2:3,4 --frames -3")}) {
@@ -415,7 +416,7 @@ TEST_F(cli, negative_numbers_for_unsigned_options_are_refused) {
   }
 }
 
-TEST_F(cli, a_mesh_on_standard_input_needs_format_and_builds_the_same_tree_as_the_file) {
+TEST_F(Cli, a_mesh_on_standard_input_needs_format_and_builds_the_same_tree_as_the_file) {
   const std::string mesh = data_dir + "/cube.off";
   const result no_format = run_with_input("build - --json", mesh);
   EXPECT_EQ(no_format.status, 2);
@@ -453,7 +454,7 @@ std::array<int, 4> drawn_box(const exbsp::view::image& img) {
   return box;
 }
 
-TEST_F(cli, render_of_a_mesh_fits_every_named_view_and_prints_a_summary) {
+TEST_F(Cli, render_of_a_mesh_fits_every_named_view_and_prints_a_summary) {
   const std::string mesh = quoted(data_dir + "/cube.off");
   for (const std::string view : {"iso", "front", "back", "left", "right", "top", "bottom"}) {
     SCOPED_TRACE(view);
@@ -488,7 +489,7 @@ TEST_F(cli, render_of_a_mesh_fits_every_named_view_and_prints_a_summary) {
   EXPECT_NE(svg.find("<g id=\"visible-edges\""), std::string::npos) << "visible edges by default";
 }
 
-TEST_F(cli, render_of_a_bad_mesh_or_bad_mesh_options_exits_2_and_writes_nothing) {
+TEST_F(Cli, render_of_a_bad_mesh_or_bad_mesh_options_exits_2_and_writes_nothing) {
   write("empty.off", "OFF\n0 0 0\n");
   write("point.off", "OFF\n3 1 0\n1 1 1\n1 1 1\n1 1 1\n3 0 1 2\n");
   write("huge.off", "OFF\n3 1 0\n-1.7e308 0 0\n1.7e308 0 0\n0 1.7e308 0\n3 0 1 2\n");
@@ -511,7 +512,7 @@ TEST_F(cli, render_of_a_bad_mesh_or_bad_mesh_options_exits_2_and_writes_nothing)
   EXPECT_NE(point.err.find("1 triangles -> 0 fragments"), std::string::npos) << point.err;
 }
 
-TEST(cli_parse, values_sizes_drag_paths_and_suggestions) {
+TEST(CliParse, values_sizes_drag_paths_and_suggestions) {
   using namespace exbsp::cli;
   EXPECT_EQ(parse_triple("1,2.5,-3", "--eye"), (exbsp::vec3d{1, 2.5, -3}));
   EXPECT_EQ(parse_size("800x600"), (std::array<int, 2>{800, 600}));

@@ -11,11 +11,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "cli_support.h"
+#include "support/cli_support.h"
 #include "clip/convex_region.h"
 #include "clip/sutherland_hodgman.h"
 #include "core/errors.h"
 #include "scene/clip_input.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -180,14 +181,7 @@ TEST(SutherlandHodgmanPieces, NothingLeft) {
 
 scene::clip_input parse(const std::string& text) { return scene::parse_clip_input(json::parse(text), "in.json"); }
 
-std::string error_key(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const scene_error& e) {
-    return e.key();
-  }
-  return "(no error)";
-}
+std::string error_key(const std::string& text) { return exbsp_test::error_key([&] { parse(text); }); }
 
 TEST(ClipInput, BadInputNamesTheKey) {
   EXPECT_EQ(error_key(R"({"segments": []})"), "/region");
@@ -268,11 +262,11 @@ TEST(ClipInput, ConcavePolygonReportsPieces) {
 // --- exbsp clip: the command line -------------------------------------------------------------
 
 using run_result = exbsp_test::cli_result;
-const auto& slurp = exbsp_test::read_file;
+using exbsp_test::read_file;
 
-class clip_cli : public exbsp_test::cli_fixture {};
+class ClipCli : public exbsp_test::cli_fixture {};
 
-TEST_F(clip_cli, JsonSvgAndVerbose) {
+TEST_F(ClipCli, JsonSvgAndVerbose) {
   write("in.json", R"({"region": {"rect": [0, 0, 4, 2]}, "segments": [[[-1, 1], [5, 1]]],
     "polygons": [[[1, -1], [3, 1], [1, 3]]]})");
   run_result r = run("clip in.json --verbose");
@@ -282,13 +276,13 @@ TEST_F(clip_cli, JsonSvgAndVerbose) {
   EXPECT_NE(r.err.find("p0 outcode 0001 (left)"), std::string::npos) << r.err;
   r = run("clip in.json --algorithm liang-barsky -o out.svg");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(slurp(dir / "out.svg").find("<svg"), std::string::npos);
+  EXPECT_NE(read_file(dir / "out.svg").find("<svg"), std::string::npos);
   r = run("clip in.json -o out.json");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(json::parse(slurp(dir / "out.json"))["segments"], j["segments"]);
+  EXPECT_EQ(json::parse(read_file(dir / "out.json"))["segments"], j["segments"]);
 }
 
-TEST_F(clip_cli, BadInputExits2NamingTheKeyAndWritesNothing) {
+TEST_F(ClipCli, BadInputExits2NamingTheKeyAndWritesNothing) {
   write("bad.json", R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [[[0, 0], [1, 1]], [[0, 0], [1, 1]],
     [[0, 0], [1, 1]], [[0, 0], [1, "y"]]]})");
   for (const char* out : {"out.json", "out.svg"}) {

@@ -5,14 +5,15 @@
 // reversed copies, and cyclic overlaps of n >= 3 triangles that no depth sort can draw.
 // Every case is checked against every invariant of tests/HARD_CASES.md, exactly, for every
 // heuristic, in Epeck (and Gmpq for the fixed cases); orders are checked for eyes exactly on
-// node planes and at split points. Generators and checker: tests/generators.h.
+// node planes and at split points. Generators and checker: tests/support/.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <functional>
 #include <set>
 
-#include "generators.h"
+#include "support/generators.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -65,7 +66,7 @@ const tri_d stack_a{{{-2, -2, 0}, {2, -2, 0}, {0, 2, 0}}};
 
 // --- Coplanar stacks --------------------------------------------------------------------------
 
-TEST(coplanar_stack, overlapping_triangles_in_both_orientations_stay_at_one_node_in_list_order) {
+TEST(CoplanarStack, overlapping_triangles_in_both_orientations_stay_at_one_node_in_list_order) {
   const soup_case c = case_of("stack", {stack_a, flipped(stack_a), {{{-1, -1, 0}, {3, 0, 0}, {0, 3, 0}}},
                                         flipped({{{-1, -1, 0}, {3, 0, 0}, {0, 3, 0}}}), stack_a, {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}});
   const exbsp::triangle_soup soup = c.soup();
@@ -85,7 +86,7 @@ TEST(coplanar_stack, overlapping_triangles_in_both_orientations_stay_at_one_node
   expect_every_invariant(c);
 }
 
-TEST(coplanar_stack, crosser_with_a_vertex_exactly_on_the_stack_plane_splits_into_two_pieces_on_it) {
+TEST(CoplanarStack, crosser_with_a_vertex_exactly_on_the_stack_plane_splits_into_two_pieces_on_it) {
   // The crosser's vertex (0.5, 0.25, 0) lies in the stack plane inside the stack triangles.
   const tri_d crosser{{{0.5, 0.25, 0}, {-1, 3, 1}, {2, 3, -1}}};
   const soup_case c = case_of("stack + on-plane crosser", {stack_a, flipped(stack_a), crosser});
@@ -106,7 +107,7 @@ TEST(coplanar_stack, crosser_with_a_vertex_exactly_on_the_stack_plane_splits_int
   expect_every_invariant(c, {{0.5, 0.25, 0}, {0.5, 0.25, 7}, {3, 3, 0}}, {{1, 0, 0}, {0, 0, -1}});
 }
 
-TEST(coplanar_stack, crossers_touching_the_plane_with_a_vertex_or_an_edge_are_not_split) {
+TEST(CoplanarStack, crossers_touching_the_plane_with_a_vertex_or_an_edge_are_not_split) {
   const soup_case c = case_of("stack + touching", {stack_a, flipped(stack_a),
                                                    {{{0, 0, 0}, {1, 3, 1}, {-1, 3, 2}}},     // vertex on the plane
                                                    {{{-1, 0, 0}, {1, 0, 0}, {0, 1, -2}}}});  // edge in the plane
@@ -116,7 +117,7 @@ TEST(coplanar_stack, crossers_touching_the_plane_with_a_vertex_or_an_edge_are_no
   expect_every_invariant(c, {{0, 0, 0}, {0, 0.5, 0}, {0, 0, 1}});
 }
 
-TEST(coplanar_stack, a_crosser_as_splitter_cuts_every_stack_triangle_in_both_orientations) {
+TEST(CoplanarStack, a_crosser_as_splitter_cuts_every_stack_triangle_in_both_orientations) {
   const tri_d crosser{{{0, -3, -1}, {0, 3, -1}, {0, 0, 2}}};  // the plane x = 0
   const soup_case c = case_of("crosser first", {crosser, stack_a, flipped(stack_a), {{{-1, -1, 0}, {1, -1, 0}, {0, 0, 0}}}, stack_a});
   const auto t = build_naive(c.soup());
@@ -126,13 +127,13 @@ TEST(coplanar_stack, a_crosser_as_splitter_cuts_every_stack_triangle_in_both_ori
   expect_every_invariant(c, {{0, 0, 0}, {0, 1, 5}, {1, 0, 0}});
 }
 
-RC_GTEST_PROP(coplanar_stack, random_stacks_with_crossers_satisfy_every_invariant, ()) {
+RC_GTEST_PROP(CoplanarStack, random_stacks_with_crossers_satisfy_every_invariant, ()) {
   rc_assert_invariants_for_every_heuristic<EK>(*coplanar_stack());
 }
 
 // --- Vertices exactly on other triangles' planes ----------------------------------------------
 
-TEST(vertex_on_plane, a_vertex_on_three_node_planes_and_eyes_at_their_common_point) {
+TEST(VertexOnPlane, a_vertex_on_three_node_planes_and_eyes_at_their_common_point) {
   // Triangles in x = 0, y = 0 and z = 0, all crossing each other, and triangles with a vertex
   // at the origin (on all three planes) or on their lines of intersection.
   const soup_case c = case_of("corner", {{{{0, -2, -2}, {0, 3, -1}, {0, -1, 3}}},
@@ -145,13 +146,13 @@ TEST(vertex_on_plane, a_vertex_on_three_node_planes_and_eyes_at_their_common_poi
   expect_every_invariant(c, {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {1, 0, 0}, {0, 0.5, 0.5}}, {{1, 1, 0}, {0, 0, 1}});
 }
 
-RC_GTEST_PROP(vertex_on_plane, vertices_on_one_two_and_three_planes_satisfy_every_invariant, ()) {
+RC_GTEST_PROP(VertexOnPlane, vertices_on_one_two_and_three_planes_satisfy_every_invariant, ()) {
   rc_assert_invariants_for_every_heuristic<EK>(*vertex_on_plane());
 }
 
 // --- Near-coplanar ----------------------------------------------------------------------------
 
-TEST(near_coplanar, vertices_one_ulp_above_and_below_z_equals_0_1_are_classified_exactly) {
+TEST(NearCoplanar, vertices_one_ulp_above_and_below_z_equals_0_1_are_classified_exactly) {
   const double h = 0.1, up = std::nextafter(h, 1.0), down = std::nextafter(h, 0.0);
   const soup_case c = case_of("ulp", {{{{-1, -1, h}, {1, -1, h}, {0, 1, h}}},
                                       {{{-0.5, -0.5, up}, {0.5, -0.5, down}, {0, 0.5, h}}},   // straddles, vertex on plane
@@ -174,7 +175,7 @@ TEST(near_coplanar, vertices_one_ulp_above_and_below_z_equals_0_1_are_classified
   expect_every_invariant(c, {{0, 0, h}, {0, 0, up}, {0.3, 0.3, down}}, {{1, 0, 0}});
 }
 
-TEST(near_coplanar, subnormal_offsets_from_z_equals_0_are_split_exactly) {
+TEST(NearCoplanar, subnormal_offsets_from_z_equals_0_are_split_exactly) {
   const double tiny = std::nextafter(0.0, 1.0);  // 4.9e-324
   const soup_case c = case_of("subnormal", {{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}},
                                             {{{-0.5, -0.5, tiny}, {0.5, -0.5, -tiny}, {0, 0.5, tiny}}},
@@ -191,7 +192,7 @@ TEST(near_coplanar, subnormal_offsets_from_z_equals_0_are_split_exactly) {
   expect_every_invariant(c, {{0, 0, 0}, {0, 0, tiny}, {0.1, 0.1, -tiny}});
 }
 
-TEST(near_coplanar, one_ulp_off_the_sloped_plane_y_equals_x) {
+TEST(NearCoplanar, one_ulp_off_the_sloped_plane_y_equals_x) {
   auto on = [](double x, double z, int ulps) { return vec3d{x, ulps_from(x, ulps), z}; };
   const soup_case c = case_of("sloped ulp", {{{on(-1, -1, 0), on(1, -1, 0), on(0.3, 1, 0)}},
                                              {{on(0.1, 0.2, 1), on(0.7, -0.3, -1), on(-0.6, 0.4, 1)}},
@@ -200,13 +201,13 @@ TEST(near_coplanar, one_ulp_off_the_sloped_plane_y_equals_x) {
   expect_every_invariant(c, {on(0.5, 0, 0), on(0.5, 0, 1)}, {{1, 1, 0}, {1, -1, 0}});
 }
 
-RC_GTEST_PROP(near_coplanar, one_ulp_and_subnormal_offsets_satisfy_every_invariant, ()) {
+RC_GTEST_PROP(NearCoplanar, one_ulp_and_subnormal_offsets_satisfy_every_invariant, ()) {
   rc_assert_invariants_for_every_heuristic<EK>(*near_coplanar(), 64, budget(4));
 }
 
 // --- Scale disparity --------------------------------------------------------------------------
 
-TEST(scale_disparity, coordinates_near_1e9_with_millimetre_features_crossing_a_huge_triangle) {
+TEST(ScaleDisparity, coordinates_near_1e9_with_millimetre_features_crossing_a_huge_triangle) {
   const double X = 1234567890.125, Y = -987654321.5, Z = 555555555.25;
   const soup_case c = case_of("1e9", {{{{X - 1e9, Y - 1e9, Z}, {X + 1e9, Y, Z}, {X, Y + 1e9, Z}}},
                                       {{{X, Y, Z - 1e-3}, {X + 2e-3, Y, Z + 1e-3}, {X, Y + 2e-3, Z + 1e-3}}},
@@ -217,7 +218,7 @@ TEST(scale_disparity, coordinates_near_1e9_with_millimetre_features_crossing_a_h
   expect_every_invariant(c, {{X, Y, Z}, {X + 1e-3, Y, Z + 1}}, {{0, 0, -1}});
 }
 
-TEST(scale_disparity, coordinates_near_1e_minus_300_whose_products_underflow_in_double) {
+TEST(ScaleDisparity, coordinates_near_1e_minus_300_whose_products_underflow_in_double) {
   const double s = 1e-300;
   const soup_case c = case_of("1e-300", {{{{-s, -s, 0}, {s, -s, 0}, {0, s, 0}}},
                                          {{{-s, 0, -s}, {s, 0, -s}, {0, 0.5 * s, s}}},
@@ -227,7 +228,7 @@ TEST(scale_disparity, coordinates_near_1e_minus_300_whose_products_underflow_in_
   expect_every_invariant(c, {{0, 0, 0}, {s, s, s}}, {{0, 0, 1}});
 }
 
-TEST(scale_disparity, unit_triangles_crossed_by_1e_minus_300_triangles) {
+TEST(ScaleDisparity, unit_triangles_crossed_by_1e_minus_300_triangles) {
   const double s = 1e-300;
   const soup_case c = case_of("mixed", {{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}},
                                         {{{-s, -s, -s}, {s, -s, s}, {0, s, s}}},
@@ -236,7 +237,7 @@ TEST(scale_disparity, unit_triangles_crossed_by_1e_minus_300_triangles) {
   expect_every_invariant(c, {{0, 0, 0}, {0, 0, s}, {0, 0, 1}}, {{0, 0, -1}, {1, 0, 0}});
 }
 
-RC_GTEST_PROP(scale_disparity, huge_and_tiny_coordinates_satisfy_every_invariant, ()) {
+RC_GTEST_PROP(ScaleDisparity, huge_and_tiny_coordinates_satisfy_every_invariant, ()) {
   // Near 1e-300 no interval filter helps (products underflow): every predicate is exact, so
   // fewer viewpoints and rays than elsewhere.
   rc_assert_invariants_for_every_heuristic<EK>(*scale_disparity(), 40, budget(3));
@@ -268,7 +269,7 @@ bool transform_is_exact(const soup_case& c, int k) {
   return true;
 }
 
-RC_GTEST_PROP(scale_disparity, exact_similarities_down_to_1e_minus_300_and_up_to_1e150_give_the_same_tree, ()) {
+RC_GTEST_PROP(ScaleDisparity, exact_similarities_down_to_1e_minus_300_and_up_to_1e150_give_the_same_tree, ()) {
   const soup_case c = *any_small_soup();
   int k = *rc::gen::element(-1000, -700, -40, 30, 500);
   if (!transform_is_exact(c, k)) k = 0;
@@ -306,7 +307,7 @@ RC_GTEST_PROP(scale_disparity, exact_similarities_down_to_1e_minus_300_and_up_to
 
 // --- Slivers ----------------------------------------------------------------------------------
 
-TEST(slivers, needles_and_caps_with_angles_near_0_and_180_degrees_crossing_planes) {
+TEST(Slivers, needles_and_caps_with_angles_near_0_and_180_degrees_crossing_planes) {
   std::vector<tri_d> tris{{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}}};
   for (int e = 3; e <= 15; e += 3) {
     const double eps = std::pow(10.0, -e);
@@ -321,13 +322,13 @@ TEST(slivers, needles_and_caps_with_angles_near_0_and_180_degrees_crossing_plane
   expect_every_invariant(c, {{0, 0, 0}, {0.3, 0.2, 0}}, {{0, 0, 1}, {1e-15, 1, 0}});
 }
 
-RC_GTEST_PROP(slivers, random_needles_and_caps_satisfy_every_invariant, ()) {
+RC_GTEST_PROP(Slivers, random_needles_and_caps_satisfy_every_invariant, ()) {
   rc_assert_invariants_for_every_heuristic<EK>(*slivers(), 80, budget(4));
 }
 
 // --- Shared edges, T-junctions, duplicates, both orientations --------------------------------
 
-TEST(mesh_like, shared_edges_t_junction_duplicate_and_reversed_copy_share_their_nodes) {
+TEST(MeshLike, shared_edges_t_junction_duplicate_and_reversed_copy_share_their_nodes) {
   // Two squares sharing an edge; the right one's left edge has a T-junction at (1, 0.5, 0);
   // a duplicate of triangle 0, a reversed copy of triangle 1, and a crosser through everything.
   const soup_case c = case_of("mesh", {{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}},
@@ -360,11 +361,11 @@ TEST(mesh_like, shared_edges_t_junction_duplicate_and_reversed_copy_share_their_
   expect_every_invariant(c, {{1, 0.5, 0}, {1, 0.5, 3}, {1, 1, 0}}, {{0, 0, -1}, {0, 1, 0}});
 }
 
-RC_GTEST_PROP(mesh_like, height_fields_with_t_junctions_duplicates_and_reversed_copies_satisfy_every_invariant, ()) {
+RC_GTEST_PROP(MeshLike, height_fields_with_t_junctions_duplicates_and_reversed_copies_satisfy_every_invariant, ()) {
   rc_assert_invariants_for_every_heuristic<EK>(*mesh_like());
 }
 
-TEST(degenerate_input, collinear_and_point_triangles_inside_a_coplanar_stack_are_skipped_and_counted) {
+TEST(DegenerateInput, collinear_and_point_triangles_inside_a_coplanar_stack_are_skipped_and_counted) {
   const soup_case c = case_of("collinear in stack", {stack_a,
                                                       {{{-2, -2, 0}, {0, 0, 0}, {2, 2, 0}}},  // collinear, in the plane
                                                       {{{0, 0, -1}, {0, 0, 0}, {0, 0, 1}}},   // collinear, crossing it
@@ -449,7 +450,7 @@ bool has_depth_cycle(const std::vector<tri_d>& tris) {
   return false;
 }
 
-TEST(cyclic_overlap, regular_pinwheels_of_3_to_8_sticks_are_true_depth_cycles_and_get_split) {
+TEST(CyclicOverlap, regular_pinwheels_of_3_to_8_sticks_are_true_depth_cycles_and_get_split) {
   for (int n = 3; n <= 8; ++n) {
     std::vector<tri_d> tris;
     for (int k = 0; k < n; ++k) {
@@ -466,7 +467,7 @@ TEST(cyclic_overlap, regular_pinwheels_of_3_to_8_sticks_are_true_depth_cycles_an
   }
 }
 
-RC_GTEST_PROP(cyclic_overlap, random_pinwheels_of_3_to_8_sticks_are_drawn_correctly_from_above_and_everywhere, ()) {
+RC_GTEST_PROP(CyclicOverlap, random_pinwheels_of_3_to_8_sticks_are_drawn_correctly_from_above_and_everywhere, ()) {
   const soup_case c = *cyclic_sticks(3, 8);
   const bool cyclic = has_depth_cycle(c.tris);
   RC_CLASSIFY(cyclic, "true depth cycle");
@@ -486,7 +487,7 @@ RC_GTEST_PROP(cyclic_overlap, random_pinwheels_of_3_to_8_sticks_are_drawn_correc
 
 // --- Eyes exactly at every split point and on every node plane --------------------------------
 
-TEST(eyes, exactly_at_every_fragment_vertex_and_on_every_node_plane_of_a_split_scene) {
+TEST(Eyes, exactly_at_every_fragment_vertex_and_on_every_node_plane_of_a_split_scene) {
   const soup_case c = case_of("split scene", {stack_a, {{{0.5, 0.25, 0}, {-1, 3, 1}, {2, 3, -1}}},
                                               {{{0, -3, -1}, {0, 3, -1}, {0, 0, 2}}},
                                               {{{-2, 0, -2}, {2, 0.5, -2}, {0, 0.25, 2}}}});

@@ -34,6 +34,7 @@
 #include "view/projection.h"
 #include "view/rasterizer.h"
 #include "view/stages.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -44,29 +45,8 @@ using nlohmann::json;
 // ---------------------------------------------------------------------------------------
 // Helpers
 
-/// Appends quad (a, b, c, d) as one face with the next face id; returns the id.
-std::uint32_t add_quad(triangle_soup& s, const vec3d& a, const vec3d& b, const vec3d& c, const vec3d& d) {
-  const auto base = static_cast<std::uint32_t>(s.vertices.size());
-  s.vertices.insert(s.vertices.end(), {a, b, c, d});
-  const std::uint32_t face = s.face_count;
-  s.add_polygon({base, base + 1, base + 2, base + 3}, face);
-  return face;
-}
-
-/// A perspective frame of `soup` (colours by face id) seen from `cam`.
-frame perspective_frame(triangle_soup soup, std::vector<rgb8> colors, const camera& cam, int width, int height,
-                        double fovy = 45, double near_dist = 0.5, double far_dist = 100) {
-  frame f;
-  f.soup = std::move(soup);
-  f.face_colors = std::move(colors);
-  f.background = {255, 255, 255};
-  f.view.kind = projection_kind::perspective;
-  f.view.cam = cam;
-  f.view.model_view = look_at(cam);
-  f.view.projection = perspective(fovy, static_cast<double>(width) / height, near_dist, far_dist);
-  f.view.vp = {0, 0, width, height, 0, 1};
-  return f;
-}
+using exbsp_test::add_quad;
+using exbsp_test::perspective_frame;
 
 void run(frame& f, const std::vector<std::string>& effects, output_kind out = output_kind::png) {
   standard_pipeline(effects, out, !f.curves.empty()).run(f, nullptr);
@@ -88,13 +68,7 @@ scene::scene parse(const json& doc, std::ostream* warnings = nullptr) {
 
 /// The key of the scene_error for `doc` ("(no error)" when it parses).
 std::string error_key(const json& doc, std::string* message = nullptr) {
-  try {
-    parse(doc);
-  } catch (const scene_error& e) {
-    if (message) *message = e.what();
-    return e.key();
-  }
-  return "(no error)";
+  return exbsp_test::error_key([&] { parse(doc); }, message);
 }
 
 int count_color(const image& img, rgb8 c) {

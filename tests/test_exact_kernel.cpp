@@ -11,7 +11,8 @@
 #include <set>
 
 #include "bsp/geometry_exact.h"
-#include "generators.h"
+#include "support/generators.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -19,12 +20,6 @@ using namespace exbsp_test;
 using exbsp::exact_geometry;
 using exbsp::vec3d;
 
-/// A soup of the given triangles, one face each.
-exbsp::triangle_soup soup_of(const std::vector<std::array<vec3d, 3>>& tris) {
-  exbsp::triangle_soup s;
-  for (const auto& t : tris) s.add_triangle(t[0], t[1], t[2]);
-  return s;
-}
 
 /// The geometry of `soup` with every triangle added as a source; fragments[i] for triangle i.
 struct geometry_fixture {
@@ -68,7 +63,7 @@ const std::array<vec3d, 3> through_edge{{{1, -1, 0}, {0, 1, 0}, {1, -1, 3}}};
 /// The plane y = y0 (normal +y).
 std::array<vec3d, 3> plane_y(double y0) { return {{{-5, y0, 5}, {5, y0, 5}, {0, y0, -5}}}; }
 
-TEST(exact_kernel, a_split_point_on_its_own_plane_is_zero_without_arithmetic) {
+TEST(ExactKernel, a_split_point_on_its_own_plane_is_zero_without_arithmetic) {
   geometry_fixture g(soup_of({fragment_triangle, cutter}));
   const auto pieces = g.split(g.fragments[0], 1);
   int zeros = 0;
@@ -79,7 +74,7 @@ TEST(exact_kernel, a_split_point_on_its_own_plane_is_zero_without_arithmetic) {
   EXPECT_GT(g.geom.stats().on_own_plane.load(), 0u);
 }
 
-TEST(exact_kernel, structural_zero_a_split_point_on_an_edge_the_plane_contains) {
+TEST(ExactKernel, structural_zero_a_split_point_on_an_edge_the_plane_contains) {
   geometry_fixture g(soup_of({fragment_triangle, cutter, through_edge}));
   const auto pieces = g.split(g.fragments[0], 1);
   // The split point on the edge [(0,1,0), (-1,-1,0)] lies in plane 2: zero, and the answer came
@@ -97,7 +92,7 @@ TEST(exact_kernel, structural_zero_a_split_point_on_an_edge_the_plane_contains) 
   EXPECT_EQ(g.geom.stats().exact.load(), 0u);
 }
 
-TEST(exact_kernel, on_and_one_ulp_off_a_crossing_plane_the_exact_fallback_decides) {
+TEST(ExactKernel, on_and_one_ulp_off_a_crossing_plane_the_exact_fallback_decides) {
   // The plane y = 1/2 crosses edge [v1, v2] exactly at the split point (1/4, 1/2, 0): the
   // endpoints are strictly on opposite sides, the centre is within its radius of the plane,
   // so only exact arithmetic can say 0. One ulp above or below, it must say -1 or +1.
@@ -120,7 +115,7 @@ TEST(exact_kernel, on_and_one_ulp_off_a_crossing_plane_the_exact_fallback_decide
   }
 }
 
-TEST(exact_kernel, the_filter_answers_far_planes_without_fallback) {
+TEST(ExactKernel, the_filter_answers_far_planes_without_fallback) {
   const std::array<vec3d, 3> far{{{-9, -9, 7}, {9, -9, 7}, {0, 9, 7}}};
   geometry_fixture g(soup_of({fragment_triangle, cutter, far}));
   const auto pieces = g.split(g.fragments[0], 1);
@@ -130,7 +125,7 @@ TEST(exact_kernel, the_filter_answers_far_planes_without_fallback) {
   EXPECT_EQ(g.geom.stats().exact.load(), 0u);
 }
 
-TEST(exact_kernel, one_ulp_off_an_edge_the_sign_still_follows_from_the_endpoints) {
+TEST(ExactKernel, one_ulp_off_an_edge_the_sign_still_follows_from_the_endpoints) {
   // Plane 2 through v2 = (0,1,0) but one ulp off v1: the split point on [v1, v2] is off it
   // by about an ulp; v2 on the plane and v1 off it decide the sign with no arithmetic.
   std::array<vec3d, 3> off = through_edge;
@@ -149,7 +144,7 @@ TEST(exact_kernel, one_ulp_off_an_edge_the_sign_still_follows_from_the_endpoints
   EXPECT_EQ(g.geom.stats().exact.load(), 0u);
 }
 
-TEST(exact_kernel, shared_split_points_are_made_once) {
+TEST(ExactKernel, shared_split_points_are_made_once) {
   // Two triangles sharing the edge [(0,-1,0), (0,1,0)] crossed by the plane y = 0.
   // Vertex ids are shared, as in a mesh file.
   exbsp::triangle_soup s;
@@ -195,7 +190,7 @@ void expect_exact_equals(exbsp::kernel_id other, const exbsp::triangle_soup& sou
   RC_FAIL(message);
 }
 
-RC_GTEST_PROP(exact_kernel, equals_gmpq_and_epeck_on_every_generator_and_heuristic, ()) {
+RC_GTEST_PROP(ExactKernel, equals_gmpq_and_epeck_on_every_generator_and_heuristic, ()) {
   const soup_case c = *rc::gen::oneOf(any_small_soup(), coplanar_stack(), vertex_on_plane(), near_coplanar(),
                                       scale_disparity(), slivers(), mesh_like(), cyclic_sticks());
   const exbsp::triangle_soup soup = c.soup();
@@ -206,34 +201,38 @@ RC_GTEST_PROP(exact_kernel, equals_gmpq_and_epeck_on_every_generator_and_heurist
   }
 }
 
-RC_GTEST_PROP(exact_kernel, equals_epeck_on_cad_subsets, ()) {
+TEST(ExactKernel, equals_epeck_on_cad_subsets) {
   const auto files = present_cad_meshes();
-  RC_PRE(!files.empty());
-  const soup_case c = *cad_subset(files, 150);
-  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
-  expect_exact_equals(exbsp::kernel_id::epeck, c.soup(), *rc::gen::elementOf(exbsp::heuristic_names()), seed,
-                      c.kind);
+  EXBSP_NEED_CORPUS(!files.empty(), "data/meshes/");
+  EXPECT_TRUE(rc::check("exact equals epeck on CAD subsets", [&] {
+    const soup_case c = *cad_subset(files, 150);
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    expect_exact_equals(exbsp::kernel_id::epeck, c.soup(), *rc::gen::elementOf(exbsp::heuristic_names()), seed,
+                        c.kind);
+  }));
 }
 
-TEST(exact_kernel, equals_epeck_and_gmpq_on_corpus_meshes) {
+TEST(ExactKernel, equals_epeck_and_gmpq_on_corpus_meshes) {
   // Every small corpus mesh against gmpq, larger ones against epeck (gmpq takes minutes).
-  std::size_t checked = 0;
+  std::string missing;
   for (const char* name : {"cube.off", "tetrahedron.off", "cross.off", "pyramid.off", "joint.off", "elephant.off",
                            "fandisk.off", "cheese.off", "blade.off"}) {
     const soup_case* mesh = cad_mesh(name);
-    if (!mesh) continue;
+    if (!mesh) {
+      missing += std::string(" data/meshes/") + name;
+      continue;
+    }
     const exbsp::triangle_soup soup = mesh->soup();
     if (soup.triangles.size() <= 3000) expect_exact_equals(exbsp::kernel_id::gmpq, soup, "sampled", 0, name);
     expect_exact_equals(exbsp::kernel_id::epeck, soup, "sampled", 0, name);
-    ++checked;
   }
-  if (checked == 0) GTEST_SKIP() << "CGAL corpus missing (run scripts/setup)";
+  EXBSP_NEED_CORPUS(missing.empty(), missing);
 }
 
-TEST(exact_kernel, is_the_default_and_identical_for_1_and_2_threads) {
+TEST(ExactKernel, is_the_default_and_identical_for_1_and_2_threads) {
   EXPECT_EQ(exbsp::build_options{}.kernel, exbsp::kernel_id::exact);
   const soup_case* mesh = cad_mesh("fandisk.off");
-  if (!mesh) GTEST_SKIP() << "CGAL corpus missing (run scripts/setup)";
+  EXBSP_NEED_CORPUS(mesh, "data/meshes/fandisk.off");
   exbsp::build_options o;
   o.threads = 1;
   const auto eyes = eyes_for(mesh->soup());

@@ -2,22 +2,17 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "core/errors.h"
 #include "scene/scene.h"
+#include "support/test_helpers.h"
 
 namespace {
 
-std::string read_file(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using exbsp_test::read_file;
 
-TEST(fuzz_regressions, scene_findings_are_scene_errors_naming_the_file) {
+TEST(FuzzRegressions, scene_findings_are_scene_errors_naming_the_file) {
   const std::filesystem::path dir = std::filesystem::path(EXBSP_SOURCE_DIR) / "tests/fuzz/crashes/fuzz_scene";
   std::size_t checked = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
@@ -37,7 +32,7 @@ TEST(fuzz_regressions, scene_findings_are_scene_errors_naming_the_file) {
   EXPECT_GE(checked, 5u);
 }
 
-TEST(fuzz_regressions, json_number_overflow_is_a_scene_error) {
+TEST(FuzzRegressions, json_number_overflow_is_a_scene_error) {
   EXPECT_THROW(exbsp::scene::parse_scene_text("1e400", "x.json", nullptr), exbsp::scene_error);
 }
 

@@ -1,7 +1,7 @@
 // The pluggable heuristic (heuristic "custom", build_options::score): a callback that
 // reproduces min-split or sampled gives exactly their tree; the same tree for every exact
 // kernel and every thread count; what the callback sees; errors and exceptions propagate.
-// Notation: "observable" (generators.h) is everything a user can see of a tree as one string;
+// Notation: "observable" (support/observable.h) is everything a user can see of a tree as one string;
 // its first line ends with the heuristic's name, which same_tree ignores.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -12,7 +12,8 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "generators.h"
+#include "support/generators.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -69,7 +70,7 @@ double mixed_score(const exbsp::candidate_score_input& in) {
 
 // --- degenerate input and misuse first ---------------------------------------------------------
 
-TEST(custom_heuristic, empty_single_and_all_degenerate_input_never_call_the_score) {
+TEST(CustomHeuristic, empty_single_and_all_degenerate_input_never_call_the_score) {
   std::atomic<int> calls{0};
   const auto o = custom([&](const exbsp::candidate_score_input&) { return ++calls, 0.0; });
   exbsp::triangle_soup flat =
@@ -83,7 +84,7 @@ TEST(custom_heuristic, empty_single_and_all_degenerate_input_never_call_the_scor
   EXPECT_EQ(calls.load(), 0);
 }
 
-TEST(custom_heuristic, custom_without_score_and_score_without_custom_are_usage_errors) {
+TEST(CustomHeuristic, custom_without_score_and_score_without_custom_are_usage_errors) {
   exbsp::build_options o;
   o.heuristic = "custom";
   EXPECT_THROW(exbsp::bsp::build(cyclic_soup(), o), exbsp::usage_error);
@@ -95,12 +96,12 @@ TEST(custom_heuristic, custom_without_score_and_score_without_custom_are_usage_e
   EXPECT_EQ(std::find(names.begin(), names.end(), "custom"), names.end());
 }
 
-TEST(custom_heuristic, nan_score_is_a_usage_error) {
+TEST(CustomHeuristic, nan_score_is_a_usage_error) {
   EXPECT_THROW(exbsp::bsp::build(cyclic_soup(), custom([](const auto&) { return std::nan(""); })),
                exbsp::usage_error);
 }
 
-TEST(custom_heuristic, exception_from_the_score_propagates_out_of_build) {
+TEST(CustomHeuristic, exception_from_the_score_propagates_out_of_build) {
   struct score_failed : std::runtime_error {
     using std::runtime_error::runtime_error;
   };
@@ -129,7 +130,7 @@ TEST(custom_heuristic, exception_from_the_score_propagates_out_of_build) {
 
 // --- what the callback sees ----------------------------------------------------------------------
 
-TEST(custom_heuristic, counts_cover_the_list_and_name_the_candidate) {
+TEST(CustomHeuristic, counts_cover_the_list_and_name_the_candidate) {
   const auto soup = cyclic_soup();
   std::mutex m;
   std::vector<exbsp::candidate_score_input> root;
@@ -157,7 +158,7 @@ TEST(custom_heuristic, counts_cover_the_list_and_name_the_candidate) {
   EXPECT_GE(root[0].straddling + root[1].straddling + root[2].straddling, 1u);
 }
 
-TEST(custom_heuristic, sampled_candidates_are_counted_on_the_sample) {
+TEST(CustomHeuristic, sampled_candidates_are_counted_on_the_sample) {
   // 40 triangles, 4 candidates, a sample of 10: counts cover at most 10 fragments.
   exbsp::triangle_soup soup;
   for (int k = 0; k < 40; ++k) soup.add_triangle({0, 0, 1.0 * k}, {1, 0, 1.0 * k}, {0, 1, 1.0 * k});
@@ -181,7 +182,7 @@ TEST(custom_heuristic, sampled_candidates_are_counted_on_the_sample) {
 
 // --- reproducing the built-in heuristics ---------------------------------------------------------
 
-TEST(custom_heuristic, straddling_count_over_all_candidates_is_min_split_exactly) {
+TEST(CustomHeuristic, straddling_count_over_all_candidates_is_min_split_exactly) {
   exbsp::build_options ms;
   ms.heuristic = "min-split";
   std::size_t checked = 0;
@@ -197,7 +198,7 @@ TEST(custom_heuristic, straddling_count_over_all_candidates_is_min_split_exactly
   if (checked == 0) GTEST_SKIP() << "CGAL corpus missing (run scripts/setup)";
 }
 
-RC_GTEST_PROP(custom_heuristic, reproduces_min_split_and_sampled_on_every_generator, ()) {
+RC_GTEST_PROP(CustomHeuristic, reproduces_min_split_and_sampled_on_every_generator, ()) {
   const soup_case c =
       *rc::gen::oneOf(any_small_soup(), coplanar_stack(), vertex_on_plane(), cyclic_sticks());
   const exbsp::triangle_soup soup = c.soup();
@@ -217,7 +218,7 @@ RC_GTEST_PROP(custom_heuristic, reproduces_min_split_and_sampled_on_every_genera
 
 // --- determinism ---------------------------------------------------------------------------------
 
-TEST(custom_heuristic, same_tree_for_every_exact_kernel_and_thread_count) {
+TEST(CustomHeuristic, same_tree_for_every_exact_kernel_and_thread_count) {
   std::vector<exbsp::triangle_soup> soups{cyclic_soup()};
   for (const char* name : {"cube.off", "cross.off", "joint.off"})
     if (const soup_case* mesh = cad_mesh(name)) soups.push_back(mesh->soup());
@@ -238,7 +239,7 @@ TEST(custom_heuristic, same_tree_for_every_exact_kernel_and_thread_count) {
     }
 }
 
-TEST(custom_heuristic, ties_go_to_the_earliest_candidate) {
+TEST(CustomHeuristic, ties_go_to_the_earliest_candidate) {
   // A constant score: every candidate ties, so the first of the list wins at every node: naive.
   exbsp::build_options naive;
   naive.heuristic = "naive";

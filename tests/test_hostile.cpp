@@ -24,7 +24,8 @@
 #include <thread>
 #include <vector>
 
-#include "cli_support.h"
+#include "support/cli_support.h"
+#include "support/inputs.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "mesh/gmp_memory.h"
@@ -74,38 +75,21 @@ std::string scene_with(const std::string& mesh_entry, const std::string& extra =
          extra + "}\n";
 }
 
-/// The two-layer grid of k + k sticks (bench/generators.h): the naive heuristic grows as k^3.
-std::string sticks_off(int k) {
-  std::ostringstream off;
-  off << "OFF\n" << 8 * k << " " << 4 * k << " 0\n";
-  const double h = 0.25, lo = -1, hi = k;
-  for (int i = 0; i < k; ++i)
-    off << lo << " " << i << " 0\n" << hi << " " << i << " 0\n" << hi << " " << i << " " << h << "\n"
-        << lo << " " << i << " " << h << "\n";
-  for (int j = 0; j < k; ++j) {
-    const double x = j + 0.5;
-    off << x << " " << lo << " 1\n" << x << " " << hi << " 1\n" << x << " " << hi << " " << 1 + h << "\n"
-        << x << " " << lo << " " << 1 + h << "\n";
-  }
-  for (int s = 0; s < 2 * k; ++s) {
-    const int a = 4 * s;
-    off << "3 " << a << " " << a + 1 << " " << a + 2 << "\n3 " << a << " " << a + 2 << " " << a + 3 << "\n";
-  }
-  return off.str();
-}
+/// The two-layer grid of k + k sticks (support/inputs.h): the naive heuristic grows as k^3.
+std::string sticks_off(int k) { return exbsp_test::off_text(exbsp_test::make_sticks(static_cast<std::size_t>(k))); }
 
 /// Fixture: a fresh temporary directory per test; the CLI runs inside it.
-class hostile : public exbsp_test::cli_fixture {};
+class Hostile : public exbsp_test::cli_fixture {};
 
 // ---- 1. JSON nesting depth ---------------------------------------------------------------
 
-TEST(json_nesting, empty_and_flat_texts_pass) {
+TEST(JsonNesting, empty_and_flat_texts_pass) {
   EXPECT_NO_THROW(exbsp::check_json_nesting("", "x.json"));
   EXPECT_NO_THROW(exbsp::check_json_nesting("{}", "x.json"));
   EXPECT_NO_THROW(exbsp::check_json_nesting("]]]}}}", "x.json"));  // syntax is nlohmann's business
 }
 
-TEST(json_nesting, the_limit_itself_passes_one_more_level_fails_naming_the_line) {
+TEST(JsonNesting, the_limit_itself_passes_one_more_level_fails_naming_the_line) {
   const std::size_t limit = exbsp::max_json_depth;
   EXPECT_NO_THROW(exbsp::check_json_nesting(std::string(limit, '[') + std::string(limit, ']'), "x.json"));
   const std::string deep = "{\"a\":\n" + std::string(limit, '[') + std::string(limit, ']') + "}";
@@ -120,12 +104,12 @@ TEST(json_nesting, the_limit_itself_passes_one_more_level_fails_naming_the_line)
   }
 }
 
-TEST(json_nesting, brackets_inside_strings_do_not_count) {
+TEST(JsonNesting, brackets_inside_strings_do_not_count) {
   const std::string s = "{\"k\": \"" + std::string(1000, '[') + "\\\"" + std::string(1000, '{') + "\"}";
   EXPECT_NO_THROW(exbsp::check_json_nesting(s, "x.json"));
 }
 
-TEST(json_nesting, a_scene_nested_100000_deep_under_an_effect_is_an_error_not_a_crash) {
+TEST(JsonNesting, a_scene_nested_100000_deep_under_an_effect_is_an_error_not_a_crash) {
   std::string deep;
   for (int i = 0; i < 100000; ++i) deep += "{\"a\":";
   deep += "1";
@@ -137,7 +121,7 @@ TEST(json_nesting, a_scene_nested_100000_deep_under_an_effect_is_an_error_not_a_
                input_error);
 }
 
-TEST_F(hostile, render_of_a_deeply_nested_scene_exits_2_naming_the_file_and_writes_nothing) {
+TEST_F(Hostile, render_of_a_deeply_nested_scene_exits_2_naming_the_file_and_writes_nothing) {
   write_file(dir / "t.off", triangle_off);
   std::string deep;
   for (int i = 0; i < 100000; ++i) deep += "{\"a\":";
@@ -149,7 +133,7 @@ TEST_F(hostile, render_of_a_deeply_nested_scene_exits_2_naming_the_file_and_writ
   EXPECT_FALSE(fs::exists(dir / "out.png"));
 }
 
-TEST_F(hostile, clip_input_nesting_and_special_files_exit_2_naming_the_file) {
+TEST_F(Hostile, clip_input_nesting_and_special_files_exit_2_naming_the_file) {
   std::string deep = "{\"region\": {\"rect\": [0, 0, 1, 1]},\n \"segments\": " + std::string(100000, '[') +
                      std::string(100000, ']') + "}";
   write_file(dir / "deep.json", deep);
@@ -165,7 +149,7 @@ TEST_F(hostile, clip_input_nesting_and_special_files_exit_2_naming_the_file) {
 
 // ---- 2. one safe atomic writer -------------------------------------------------------------
 
-TEST_F(hostile, writer_refuses_an_empty_name_and_a_directory) {
+TEST_F(Hostile, writer_refuses_an_empty_name_and_a_directory) {
   EXPECT_THROW(exbsp::write_file_atomically("", "x"), output_error);
   fs::create_directory(dir / "d");
   try {
@@ -179,7 +163,7 @@ TEST_F(hostile, writer_refuses_an_empty_name_and_a_directory) {
   EXPECT_EQ(exbsp::pending_temporary_files(), 0);
 }
 
-TEST_F(hostile, writer_ignores_a_planted_symlink_at_the_old_predictable_temporary_name) {
+TEST_F(Hostile, writer_ignores_a_planted_symlink_at_the_old_predictable_temporary_name) {
   write_file(dir / "victim", "precious");
   const fs::path out = dir / "out.json";
   // The old writer used OUT.tmp.<pid> through std::ofstream, which followed this link.
@@ -190,7 +174,7 @@ TEST_F(hostile, writer_ignores_a_planted_symlink_at_the_old_predictable_temporar
   EXPECT_EQ(file_names().size(), 3u);  // victim, the planted link, out.json: no temporary left
 }
 
-TEST_F(hostile, writer_keeps_a_symlinked_target_a_symlink_and_writes_through_it) {
+TEST_F(Hostile, writer_keeps_a_symlinked_target_a_symlink_and_writes_through_it) {
   write_file(dir / "real.json", "old");
   fs::create_symlink(dir / "real.json", dir / "link.json");
   exbsp::write_file_atomically((dir / "link.json").string(), "new");
@@ -201,7 +185,7 @@ TEST_F(hostile, writer_keeps_a_symlinked_target_a_symlink_and_writes_through_it)
   EXPECT_FALSE(fs::exists(dir / "nowhere.json"));
 }
 
-TEST_F(hostile, writer_writes_devices_in_place) {
+TEST_F(Hostile, writer_writes_devices_in_place) {
   struct stat before {}, after {};
   ASSERT_EQ(::stat("/dev/null", &before), 0);
   exbsp::write_file_atomically("/dev/null", "discarded");
@@ -214,7 +198,7 @@ TEST_F(hostile, writer_writes_devices_in_place) {
   EXPECT_TRUE(fs::is_symlink(dir / "null.json"));
 }
 
-TEST_F(hostile, writer_honours_the_umask_for_new_files_and_keeps_an_existing_mode) {
+TEST_F(Hostile, writer_honours_the_umask_for_new_files_and_keeps_an_existing_mode) {
   const mode_t old_mask = ::umask(027);
   exbsp::write_file_atomically((dir / "new.json").string(), "x");
   ::umask(old_mask);
@@ -230,7 +214,7 @@ TEST_F(hostile, writer_honours_the_umask_for_new_files_and_keeps_an_existing_mod
   EXPECT_EQ(read_file(dir / "kept.json"), "new");
 }
 
-TEST_F(hostile, writer_handles_target_names_near_the_255_byte_limit) {
+TEST_F(Hostile, writer_handles_target_names_near_the_255_byte_limit) {
   const fs::path out = dir / (std::string(250, 'n') + ".json");  // 255 bytes
   exbsp::write_file_atomically(out.string(), "long");
   EXPECT_EQ(read_file(out), "long");
@@ -239,7 +223,7 @@ TEST_F(hostile, writer_handles_target_names_near_the_255_byte_limit) {
   EXPECT_EQ(file_names().size(), 1u);
 }
 
-TEST_F(hostile, order_to_dev_null_and_to_a_symlink_keeps_them) {
+TEST_F(Hostile, order_to_dev_null_and_to_a_symlink_keeps_them) {
   write_file(dir / "t.off", triangle_off);
   fs::create_symlink("/dev/null", dir / "null.json");
   EXPECT_EQ(run("order t.off --eye 0,0,5 -o /dev/null").status, 0);
@@ -252,7 +236,7 @@ TEST_F(hostile, order_to_dev_null_and_to_a_symlink_keeps_them) {
 
 // ---- 5. a signal during the write removes the temporary file -----------------------------
 
-TEST_F(hostile, sigterm_during_a_write_removes_the_temporary_file_and_kills_the_process) {
+TEST_F(Hostile, sigterm_during_a_write_removes_the_temporary_file_and_kills_the_process) {
   const fs::path out = dir / "big.bin";
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
@@ -286,7 +270,7 @@ TEST_F(hostile, sigterm_during_a_write_removes_the_temporary_file_and_kills_the_
 
 // ---- 3. memory exhaustion: exit 3, never abort ---------------------------------------------
 
-TEST(gmp_memory, an_allocation_failure_throws_bad_alloc) {
+TEST(GmpMemory, an_allocation_failure_throws_bad_alloc) {
   if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
@@ -310,9 +294,9 @@ TEST(gmp_memory, an_allocation_failure_throws_bad_alloc) {
   EXPECT_EQ(WEXITSTATUS(status), 42);
 }
 
-class memory_cap : public hostile, public ::testing::WithParamInterface<const char*> {};
+class MemoryCap : public Hostile, public ::testing::WithParamInterface<const char*> {};
 
-TEST_P(memory_cap, order_under_an_address_space_cap_exits_3_without_output) {
+TEST_P(MemoryCap, order_under_an_address_space_cap_exits_3_without_output) {
   if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
   if (std::system("command -v prlimit >/dev/null 2>&1") != 0) GTEST_SKIP() << "prlimit (util-linux) not installed";
   write_file(dir / "sticks.off", sticks_off(96));
@@ -331,35 +315,15 @@ TEST_P(memory_cap, order_under_an_address_space_cap_exits_3_without_output) {
   EXPECT_EQ(file_names(), std::vector<std::string>{"sticks.off"});
 }
 
-INSTANTIATE_TEST_SUITE_P(kernels, memory_cap, ::testing::Values("exact", "epeck", "gmpq"));
-
-/// n random triangles in a cube of side n^(1/3), vertices within 0.6 of their centre (the
-/// benchmarks' random soup; a fixed linear congruential generator keeps it the same everywhere).
-std::string random_soup_off(int n) {
-  std::uint64_t state = 12345;
-  const auto uniform = [&state](double lo, double hi) {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return lo + (hi - lo) * static_cast<double>(state >> 11) / 9007199254740992.0;
-  };
-  const double side = std::cbrt(static_cast<double>(n));
-  std::ostringstream off;
-  off << "OFF\n" << 3 * n << " " << n << " 0\n";
-  for (int t = 0; t < n; ++t) {
-    const double c[3] = {uniform(0, side), uniform(0, side), uniform(0, side)};
-    for (int v = 0; v < 3; ++v)
-      off << c[0] + uniform(-0.6, 0.6) << " " << c[1] + uniform(-0.6, 0.6) << " " << c[2] + uniform(-0.6, 0.6) << "\n";
-  }
-  for (int t = 0; t < n; ++t) off << "3 " << 3 * t << " " << 3 * t + 1 << " " << 3 * t + 2 << "\n";
-  return off.str();
-}
+INSTANTIATE_TEST_SUITE_P(Kernels, MemoryCap, ::testing::Values("exact", "epeck", "gmpq"));
 
 // A large soup under a cap: the exception from GMP crossed glibc's pthread_once (CGAL's lazy
 // exact update) and glibc aborted ("libgcc_s.so.1 must be installed for unwinding to work"),
 // or libgomp could not allocate its team and exited 1; both at caps of 150-200 MB.
-TEST_F(hostile, a_large_soup_under_an_address_space_cap_exits_3_never_aborts) {
+TEST_F(Hostile, a_large_soup_under_an_address_space_cap_exits_3_never_aborts) {
   if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
   if (std::system("command -v prlimit >/dev/null 2>&1") != 0) GTEST_SKIP() << "prlimit (util-linux) not installed";
-  write_file(dir / "soup.off", random_soup_off(100000));
+  write_file(dir / "soup.off", exbsp_test::off_text(exbsp_test::make_random_soup(100000, 12345)));
   // Caps well below the build's peak: the exact kernel needs about 160 MB here (epeck 950 MB),
   // so 200 MB would let it finish.
   // Epeck at 100 MB is left out: there libgomp fails to create a thread of the root's
@@ -375,7 +339,7 @@ TEST_F(hostile, a_large_soup_under_an_address_space_cap_exits_3_never_aborts) {
     }
 }
 
-TEST_F(hostile, the_default_fragment_budget_is_shown_and_can_be_lifted) {
+TEST_F(Hostile, the_default_fragment_budget_is_shown_and_can_be_lifted) {
   const result h = run("order --help");
   EXPECT_EQ(h.status, 0);
   EXPECT_TRUE(contains(h.out, "--max-fragments")) << h.out;
@@ -389,7 +353,7 @@ TEST_F(hostile, the_default_fragment_budget_is_shown_and_can_be_lifted) {
 
 // ---- 4. thread counts ------------------------------------------------------------------------
 
-TEST_F(hostile, absurd_thread_counts_exit_2_and_absurd_omp_num_threads_is_ignored) {
+TEST_F(Hostile, absurd_thread_counts_exit_2_and_absurd_omp_num_threads_is_ignored) {
   write_file(dir / "t.off", triangle_off);
   for (const char* n : {"100000", "40000", "4294967295", "-1", "two"}) {
     const result r = run(std::string("build t.off --threads ") + n);
@@ -409,7 +373,7 @@ TEST_F(hostile, absurd_thread_counts_exit_2_and_absurd_omp_num_threads_is_ignore
 
 // ---- 6. special files ----------------------------------------------------------------------
 
-TEST_F(hostile, special_files_are_refused_naming_the_file_without_reading_or_waiting) {
+TEST_F(Hostile, special_files_are_refused_naming_the_file_without_reading_or_waiting) {
   fs::create_symlink("/dev/zero", dir / "z.off");
   ASSERT_EQ(::mkfifo((dir / "f.off").c_str(), 0600), 0);
   ASSERT_EQ(::mkfifo((dir / "f.json").c_str(), 0600), 0);
@@ -428,7 +392,7 @@ TEST_F(hostile, special_files_are_refused_naming_the_file_without_reading_or_wai
 
 // ---- 7. PLY headers are read in linear time ------------------------------------------------
 
-TEST(ply_header, two_hundred_thousand_property_and_element_lines_are_read_correctly) {
+TEST(PlyHeader, two_hundred_thousand_property_and_element_lines_are_read_correctly) {
   std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
   ply += "element face 1\nproperty list uchar int vertex_indices\nelement extra 0\n";
   for (int i = 0; i < 200000; ++i) ply += "property float p" + std::to_string(i) + "\n";
@@ -457,7 +421,7 @@ TEST(ply_header, two_hundred_thousand_property_and_element_lines_are_read_correc
 
 // ---- 8. messages with a place ----------------------------------------------------------------
 
-TEST_F(hostile, a_transform_scaled_by_1e308_names_the_scene_file_and_key) {
+TEST_F(Hostile, a_transform_scaled_by_1e308_names_the_scene_file_and_key) {
   write_file(dir / "t.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n1 1 1\n3 0 1 2\n");
   const std::string huge = "{\"file\": \"t.off\", \"transform\": [1e308,0,0,0, 0,1e308,0,0, 0,0,1e308,0, 0,0,0,1]}";
   write_file(dir / "s.json", scene_with(huge));
@@ -479,7 +443,7 @@ TEST_F(hostile, a_transform_scaled_by_1e308_names_the_scene_file_and_key) {
   }
 }
 
-TEST(stl, ascii_stl_with_a_utf8_bom_is_read_as_ascii) {
+TEST(Stl, ascii_stl_with_a_utf8_bom_is_read_as_ascii) {
   std::string stl = bom + "solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n"
                           "   vertex 0 1 0\n  endloop\n endfacet\nendsolid t\n";
   stl += std::string(200, ' ');  // longer than a binary header, as real files are
@@ -493,7 +457,7 @@ TEST(stl, ascii_stl_with_a_utf8_bom_is_read_as_ascii) {
 
 // ---- 9. small ones -----------------------------------------------------------------------------
 
-TEST_F(hostile, negative_counts_and_empty_output_names_exit_2) {
+TEST_F(Hostile, negative_counts_and_empty_output_names_exit_2) {
   write_file(dir / "t.off", triangle_off);
   for (const char* args : {"build t.off --max-fragments -1", "build t.off --seed -1",
                            "order t.off --eye 0,0,5 -o ''", "render -o ''"}) {
@@ -504,7 +468,7 @@ TEST_F(hostile, negative_counts_and_empty_output_names_exit_2) {
   EXPECT_EQ(file_names(), std::vector<std::string>{"t.off"});
 }
 
-TEST_F(hostile, dash_output_means_standard_output) {
+TEST_F(Hostile, dash_output_means_standard_output) {
   write_file(dir / "t.off", triangle_off);
   const result r = run("order t.off --eye 0,0,5 -o -");
   EXPECT_EQ(r.status, 0) << r.err;
@@ -524,7 +488,7 @@ std::string recode(const std::string& text, const std::string& prefix, const std
   return out;
 }
 
-TEST(text_files, bom_and_cr_only_line_ends_are_accepted_by_every_ascii_reader) {
+TEST(TextFiles, bom_and_cr_only_line_ends_are_accepted_by_every_ascii_reader) {
   const std::pair<exbsp::mesh_format, std::string> inputs[] = {
       {exbsp::mesh_format::off, triangle_off},
       {exbsp::mesh_format::obj, "# t\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
@@ -543,7 +507,7 @@ TEST(text_files, bom_and_cr_only_line_ends_are_accepted_by_every_ascii_reader) {
       }
 }
 
-TEST(text_files, line_numbers_stay_right_with_a_bom_and_cr_only_line_ends) {
+TEST(TextFiles, line_numbers_stay_right_with_a_bom_and_cr_only_line_ends) {
   const std::string bad_off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 nan\n3 0 1 2\n";  // line 5
   const std::string bad_stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
                               "vertex 0 1 x\nendloop\nendfacet\nendsolid t\n";  // line 6
@@ -563,13 +527,13 @@ TEST(text_files, line_numbers_stay_right_with_a_bom_and_cr_only_line_ends) {
   }
 }
 
-TEST(text_files, scenes_with_a_bom_and_cr_only_line_ends_are_read) {
+TEST(TextFiles, scenes_with_a_bom_and_cr_only_line_ends_are_read) {
   const std::string text = scene_with("{\"file\": \"t.off\"}");
   for (const char* eol : {"\r\n", "\r"})
     EXPECT_NO_THROW(exbsp::scene::parse_scene_text(recode(text, bom, eol), "s.json")) << eol[0];
 }
 
-TEST_F(hostile, strict_makes_unknown_scene_keys_errors_and_the_warning_lists_expected_keys) {
+TEST_F(Hostile, strict_makes_unknown_scene_keys_errors_and_the_warning_lists_expected_keys) {
   write_file(dir / "t.off", triangle_off);
   write_file(dir / "s.json", scene_with("{\"file\": \"t.off\", \"colour\": [255, 0, 0]}"));
   const result warned = run("render s.json -o out.png");

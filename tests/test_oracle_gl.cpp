@@ -58,8 +58,9 @@
 #include "view/image.h"
 #include "view/matrix.h"
 #include "view/png_io.h"
+#include "support/test_helpers.h"
 
-#include "osmesa_zbuffer.h"
+#include "support/osmesa_zbuffer.h"
 
 #if !EXBSP_HAVE_OSMESA
 
@@ -94,13 +95,7 @@ bool keep_output() {
 }
 
 const std::string& temp_dir() {
-  static const std::string dir = [] {
-    std::string tmpl = (fs::temp_directory_path() / "exbsp_test_oracle_gl_XXXXXX").string();
-    std::vector<char> buf(tmpl.begin(), tmpl.end());
-    buf.push_back('\0');
-    if (!::mkdtemp(buf.data())) throw std::runtime_error("mkdtemp failed for " + tmpl);
-    return std::string(buf.data());
-  }();
+  static const std::string dir = exbsp_test::make_temp_dir("test_oracle_gl").string();
   return dir;
 }
 
@@ -120,17 +115,16 @@ public:
 [[maybe_unused]] ::testing::Environment* const cleanup_env = ::testing::AddGlobalTestEnvironment(new output_cleanup);
 
 // ---------------------------------------------------------------------------------------
-// Small vector algebra, independent of view/matrix.h (the oracle builds its own matrices)
+// Small vector algebra on std::array, independent of view/matrix.h (the oracle builds its own
+// matrices)
 
 using v3 = std::array<double, 3>;
-v3 sub(const v3& a, const v3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-v3 add(const v3& a, const v3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-v3 scale(double s, const v3& a) { return {s * a[0], s * a[1], s * a[2]}; }
-double dot3(const v3& a, const v3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-v3 cross3(const v3& a, const v3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-v3 unit(const v3& a) { return scale(1 / std::sqrt(dot3(a, a)), a); }
+using exbsp_test::add;
+using exbsp_test::cross;
+using exbsp_test::dot;
+using exbsp_test::scale;
+using exbsp_test::sub;
+v3 unit(const v3& a) { return scale(1 / std::sqrt(dot(a, a)), a); }
 v3 from(const view::point3& p) { return {p.x, p.y, p.z}; }
 v3 from(const view::vector3& p) { return {p.x, p.y, p.z}; }
 
@@ -140,11 +134,11 @@ using osmesa::column_major;
 /// then the translation by -eye.
 std::array<double, 16> look_at_rows(const v3& eye, const v3& center, const v3& up) {
   const v3 f = unit(sub(center, eye));
-  const v3 s = unit(cross3(f, up));
-  const v3 u = cross3(s, f);
-  return {s[0], s[1], s[2], -dot3(s, eye),  //
-          u[0], u[1], u[2], -dot3(u, eye),  //
-          -f[0], -f[1], -f[2], dot3(f, eye),  //
+  const v3 s = unit(cross(f, up));
+  const v3 u = cross(s, f);
+  return {s[0], s[1], s[2], -dot(s, eye),  //
+          u[0], u[1], u[2], -dot(u, eye),  //
+          -f[0], -f[1], -f[2], dot(f, eye),  //
           0, 0, 0, 1};
 }
 
@@ -205,9 +199,9 @@ void load_gl_view(const scene::scene& s, bool mirror_y) {
       // Shear x' = x + shx (z - zp), y' = y + shy (z - zp) mapping the eye-space direction of
       // projection onto -z and fixing the view plane through look_at (z = zp).
       const v3 d = unit(from(p.direction));
-      const v3 dop = {dot3({mv_rows[0], mv_rows[1], mv_rows[2]}, d), dot3({mv_rows[4], mv_rows[5], mv_rows[6]}, d),
-                      dot3({mv_rows[8], mv_rows[9], mv_rows[10]}, d)};
-      const double zp = -std::sqrt(dot3(sub(center, eye), sub(center, eye)));
+      const v3 dop = {dot({mv_rows[0], mv_rows[1], mv_rows[2]}, d), dot({mv_rows[4], mv_rows[5], mv_rows[6]}, d),
+                      dot({mv_rows[8], mv_rows[9], mv_rows[10]}, d)};
+      const double zp = -std::sqrt(dot(sub(center, eye), sub(center, eye)));
       const double shx = -dop[0] / dop[2], shy = -dop[1] / dop[2];
       glOrtho(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist);
       const std::array<double, 16> shear = column_major({1, 0, shx, -shx * zp,  //
@@ -304,15 +298,7 @@ struct comparison {
   double drawn_agreement() const { return drawn ? static_cast<double>(drawn_equal) / drawn : 0; }
 };
 
-std::set<std::tuple<int, int, int>> colours_of(const view::image& img) {
-  std::set<std::tuple<int, int, int>> c;
-  for (int r = 0; r < img.height(); ++r)
-    for (int k = 0; k < img.width(); ++k) {
-      const view::rgb8 p = img.at_row(r, k);
-      c.insert({p.r, p.g, p.b});
-    }
-  return c;
-}
+using exbsp_test::colours_of;
 
 /// Renders `s` with exbsp and Mesa, compares, prints the agreement and (opt.check) expects
 /// at least opt.required of all pixels and opt.required_drawn of the drawn pixels to be
@@ -433,7 +419,7 @@ std::array<std::vector<v3>, 6> box_quads(const v3& centre, const std::array<v3, 
       const v3 c = side == 0 ? add(centre, n) : sub(centre, n);
       std::vector<v3> q = {sub(sub(c, e1), e2), add(sub(c, e2), e1), add(add(c, e1), e2), sub(add(c, e2), e1)};
       const v3 outward = side == 0 ? n : scale(-1, n);
-      if (dot3(cross3(sub(q[1], q[0]), sub(q[2], q[0])), outward) < 0) std::swap(q[1], q[3]);
+      if (dot(cross(sub(q[1], q[0]), sub(q[2], q[0])), outward) < 0) std::swap(q[1], q[3]);
       quads[2 * k + side] = std::move(q);
     }
   }
@@ -692,7 +678,7 @@ TEST(OracleGL, ThinSticksGridMatchesMesaZBuffer) {
   }
   for (int i = 0; i < 5; ++i) {
     const double c = -1.6 + 0.8 * i;
-    const v3 a = unit({1, 1, 0.35}), u = unit(cross3(a, {0, 0, 1})), v = cross3(u, a);
+    const v3 a = unit({1, 1, 0.35}), u = unit(cross(a, {0, 0, 1})), v = cross(u, a);
     const auto q = box_quads({c, -c * 0.3, 0}, {a, u, v}, {2.0, h, h});
     for (int k = 0; k < 6; ++k) ds[k].add_polygon(q[k]);
   }

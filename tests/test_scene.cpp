@@ -30,6 +30,7 @@
 #include "view/clip_stage.h"
 #include "view/rasterizer.h"
 #include "view/stages.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -39,11 +40,7 @@ namespace fs = std::filesystem;
 
 std::string temp_dir() {
   static const std::string dir = [] {
-    std::string tmpl = (fs::temp_directory_path() / "exbsp_test_scene_XXXXXX").string();
-    std::vector<char> buf(tmpl.begin(), tmpl.end());
-    buf.push_back('\0');
-    if (!::mkdtemp(buf.data())) throw std::runtime_error("mkdtemp failed");
-    const std::string d(buf.data());
+    const std::string d = exbsp_test::make_temp_dir("test_scene").string();
     fs::create_directories(d + "/meshes");
     std::ofstream(d + "/meshes/tri.off") << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n";
     return d;
@@ -73,13 +70,7 @@ scene::scene parse(const json& doc, std::ostream* warnings = nullptr) {
 
 /// The key named by the scene_error thrown for `doc`, or "(no error)".
 std::string error_key(const json& doc, std::string* message = nullptr) {
-  try {
-    parse(doc);
-  } catch (const scene_error& e) {
-    if (message) *message = e.what();
-    return e.key();
-  }
-  return "(no error)";
+  return exbsp_test::error_key([&] { parse(doc); }, message);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -384,15 +375,7 @@ TEST(Procedural, ClosedSolidsHaveOutwardNormals) {
 // ---------------------------------------------------------------------------------------
 // Rendering
 
-std::set<std::tuple<int, int, int>> colours_of(const view::image& img) {
-  std::set<std::tuple<int, int, int>> c;
-  for (int r = 0; r < img.height(); ++r)
-    for (int k = 0; k < img.width(); ++k) {
-      const view::rgb8 p = img.at_row(r, k);
-      c.insert({p.r, p.g, p.b});
-    }
-  return c;
-}
+using exbsp_test::colours_of;
 
 TEST(Render, BuiltInDemoScene) {
   const scene::scene demo = scene::demo_scene();
@@ -524,39 +507,7 @@ TEST(Render, ExampleScenesRenderToPngAndSvg) {
   }
 }
 
-/// Independent z-buffer rendering of a scene's unsplit triangles (same coverage rule, same
-/// clip stage, depth interpolated in window space), honouring backface_culling.
-view::image zbuffer_render(const view::frame& f, bool cull) {
-  const int w = f.view.vp.width, h = f.view.vp.height;
-  view::image img(w, h, f.background);
-  std::vector<double> depth(static_cast<std::size_t>(w) * h, 2.0);
-  const view::mat4 pm = f.view.projection * f.view.model_view;
-  std::vector<view::hpoint> in(3), out;
-  for (const soup_triangle& t : f.soup.triangles) {
-    const fragment_d tri{t.face, {f.soup.vertices[t.v[0]], f.soup.vertices[t.v[1]], f.soup.vertices[t.v[2]]}};
-    if (cull && view::is_back_facing(tri, f.view)) continue;
-    for (int k = 0; k < 3; ++k) in[k] = pm * view::to_point(tri.v[k]);
-    view::clip_to_view_volume(in, out);
-    std::vector<view::window_point> p;
-    for (const view::hpoint& c : out) p.push_back(view::to_window(f.view.vp, c.x / c.w, c.y / c.w, c.z / c.w));
-    for (std::size_t k = 1; k + 1 < p.size(); ++k) {
-      const view::window_point &a = p[0], &b = p[k], &c = p[k + 1];
-      const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-      view::for_each_covered_pixel({a.x, a.y}, {b.x, b.y}, {c.x, c.y}, w, h, [&](int i, int j) {
-        const double x = i + 0.5, y = j + 0.5;
-        const double l1 = ((x - a.x) * (c.y - a.y) - (c.x - a.x) * (y - a.y)) / det;
-        const double l2 = ((b.x - a.x) * (y - a.y) - (x - a.x) * (b.y - a.y)) / det;
-        const double z = a.z + l1 * (b.z - a.z) + l2 * (c.z - a.z);
-        double& d = depth[static_cast<std::size_t>(j) * w + i];
-        if (z < d) {
-          d = z;
-          img.set_pixel(i, j, f.color_of(t.face));
-        }
-      });
-    }
-  }
-  return img;
-}
+using exbsp_test::zbuffer_render;
 
 TEST(Render, ExampleScenesMatchAZBufferOracle) {
   for (const char* name : {"demo", "perspective", "orthographic", "oblique", "frustum", "inside", "cyclic", "groups",

@@ -10,7 +10,8 @@
 //   - the split pieces equal clip::split_triangle's (the section 3 convention).
 // Degenerate cuts first: through vertices, along edges, containing a face (both sides),
 // tangent, through a non-manifold vertex, one ulp off a face, nested islands and holes.
-// Corpus meshes (data/meshes) are skipped with a message when missing.
+// Corpus meshes (data/meshes) are skipped with a message when missing (a failure under
+// EXBSP_REQUIRE_CORPUS=1, as in CI).
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -26,7 +27,8 @@
 #include <sstream>
 
 #include "bsp/exact_output.h"
-#include "cli_support.h"
+#include "support/cli_support.h"
+#include "support/inputs.h"
 #include "clip/exact_triangle_clip.h"
 #include "clip/section.h"
 #include "core/errors.h"
@@ -34,6 +36,7 @@
 #include "scene/render.h"
 #include "scene/scene.h"
 #include "view/png_io.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -55,11 +58,9 @@ std::vector<q3> exact_points(const section_result& r) {
   return out;
 }
 
-q3 sub(const q3& a, const q3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-q3 cross(const q3& a, const q3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-mpq_class dot(const q3& a, const q3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+using exbsp_test::cross;
+using exbsp_test::dot;
+using exbsp_test::sub;
 
 /// Exact vector area (twice the area vector) of a triangle of the result.
 q3 area2(const std::vector<q3>& pts, const exbsp::section_triangle& t) {
@@ -185,7 +186,7 @@ triangle_soup unit_cube() {
 
 // --- degenerate cuts ---------------------------------------------------------------------
 
-TEST(section, box_is_oriented_outward_and_closed) {
+TEST(Section, box_is_oriented_outward_and_closed) {
   const section_result r = exbsp::section(unit_cube(), {0, 0, 1, 10});  // everything kept
   EXPECT_TRUE(r.closed);
   EXPECT_EQ(r.kept.size(), 12u);
@@ -198,7 +199,7 @@ TEST(section, box_is_oriented_outward_and_closed) {
   }
 }
 
-TEST(section, plain_cut_of_a_cube_has_a_unit_square_cap) {
+TEST(Section, plain_cut_of_a_cube_has_a_unit_square_cap) {
   const section_plane p{0, 0, 1, -0.5};
   const section_result r = exbsp::section(unit_cube(), p);
   expect_closed_section(r);
@@ -207,7 +208,7 @@ TEST(section, plain_cut_of_a_cube_has_a_unit_square_cap) {
   expect_tiling(unit_cube(), p);
 }
 
-TEST(section, plane_through_three_vertices) {
+TEST(Section, plane_through_three_vertices) {
   const section_plane p{1, 1, 1, -1};  // through (1,0,0), (0,1,0), (0,0,1)
   const section_result r = exbsp::section(unit_cube(), p);
   expect_closed_section(r);
@@ -219,7 +220,7 @@ TEST(section, plane_through_three_vertices) {
   expect_closed_section(exbsp::section(unit_cube(), {-1, -1, -1, 1}));
 }
 
-TEST(section, diagonal_plane_along_two_edges) {
+TEST(Section, diagonal_plane_along_two_edges) {
   const section_plane p{1, -1, 0, 0};  // x = y: contains the edges x=y=0 and x=y=1
   const section_result r = exbsp::section(unit_cube(), p);
   expect_closed_section(r);
@@ -228,7 +229,7 @@ TEST(section, diagonal_plane_along_two_edges) {
   expect_tiling(unit_cube(), p);
 }
 
-TEST(section, plane_containing_a_face_keeps_the_whole_solid_on_its_side) {
+TEST(Section, plane_containing_a_face_keeps_the_whole_solid_on_its_side) {
   const section_result r = exbsp::section(unit_cube(), {0, 0, 1, 0});  // z >= 0: bottom face in the plane
   expect_closed_section(r);
   EXPECT_EQ(r.kept.size(), 12u);
@@ -238,7 +239,7 @@ TEST(section, plane_containing_a_face_keeps_the_whole_solid_on_its_side) {
   expect_tiling(unit_cube(), {0, 0, 1, 0});
 }
 
-TEST(section, plane_containing_a_face_with_the_solid_removed_keeps_a_double_sided_face) {
+TEST(Section, plane_containing_a_face_with_the_solid_removed_keeps_a_double_sided_face) {
   const section_result r = exbsp::section(unit_cube(), {0, 0, -1, 0});  // z <= 0
   expect_closed_section(r);
   EXPECT_EQ(r.kept.size(), 2u);  // the bottom face, facing -z
@@ -247,7 +248,7 @@ TEST(section, plane_containing_a_face_with_the_solid_removed_keeps_a_double_side
   EXPECT_EQ(cap_area2_along_n(r), -2);  // the face again, facing +z = -(0,0,-1)
 }
 
-TEST(section, tangent_planes_cut_nothing) {
+TEST(Section, tangent_planes_cut_nothing) {
   for (const section_plane& p : {section_plane{1, 1, 0, -2}, section_plane{-1, -1, 0, 2},  // along edge x=y=1
                                  section_plane{1, 1, 1, -3}, section_plane{-1, -1, -1, 3}}) {  // at vertex (1,1,1)
     const section_result r = exbsp::section(unit_cube(), p);
@@ -259,7 +260,7 @@ TEST(section, tangent_planes_cut_nothing) {
   }
 }
 
-TEST(section, plane_through_a_non_manifold_vertex) {
+TEST(Section, plane_through_a_non_manifold_vertex) {
   triangle_soup s;
   add_box(s, {0, 0, 0}, {1, 1, 1});
   add_box(s, {1, 1, 1}, {2, 2, 2});  // shares the vertex (1,1,1)
@@ -278,7 +279,7 @@ TEST(section, plane_through_a_non_manifold_vertex) {
   expect_closed_section(exbsp::section(s, {1, 1, -2, 0}));  // through the vertex, cutting both
 }
 
-TEST(section, one_ulp_off_a_face) {
+TEST(Section, one_ulp_off_a_face) {
   const double below = std::nextafter(1.0, 0.0);
   const section_plane p{0, 0, 1, -below};  // z >= 1 - 2^-53: a slab one ulp thick
   const section_result r = exbsp::section(unit_cube(), p);
@@ -295,7 +296,7 @@ TEST(section, one_ulp_off_a_face) {
   expect_tiling(unit_cube(), tilt);
 }
 
-TEST(section, collinear_sliver_closing_a_t_junction) {
+TEST(Section, collinear_sliver_closing_a_t_junction) {
   // A cube whose top face has an extra vertex m in the middle of its edge a-b (y = 0); the
   // wall below still uses a-b, and the collinear triangle (a, m, b) closes the T-junction.
   triangle_soup s;
@@ -313,7 +314,7 @@ TEST(section, collinear_sliver_closing_a_t_junction) {
   }
 }
 
-TEST(section, holes_and_nested_islands) {
+TEST(Section, holes_and_nested_islands) {
   triangle_soup s;
   add_box(s, {0, 0, 0}, {10, 10, 10});
   add_box(s, {2, 2, 2}, {8, 8, 8}, true);  // cavity
@@ -341,7 +342,7 @@ TEST(section, holes_and_nested_islands) {
   expect_closed_section(exbsp::section(s, {0.25, 0.5, 1, -8.5}));
 }
 
-TEST(section, touching_solids_with_t_junctions_are_refined_to_stay_closed) {
+TEST(Section, touching_solids_with_t_junctions_are_refined_to_stay_closed) {
   triangle_soup s;
   add_box(s, {0, 0, 0}, {1, 1, 1});
   add_box(s, {1, 0.25, 0}, {2, 0.75, 1});  // shares part of the face x = 1, not its vertices
@@ -352,7 +353,7 @@ TEST(section, touching_solids_with_t_junctions_are_refined_to_stay_closed) {
   }
 }
 
-TEST(section, overlapping_solids_cover_the_overlap_twice) {
+TEST(Section, overlapping_solids_cover_the_overlap_twice) {
   triangle_soup s;
   add_box(s, {0, 0, 0}, {2, 2, 2});
   add_box(s, {1, 1, 1}, {3, 3, 3});  // a second closed solid through the first
@@ -362,7 +363,7 @@ TEST(section, overlapping_solids_cover_the_overlap_twice) {
   EXPECT_EQ(cap_area2_along_n(r), -2 * (4 + 4));  // two squares of area 4, the overlap twice
 }
 
-TEST(section, many_small_integer_planes_hit_vertices_edges_and_faces_and_stay_closed) {
+TEST(Section, many_small_integer_planes_hit_vertices_edges_and_faces_and_stay_closed) {
   // Planes with coefficients in -2..2 and D in -6..6 (halves) through boxes on a unit grid:
   // most pass through vertices, along edges or contain faces. Fixed seed.
   triangle_soup s;
@@ -389,7 +390,7 @@ TEST(section, many_small_integer_planes_hit_vertices_edges_and_faces_and_stay_cl
   EXPECT_GT(cut, 50);
 }
 
-TEST(section, open_input_gives_open_polylines_and_no_cap) {
+TEST(Section, open_input_gives_open_polylines_and_no_cap) {
   triangle_soup s = unit_cube();
   s.triangles.erase(s.triangles.begin() + 2, s.triangles.begin() + 4);  // drop the top face
   const section_result r = exbsp::section(s, {0, 0, 1, -0.5});
@@ -406,7 +407,7 @@ TEST(section, open_input_gives_open_polylines_and_no_cap) {
   EXPECT_EQ(o.outline[0].p.size(), 3u);
 }
 
-TEST(section, pieces_follow_the_section_3_split_convention) {
+TEST(Section, pieces_follow_the_section_3_split_convention) {
   using K = exbsp::clip::epeck;
   triangle_soup s;
   s.add_triangle({0, 0, 0}, {1, 0, 1}, {0, 1, 0.25});  // no vertex on the plane
@@ -445,7 +446,7 @@ TEST(section, pieces_follow_the_section_3_split_convention) {
   EXPECT_EQ(got, expected);
 }
 
-TEST(section, bad_planes_are_usage_errors) {
+TEST(Section, bad_planes_are_usage_errors) {
   EXPECT_THROW(exbsp::section(unit_cube(), {0, 0, 0, 1}), exbsp::usage_error);
   EXPECT_THROW(exbsp::section(unit_cube(), {NAN, 0, 1, 1}), exbsp::usage_error);
   EXPECT_THROW(exbsp::section(unit_cube(), {0, 0, 1, INFINITY}), exbsp::usage_error);
@@ -454,7 +455,7 @@ TEST(section, bad_planes_are_usage_errors) {
 
 // --- several planes (scenes) ---------------------------------------------------------------
 
-TEST(section, clip_soup_with_caps_stays_closed_and_cuts_earlier_caps) {
+TEST(Section, clip_soup_with_caps_stays_closed_and_cuts_earlier_caps) {
   triangle_soup s;
   add_box(s, {0, 0, 0}, {10, 10, 10});
   add_box(s, {2, 2, 2}, {8, 8, 8}, true);
@@ -485,11 +486,11 @@ TEST(section, clip_soup_with_caps_stays_closed_and_cuts_earlier_caps) {
 
 // --- the CAD corpus ----------------------------------------------------------------------
 
-class corpus : public testing::TestWithParam<const char*> {};
+class Corpus : public testing::TestWithParam<const char*> {};
 
-TEST_P(corpus, slanted_and_axis_cuts_through_the_middle_are_exact_and_closed) {
+TEST_P(Corpus, slanted_and_axis_cuts_through_the_middle_are_exact_and_closed) {
   const std::string path = std::string(EXBSP_SOURCE_DIR) + "/data/meshes/" + GetParam();
-  if (!fs::exists(path)) GTEST_SKIP() << "corpus mesh missing: " << path;
+  EXBSP_NEED_CORPUS(fs::exists(path), path);
   const triangle_soup s = exbsp::read_mesh(path);
   vec3d lo = s.vertices[0], hi = s.vertices[0];
   for (const vec3d& v : s.vertices)
@@ -523,7 +524,7 @@ TEST_P(corpus, slanted_and_axis_cuts_through_the_middle_are_exact_and_closed) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(meshes, corpus,
+INSTANTIATE_TEST_SUITE_P(Meshes, Corpus,
                          testing::Values("fandisk.off", "cube.off", "sphere.off", "joint.off", "elephant.off",
                                          "cheese.off", "mech-holes-shark.off", "3torus.off", "blobby_3cc.off"),
                          [](const testing::TestParamInfo<const char*>& i) {
@@ -538,7 +539,7 @@ INSTANTIATE_TEST_SUITE_P(meshes, corpus,
 using run_result = exbsp_test::cli_result;
 const auto& slurp = exbsp_test::read_file;
 
-class section_cli : public exbsp_test::cli_fixture {
+class SectionCli : public exbsp_test::cli_fixture {
 protected:
   void SetUp() override {
     cli_fixture::SetUp();
@@ -547,7 +548,7 @@ protected:
   }
 };
 
-TEST_F(section_cli, json_has_kept_outline_and_cap_with_exact_rationals) {
+TEST_F(SectionCli, json_has_kept_outline_and_cap_with_exact_rationals) {
   const run_result r = run("section cube.off --plane 0.1,0.2,1,-0.3");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -583,7 +584,7 @@ TEST_F(section_cli, json_has_kept_outline_and_cap_with_exact_rationals) {
   EXPECT_EQ(nlohmann::json::parse(neg.out).at("plane")[0], -1);
 }
 
-TEST_F(section_cli, off_output_is_a_closed_mesh_and_svg_draws_the_loop) {
+TEST_F(SectionCli, off_output_is_a_closed_mesh_and_svg_draws_the_loop) {
   ASSERT_EQ(run("section cube.off --plane 1,1,1,-1.5 -o cut.off").status, 0);
   const triangle_soup s = exbsp::read_mesh((dir / "cut.off").string());
   const section_result r = exbsp::section(s, {0, 0, 1, 100});
@@ -595,7 +596,7 @@ TEST_F(section_cli, off_output_is_a_closed_mesh_and_svg_draws_the_loop) {
   EXPECT_NE(text.find(" Z"), std::string::npos);
 }
 
-TEST_F(section_cli, bad_input_exits_2_names_the_option_and_writes_nothing) {
+TEST_F(SectionCli, bad_input_exits_2_names_the_option_and_writes_nothing) {
   const std::size_t before = file_count();
   for (const char* args : {"section cube.off --plane 0,0,1 -o a.json", "section cube.off --plane 0,0,0,1 -o a.json",
                            "section cube.off --plane 0,0,1,nan -o a.json", "section cube.off --plane 0,0,1,x -o a.json",
@@ -621,14 +622,10 @@ TEST_F(section_cli, bad_input_exits_2_names_the_option_and_writes_nothing) {
 void write_box_off(const fs::path& path, const vec3d& lo, const vec3d& hi) {
   triangle_soup s;
   add_box(s, lo, hi);
-  std::ofstream out(path);
-  out.precision(17);
-  out << "OFF\n" << s.vertices.size() << " " << s.triangles.size() << " 0\n";
-  for (const vec3d& v : s.vertices) out << v[0] << " " << v[1] << " " << v[2] << "\n";
-  for (const auto& t : s.triangles) out << "3 " << t.v[0] << " " << t.v[1] << " " << t.v[2] << "\n";
+  exbsp_test::write_file(path, exbsp_test::off_text(s));
 }
 
-class section_scene : public section_cli {
+class SectionScene : public SectionCli {
 protected:
   /// A scene of a grey cube [0,1]^3 and a blue slab crossing it, seen from above in glOrtho,
   /// with `extra` spliced in (clip planes, caps).
@@ -641,31 +638,27 @@ protected:
  "viewport": {"width": 200, "height": 200}, "background": [255, 255, 255])" +
            extra + "}";
   }
-  /// The key of the scene_error that parsing `extra` raises ("" when it parses).
+  /// The key of the scene_error that parsing `extra` raises ("(no error)" when it parses).
   std::string error_key(const std::string& extra) {
-    try {
-      exbsp::scene::parse_scene_text(scene_text(extra), (dir / "s.json").string());
-    } catch (const exbsp::scene_error& e) {
-      return e.key();
-    }
-    return "";
+    return exbsp_test::error_key(
+        [&] { exbsp::scene::parse_scene_text(scene_text(extra), (dir / "s.json").string()); });
   }
 };
 
-TEST_F(section_scene, bad_clip_planes_and_caps_name_their_key) {
-  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, -1, 0.5]], "caps": {"color": [255, 0, 0]})"), "");
+TEST_F(SectionScene, bad_clip_planes_and_caps_name_their_key) {
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, -1, 0.5]], "caps": {"color": [255, 0, 0]})"), "(no error)");
   EXPECT_EQ(error_key(R"(, "clip_planes": 3)"), "/clip_planes");
   EXPECT_EQ(error_key(R"(, "clip_planes": [[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0]])"),
             "/clip_planes");
   EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0], [0, 0, 1]])"), "/clip_planes/1");
   EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0], [0, 0, 1, "x"]])"), "/clip_planes/1/3");
   EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 0, 1]])"), "/clip_planes/0");
-  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 1e999]])"), "");  // a JSON syntax error: no key
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 1e999]])"), "");  // a JSON syntax error: a scene_error without a key
   EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0]], "caps": 1)"), "/caps");
   EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0]], "caps": {"color": [256, 0, 0]})"), "/caps/color/0");
 }
 
-TEST_F(section_scene, bad_scene_exits_2_naming_the_key_and_writes_nothing) {
+TEST_F(SectionScene, bad_scene_exits_2_naming_the_key_and_writes_nothing) {
   std::ofstream(dir / "bad.json") << scene_text(R"(, "clip_planes": [[0, 0, 0, 1]])");
   const run_result r = run("render bad.json -o out.png");
   EXPECT_EQ(r.status, 2);
@@ -673,7 +666,7 @@ TEST_F(section_scene, bad_scene_exits_2_naming_the_key_and_writes_nothing) {
   EXPECT_FALSE(fs::exists(dir / "out.png"));
 }
 
-TEST_F(section_scene, geometry_is_cut_with_caps_in_their_colour_and_stays_closed) {
+TEST_F(SectionScene, geometry_is_cut_with_caps_in_their_colour_and_stays_closed) {
   const auto s = exbsp::scene::parse_scene_text(
       scene_text(R"(, "clip_planes": [[0, 0, -1, 0.5], [1, 0, 0, -0.25]], "caps": {"color": [255, 0, 0]})"),
       (dir / "s.json").string());
@@ -693,7 +686,7 @@ TEST_F(section_scene, geometry_is_cut_with_caps_in_their_colour_and_stays_closed
   expect_closed_section(exbsp::section(g.soup, {0, 0, 1, 100}));
 }
 
-TEST_F(section_scene, cut_part_renders_in_one_bsp_with_an_uncut_intersecting_part) {
+TEST_F(SectionScene, cut_part_renders_in_one_bsp_with_an_uncut_intersecting_part) {
   std::ofstream(dir / "s.json") << scene_text(R"(, "clip_planes": [[0, 0, -1, 0.5]], "caps": {"color": [255, 0, 0]})");
   std::ostringstream log;
   exbsp::render_command({(dir / "s.json").string(), (dir / "s.png").string(), false}, log);
@@ -713,7 +706,7 @@ TEST_F(section_scene, cut_part_renders_in_one_bsp_with_an_uncut_intersecting_par
   EXPECT_EQ(open.pixel(75, 75), (exbsp::view::rgb8{100, 100, 100}));
 }
 
-TEST(section_scene_example, example_scene_renders) {
+TEST(SectionSceneExample, example_scene_renders) {
   const std::string path = std::string(EXBSP_SOURCE_DIR) + "/scenes/section.json";
   const auto s = exbsp::scene::load_scene(path);
   EXPECT_EQ(s.clip_planes.size(), 2u);

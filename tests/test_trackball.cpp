@@ -14,6 +14,7 @@
 
 #include "core/errors.h"
 #include "view/trackball.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -23,23 +24,18 @@ using exbsp::screen_y;
 using exbsp::vec2d;
 using exbsp::vec3d;
 
-// Fixed RapidCheck seed (DESIGN.md section 7) unless the caller sets RC_PARAMS.
-[[maybe_unused]] const bool fixed_seed = [] {
-  setenv("RC_PARAMS", "seed=20240611", 0);
-  return true;
-}();
+using exbsp_test::cross;
+using exbsp_test::dist;
+using exbsp_test::dot;
+using exbsp_test::norm;
+using exbsp_test::scale;
+using exbsp_test::sub;
+
+[[maybe_unused]] const bool fixed_seed = exbsp_test::fixed_rc_seed();
 
 const double pi = 3.14159265358979323846;
 
-vec3d sub(const vec3d& a, const vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-vec3d mul(double s, const vec3d& a) { return {s * a[0], s * a[1], s * a[2]}; }
-double dot3(const vec3d& a, const vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-vec3d cross(const vec3d& a, const vec3d& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double len(const vec3d& a) { return std::sqrt(dot3(a, a)); }
-double dist(const vec3d& a, const vec3d& b) { return len(sub(a, b)); }
-vec3d unit(const vec3d& a) { return mul(1.0 / len(a), a); }
+vec3d unit(const vec3d& a) { return scale(1.0 / norm(a), a); }
 
 double qdist(const quaternion& a, const quaternion& b) {
   return std::sqrt((a.w - b.w) * (a.w - b.w) + (a.x - b.x) * (a.x - b.x) +
@@ -61,7 +57,7 @@ vec3d random_nonzero_vector() {
   do {
     v = {*rc::gen::inRange(-1000, 1001) / 100.0, *rc::gen::inRange(-1000, 1001) / 100.0,
          *rc::gen::inRange(-1000, 1001) / 100.0};
-  } while (len(v) < 1e-3);
+  } while (norm(v) < 1e-3);
   return v;
 }
 quaternion random_rotation() {
@@ -75,8 +71,8 @@ RC_GTEST_PROP(Quaternion, ProductComposesRotationsRightToLeft, ()) {
   const vec3d v = random_nonzero_vector();
   const vec3d once = exbsp::rotate(a * b, v);
   const vec3d twice = exbsp::rotate(a, exbsp::rotate(b, v));
-  RC_ASSERT(dist(once, twice) <= 1e-13 * len(v));
-  RC_ASSERT(std::fabs(len(once) - len(v)) <= 1e-13 * len(v));
+  RC_ASSERT(dist(once, twice) <= 1e-13 * norm(v));
+  RC_ASSERT(std::fabs(norm(once) - norm(v)) <= 1e-13 * norm(v));
 }
 
 RC_GTEST_PROP(Quaternion, MatrixAgreesWithRotationAndIsOrthonormal, ()) {
@@ -85,12 +81,12 @@ RC_GTEST_PROP(Quaternion, MatrixAgreesWithRotationAndIsOrthonormal, ()) {
   const vec3d v = random_nonzero_vector();
   const vec3d mv{m[0] * v[0] + m[1] * v[1] + m[2] * v[2], m[3] * v[0] + m[4] * v[1] + m[5] * v[2],
                  m[6] * v[0] + m[7] * v[1] + m[8] * v[2]};
-  RC_ASSERT(dist(mv, exbsp::rotate(q, v)) <= 1e-13 * len(v));
+  RC_ASSERT(dist(mv, exbsp::rotate(q, v)) <= 1e-13 * norm(v));
   const vec3d r0{m[0], m[1], m[2]}, r1{m[3], m[4], m[5]}, r2{m[6], m[7], m[8]};
-  RC_ASSERT(std::fabs(dot3(r0, r0) - 1.0) <= 1e-14);
-  RC_ASSERT(std::fabs(dot3(r1, r1) - 1.0) <= 1e-14);
-  RC_ASSERT(std::fabs(dot3(r0, r1)) <= 1e-14);
-  RC_ASSERT(std::fabs(dot3(cross(r0, r1), r2) - 1.0) <= 1e-14);  // det = +1
+  RC_ASSERT(std::fabs(dot(r0, r0) - 1.0) <= 1e-14);
+  RC_ASSERT(std::fabs(dot(r1, r1) - 1.0) <= 1e-14);
+  RC_ASSERT(std::fabs(dot(r0, r1)) <= 1e-14);
+  RC_ASSERT(std::fabs(dot(cross(r0, r1), r2) - 1.0) <= 1e-14);  // det = +1
   const std::array<double, 16> h = exbsp::to_matrix4(q);
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) RC_ASSERT(h[4 * i + j] == m[3 * i + j]);
@@ -113,7 +109,7 @@ RC_GTEST_PROP(Quaternion, AxisAngleRoundTripsAndAngleIsInZeroToPi, ()) {
   const exbsp::axis_angle aa = exbsp::to_axis_angle(q);
   RC_ASSERT(aa.angle >= 0.0);
   RC_ASSERT(aa.angle <= pi);
-  RC_ASSERT(std::fabs(len(aa.axis) - 1.0) <= 1e-14);
+  RC_ASSERT(std::fabs(norm(aa.axis) - 1.0) <= 1e-14);
   RC_ASSERT(rotation_distance(exbsp::from_axis_angle(aa.axis, aa.angle), q) <= 1e-13);
 }
 
@@ -171,7 +167,7 @@ RC_GTEST_PROP(Arcball, SpherePointIsOnUnitSphereFacingTheViewer, ()) {
   const arcball ball(640, 480);
   const vec2d s = random_screen_point();
   const vec3d p = ball.sphere_point(s);
-  RC_ASSERT(std::fabs(len(p) - 1.0) <= 1e-15);
+  RC_ASSERT(std::fabs(norm(p) - 1.0) <= 1e-15);
   RC_ASSERT(p[2] >= 0.0);
   const double r = std::hypot(s[0] - 320.0, s[1] - 240.0) / 240.0;
   if (r >= 1.0) RC_ASSERT(p[2] == 0.0);  // outside the ball: on the rim
@@ -209,10 +205,10 @@ RC_GTEST_PROP(Arcball, RotationMapsStartPointToMirrorOfEndPointAndItsSquareRootT
   const vec3d p = ball.sphere_point(a), q = ball.sphere_point(b);
   const quaternion r = ball.drag(a, b);
   RC_ASSERT(std::fabs(exbsp::norm(r) - 1.0) <= 1e-15);
-  const vec3d mirror = sub(mul(2.0 * dot3(p, q), q), p);
+  const vec3d mirror = sub(scale(2.0 * dot(p, q), q), p);
   RC_ASSERT(dist(exbsp::rotate(r, p), mirror) <= 1e-14);
-  const double arc = std::atan2(len(cross(p, q)), dot3(p, q));
-  if (len(cross(p, q)) > 1e-9) {
+  const double arc = std::atan2(norm(cross(p, q)), dot(p, q));
+  if (norm(cross(p, q)) > 1e-9) {
     // The undoubled rotation h (same axis, angle = the arc) maps p to q, and h h = r.
     const quaternion h = exbsp::from_axis_angle(cross(p, q), arc);
     RC_ASSERT(dist(exbsp::rotate(h, p), q) <= 1e-12);
@@ -308,26 +304,26 @@ vec3d eye_coordinates(const exbsp::orbit_view& c, const vec3d& w) {
   const vec3d s = unit(cross(f, c.up));
   const vec3d u = cross(s, f);
   const vec3d d = sub(w, c.eye);
-  return {dot3(s, d), dot3(u, d), -dot3(f, d)};
+  return {dot(s, d), dot(u, d), -dot(f, d)};
 }
 
 RC_GTEST_PROP(OrbitCamera, SceneAppearsRotatedAboutTheLookAtPoint, ()) {
   exbsp::orbit_view camera{random_nonzero_vector(), random_nonzero_vector(), random_nonzero_vector()};
   const vec3d view = sub(camera.look_at, camera.eye);
-  RC_PRE(len(view) > 0.1);
-  RC_PRE(len(cross(unit(view), unit(camera.up))) > 0.1);
+  RC_PRE(norm(view) > 0.1);
+  RC_PRE(norm(cross(unit(view), unit(camera.up))) > 0.1);
   const quaternion r = random_rotation();
   const exbsp::orbit_view moved = exbsp::orbit_camera(camera, r);
   RC_ASSERT(moved.look_at == camera.look_at);
-  RC_ASSERT(std::fabs(dist(moved.eye, moved.look_at) - len(view)) <= 1e-12 * len(view) + 1e-12);
-  RC_ASSERT(std::fabs(len(moved.up) - 1.0) <= 1e-14);
-  RC_ASSERT(std::fabs(dot3(moved.up, unit(sub(moved.look_at, moved.eye)))) <= 1e-12);
+  RC_ASSERT(std::fabs(dist(moved.eye, moved.look_at) - norm(view)) <= 1e-12 * norm(view) + 1e-12);
+  RC_ASSERT(std::fabs(norm(moved.up) - 1.0) <= 1e-14);
+  RC_ASSERT(std::fabs(dot(moved.up, unit(sub(moved.look_at, moved.eye)))) <= 1e-12);
   // e' + (0, 0, d) = R (e + (0, 0, d)): the look-at point (0, 0, -d) is the centre of rotation.
   const vec3d world = random_nonzero_vector();
-  const vec3d centre{0.0, 0.0, -len(view)};
+  const vec3d centre{0.0, 0.0, -norm(view)};
   const vec3d before = sub(eye_coordinates(camera, world), centre);
   const vec3d after = sub(eye_coordinates(moved, world), centre);
-  RC_ASSERT(dist(after, exbsp::rotate(r, before)) <= 1e-10 * (len(before) + 1.0));
+  RC_ASSERT(dist(after, exbsp::rotate(r, before)) <= 1e-10 * (norm(before) + 1.0));
 }
 
 TEST(OrbitCamera, IdentityKeepsTheCamera) {

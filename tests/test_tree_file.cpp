@@ -14,9 +14,11 @@
 #include <vector>
 
 #include "bsp/engine.h"
-#include "cli_support.h"
+#include "support/cli_support.h"
 #include "core/errors.h"
-#include "generators.h"
+#include "support/generators.h"
+#include "support/inputs.h"
+#include "support/test_helpers.h"
 #include "mesh/mesh_io.h"
 
 namespace {
@@ -171,7 +173,7 @@ exbsp::triangle_soup crossing_soup() {
 
 // ---- Degenerate trees first ------------------------------------------------------------------
 
-TEST(tree_file, an_empty_soup_round_trips_for_every_kernel) {
+TEST(TreeFile, an_empty_soup_round_trips_for_every_kernel) {
   for (kernel_id k : all_kernels) {
     const bsp tree = build(exbsp::triangle_soup{}, k);
     check_round_trip(tree, exbsp::to_string(k));
@@ -179,7 +181,7 @@ TEST(tree_file, an_empty_soup_round_trips_for_every_kernel) {
   }
 }
 
-TEST(tree_file, a_soup_of_degenerate_triangles_keeps_its_count) {
+TEST(TreeFile, a_soup_of_degenerate_triangles_keeps_its_count) {
   exbsp::triangle_soup s;
   s.add_triangle({0, 0, 0}, {1, 1, 1}, {2, 2, 2});
   s.add_triangle({0, 0, 0}, {0, 0, 0}, {0, 0, 0});
@@ -190,13 +192,13 @@ TEST(tree_file, a_soup_of_degenerate_triangles_keeps_its_count) {
   }
 }
 
-TEST(tree_file, one_triangle_round_trips_for_every_kernel) {
+TEST(TreeFile, one_triangle_round_trips_for_every_kernel) {
   exbsp::triangle_soup s;
   s.add_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
   for (kernel_id k : all_kernels) check_round_trip(build(s, k), exbsp::to_string(k));
 }
 
-TEST(tree_file, a_soup_with_splits_round_trips_for_every_kernel_heuristic_and_seed) {
+TEST(TreeFile, a_soup_with_splits_round_trips_for_every_kernel_heuristic_and_seed) {
   for (kernel_id k : all_kernels)
     for (const std::string& h : exbsp::heuristic_names())
       for (std::uint64_t seed : {0u, 7u}) {
@@ -206,7 +208,7 @@ TEST(tree_file, a_soup_with_splits_round_trips_for_every_kernel_heuristic_and_se
       }
 }
 
-TEST(tree_file, the_sampled_parameters_and_the_seed_are_kept) {
+TEST(TreeFile, the_sampled_parameters_and_the_seed_are_kept) {
   exbsp::build_options o;
   o.heuristic = "random";
   o.seed = 123456789012345ULL;
@@ -219,7 +221,7 @@ TEST(tree_file, the_sampled_parameters_and_the_seed_are_kept) {
 
 // ---- Round trips on generated soups and the corpus --------------------------------------------
 
-RC_GTEST_PROP(tree_file, generated_soups_round_trip_for_every_kernel, ()) {
+RC_GTEST_PROP(TreeFile, generated_soups_round_trip_for_every_kernel, ()) {
   const soup_case c = *rc::gen::oneOf(exbsp_test::any_small_soup(), exbsp_test::cyclic_sticks());
   const kernel_id k = *rc::gen::element(kernel_id::exact, kernel_id::epeck, kernel_id::gmpq, kernel_id::epick,
                                         kernel_id::double_);
@@ -242,27 +244,24 @@ RC_GTEST_PROP(tree_file, generated_soups_round_trip_for_every_kernel, ()) {
   }
 }
 
-TEST(tree_file, corpus_meshes_round_trip_with_the_exact_kernel) {
-  std::size_t checked = 0;
+TEST(TreeFile, corpus_meshes_round_trip_with_the_exact_kernel) {
   for (const char* name : {"fandisk.off", "anchor.off", "couplingdown.off", "cross.off"}) {
-    const std::string path = exbsp_test::mesh_dir() + name;
-    if (!std::filesystem::exists(path)) continue;
+    const std::string path = exbsp_test::corpus_dir() + name;
+    EXBSP_NEED_CORPUS(std::filesystem::exists(path), path);
     check_round_trip(build(exbsp::read_mesh(path), kernel_id::exact), name);
-    ++checked;
   }
-  if (checked == 0) GTEST_SKIP() << "data/meshes/ is missing: run scripts/setup";
 }
 
-TEST(tree_file, a_corpus_mesh_round_trips_with_the_cgal_kernels) {
-  const std::string path = exbsp_test::mesh_dir() + "cross.off";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "data/meshes/cross.off is missing: run scripts/setup";
+TEST(TreeFile, a_corpus_mesh_round_trips_with_the_cgal_kernels) {
+  const std::string path = exbsp_test::corpus_dir() + "cross.off";
+  EXBSP_NEED_CORPUS(std::filesystem::exists(path), path);
   const exbsp::triangle_soup soup = exbsp::read_mesh(path);
   for (kernel_id k : all_kernels) check_round_trip(build(soup, k), exbsp::to_string(k));
 }
 
 // ---- Damaged files ----------------------------------------------------------------------------
 
-TEST(tree_file, every_truncation_is_an_input_error_naming_the_file) {
+TEST(TreeFile, every_truncation_is_an_input_error_naming_the_file) {
   for (kernel_id k : {kernel_id::exact, kernel_id::epeck}) {
     const std::string bytes = build(crossing_soup(), k).serialize();
     for (std::size_t n = 0; n < bytes.size(); ++n) {
@@ -276,7 +275,7 @@ TEST(tree_file, every_truncation_is_an_input_error_naming_the_file) {
   }
 }
 
-TEST(tree_file, every_single_bit_flip_is_caught_by_the_checksum_or_the_header_checks) {
+TEST(TreeFile, every_single_bit_flip_is_caught_by_the_checksum_or_the_header_checks) {
   const std::string bytes = build(crossing_soup(), kernel_id::exact).serialize();
   for (std::size_t i = 0; i < bytes.size(); ++i)
     for (int bit = 0; bit < 8; ++bit) {
@@ -286,7 +285,7 @@ TEST(tree_file, every_single_bit_flip_is_caught_by_the_checksum_or_the_header_ch
     }
 }
 
-TEST(tree_file, bit_flips_behind_a_forged_checksum_are_rejected_or_load_a_well_formed_tree) {
+TEST(TreeFile, bit_flips_behind_a_forged_checksum_are_rejected_or_load_a_well_formed_tree) {
   for (kernel_id k : {kernel_id::exact, kernel_id::epeck, kernel_id::double_}) {
     const std::string bytes = build(crossing_soup(), k).serialize();
     std::size_t rejected = 0, loaded = 0;
@@ -308,7 +307,7 @@ TEST(tree_file, bit_flips_behind_a_forged_checksum_are_rejected_or_load_a_well_f
   }
 }
 
-TEST(tree_file, header_damage_names_what_is_wrong) {
+TEST(TreeFile, header_damage_names_what_is_wrong) {
   const std::string bytes = build(crossing_soup(), kernel_id::exact).serialize();
   std::string b = bytes;
   b[0] = 'X';
@@ -335,7 +334,7 @@ TEST(tree_file, header_damage_names_what_is_wrong) {
   expect_rejected(std::string(), "not an exbsp saved tree", "an empty file");
 }
 
-TEST(tree_file, forged_huge_counts_are_rejected_before_any_allocation) {
+TEST(TreeFile, forged_huge_counts_are_rejected_before_any_allocation) {
   const std::string bytes = build(crossing_soup(), kernel_id::exact).serialize();
   const exact_layout l = layout_of(bytes);
   ASSERT_EQ(get_u64(bytes, l.nodes), build(crossing_soup(), kernel_id::exact).stats().nodes);
@@ -355,7 +354,7 @@ TEST(tree_file, forged_huge_counts_are_rejected_before_any_allocation) {
   expect_rejected(b, "stats.heuristic", "a huge name");
 }
 
-TEST(tree_file, forged_structure_is_rejected_naming_the_field) {
+TEST(TreeFile, forged_structure_is_rejected_naming_the_field) {
   const bsp tree = build(crossing_soup(), kernel_id::exact, "naive");
   const std::string bytes = tree.serialize();
   const exact_layout l = layout_of(bytes);
@@ -416,7 +415,7 @@ TEST(tree_file, forged_structure_is_rejected_naming_the_field) {
   }
 }
 
-TEST(tree_file, forged_rationals_must_be_canonical) {
+TEST(TreeFile, forged_rationals_must_be_canonical) {
   const std::string bytes = build(crossing_soup(), kernel_id::gmpq).serialize();
   // The first coordinate of fragment 0: after the fragments count and the source.
   const exact_layout l = layout_of(bytes);  // valid up to the points field, which gmpq files lack
@@ -434,9 +433,9 @@ TEST(tree_file, forged_rationals_must_be_canonical) {
 
 // ---- Files -------------------------------------------------------------------------------------
 
-class tree_file_cli : public exbsp_test::cli_fixture {};
+class TreeFileCli : public exbsp_test::cli_fixture {};
 
-TEST_F(tree_file_cli, save_and_load_through_files) {
+TEST_F(TreeFileCli, save_and_load_through_files) {
   const bsp tree = build(crossing_soup(), kernel_id::exact);
   const std::string path = (dir / "t.exbsp").string();
   tree.save(path);
@@ -450,8 +449,8 @@ TEST_F(tree_file_cli, save_and_load_through_files) {
   EXPECT_THROW(tree.save((dir / "no/such/dir/t.exbsp").string()), exbsp::output_error);
 }
 
-TEST_F(tree_file_cli, build_save_then_order_and_build_of_the_tree_match_the_mesh) {
-  write("m.off", exbsp_test::to_off(exbsp_test::case_of("m", exbsp_test::triangles_of(crossing_soup()))));
+TEST_F(TreeFileCli, build_save_then_order_and_build_of_the_tree_match_the_mesh) {
+  write("m.off", exbsp_test::off_text(crossing_soup()));
   auto r = run("build m.off --heuristic min-split --seed 3 --save t.exbsp --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto built = nlohmann::json::parse(r.out);
@@ -481,8 +480,8 @@ TEST_F(tree_file_cli, build_save_then_order_and_build_of_the_tree_match_the_mesh
   EXPECT_EQ(exbsp_test::read_file(dir / "t.exbsp"), exbsp_test::read_file(dir / "u.exbsp"));
 }
 
-TEST_F(tree_file_cli, a_damaged_tree_exits_2_naming_the_file_and_writes_nothing) {
-  write("m.off", exbsp_test::to_off(exbsp_test::case_of("m", exbsp_test::triangles_of(crossing_soup()))));
+TEST_F(TreeFileCli, a_damaged_tree_exits_2_naming_the_file_and_writes_nothing) {
+  write("m.off", exbsp_test::off_text(crossing_soup()));
   ASSERT_EQ(run("build m.off --save t.exbsp").status, 0);
   std::string bytes = exbsp_test::read_file(dir / "t.exbsp");
   write("cut.exbsp", bytes.substr(0, bytes.size() / 2));

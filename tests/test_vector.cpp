@@ -45,8 +45,9 @@
 #include "view/svg_writer.h"
 #include "view/vector_drawing.h"
 #include "view/vector_pdf.h"
+#include "support/test_helpers.h"
 
-#include "osmesa_zbuffer.h"
+#include "support/osmesa_zbuffer.h"
 
 namespace fs = std::filesystem;
 using namespace exbsp;
@@ -54,10 +55,13 @@ using namespace exbsp::view;
 
 namespace {
 
-fs::path temp_path() { return fs::temp_directory_path() / ("exbsp_test_vector_" + std::to_string(::getpid())); }
+/// One fresh directory per run (mkdtemp), made on first use.
+const fs::path& temp_path() {
+  static const fs::path dir = exbsp_test::make_temp_dir("test_vector");
+  return dir;
+}
 
 std::string temp_dir() {
-  fs::create_directories(temp_path());
   return temp_path().string();
 }
 
@@ -107,25 +111,8 @@ void run(frame& f, const std::vector<std::string>& effects, output_kind out) {
   standard_pipeline(effects, out, !f.curves.empty()).run(f, nullptr);
 }
 
-std::uint32_t add_quad(triangle_soup& s, const vec3d& a, const vec3d& b, const vec3d& c, const vec3d& d) {
-  const auto base = static_cast<std::uint32_t>(s.vertices.size());
-  for (const vec3d& p : {a, b, c, d}) s.vertices.push_back(p);
-  const std::uint32_t face = s.face_count++;
-  s.add_polygon({base, base + 1, base + 2, base + 3}, face);
-  return face;
-}
-
-frame perspective_frame(triangle_soup soup, std::vector<rgb8> colors, const camera& cam, int width, int height) {
-  frame f;
-  f.soup = std::move(soup);
-  f.face_colors = std::move(colors);
-  f.view.kind = projection_kind::perspective;
-  f.view.cam = cam;
-  f.view.model_view = look_at(cam);
-  f.view.projection = perspective(45, static_cast<double>(width) / height, 0.5, 100);
-  f.view.vp = {0, 0, width, height, 0, 1};
-  return f;
-}
+using exbsp_test::add_quad;
+using exbsp_test::perspective_frame;
 
 // ---- the region oracle -------------------------------------------------------------------
 

@@ -44,43 +44,25 @@
 #include "view/svg_writer.h"
 #include "view/transforms.h"
 #include "view/viewport.h"
+#include "support/test_helpers.h"
 
 namespace {
 
 using namespace exbsp;
 using namespace exbsp::view;
 
-// Fixed RapidCheck seed (an explicit RC_PARAMS in the environment wins).
-const int rc_seed_set = (::setenv("RC_PARAMS", "seed=20240611", 0), 0);
+[[maybe_unused]] const bool fixed_seed = exbsp_test::fixed_rc_seed();
 
 constexpr double pi = 3.14159265358979323846;
 
 // ---------------------------------------------------------------------------------------
 // Helpers
 
-/// Max over elements of |a - b| / max(1, max |b|): "within 1e-12 relative" for a matrix.
-double relative_difference(const mat4& a, const mat4& b) {
-  double scale = 1;
-  for (double x : b.m) scale = std::max(scale, std::fabs(x));
-  return max_abs_difference(a, b) / scale;
-}
-
-/// Our row-major matrix from GLM's column-major one (glm m[column][row]).
-mat4 from_glm(const glm::dmat4& g) {
-  mat4 r;
-  for (int row = 0; row < 4; ++row)
-    for (int col = 0; col < 4; ++col) r(row, col) = g[col][row];
-  return r;
-}
+using exbsp_test::relative_difference;
+mat4 from_glm(const glm::dmat4& g) { return exbsp_test::from_column_major(g); }
 
 std::string temp_dir() {
-  static const std::string dir = [] {
-    std::string tmpl = (std::filesystem::temp_directory_path() / "exbsp_test_view_XXXXXX").string();
-    std::vector<char> buf(tmpl.begin(), tmpl.end());
-    buf.push_back('\0');
-    if (!::mkdtemp(buf.data())) throw std::runtime_error("mkdtemp failed");
-    return std::string(buf.data());
-  }();
+  static const std::string dir = exbsp_test::make_temp_dir("test_view").string();
   return dir;
 }
 
@@ -675,34 +657,7 @@ frame cyclic_frame(int width, int height) {
   return f;
 }
 
-/// Z-buffer rendering of the unsplit soup with the same coverage rule: the oracle.
-image zbuffer_render(const frame& f) {
-  const int w = f.view.vp.width, h = f.view.vp.height;
-  image img(w, h, f.background);
-  std::vector<double> depth(static_cast<std::size_t>(w) * h, std::numeric_limits<double>::infinity());
-  const mat4 pm = f.view.projection * f.view.model_view;
-  for (const soup_triangle& t : f.soup.triangles) {
-    window_point p[3];
-    for (int k = 0; k < 3; ++k) {
-      const hpoint c = pm * to_point(f.soup.vertices[t.v[k]]);
-      p[k] = to_window(f.view.vp, c.x / c.w, c.y / c.w, c.z / c.w);
-    }
-    // Window depth is affine in window x, y over a planar triangle: interpolate it.
-    const double det = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
-    for_each_covered_pixel({p[0].x, p[0].y}, {p[1].x, p[1].y}, {p[2].x, p[2].y}, w, h, [&](int i, int j) {
-      const double x = i + 0.5, y = j + 0.5;
-      const double l1 = ((x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (y - p[0].y)) / det;
-      const double l2 = ((p[1].x - p[0].x) * (y - p[0].y) - (x - p[0].x) * (p[1].y - p[0].y)) / det;
-      const double z = p[0].z + l1 * (p[1].z - p[0].z) + l2 * (p[2].z - p[0].z);
-      double& d = depth[static_cast<std::size_t>(j) * w + i];
-      if (z < d) {
-        d = z;
-        img.set_pixel(i, j, f.color_of(t.face));
-      }
-    });
-  }
-  return img;
-}
+using exbsp_test::zbuffer_render;
 
 int mismatches(const image& a, const image& b) {
   int n = 0;
@@ -721,13 +676,7 @@ TEST(Painter, CyclicOverlapMatchesAZBufferOracle) {
   const image oracle = zbuffer_render(f);
   // All three colours visible, and at most a handful of pixels differ (T-junctions of split
   // fragments land on rounded points; pixels with centres exactly there may differ).
-  std::set<std::tuple<int, int, int>> colours;
-  for (int r = 0; r < 300; ++r)
-    for (int c = 0; c < 300; ++c) {
-      const rgb8 x = f.picture.at_row(r, c);
-      colours.insert({x.r, x.g, x.b});
-    }
-  EXPECT_EQ(colours.size(), 4u);
+  EXPECT_EQ(exbsp_test::colours_of(f.picture).size(), 4u);
   EXPECT_LE(mismatches(f.picture, oracle), 3);
 
   // A depth sort by centroid (what a BSP replaces) cannot get a cyclic overlap right.

@@ -29,6 +29,7 @@
 #include "view/projection.h"
 #include "view/trackball.h"
 #include "view/transforms.h"
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -38,25 +39,15 @@ using view::mat4;
 namespace fs = std::filesystem;
 constexpr double pi = 3.14159265358979323846;
 
-mat4 from_glm(const glm::dmat4& g) {
-  mat4 r;
-  for (int row = 0; row < 4; ++row)
-    for (int col = 0; col < 4; ++col) r(row, col) = g[col][row];
-  return r;
-}
-double rel_diff(const mat4& a, const mat4& b) {
-  double scale = 1;
-  for (double x : b.m) scale = std::max(scale, std::fabs(x));
-  return view::max_abs_difference(a, b) / scale;
-}
+mat4 from_glm(const glm::dmat4& g) { return exbsp_test::from_column_major(g); }
+using exbsp_test::relative_difference;
 glm::dvec3 g3(double x, double y, double z) { return glm::dvec3(x, y, z); }
 glm::dmat4 grot(double deg, double x, double y, double z) { return glm::rotate(glm::dmat4(1.0), deg * pi / 180, g3(x, y, z)); }
 glm::dmat4 gtr(double x, double y, double z) { return glm::translate(glm::dmat4(1.0), g3(x, y, z)); }
 
 std::string dir() {
   static const std::string d = [] {
-    std::string tmpl = (fs::temp_directory_path() / "exbsp_test_viewing_XXXXXX").string();
-    if (!::mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed");
+    const std::string tmpl = exbsp_test::make_temp_dir("test_viewing").string();
     fs::create_directories(tmpl + "/meshes");
     std::ofstream(tmpl + "/meshes/tri.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
     std::ofstream(tmpl + "/meshes/quad.off") << "OFF\n4 1 0\n-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n4 0 1 2 3\n";
@@ -76,14 +67,7 @@ json base_scene() {
 
 scene::scene parse(const json& doc) { return scene::parse_scene(doc, dir() + "/scene.json"); }
 
-std::string error_key(const json& doc) {
-  try {
-    parse(doc);
-  } catch (const scene_error& e) {
-    return e.key();
-  }
-  return "(no error)";
-}
+std::string error_key(const json& doc) { return exbsp_test::error_key([&] { parse(doc); }); }
 
 // --- transforms and groups ---------------------------------------------------------------------
 
@@ -96,7 +80,7 @@ TEST(Transforms, ListPostMultipliesLikeOpenGL) {
   const scene::scene s = parse(d);
   const glm::dmat4 g = gtr(1, 2, 3) * grot(30, 1, 1, 0) * glm::scale(glm::dmat4(1.0), g3(2, 3, 4)) * gtr(5, 6, 7) *
                        gtr(-1, 0, 0);
-  EXPECT_LT(rel_diff(s.meshes[0].transform, from_glm(g)), 1e-14);
+  EXPECT_LT(relative_difference(s.meshes[0].transform, from_glm(g)), 1e-14);
 }
 
 TEST(Transforms, OldSixteenNumberTransformStaysValid) {
@@ -124,7 +108,7 @@ TEST(Groups, NestLikePushAndPopMatrix) {
   EXPECT_EQ(s.meshes[0].transform.m, mat4::identity().m);
   EXPECT_EQ(s.meshes[1].transform.m, view::translate({10, 0, 0}).m);
   const mat4 nested = view::translate({10, 0, 0}) * view::rotate(90, {0, 0, 1}) * view::scale(2, 2, 2);
-  EXPECT_LT(rel_diff(s.meshes[2].transform, nested), 1e-15);
+  EXPECT_LT(relative_difference(s.meshes[2].transform, nested), 1e-15);
   EXPECT_EQ(s.meshes[3].transform.m, view::translate({10, 0, 0}).m);  // the sibling's rotation was popped
   EXPECT_EQ(s.meshes[4].transform.m, mat4::identity().m);             // and the first group's translation
   const scene::scene_geometry g = scene::load_geometry(s);
@@ -223,7 +207,7 @@ TEST(Cameras, PositionLookUpIsGluLookAtAlongTheLookDirection) {
   const scene::scene s = parse(d);
   EXPECT_EQ(s.form, scene::camera_form::look);
   const glm::dmat4 g = glm::lookAt(g3(1, -4, 3), g3(0.5, -2, 2), g3(0, 0, 1));
-  EXPECT_LT(rel_diff(scene::make_view_setup(s).model_view, from_glm(g)), 1e-14);
+  EXPECT_LT(relative_difference(scene::make_view_setup(s).model_view, from_glm(g)), 1e-14);
   d["camera"]["up"] = {1, -4, 2};  // parallel to look
   EXPECT_EQ(error_key(d), "/camera/up");
   d["camera"]["up"] = {0, 0, 1};
@@ -238,12 +222,12 @@ TEST(Cameras, PolarViewAsDesignWritesIt) {
   const scene::scene s = parse(d);
   const glm::dmat4 g = gtr(0, 0, -7) * grot(-10, 0, 0, 1) * grot(-65, 1, 0, 0) * grot(30, 0, 0, 1) * gtr(-1, -2, -0.5);
   const mat4 mv = scene::make_view_setup(s).model_view;
-  EXPECT_LT(rel_diff(mv, from_glm(g)), 1e-14);
+  EXPECT_LT(relative_difference(mv, from_glm(g)), 1e-14);
   // The equivalent gluLookAt camera (it orders the BSP): at distance 7 from look_at, same matrix.
   EXPECT_NEAR(view::length(s.camera.eye - view::point3{1, 2, 0.5}), 7, 1e-12);
-  EXPECT_LT(rel_diff(view::look_at(s.camera), mv), 1e-12);
+  EXPECT_LT(relative_difference(view::look_at(s.camera), mv), 1e-12);
   d["camera"]["polar"].erase("look_at");  // defaults to the origin
-  EXPECT_LT(rel_diff(scene::make_view_setup(parse(d)).model_view,
+  EXPECT_LT(relative_difference(scene::make_view_setup(parse(d)).model_view,
                      from_glm(gtr(0, 0, -7) * grot(-10, 0, 0, 1) * grot(-65, 1, 0, 0) * grot(30, 0, 0, 1))),
             1e-14);
   d["camera"]["polar"]["distance"] = 0;
@@ -258,7 +242,7 @@ TEST(Cameras, PilotViewAsDesignWritesIt) {
   d["camera"] = json::parse(R"({"pilot": {"position": [-3, -4, 2], "roll_deg": 5, "pitch_deg": -80, "heading_deg": 40}})");
   const scene::scene s = parse(d);
   const glm::dmat4 g = grot(5, 0, 1, 0) * grot(-80, 1, 0, 0) * grot(40, 0, 0, 1) * gtr(3, 4, -2);
-  EXPECT_LT(rel_diff(scene::make_view_setup(s).model_view, from_glm(g)), 1e-14);
+  EXPECT_LT(relative_difference(scene::make_view_setup(s).model_view, from_glm(g)), 1e-14);
   EXPECT_NEAR(view::length(s.camera.eye - view::point3{-3, -4, 2}), 0, 1e-12);
   d["camera"]["pilot"]["position"] = {1, 2};
   EXPECT_EQ(error_key(d), "/camera/pilot/position");
@@ -300,12 +284,12 @@ TEST(Phigs, OrientationIsGluLookAtAndMappingIsAnOffAxisFrustum) {
   const view::phigs_view p = sample_phigs(true);
   const view::phigs_matrices m = view::phigs_view_matrices(p);
   const glm::dmat4 orient = glm::lookAt(g3(1, 2, 0.5), g3(1 - 0.3, 2 + 1, 0.5 - 0.8), g3(0, 0, 1));
-  EXPECT_LT(rel_diff(m.orientation, from_glm(orient)), 1e-14);
+  EXPECT_LT(relative_difference(m.orientation, from_glm(orient)), 1e-14);
   const double near_d = 9 - 2, far_d = 9 + 6, k = near_d / 9;
   const glm::dmat4 map = glm::frustum((-3 - 1.5) * k, (4 - 1.5) * k, (-2 + 0.5) * k, (2.5 + 0.5) * k, near_d, far_d) *
                          gtr(-1.5, 0.5, -9);
-  EXPECT_LT(rel_diff(m.mapping, from_glm(map)), 1e-14);
-  EXPECT_LT(rel_diff(m.projection * m.model_view, m.mapping * m.orientation), 1e-14);
+  EXPECT_LT(relative_difference(m.mapping, from_glm(map)), 1e-14);
+  EXPECT_LT(relative_difference(m.projection * m.model_view, m.mapping * m.orientation), 1e-14);
   // Defining properties: the window's corners on the view plane go to the NDC square's
   // corners; the front plane to z = -1, the back plane to z = +1; PRP is the eye.
   const double corners[4][2] = {{-3, -2}, {4, -2}, {4, 2.5}, {-3, 2.5}};
@@ -338,7 +322,7 @@ TEST(Phigs, ParallelWithOffCentrePrpIsOblique) {
   p.prp = {0.5, 0.25, 3};
   const view::phigs_matrices o = view::phigs_view_matrices(p);
   EXPECT_FALSE(o.oblique);
-  EXPECT_LT(rel_diff(o.mapping, from_glm(glm::ortho(-3.0, 4.0, -2.0, 2.5, -2.0, 6.0))), 1e-14);
+  EXPECT_LT(relative_difference(o.mapping, from_glm(glm::ortho(-3.0, 4.0, -2.0, 2.5, -2.0, 6.0))), 1e-14);
 }
 
 TEST(Phigs, SceneFormAndBadInput) {
@@ -387,7 +371,7 @@ TEST(Viewport, OrthoAcceptsAnyDistinctNearAndFar) {
   d["projection"] = json::parse(R"({"type": "orthographic", "left": -2, "right": 2, "bottom": -1, "top": 1.5,
                                     "near": -3, "far": 4})");
   const view::view_setup v = scene::make_view_setup(parse(d));
-  EXPECT_LT(rel_diff(v.projection, from_glm(glm::ortho(-2.0, 2.0, -1.0, 1.5, -3.0, 4.0))), 1e-15);
+  EXPECT_LT(relative_difference(v.projection, from_glm(glm::ortho(-2.0, 2.0, -1.0, 1.5, -3.0, 4.0))), 1e-15);
   d["projection"]["far"] = -3;
   EXPECT_EQ(error_key(d), "/projection/far");
   d["projection"]["far"] = -5;  // far < near: glOrtho mirrors depth, still a view volume
@@ -400,7 +384,7 @@ TEST(Viewport, Ortho2dIsGluOrtho2DAndNeedsNoCamera) {
   d["projection"] = json::parse(R"({"type": "ortho2d", "left": -4, "right": 4, "bottom": -3, "top": 3})");
   const scene::scene s = parse(d);
   const view::view_setup v = scene::make_view_setup(s);
-  EXPECT_LT(rel_diff(v.projection, from_glm(glm::ortho(-4.0, 4.0, -3.0, 3.0))), 1e-15);  // 4 arguments: gluOrtho2D
+  EXPECT_LT(relative_difference(v.projection, from_glm(glm::ortho(-4.0, 4.0, -3.0, 3.0))), 1e-15);  // 4 arguments: gluOrtho2D
   EXPECT_EQ(v.model_view.m, mat4::identity().m);
   d["projection"].erase("top");
   EXPECT_EQ(error_key(d), "/projection/top");

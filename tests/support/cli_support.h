@@ -1,35 +1,19 @@
 // Helpers of the tests that run the exbsp command line (EXBSP_CLI) as a separate process:
-// whole-file reads and writes, shell quoting, one run with stdout and stderr captured, and a
-// GoogleTest fixture with a fresh temporary directory per test, the CLI run inside it.
+// shell quoting, one run with stdout and stderr captured, and a GoogleTest fixture with a
+// fresh temporary directory per test, the CLI run inside it.
 #pragma once
 #include <gtest/gtest.h>
-#include <stdlib.h>
 #include <sys/wait.h>
 
 #include <algorithm>
-#include <vector>
-
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
+#include <vector>
+
+#include "support/test_helpers.h"
 
 namespace exbsp_test {
-
-/// The bytes of file `p` (empty when it cannot be read).
-inline std::string read_file(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// Writes `text` to file `p` (created or truncated).
-inline void write_file(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-}
 
 /// `s` quoted for /bin/sh.
 inline std::string quoted(const std::string& s) {
@@ -64,11 +48,7 @@ inline cli_result run_cli(const std::filesystem::path& dir, const std::string& a
 /// Fixture: `dir` is a fresh temporary directory, removed after the test.
 class cli_fixture : public ::testing::Test {
 protected:
-  void SetUp() override {
-    std::string tmpl = (std::filesystem::temp_directory_path() / "exbsp_cli_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    dir = tmpl;
-  }
+  void SetUp() override { dir = make_temp_dir("cli"); }
   void TearDown() override {
     std::error_code ec;
     std::filesystem::remove_all(dir, ec);
