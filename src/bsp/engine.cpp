@@ -5,6 +5,7 @@
 
 #include "bsp/bsp_impl.h"
 #include "bsp/bsp_tree.h"
+#include "bsp/exact_output.h"
 #include "core/errors.h"
 
 namespace exbsp {
@@ -75,7 +76,9 @@ std::vector<fragment_d> bsp::fragments_double() const {
   return out;
 }
 
-exact_triangle bsp::fragment_exact(std::size_t i) const { return impl_->fragment_exact(i); }
+exact_triangle bsp::fragment_exact(std::size_t i) const {
+  return exact_text([&](const exact_visitor& visit) { impl_->visit_exact(i, visit); });
+}
 
 std::vector<std::uint32_t> bsp::order_from_eye(const vec3d& eye, bool back_to_front) const {
   for (double x : eye)

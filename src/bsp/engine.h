@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/soup.h"
+#include "../mesh/soup.h"
 
 namespace exbsp {
 
@@ -62,7 +62,12 @@ struct build_options {
   unsigned sampled_candidates = 16;
   unsigned sampled_samples = 512;
   unsigned sampled_split_weight = 8;
-  /// Called every few thousand fragments; may be empty.
+  /// Called about every 256 nodes and once when the tree is complete; may be empty. Calls
+  /// never overlap (one at a time) but may come from the build's worker threads.
+  /// Cancellation: to cancel a build, throw from `progress` (exbsp::build_cancelled is meant
+  /// for it; any exception works). It is not called again; the exception propagates out of
+  /// bsp::build unchanged once every worker thread has stopped (each finishes at most the
+  /// node it is splitting); no tree is returned and everything the build allocated is freed.
   std::function<void(const build_progress&)> progress;
 };
 
@@ -89,12 +94,14 @@ struct fragment_d {
 using exact_triangle = std::array<std::array<std::string, 3>, 3>;
 
 class bsp_impl;
+class bsp_access;  // private: the library's own access to the implementation (bsp_impl.h)
 
 /// A built BSP tree. Movable, not copyable. Thread-safe for concurrent const use.
 class bsp {
 public:
   /// Builds the tree of `soup`. Throws usage_error for an unknown heuristic,
-  /// limit_error when options.max_fragments is exceeded. Degenerate triangles are skipped
+  /// limit_error when options.max_fragments is exceeded, and whatever options.progress throws
+  /// (cancellation, see build_options::progress). Degenerate triangles are skipped
   /// and counted in stats().degenerate_input.
   static bsp build(const triangle_soup& soup, const build_options& options = {});
 
@@ -126,6 +133,7 @@ public:
   std::vector<ancestor> ancestors(std::size_t i) const;
 
 private:
+  friend class bsp_access;
   explicit bsp(std::unique_ptr<bsp_impl> impl);
   std::unique_ptr<bsp_impl> impl_;
 };

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "bsp/engine.h"
+#include "bsp/exact_output.h"
 #include "bsp/fast_orientation.h"
 #include "bsp/split_pattern.h"
 
@@ -72,7 +73,11 @@ public:
   /// Precondition of to_double.
   void prepare_output(const std::vector<fragment>& fragments) const;
   fragment_d to_double(const fragment& f) const;
-  exact_triangle to_exact(const fragment& f) const;
+  void visit_exact(const fragment& f, const exact_visitor& visit) const;
+  /// The same as text (bsp::fragment_exact's form).
+  exact_triangle to_exact(const fragment& f) const {
+    return exact_text([&](const exact_visitor& visit) { visit_exact(f, visit); });
+  }
   /// Bytes held by the point table (for the memory benchmark).
   std::size_t points_memory() const;
 
