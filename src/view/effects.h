@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "view/pipeline.h"
+#include "pipeline.h"
 
 namespace exbsp::view {
 

@@ -42,7 +42,7 @@
 #include <string>
 #include <vector>
 
-#include "view/image.h"
+#include "image.h"
 
 namespace exbsp::view {
 
