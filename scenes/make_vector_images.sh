@@ -3,7 +3,10 @@
 # as exbsp's PNG (vector_png.png) and as a visible-region SVG with visible and hidden edges
 # ("svg": {"edges": "visible+hidden"}), rasterized by headless Chromium at 1:1
 # (vector_svg_chromium.png), and the same drawing of data/meshes/fandisk.off, lit, when the
-# corpus is there (vector_fandisk_chromium.png). Anyone can rerun it (needs chromium):
+# corpus is there (vector_fandisk_chromium.png); and the README's pair of one CAD part,
+# data/meshes/joint.off, lit, in a view fitted to it, as exbsp's PNG and as the visible-region SVG
+# with visible and hidden edges (docs/images/joint.png, docs/images/joint.svg), when the corpus
+# is there. Anyone can rerun it (needs chromium):
 #   scenes/make_vector_images.sh [path/to/exbsp]     (default: $EXBSP, then build/src/app/exbsp)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -66,5 +69,44 @@ if [ -f "$fandisk" ]; then
   with_edges "$here/perspective.json" "$tmp/fandisk.json" "$fandisk"
   "$exbsp" render "$tmp/fandisk.json" -o "$tmp/fandisk.svg"
   shoot "$tmp/fandisk.svg" 800 600 "$out/vector_fandisk_chromium.png"
+fi
+# fitted_part MESH OUT: a scene of MESH alone, lit, 640 x 480, visible and hidden edges, the
+# camera looking at its bounding box's centre along (1, 0.6, 0.45), z up, fovy 30, at the
+# distance where its bounding sphere fills the view's height.
+fitted_part() {
+  python3 - "$@" <<'PY'
+import json, math, sys
+mesh, out = sys.argv[1:3]
+with open(mesh) as f:
+    lines = [l for l in f.read().split("\n") if l.strip() and not l.lstrip().startswith("#")]
+count = int(lines[1].split()[0])
+points = [[float(x) for x in l.split()[:3]] for l in lines[2:2 + count]]
+lo = [min(p[i] for p in points) for i in range(3)]
+hi = [max(p[i] for p in points) for i in range(3)]
+centre = [(a + b) / 2 for a, b in zip(lo, hi)]
+radius = max(math.dist(p, centre) for p in points)
+direction = [1, 0.6, 0.45]
+norm = math.sqrt(sum(x * x for x in direction))
+distance = 1.02 * radius / math.sin(math.radians(15))
+scene = {"meshes": [{"file": mesh, "color": [205, 210, 220]}],
+         "camera": {"eye": [c + distance * x / norm for c, x in zip(centre, direction)], "look_at": centre, "up": [0, 0, 1]},
+         "projection": {"type": "perspective", "fovy_deg": 30, "near": distance - 1.5 * radius,
+                        "far": distance + 1.5 * radius},
+         "viewport": {"width": 640, "height": 480}, "background": [255, 255, 255],
+         "effects": {"lighting": {"direction": [1, 0.4, 0.9], "ambient": 0.35, "intensity": 0.65}},
+         "svg": {"edges": "visible+hidden"}}
+with open(out, "w") as f:
+    json.dump(scene, f, indent=1)
+PY
+}
+
+joint="$here/../data/meshes/joint.off"
+if [ -f "$joint" ]; then
+  docs="$here/../docs/images"
+  mkdir -p "$docs"
+  fitted_part "$(cd "$(dirname "$joint")" && pwd)/joint.off" "$tmp/joint.json"
+  "$exbsp" render "$tmp/joint.json" -o "$docs/joint.png"
+  "$exbsp" render "$tmp/joint.json" -o "$docs/joint.svg"
+  echo "make_vector_images: wrote docs/images/joint.png ($(stat -c %s "$docs/joint.png") bytes) and joint.svg ($(stat -c %s "$docs/joint.svg") bytes)"
 fi
 echo "make_vector_images: wrote $(ls "$out"/vector_*.png | wc -l) images into $out"

@@ -11,6 +11,8 @@
 #   4. find_package(exbsp) works on a machine without OpenMesh unless the component is asked.
 # Arguments: BUILD_DIR SOURCE_DIR.
 set -euo pipefail
+# (grep -q reads from here-strings, never from a pipe: with pipefail, grep -q quitting at the
+# first match makes the writer's SIGPIPE fail the pipeline, which inverts `if` tests.)
 build_dir="$1"
 source_dir="$2"
 work="$(mktemp -d)"
@@ -32,11 +34,11 @@ cxx="${cxx:-c++}"
 
 # 1. Headers.
 headers="$(cd "$prefix/include" && find exbsp -name '*.h' | sort)"
-echo "$headers" | grep -q '^exbsp/exbsp.h$' || fail "no umbrella header exbsp/exbsp.h"
-echo "$headers" | grep -q '^exbsp/core/version.h$' || fail "no exbsp/core/version.h"
+grep -q '^exbsp/exbsp.h$' <<<"$headers" || fail "no umbrella header exbsp/exbsp.h"
+grep -q '^exbsp/core/version.h$' <<<"$headers" || fail "no exbsp/core/version.h"
 for private in bsp_tree_impl.h bsp_impl.h bsp_tree.h kernel_ geometry_ reader_util.h fast_orientation.h \
                exact_output.h split_pattern.h json_reader.h clip_checks.h rasterizer.h; do
-  if echo "$headers" | grep -q "/$private"; then fail "private header installed: $private"; fi
+  if grep -q "/$private" <<<"$headers"; then fail "private header installed: $private"; fi
 done
 cgal_users="$(cd "$prefix/include" && grep -l '#include <CGAL/' $headers || true)"
 [ "$cgal_users" = "exbsp/adapters/cgal_face_graph.h" ] || fail "headers including CGAL: $cgal_users"
@@ -51,11 +53,12 @@ echo "install_consumer: $(echo "$headers" | wc -l) public headers, each self-con
 
 # 2. Exported interface.
 targets="$(cat "$cmake_dir"/exbspTargets*.cmake)"
-if echo "$targets" | grep -q 'INTERFACE_COMPILE_OPTIONS'; then fail "exported INTERFACE_COMPILE_OPTIONS"; fi
-if echo "$targets" | grep -Eq -- '-W(all|extra|error)|-ffp-contract|-frounding-math|-fsanitize'; then
+if grep -q 'INTERFACE_COMPILE_OPTIONS' <<<"$targets"; then fail "exported INTERFACE_COMPILE_OPTIONS"; fi
+if grep -Eq -- '-W(all|extra|error)|-ffp-contract|-frounding-math|-fsanitize' <<<"$targets"; then
   fail "exported compile or sanitizer flags"
 fi
-if echo "$targets" | grep 'INTERFACE_LINK_LIBRARIES' | grep -q '"/'; then fail "absolute path in the link interface"; fi
+links="$(grep 'INTERFACE_LINK_LIBRARIES' <<<"$targets" || true)"
+if grep -q '"/' <<<"$links"; then fail "absolute path in the link interface"; fi
 echo "install_consumer: exported targets carry no compile options and no absolute library paths"
 
 # 3. The examples, static and shared.
@@ -83,10 +86,11 @@ for variant in "${variants[@]}"; do
       fail "$example ($variant) is compiled with exbsp's private flags"
     fi
   done
+  loads="$(ldd "$work/build-viewer-$variant/exbsp_viewer")"
   if [ "$variant" = shared ]; then
-    ldd "$work/build-viewer-shared/exbsp_viewer" | grep -q "libexbsp.so" || fail "the shared viewer does not load libexbsp.so"
+    [[ "$loads" == *libexbsp.so* ]] || fail "the shared viewer does not load libexbsp.so"
   else
-    if ldd "$work/build-viewer-static/exbsp_viewer" | grep -q "libexbsp.so"; then fail "the static viewer loads libexbsp.so"; fi
+    [[ "$loads" != *libexbsp.so* ]] || fail "the static viewer loads libexbsp.so"
   fi
   "$work/build-consumer-$variant/exbsp_consumer" >/dev/null || fail "exbsp_consumer ($variant)"
   "$work/build-viewer-$variant/exbsp_viewer" "$source_dir/tests/data/cube.off" "$work/cube.png" "$work/cube_fragments.off" \
@@ -94,7 +98,7 @@ for variant in "${variants[@]}"; do
   "$work/build-viewer-$variant/exbsp_viewer" "$work/two_cubes.off" "$work/two_cubes.png" "$work/two_cubes_fragments.off" \
     | tee "$work/viewer.log"
   grep -q ' 0 splits' "$work/viewer.log" && fail "the intersecting cubes were not split"
-  head -c 8 "$work/two_cubes.png" | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a' || fail "viewer output is not a PNG"
+  grep -q '89 50 4e 47 0d 0a 1a 0a' <<<"$(od -An -tx1 -N8 "$work/two_cubes.png")" || fail "viewer output is not a PNG"
   echo "install_consumer: examples built and ran against the $variant library"
 done
 

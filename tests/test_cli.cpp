@@ -16,12 +16,18 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "bsp/engine.h"
 #include "cli_support.h"
+#include "app/cli_parse.h"
+#include "core/errors.h"
+#include "core/version.h"
 #include "mesh/mesh_io.h"
+#include "view/png_io.h"
 
 namespace {
 
@@ -361,6 +367,167 @@ TEST_F(cli, bad_option_values_exit_2_with_a_message_and_write_nothing) {
     EXPECT_EQ(r.err.rfind("exbsp: error: ", 0), 0u) << r.err;
     EXPECT_FALSE(fs::exists(dir / "OUT.json"));
   }
+}
+
+// --- (6) a friendlier command line: version, suggestions, standard input, render MESH ---------
+
+TEST_F(cli, version_prints_the_library_version_and_no_command_is_a_clear_error) {
+  const result v = run("--version");
+  EXPECT_EQ(v.status, 0) << v.err;
+  EXPECT_EQ(v.out, std::string("exbsp ") + exbsp::version_string + "\n");
+  const result none = run("");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("a command is required: build, order, render, section or clip"), std::string::npos)
+      << none.err;
+}
+
+TEST_F(cli, misspelled_commands_and_options_get_the_closest_valid_name) {
+  const std::string mesh = quoted(data_dir + "/cube.off");
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"bild " + mesh, "unknown command 'bild'; did you mean 'build'?"},
+      {"rendr", "unknown command 'rendr'; did you mean 'render'?"},
+      {"build " + mesh + " --kernal epeck", "unknown option '--kernal' for 'build'; did you mean '--kernel'?"},
+      {"order " + mesh + " --ey 1,2,3", "unknown option '--ey' for 'order'; did you mean '--eye'?"},
+      {"render --veiw top", "unknown option '--veiw' for 'render'; did you mean '--view'?"},
+      {"build " + mesh + " --heuristic=naive --jsno", "unknown option '--jsno' for 'build'; did you mean '--json'?"},
+      {"--verison", "unknown option '--verison'; did you mean '--version'?"},
+      {"xyzzy", "unknown command 'xyzzy'"}};
+  for (const auto& [args, message] : cases) {
+    SCOPED_TRACE(args);
+    const result r = run(args);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err.rfind("exbsp: error: " + message, 0), 0u) << r.err;
+  }
+  // Far from every name: no suggestion.
+  EXPECT_EQ(run("xyzzy").err.find("did you mean"), std::string::npos);
+}
+
+TEST_F(cli, negative_numbers_for_unsigned_options_are_refused) {
+  const std::string mesh = quoted(data_dir + "/cube.off");
+  for (const std::string& args : {"build " + mesh + " --seed -1", "build " + mesh + " --max-fragments -5",
+                                  "build " + mesh + " --threads -2", std::string("render -o OUT.png --orbit-drag 1,2:3,4 --frames -3")}) {
+    SCOPED_TRACE(args);
+    const result r = run(args);
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_EQ(r.err.rfind("exbsp: error: ", 0), 0u) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "OUT.png"));
+    EXPECT_FALSE(fs::exists(dir / "OUT_0000.png"));
+  }
+}
+
+TEST_F(cli, a_mesh_on_standard_input_needs_format_and_builds_the_same_tree_as_the_file) {
+  const std::string mesh = data_dir + "/cube.off";
+  const result no_format = run_with_input("build - --json", mesh);
+  EXPECT_EQ(no_format.status, 2);
+  EXPECT_NE(no_format.err.find("needs --format"), std::string::npos) << no_format.err;
+  const result piped = run_with_input("order - --format off --eye 3,4,5", mesh);
+  const result file = run("order " + quoted(mesh) + " --eye 3,4,5");
+  ASSERT_EQ(piped.status, 0) << piped.err;
+  EXPECT_EQ(piped.out, file.out);
+  const result stats = run_with_input("build - --format off --json", mesh);
+  ASSERT_EQ(stats.status, 0) << stats.err;
+  EXPECT_EQ(json::parse(stats.out)["mesh"], "<stdin>");
+  // --format also overrides a file's extension; a wrong format is an error naming the input.
+  write("cube.txt", read_file(mesh));
+  EXPECT_EQ(run("build cube.txt --format off").status, 0);
+  EXPECT_EQ(run("build cube.txt").status, 2);
+  const result wrong = run_with_input("build - --format stl", mesh);
+  EXPECT_EQ(wrong.status, 2);
+  EXPECT_NE(wrong.err.find("<stdin>"), std::string::npos) << wrong.err;
+  const result bad_format = run_with_input("build - --format dxf", mesh);
+  EXPECT_EQ(bad_format.status, 2);
+  const result section = run_with_input("section - --format off --plane 0,0,1,0", mesh);
+  EXPECT_EQ(section.status, 0) << section.err;
+}
+
+/// Bounding box of the pixels that differ from the corner pixel (the background).
+std::array<int, 4> drawn_box(const exbsp::view::image& img) {
+  const auto bg = img.at_row(0, 0);
+  std::array<int, 4> box{img.width(), img.height(), -1, -1};
+  for (int row = 0; row < img.height(); ++row)
+    for (int col = 0; col < img.width(); ++col) {
+      const auto c = img.at_row(row, col);
+      if (c.r == bg.r && c.g == bg.g && c.b == bg.b) continue;
+      box = {std::min(box[0], col), std::min(box[1], row), std::max(box[2], col), std::max(box[3], row)};
+    }
+  return box;
+}
+
+TEST_F(cli, render_of_a_mesh_fits_every_named_view_and_prints_a_summary) {
+  const std::string mesh = quoted(data_dir + "/cube.off");
+  for (const std::string view : {"iso", "front", "back", "left", "right", "top", "bottom"}) {
+    SCOPED_TRACE(view);
+    const result r = run("render " + mesh + " --view " + view + " --size 320x200 -o " + view + ".png");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("exbsp: wrote " + view + ".png: 12 triangles -> "), std::string::npos) << r.err;
+    const exbsp::view::image img = exbsp::view::read_png((dir / (view + ".png")).string());
+    ASSERT_EQ(img.width(), 320);
+    ASSERT_EQ(img.height(), 200);
+    // The whole cube is inside the picture, away from its borders, and fills a fair part of it.
+    const auto box = drawn_box(img);
+    EXPECT_GT(box[0], 0);
+    EXPECT_GT(box[1], 0);
+    EXPECT_LT(box[2], 319);
+    EXPECT_LT(box[3], 199);
+    EXPECT_GT(box[3] - box[1], 200 / 4);
+  }
+  // Lighting makes the faces of the iso view distinguishable: at least three shades.
+  const exbsp::view::image iso = exbsp::view::read_png((dir / "iso.png").string());
+  std::set<std::tuple<int, int, int>> shades;
+  for (int row = 0; row < iso.height(); ++row)
+    for (int col = 0; col < iso.width(); ++col) {
+      const auto c = iso.at_row(row, col);
+      shades.insert({c.r, c.g, c.b});
+    }
+  EXPECT_GE(shades.size(), 4u);  // background + three faces
+  const result quiet = run("render " + mesh + " -q -o quiet.svg");
+  ASSERT_EQ(quiet.status, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+  const std::string svg = read_file(dir / "quiet.svg");
+  EXPECT_NE(svg.find("<g id=\"mesh-0\""), std::string::npos);
+  EXPECT_NE(svg.find("<g id=\"visible-edges\""), std::string::npos) << "visible edges by default";
+}
+
+TEST_F(cli, render_of_a_bad_mesh_or_bad_mesh_options_exits_2_and_writes_nothing) {
+  write("empty.off", "OFF\n0 0 0\n");
+  write("point.off", "OFF\n3 1 0\n1 1 1\n1 1 1\n1 1 1\n3 0 1 2\n");
+  write("huge.off", "OFF\n3 1 0\n-1.7e308 0 0\n1.7e308 0 0\n0 1.7e308 0\n3 0 1 2\n");
+  const std::string cube = quoted(data_dir + "/cube.off");
+  for (const std::string& args :
+       {std::string("render empty.off -o OUT.png"), std::string("render huge.off -o OUT.png"),
+        "render " + cube + " --view diagonal -o OUT.png", "render " + cube + " --size 0x10 -o OUT.png",
+        "render " + cube + " --size 800 -o OUT.png", "render " + cube + " --edges some -o OUT.svg",
+        std::string("render - -o OUT.png"), std::string("render --format off -o OUT.png"),
+        std::string("render missing.off -o OUT.png"), "render " + cube + " -o OUT.tiff"}) {
+    SCOPED_TRACE(args);
+    const result r = run(args);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("exbsp: error: ", 0), 0u) << r.err;
+    EXPECT_EQ(file_names(), (std::vector<std::string>{"empty.off", "huge.off", "point.off"}));
+  }
+  // All triangles degenerate at one point: nothing to draw, but a picture of the empty view.
+  const result point = run("render point.off -o point.png");
+  EXPECT_EQ(point.status, 0) << point.err;
+  EXPECT_NE(point.err.find("1 triangles -> 0 fragments"), std::string::npos) << point.err;
+}
+
+TEST(cli_parse, values_sizes_drag_paths_and_suggestions) {
+  using namespace exbsp::cli;
+  EXPECT_EQ(parse_triple("1,2.5,-3", "--eye"), (exbsp::vec3d{1, 2.5, -3}));
+  EXPECT_EQ(parse_size("800x600"), (std::array<int, 2>{800, 600}));
+  for (const char* bad : {"", "800", "x600", "800x", "0x5", "5x0", "-5x5", "16385x1", "8a0x600", "800x600x2"})
+    EXPECT_THROW(parse_size(bad), exbsp::usage_error) << bad;
+  EXPECT_EQ(parse_drag_path("10,20:30.5,-4"), (std::vector<std::array<double, 2>>{{10, 20}, {30.5, -4}}));
+  EXPECT_EQ(parse_drag_path("7,8").size(), 1u);
+  for (const char* bad : {"", "1", "1,2:", "1,2;3,4", "a,b", "1,2,3", "1,nan", "1,2:3", ":1,2"})
+    EXPECT_THROW(parse_drag_path(bad), exbsp::usage_error) << bad;
+  EXPECT_THROW(parse_plane("0,0,0,1"), exbsp::usage_error);
+  EXPECT_EQ(edit_distance("kitten", "sitting"), 3u);
+  EXPECT_EQ(edit_distance("", "abc"), 3u);
+  EXPECT_EQ(edit_distance("same", "same"), 0u);
+  EXPECT_EQ(closest("--kernal", {"--kernel", "--heuristic", "--seed"}), "--kernel");
+  EXPECT_EQ(closest("--zzzzzz", {"--kernel", "--heuristic", "--seed"}), "");
+  EXPECT_EQ(closest("bild", {"build", "order", "render"}), "build");
 }
 
 }  // namespace

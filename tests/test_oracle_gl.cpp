@@ -33,13 +33,7 @@
 // passed and output is not kept. Without OSMesa, or when it cannot create a context, the tests
 // FAIL with a message naming the package.
 #include <gtest/gtest.h>
-#include <signal.h>
 #include <unistd.h>
-
-#if EXBSP_HAVE_OSMESA
-#include <GL/gl.h>
-#include <GL/osmesa.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -65,6 +59,8 @@
 #include "view/matrix.h"
 #include "view/png_io.h"
 
+#include "osmesa_zbuffer.h"
+
 #if !EXBSP_HAVE_OSMESA
 
 TEST(OracleGL, OSMesaIsAvailable) {
@@ -73,20 +69,6 @@ TEST(OracleGL, OSMesaIsAvailable) {
 }
 
 #else
-
-// LeakSanitizer: OSMesaMakeCurrent allocates per-context buffers that libOSMesa keeps in a
-// global list and never frees, even after OSMesaDestroyContext (Mesa 22.3); those are Mesa's
-// own leaks, suppressed here so that no LSAN_OPTIONS are needed.
-#if defined(__SANITIZE_ADDRESS__)
-#define EXBSP_ORACLE_GL_LSAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define EXBSP_ORACLE_GL_LSAN 1
-#endif
-#endif
-#ifdef EXBSP_ORACLE_GL_LSAN
-extern "C" const char* __lsan_default_suppressions() { return "leak:libOSMesa.so\n"; }
-#endif
 
 namespace {
 
@@ -152,13 +134,7 @@ v3 unit(const v3& a) { return scale(1 / std::sqrt(dot3(a, a)), a); }
 v3 from(const view::point3& p) { return {p.x, p.y, p.z}; }
 v3 from(const view::vector3& p) { return {p.x, p.y, p.z}; }
 
-/// A 4x4 matrix given row by row, as OpenGL wants it: column-major.
-std::array<double, 16> column_major(const std::array<double, 16>& rows) {
-  std::array<double, 16> c{};
-  for (int r = 0; r < 4; ++r)
-    for (int k = 0; k < 4; ++k) c[4 * k + r] = rows[4 * r + k];
-  return c;
-}
+using osmesa::column_major;
 
 /// gluLookAt's matrix, row-major: rows s, u, -f (f = unit gaze, s = unit f x up, u = s x f),
 /// then the translation by -eye.
@@ -190,75 +166,7 @@ view::image render_exbsp(const scene::scene& s, const scene::scene_geometry& g) 
   return f.picture;
 }
 
-/// Mesa 22.3 dereferences a null screen inside OSMesaCreateContextExt when it has no usable
-/// gallium driver (e.g. GALLIUM_DRIVER names a missing one): while a context is being
-/// created, a SIGSEGV prints what happened and ends the test binary with a failure.
-void osmesa_crashed(int) {
-  static const char msg[] =
-      "\ntest_oracle_gl: FAILED: Mesa crashed (SIGSEGV) creating an OSMesa context: its off-screen OpenGL is "
-      "not usable on this machine (Debian: libosmesa6, libosmesa6-dev; check GALLIUM_DRIVER)\n";
-  if (::write(2, msg, sizeof msg - 1) < 0) {
-  }
-  std::_Exit(1);
-}
-
-class crash_guard {
-public:
-  crash_guard() {
-    struct sigaction sa {};
-    sa.sa_handler = osmesa_crashed;
-    sigemptyset(&sa.sa_mask);
-    ::sigaction(SIGSEGV, &sa, &old_);
-  }
-  ~crash_guard() { ::sigaction(SIGSEGV, &old_, nullptr); }
-  crash_guard(const crash_guard&) = delete;
-  crash_guard& operator=(const crash_guard&) = delete;
-
-private:
-  struct sigaction old_ {};
-};
-
-/// An OSMesa RGBA context with a 24-bit depth buffer, current on this thread while it lives.
-class osmesa_context {
-public:
-  osmesa_context(int width, int height) : width_(width), height_(height) {
-    const crash_guard guard;
-    ctx_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
-    if (!ctx_)
-      throw std::runtime_error("OSMesaCreateContextExt(OSMESA_RGBA, 24 depth bits) failed: Mesa's off-screen "
-                               "OpenGL is not usable on this machine (Debian: libosmesa6, libosmesa6-dev)");
-    buffer_.assign(static_cast<std::size_t>(width) * height * 4, 0);
-    if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, width, height)) {
-      OSMesaDestroyContext(ctx_);
-      throw std::runtime_error("OSMesaMakeCurrent failed for a " + std::to_string(width) + "x" +
-                               std::to_string(height) + " RGBA buffer");
-    }
-    OSMesaPixelStore(OSMESA_Y_UP, 1);  // buffer row 0 = window row 0 = BOTTOM of the image
-  }
-  ~osmesa_context() { OSMesaDestroyContext(ctx_); }
-  osmesa_context(const osmesa_context&) = delete;
-  osmesa_context& operator=(const osmesa_context&) = delete;
-
-  /// The finished buffer as an image (row 0 = top, as PNG). `mirrored_y`: the scene was drawn
-  /// upside down (mirror_y below), so buffer row 0 holds the image's top row.
-  view::image picture(bool mirrored_y = false) const {
-    view::image img(width_, height_, {0, 0, 0});
-    for (int j = 0; j < height_; ++j)
-      for (int i = 0; i < width_; ++i) {
-        const std::uint8_t* p = &buffer_[4 * (static_cast<std::size_t>(j) * width_ + i)];
-        if (mirrored_y)
-          img.set_at_row(j, i, {p[0], p[1], p[2]});
-        else
-          img.set_pixel(i, j, {p[0], p[1], p[2]});  // window row j from the bottom
-      }
-    return img;
-  }
-
-private:
-  OSMesaContext ctx_ = nullptr;
-  int width_, height_;
-  std::vector<GLubyte> buffer_;
-};
+using osmesa_context = osmesa::context;
 
 /// GL_RENDERER of an OSMesa context ("llvmpipe (LLVM ...)", "softpipe"). Throws like
 /// osmesa_context.
@@ -348,26 +256,8 @@ view::image render_mesa(const scene::scene& s, const scene::scene_geometry& g, b
 
   glViewport(0, 0, s.width, s.height);
   glDepthRange(0, 1);
-  glDisable(GL_LIGHTING);
-  glDisable(GL_BLEND);
-  glDisable(GL_DITHER);
-  glDisable(GL_MULTISAMPLE);
-  glDisable(GL_POLYGON_SMOOTH);
-  glShadeModel(GL_FLAT);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  if (cull) {  // backface_culling: N = (b - a) x (c - a) facing away from the viewer is culled
-    glEnable(GL_CULL_FACE);
-    glFrontFace(opt.mirror_y ? GL_CW : GL_CCW);  // a mirror reverses the window-space winding
-    glCullFace(GL_BACK);
-  } else {
-    glDisable(GL_CULL_FACE);
-  }
-  glClearColor(s.background.r / 255.0f, s.background.g / 255.0f, s.background.b / 255.0f, 1.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  // backface_culling: N = (b - a) x (c - a) facing away from the viewer is culled
+  osmesa::begin_zbuffer_frame(s.background, cull, opt.mirror_y);
   load_gl_view(s, opt.mirror_y);
 
   // Draws the triangles of the untied meshes (mesh = npos) or of one tied mesh.

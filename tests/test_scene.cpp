@@ -626,11 +626,7 @@ TEST(Render, EffectScenesRunTheirEffectStages) {
   }
 }
 
-TEST(Orbit, DragPathsFramePathsAndResampling) {
-  EXPECT_EQ(parse_drag_path("10,20:30.5,-4"), (std::vector<std::array<double, 2>>{{10, 20}, {30.5, -4}}));
-  EXPECT_EQ(parse_drag_path("7,8").size(), 1u);
-  for (const char* bad : {"", "1", "1,2:", "1,2;3,4", "a,b", "1,2,3", "1,nan", "1,2:3"})
-    EXPECT_THROW(parse_drag_path(bad), usage_error) << bad;
+TEST(Orbit, FramePathsAndResampling) {
   EXPECT_EQ(frame_path("out/anim.png", 7), "out/anim_0007.png");
   EXPECT_EQ(frame_path("a.b/anim.svg", 12345), "a.b/anim_12345.svg");
   EXPECT_EQ(frame_path("noext", 1), "noext_0001");

@@ -8,12 +8,9 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 REPO=$(cd "$HERE/../.." && pwd)
 OUT="$REPO/bench/out/peers.jsonl"
 
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-    echo "bench/peers: skipped: node and npm are needed (apt-get install nodejs npm)" >&2
+if ! "$HERE/setup.sh"; then
+    echo "bench/peers: skipped: node and npm are needed" >&2
     exit 0
-fi
-if [ ! -d "$HERE/node_modules" ]; then
-    (cd "$HERE" && npm ci --no-audit --no-fund)
 fi
 
 if [ $# -eq 0 ]; then

@@ -9,17 +9,21 @@
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
 
+#include "app/cli_parse.h"
 #include "bsp/engine.h"
+#include "bsp/order_json.h"
 #include "core/atomic_file.h"
 #include "core/version.h"
 #include "clip/section.h"
@@ -27,61 +31,23 @@
 #include "mesh/gmp_memory.h"
 #include "mesh/mesh_io.h"
 #include "scene/clip_input.h"
+#include "scene/mesh_scene.h"
 #include "scene/render.h"
 
 namespace {
 
 using exbsp::vec3d;
 
-/// Parses "X,Y,Z" into three finite doubles (nearest to the decimal text).
-vec3d parse_triple(const std::string& text, const std::string& option) {
-  vec3d v{};
-  const char* p = text.data();
-  const char* end = text.data() + text.size();
-  for (int k = 0; k < 3; ++k) {
-    const auto r = std::from_chars(p, end, v[k]);
-    if (r.ec != std::errc() || !std::isfinite(v[k]))
-      throw exbsp::usage_error(option + " expects three finite numbers X,Y,Z, got '" + text + "'");
-    p = r.ptr;
-    if (k < 2) {
-      if (p == end || *p != ',')
-        throw exbsp::usage_error(option + " expects three numbers separated by commas, got '" + text + "'");
-      ++p;
-    }
-  }
-  if (p != end) throw exbsp::usage_error(option + " expects exactly three numbers, got '" + text + "'");
-  return v;
-}
-
-/// Parses "A,B,C,D" into four finite doubles; throws usage_error naming --plane otherwise.
-exbsp::section_plane parse_plane(const std::string& text) {
-  exbsp::section_plane p{};
-  const char* s = text.data();
-  const char* end = text.data() + text.size();
-  for (int k = 0; k < 4; ++k) {
-    const auto r = std::from_chars(s, end, p[k]);
-    if (r.ec != std::errc() || !std::isfinite(p[k]) || (k < 3 && (r.ptr == end || *r.ptr != ',')) ||
-        (k == 3 && r.ptr != end))
-      throw exbsp::usage_error("--plane expects four finite numbers A,B,C,D (the plane A*x+B*y+C*z+D = 0), got '" +
-                               text + "'");
-    s = r.ptr + (k < 3 ? 1 : 0);
-  }
-  exbsp::check_section_plane(p, "--plane");
-  return p;
-}
-
-std::string format_double(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-
 // ---- resource defaults and limits (the library's defaults stay explicit: 0 = no limit) ----
 
-/// Bytes one tree fragment costs in a build, tree nodes and lists included: about 1,000
-/// measured (naive heuristic on 128 + 128 sticks: 2.1 M fragments in 2.1 GB; 121 k fragments
-/// in 108 MB resident), rounded up for the heavier gmpq numbers.
-constexpr std::uint64_t bytes_per_fragment = 1300;
+/// Bytes one tree fragment costs in a build, tree nodes, lists and the process's slack
+/// included, per kernel. Epeck and gmpq: about 1,000 measured (naive heuristic on 128 + 128
+/// sticks: 2.1 M fragments in 2.1 GB), rounded up for the heavier gmpq numbers. exact (and the
+/// double-based inexact kernels): peak heap 189-320 bytes per fragment on the CAD corpus
+/// (bench/EXACT_KERNEL.md), doubled for resident-set slack.
+std::uint64_t bytes_per_fragment(exbsp::kernel_id kernel) {
+  return kernel == exbsp::kernel_id::epeck || kernel == exbsp::kernel_id::gmpq ? 1300 : 640;
+}
 
 /// Bytes this process may still use: MemAvailable (/proc/meminfo), and no more than the
 /// address-space limit (RLIMIT_AS) when there is one. 0 when unknown.
@@ -104,13 +70,21 @@ std::uint64_t available_memory_bytes() {
   return available;
 }
 
-/// The default --max-fragments: half the available memory at bytes_per_fragment each (the
-/// other half for the input, the output and the allocator's slack), at least 10,000;
+/// The default --max-fragments: half the available memory at bytes_per_fragment(kernel) each
+/// (the other half for the input, the output and the allocator's slack), at least 10,000;
 /// 0 (no limit) when the available memory is unknown.
-std::size_t default_fragment_budget() {
+std::size_t default_fragment_budget(exbsp::kernel_id kernel) {
   const std::uint64_t bytes = available_memory_bytes();
   if (bytes == 0) return 0;
-  return static_cast<std::size_t>(std::max<std::uint64_t>(bytes / 2 / bytes_per_fragment, 10000));
+  return static_cast<std::size_t>(std::max<std::uint64_t>(bytes / 2 / bytes_per_fragment(kernel), 10000));
+}
+
+/// The --max-fragments help text, shared by build, order and render.
+std::string max_fragments_help() {
+  return "stop with exit status 3 when the tree would need more fragments (0: no limit; default: half the "
+         "available memory at " + std::to_string(bytes_per_fragment(exbsp::kernel_id::exact)) +
+         " bytes per fragment for exact, double and epick, " + std::to_string(bytes_per_fragment(exbsp::kernel_id::epeck)) +
+         " for epeck and gmpq)";
 }
 
 /// The most threads --threads accepts: 4 per hardware thread, at most 1024 (libgomp crashes
@@ -149,11 +123,14 @@ void start_thread_pool() {
 
 struct build_cli {
   std::string mesh;
+  std::string format;  ///< --format: the mesh format for '-' (standard input) or any file name
   std::string kernel = exbsp::to_string(exbsp::build_options{}.kernel);
   std::string heuristic = exbsp::default_heuristic();
   std::uint64_t seed = 0;
-  std::size_t max_fragments = 0;
+  std::optional<std::size_t> max_fragments;  ///< absent: default_fragment_budget(kernel)
   unsigned threads = 0;
+  std::string save;                  ///< build --save: write the tree here
+  const CLI::App* command = nullptr;  ///< to tell options given on the command line from defaults
 };
 
 /// Rejects an empty output name (`-o ""`): it would silently mean the default output.
@@ -168,8 +145,20 @@ const CLI::Validator not_negative(
     },
     "");
 
+void add_format_option(CLI::App* cmd, std::string& format) {
+  cmd->add_option("--format", format,
+                  "mesh format: off, obj, ply or stl (needed for '-', standard input; otherwise the "
+                  "file's extension decides)")
+      ->check(CLI::IsMember({"off", "obj", "ply", "stl"}));
+}
+
 void add_build_options(CLI::App* cmd, build_cli& o) {
-  cmd->add_option("MESH", o.mesh, "mesh file: .off, .obj, .ply or .stl")->required();
+  o.command = cmd;
+  cmd->add_option("MESH", o.mesh,
+                  "mesh file: .off, .obj, .ply or .stl ('-': standard input, with --format), or a saved tree "
+                  "(.exbsp, from build --save)")
+      ->required();
+  add_format_option(cmd, o.format);
   cmd->add_option("--kernel", o.kernel,
                   "number type: exact (exbsp's own exact points, default), epeck (CGAL lazy exact), "
                   "gmpq (plain exact rationals), epick (exact predicates, rounded splits), "
@@ -184,39 +173,59 @@ void add_build_options(CLI::App* cmd, build_cli& o) {
   cmd->add_option("--seed", o.seed, "seed of the randomised heuristics")
       ->check(not_negative)
       ->capture_default_str();
-  cmd->add_option("--max-fragments", o.max_fragments,
-                  "stop with exit status 3 when the tree would need more fragments (0: no limit; "
-                  "default: half the available memory at " + std::to_string(bytes_per_fragment) +
-                      " bytes per fragment)")
-      ->check(not_negative)
-      ->capture_default_str();
+  cmd->add_option("--max-fragments", o.max_fragments, max_fragments_help())->check(not_negative);
   cmd->add_option("--threads", o.threads, "threads for candidate evaluation (0: all cores)")
       ->check(CLI::Range(0u, max_threads()));
 }
 
-/// Progress line on a terminal for builds that run longer than a second.
+/// Progress line on a terminal for builds that run longer than a second: the share of the
+/// fragments already placed at nodes (the total grows as triangles are split, so the share can
+/// step back a little), nodes and elapsed time.
 struct progress_line {
   bool tty = ::isatty(2) != 0;
   bool shown = false;
   void operator()(const exbsp::build_progress& p) {
     if (!tty || p.seconds < 1.0) return;
-    std::fprintf(stderr, "\r\033[Kexbsp: building: %zu of %zu fragments placed, %zu nodes, %.1f s",
+    const double share = p.fragments_total ? 100.0 * static_cast<double>(p.fragments_placed) / p.fragments_total : 0;
+    std::fprintf(stderr, "\r\033[Kexbsp: building: %3.0f%% (%zu of %zu fragments placed), %zu nodes, %.1f s", share,
                  p.fragments_placed, p.fragments_total, p.nodes, p.seconds);
     std::fflush(stderr);
     shown = true;
   }
   void finish() {
     if (shown) std::fprintf(stderr, "\r\033[K");
+    shown = false;
   }
 };
 
-exbsp::bsp build_tree(const build_cli& o, progress_line& progress) {
-  const exbsp::triangle_soup soup = exbsp::read_mesh(o.mesh);
+/// A saved tree (docs/tree-file.md): --kernel, --heuristic and --seed may only repeat what the
+/// tree was built with (they cannot change a built tree); --threads and --max-fragments, which
+/// only steer a build, are ignored.
+exbsp::bsp load_tree(const build_cli& o, double* load_seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  exbsp::bsp tree = exbsp::bsp::load(o.mesh);
+  if (load_seconds) *load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const exbsp::build_stats& s = tree.stats();
+  const auto conflict = [&](const char* option, const std::string& given, const std::string& saved) {
+    if (o.command && o.command->count(option) && given != saved)
+      throw exbsp::usage_error(o.mesh + " is a saved tree built with " + option + " " + saved + "; " + option + " " +
+                               given + " cannot change it (build from the mesh instead)");
+  };
+  conflict("--kernel", o.kernel, s.kernel);
+  conflict("--heuristic", o.heuristic, s.heuristic);
+  conflict("--seed", std::to_string(o.seed), std::to_string(s.seed));
+  return tree;
+}
+
+exbsp::bsp build_tree(const build_cli& o, progress_line& progress, double* load_seconds = nullptr) {
+  // A saved tree by its extension or magic; never standard input or a mesh given --format.
+  if (o.format.empty() && o.mesh != "-" && exbsp::bsp::is_saved_tree(o.mesh)) return load_tree(o, load_seconds);
+  const exbsp::triangle_soup soup = exbsp::cli::read_mesh_input(o.mesh, o.format, std::cin);
   exbsp::build_options options;
   options.kernel = exbsp::parse_kernel(o.kernel);
   options.heuristic = o.heuristic;
   options.seed = o.seed;
-  options.max_fragments = o.max_fragments;
+  options.max_fragments = o.max_fragments ? *o.max_fragments : default_fragment_budget(options.kernel);
   options.threads = o.threads;
   options.progress = [&progress](const exbsp::build_progress& p) { progress(p); };
   try {
@@ -239,15 +248,19 @@ nlohmann::json stats_json(const exbsp::build_stats& s) {
 
 int run_build(const build_cli& o, bool json) {
   progress_line progress;
-  const exbsp::bsp tree = build_tree(o, progress);
+  double load_seconds = -1;
+  const exbsp::bsp tree = build_tree(o, progress, &load_seconds);
+  if (!o.save.empty()) tree.save(o.save);
   const auto& s = tree.stats();
   if (json) {
     nlohmann::json j = stats_json(s);
-    j["mesh"] = o.mesh;
-    j["seed"] = o.seed;
+    j["mesh"] = o.mesh == "-" ? "<stdin>" : o.mesh;
+    j["seed"] = s.seed;
+    if (load_seconds >= 0) j["load_seconds"] = load_seconds;  // a saved tree: build_seconds is its build's
     std::cout << j.dump() << "\n";
   } else {
-    std::cout << o.mesh << ": " << s.input_triangles << " input triangles (" << s.degenerate_input
+    if (load_seconds >= 0) std::cout << "saved tree loaded in " << load_seconds << " s; ";
+    std::cout << (o.mesh == "-" ? "<stdin>" : o.mesh) << ": " << s.input_triangles << " input triangles (" << s.degenerate_input
               << " degenerate, skipped) -> " << s.fragments << " fragments, " << s.splits
               << " splits, " << s.nodes << " nodes, depth " << s.depth << "; " << s.kernel << ", "
               << s.heuristic << ", " << s.build_seconds << " s\n";
@@ -258,41 +271,11 @@ int run_build(const build_cli& o, bool json) {
 int run_order(const build_cli& o, const std::string& eye, const std::string& direction,
               const std::string& out_path) {
   const bool use_eye = !eye.empty();
-  const vec3d where = use_eye ? parse_triple(eye, "--eye") : parse_triple(direction, "--direction");
+  const vec3d where = use_eye ? exbsp::cli::parse_triple(eye, "--eye") : exbsp::cli::parse_triple(direction, "--direction");
   progress_line progress;
   const exbsp::bsp tree = build_tree(o, progress);
   const auto order = use_eye ? tree.order_from_eye(where) : tree.order_for_direction(where);
-  const bool exact = exbsp::is_exact(tree.kernel());
-
-  std::string out;
-  out.reserve(order.size() * (exact ? 400 : 200) + 64);
-  out += use_eye ? "{\"eye\": [" : "{\"direction\": [";
-  for (int k = 0; k < 3; ++k) out += (k ? ", " : "") + format_double(where[k]);
-  out += "],\n \"kernel\": \"" + exbsp::to_string(tree.kernel()) + "\", \"heuristic\": \"" +
-         o.heuristic + "\",\n \"fragments\": [";
-  for (std::size_t n = 0; n < order.size(); ++n) {
-    const exbsp::fragment_d f = tree.fragment(order[n]);
-    out += n ? ",\n  {\"face\": " : "\n  {\"face\": ";
-    out += std::to_string(f.face) + ", \"v\": [";
-    for (int i = 0; i < 3; ++i) {
-      out += i ? ", [" : "[";
-      for (int k = 0; k < 3; ++k) out += (k ? ", " : "") + format_double(f.v[i][k]);
-      out += "]";
-    }
-    out += "]";
-    if (exact) {
-      const exbsp::exact_triangle e = tree.fragment_exact(order[n]);
-      out += ", \"exact\": [";
-      for (int i = 0; i < 3; ++i) {
-        out += i ? ", [" : "[";
-        for (int k = 0; k < 3; ++k) out += std::string(k ? ", \"" : "\"") + e[i][k] + "\"";
-        out += "]";
-      }
-      out += "]";
-    }
-    out += "}";
-  }
-  out += "\n ]}\n";
+  const std::string out = exbsp::order_json(tree, order, where, use_eye);
   if (out_path.empty())
     std::cout << out;
   else
@@ -301,8 +284,9 @@ int run_order(const build_cli& o, const std::string& eye, const std::string& dir
 }
 
 /// `exbsp section`: JSON (default, to standard output), OFF or SVG by the output's extension.
-int run_section(const std::string& mesh, const std::string& plane_text, const std::string& out_path) {
-  const exbsp::section_plane plane = parse_plane(plane_text);
+int run_section(const std::string& mesh, const std::string& format, const std::string& plane_text,
+                const std::string& out_path) {
+  const exbsp::section_plane plane = exbsp::cli::parse_plane(plane_text);
   const auto ends_with = [&](const char* ext) {
     const std::size_t n = std::strlen(ext);
     return out_path.size() >= n && out_path.compare(out_path.size() - n, n, ext) == 0;
@@ -310,7 +294,7 @@ int run_section(const std::string& mesh, const std::string& plane_text, const st
   const bool off = ends_with(".off"), svg = ends_with(".svg");
   if (!out_path.empty() && out_path != "-" && !off && !svg && !ends_with(".json"))
     throw exbsp::usage_error("-o/--output: section writes .json, .off or .svg, not '" + out_path + "'");
-  const exbsp::triangle_soup soup = exbsp::read_mesh(mesh);
+  const exbsp::triangle_soup soup = exbsp::cli::read_mesh_input(mesh, format, std::cin);
   exbsp::section_options options;
   options.exact_text = !off && !svg;
   const exbsp::section_result r = exbsp::section(soup, plane, options);
@@ -319,6 +303,74 @@ int run_section(const std::string& mesh, const std::string& plane_text, const st
     std::cout << text;
   else
     exbsp::write_file_atomically(out_path, text);
+  return 0;
+}
+
+/// `exbsp render` options.
+struct render_cli {
+  std::string input;               ///< scene (.json), mesh, '-' or empty (the demo)
+  std::string output = "exbsp.png";
+  std::string format, view = "iso", size = "800x600", edges = "visible";
+  std::string orbit_drag, trackball, kernel;
+  std::size_t frames = 0;
+  std::optional<std::size_t> max_fragments;
+  bool strict = false, verbose = false, quiet = false;
+};
+
+bool is_scene_path(const std::string& path) {
+  const std::string ext = ".json";
+  if (path.size() < ext.size()) return false;
+  std::string tail = path.substr(path.size() - ext.size());
+  std::transform(tail.begin(), tail.end(), tail.begin(), [](unsigned char c) { return std::tolower(c); });
+  return tail == ext;
+}
+
+/// `exbsp render`: a scene file, a mesh (fitted view, scene::mesh_scene) or the demo; a
+/// progress line during long builds and a one-line summary on standard error.
+int run_render(const render_cli& r) {
+  exbsp::render_request request{r.input, r.output, r.verbose};
+  request.strict = r.strict;
+  if (!r.orbit_drag.empty()) request.orbit_drag = exbsp::cli::parse_drag_path(r.orbit_drag);
+  request.frames = r.frames;
+  request.trackball = r.trackball;
+  request.kernel = r.kernel;
+  request.max_fragments = r.max_fragments ? *r.max_fragments
+                                          : default_fragment_budget(r.kernel.empty() ? exbsp::build_options{}.kernel
+                                                                                     : exbsp::parse_kernel(r.kernel));
+  const bool mesh_input = !r.input.empty() && !is_scene_path(r.input);
+  if (!mesh_input && !r.format.empty())
+    throw exbsp::usage_error("--format applies to a mesh input, not to " +
+                             (r.input.empty() ? std::string("the demo scene") : "the scene " + r.input));
+  if (mesh_input) {
+    exbsp::scene::mesh_view_options options;
+    const auto size = exbsp::cli::parse_size(r.size);
+    options.width = size[0];
+    options.height = size[1];
+    options.view = r.view;
+    options.edges = r.edges;
+    const std::string name = r.input == "-" ? "<stdin>" : r.input;
+    auto soup = std::make_shared<const exbsp::triangle_soup>(exbsp::cli::read_mesh_input(r.input, r.format, std::cin));
+    request.preloaded = exbsp::scene::mesh_scene(std::move(soup), name, options);
+  }
+  progress_line progress;
+  if (r.quiet) progress.tty = false;
+  request.progress = [&progress](const exbsp::build_progress& p) { progress(p); };
+  exbsp::render_summary summary;
+  try {
+    summary = exbsp::render_command(request, std::cerr);
+  } catch (...) {
+    progress.finish();
+    throw;
+  }
+  progress.finish();
+  if (!r.quiet) {
+    char times[96];
+    std::snprintf(times, sizeof times, "build %.2f s, total %.2f s", summary.build_seconds, summary.total_seconds);
+    const auto shown = [](const std::string& path) { return path == "-" ? std::string("standard output") : path; };
+    std::cerr << "exbsp: wrote " << (summary.outputs.size() == 1 ? shown(summary.outputs[0]) : std::to_string(summary.frames) + " frames (" + summary.outputs.front() + " ... " + summary.outputs.back() + ")")
+              << ": " << summary.triangles << " triangles -> " << summary.fragments << " fragments"
+              << (summary.kernel.empty() ? std::string() : " (" + summary.kernel + ")") << ", " << times << "\n";
+  }
   return 0;
 }
 
@@ -338,10 +390,11 @@ int main(int argc, char** argv) {
                        "print the version and exit");
 
   build_cli build_opts, order_opts;
-  build_opts.max_fragments = order_opts.max_fragments = default_fragment_budget();
   bool json = false;
   auto* build = app.add_subcommand("build", "build the BSP tree of MESH and print its statistics");
   add_build_options(build, build_opts);
+  build->add_option("--save", build_opts.save, "write the tree to a saved-tree file T.exbsp, for order and build")
+      ->check(non_empty_path);
   build->add_flag("--json", json,
                   "print one JSON object: input_triangles, degenerate_input, fragments, splits, "
                   "nodes, depth, build_seconds, kernel, heuristic, ...");
@@ -358,34 +411,47 @@ int main(int argc, char** argv) {
   order->add_option("-o,--output", order_out, "output JSON file ('-' or none: standard output)")
       ->check(non_empty_path);
 
-  std::string scene_path, render_out = "exbsp.png";
-  bool verbose = false;
+  render_cli r;
   auto* render = app.add_subcommand(
-      "render", "render SCENE.json (or the built-in demo scene) to PNG, SVG or PDF");
-  render->add_option("SCENE", scene_path, "scene file (JSON); omit for the built-in demo");
-  render->add_option("-o,--output", render_out, "output .png, .svg or .pdf ('-': PNG on standard output)")
+      "render", "render SCENE.json, a mesh with a view fitted to it, or the built-in demo scene to PNG, SVG or PDF");
+  render->add_option("INPUT", r.input,
+                     "scene file (.json), or a mesh (.off, .obj, .ply, .stl; '-': standard input with --format) "
+                     "drawn lit with a view fitted to its bounding box; omit for the built-in demo");
+  render->add_option("-o,--output", r.output, "output .png, .svg or .pdf ('-': PNG on standard output)")
       ->check(non_empty_path)
       ->capture_default_str();
-  bool strict = false;
-  render->add_flag("--strict", strict, "unknown scene keys are errors (exit 2), not warnings");
-  render->add_flag("-v,--verbose", verbose, "print the pipeline stages that ran and their timings");
-  std::string orbit_drag;
-  std::size_t orbit_frames = 0;
-  render->add_option("--orbit-drag", orbit_drag,
+  add_format_option(render, r.format);
+  render->add_option("--view", r.view, "a mesh's fitted view: iso, front, back, left, right, top or bottom")
+      ->check(CLI::IsMember(exbsp::scene::mesh_view_names()))
+      ->capture_default_str();
+  render->add_option("--size", r.size, "a mesh's image size WIDTHxHEIGHT in pixels")->capture_default_str();
+  render->add_option("--edges", r.edges, "a mesh's edges in SVG/PDF output: none, visible or visible+hidden")
+      ->check(CLI::IsMember({"none", "visible", "visible+hidden"}))
+      ->capture_default_str();
+  render->add_option("--kernel", r.kernel,
+                     "BSP kernel (default exact); epeck, gmpq; epick and double only to see what rounding does")
+      ->check(CLI::IsMember({"exact", "epeck", "gmpq", "epick", "double"}));
+  render->add_option("--max-fragments", r.max_fragments, max_fragments_help())->check(not_negative);
+  render->add_flag("--strict", r.strict, "unknown scene keys are errors (exit 2), not warnings");
+  render->add_flag("-v,--verbose", r.verbose, "print the pipeline stages that ran and their timings");
+  render->add_flag("-q,--quiet", r.quiet, "no progress line and no summary line");
+  render->add_option("--orbit-drag", r.orbit_drag,
                      "trackball orbit: screen pixel path X0,Y0:X1,Y1:... (y down) dragged over an "
                      "arcball; writes OUT_0000.png, OUT_0001.png, ... from one BSP build");
-  std::string trackball;
-  render->add_option("--trackball", trackball,
+  render->add_option("--trackball", r.trackball,
                      "orbit rotation: arcball (Shoemake, twice the arc; default) or virtual (the classic "
                      "virtual trackball: the point under the cursor follows it); overrides the scene's \"trackball\"")
       ->check(CLI::IsMember({"arcball", "virtual"}));
-  render->add_option("--frames", orbit_frames,
-                     "number of orbit frames (the drag path resampled evenly; default: one per point)");
+  render->add_option("--frames", r.frames,
+                     "number of orbit frames (the drag path resampled evenly; default: one per point)")
+      ->check(not_negative);
 
-  std::string section_mesh, section_plane_text, section_out;
+  std::string section_mesh, section_format, section_plane_text, section_out;
   auto* section = app.add_subcommand(
       "section", "cut MESH exactly by a plane: kept part, outline loops and (closed meshes) the cap");
-  section->add_option("MESH", section_mesh, "mesh file: .off, .obj, .ply or .stl")->required();
+  section->add_option("MESH", section_mesh, "mesh file: .off, .obj, .ply or .stl ('-': standard input, with --format)")
+      ->required();
+  add_format_option(section, section_format);
   section->add_option("--plane", section_plane_text,
                       "A,B,C,D: the plane A*x+B*y+C*z+D = 0; the side where it is >= 0 is kept")
       ->required();
@@ -408,6 +474,14 @@ int main(int argc, char** argv) {
       ->check(non_empty_path);
   clip->add_flag("-v,--verbose", clip_verbose, "print each segment endpoint's Cohen-Sutherland outcode");
 
+  {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    const std::string typo = exbsp::cli::misspelling(app, args);
+    if (!typo.empty()) {
+      std::cerr << "exbsp: error: " << typo << "\n" << "run 'exbsp --help' for usage\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -433,23 +507,17 @@ int main(int argc, char** argv) {
         throw exbsp::usage_error("order needs --eye X,Y,Z or --direction X,Y,Z");
       return run_order(order_opts, eye, direction, order_out);
     }
-    if (*section) return run_section(section_mesh, section_plane_text, section_out);
+    if (*section) return run_section(section_mesh, section_format, section_plane_text, section_out);
     if (*clip) {
       exbsp::scene::clip_command(clip_in, clip_out, clip_algorithm, clip_verbose, std::cout, std::cerr);
       return 0;
     }
     if (*render) {
-      exbsp::render_request request{scene_path, render_out, verbose};
-      request.strict = strict;
-      if (!orbit_drag.empty()) request.orbit_drag = exbsp::parse_drag_path(orbit_drag);
-      request.frames = orbit_frames;
-      request.trackball = trackball;
-      exbsp::render_command(request, std::cerr);
-      return 0;
+      return run_render(r);
     }
   } catch (const exbsp::limit_error& e) {
     std::cerr << "exbsp: error: " << e.what() << "\n";
-    if (*build || *order)
+    if (*build || *order || *render)
       std::cerr << "exbsp: the limit is --max-fragments (default: from the available memory); raise it with "
                    "--max-fragments N, or 0 for no limit\n";
     return 3;

@@ -7,6 +7,9 @@
 #include "bsp/exact_output.h"
 
 namespace exbsp {
+namespace tree_file {
+class writer;
+}
 
 class bsp_impl {
 public:
@@ -21,6 +24,8 @@ public:
   virtual std::vector<std::uint32_t> order_from_eye(const vec3d& eye, bool back_to_front) const = 0;
   virtual std::vector<std::uint32_t> order_for_direction(const vec3d& d, bool back_to_front) const = 0;
   virtual std::vector<bsp::ancestor> ancestors(std::size_t i) const = 0;
+  /// Writes the body of a saved tree (tree_file.h): the common part, then the kernel's own.
+  virtual void write_tree(tree_file::writer& out) const = 0;
 };
 
 /// The library's access to a bsp's implementation (bsp is its friend).

@@ -19,6 +19,7 @@
 
 #include "bsp/engine.h"
 #include "bsp/split_pattern.h"
+#include "bsp/tree_file.h"
 #include "mesh/soup.h"
 
 namespace exbsp {
@@ -44,6 +45,12 @@ public:
   /// Builds the tree. Throws usage_error (unknown heuristic, non-finite coordinates),
   /// limit_error (options.max_fragments exceeded).
   basic_bsp_tree(const triangle_soup& soup, const build_options& options);
+
+  /// Loads a saved tree (tree_file_impl.h): the kernel's part of a tree file's body from `in`
+  /// for the soup and stats of `common`. Throws input_error for anything inconsistent.
+  basic_bsp_tree(const tree_file::common_part& common, tree_file::reader& in);
+  /// Writes the kernel's part of a tree file's body (tree_file_impl.h).
+  void write_tree(tree_file::writer& out) const;
 
   const build_stats& stats() const { return stats_; }
   const std::vector<fragment>& fragments() const { return fragments_; }

@@ -19,6 +19,7 @@
 #include "bsp/bsp_impl.h"
 #include "bsp/bsp_tree.h"
 #include "bsp/exact_output.h"
+#include "bsp/tree_file_impl.h"
 #include "core/errors.h"
 
 namespace exbsp {
@@ -119,6 +120,7 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   const int heuristic = detail::heuristic_index(options.heuristic);
   stats_.kernel = to_string(G::id);
   stats_.heuristic = options.heuristic;
+  stats_.seed = options.seed;
   stats_.input_triangles = soup.triangles.size();
   sampled_ = {options.sampled_candidates, options.sampled_samples, options.sampled_split_weight};
 
@@ -464,7 +466,12 @@ std::vector<std::uint32_t> basic_bsp_tree<G>::order_for_direction(const vec3d& d
 template <class G>
 class bsp_kernel_impl final : public bsp_impl {
 public:
-  bsp_kernel_impl(const triangle_soup& soup, const build_options& options) : tree_(soup, options) {}
+  bsp_kernel_impl(const triangle_soup& soup, const build_options& options)
+      : input_{{}, 0, options.sampled_candidates, options.sampled_samples, options.sampled_split_weight, soup},
+        tree_(soup, options) {}
+  /// A saved tree (tree_file.h).
+  bsp_kernel_impl(tree_file::reader& in, tree_file::common_part&& common)
+      : input_(std::move(common)), tree_(input_, in) {}
   const build_stats& stats() const override { return tree_.stats(); }
   kernel_id kernel() const override { return G::id; }
   std::size_t fragment_count() const override { return tree_.fragments().size(); }
@@ -494,8 +501,13 @@ public:
     std::reverse(out.begin(), out.end());
     return out;
   }
+  void write_tree(tree_file::writer& out) const override {
+    tree_file::write_common(out, tree_.stats(), input_);
+    tree_.write_tree(out);
+  }
 
 private:
+  tree_file::common_part input_;  ///< the soup and options, for saving (its stats are unused)
   basic_bsp_tree<G> tree_;
 };
 
@@ -508,5 +520,8 @@ private:
   template class basic_bsp_tree<G>;                                                                   \
   std::unique_ptr<bsp_impl> make_bsp_##NAME(const triangle_soup& soup, const build_options& o) { \
     return std::make_unique<bsp_kernel_impl<G>>(soup, o);                                       \
+  }                                                                                             \
+  std::unique_ptr<bsp_impl> tree_file::load_##NAME(tree_file::reader& in, tree_file::common_part&& c) { \
+    return std::make_unique<bsp_kernel_impl<G>>(in, std::move(c));                              \
   }                                                                                             \
   }

@@ -15,6 +15,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "../mesh/soup.h"
@@ -82,6 +83,7 @@ struct build_stats {
   double build_seconds = 0;
   std::size_t peak_rss_bytes = 0;    ///< process peak resident set after the build (Linux), 0 if unknown
   std::string kernel, heuristic;
+  std::uint64_t seed = 0;            ///< build_options::seed of the build
 };
 
 /// A fragment converted to doubles (each coordinate correctly rounded from its exact value).
@@ -131,6 +133,22 @@ public:
   /// side (+1 / -1) of it that fragment i lies on, root first. Empty for fragments at the root.
   struct ancestor { std::uint32_t plane_face; int side; };
   std::vector<ancestor> ancestors(std::size_t i) const;
+
+  /// Saved trees (docs/tree-file.md): a versioned, checksummed binary file holding the input
+  /// soup and the tree's exact representation, so that a loaded tree has the same stats,
+  /// fragments, ancestors and byte-identical orders, without a build. Every kernel is saved.
+  /// save writes through write_file_atomically (throws output_error naming `path`).
+  void save(const std::string& path) const;
+  /// The bytes save writes.
+  std::string serialize() const;
+  /// Loads a tree saved by save. Throws input_error naming the file (and, for a malformed
+  /// file, the byte offset and field) for an unreadable, truncated, corrupted, wrong-version
+  /// or inconsistent file; never returns a tree that fails the checks of docs/tree-file.md.
+  static bsp load(const std::string& path);
+  /// load for bytes already in memory; `name` names them in messages.
+  static bsp deserialize(std::string_view bytes, const std::string& name);
+  /// True when `path` ends in .exbsp (any case) or is a readable file starting with the magic.
+  static bool is_saved_tree(const std::string& path);
 
 private:
   friend class bsp_access;

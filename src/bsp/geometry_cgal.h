@@ -17,6 +17,7 @@
 #include "bsp/fast_orientation.h"
 #include "bsp/kernel_traits.h"
 #include "bsp/split_pattern.h"
+#include "bsp/tree_file.h"
 #include "core/errors.h"
 
 namespace exbsp {
@@ -214,9 +215,19 @@ public:
   }
   std::size_t points_memory() const { return 0; }
 
+  /// Saved trees (tree_file_cgal.h, docs/tree-file.md): each fragment as its source and nine
+  /// coordinates (exact kernels: canonical rationals; inexact ones: double bit patterns).
+  /// read_fragments reads them back into a geometry made from the same soup, in which
+  /// `usable[i]` says whether add_source accepted triangle i; throws input_error through `in`.
+  void write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments) const;
+  void read_fragments(tree_file::reader& in, const triangle_soup& soup, const std::vector<char>& usable,
+                      std::vector<fragment>& fragments) const;
+
 private:
   std::vector<triangle> sources_;
   std::vector<fast_plane> fast_;
 };
 
 }  // namespace exbsp
+
+#include "bsp/tree_file_cgal.h"

@@ -193,21 +193,11 @@ int exact_geometry::point_sign_slow(std::uint32_t plane, std::uint32_t x, int& b
   return exact_sign(plane, x);
 }
 
-std::uint32_t exact_geometry::construct(std::uint32_t plane, std::uint32_t p, std::uint32_t q, scratch& sc) {
-  if (sc.plane != plane) {
-    sc.made.clear();
-    sc.plane = plane;
-  }
-  const std::uint64_t key = std::uint64_t{std::min(p, q)} << 32 | std::max(p, q);
-  const auto found = sc.made.find(key);
-  if (found != sc.made.end()) return found->second;
-  const std::uint32_t id = allocate(sc);
+void exact_geometry::approximate(std::uint32_t id) {
   point& x = at(id);
-  x.p = p;
-  x.q = q;
-  x.plane = plane;
-  const point& pp = at(p);
-  const point& pq = at(q);
+  const point& pp = at(x.p);
+  const point& pq = at(x.q);
+  const std::uint32_t plane = x.plane;
   // Certified approximation: x = p + t (q - p), t = |fp| / (|fp| + |fq|) in (0, 1), with
   // |fp - vp| <= ep and |fq - vq| <= eq from the filter. t is monotone in |fp| and |fq|, so
   // [t_lo, t_hi] below holds the true t; the rest is the spread of p and q and rounding.
@@ -243,6 +233,22 @@ std::uint32_t exact_geometry::construct(std::uint32_t plane, std::uint32_t p, st
     }
     x.r = r;
   }
+}
+
+std::uint32_t exact_geometry::construct(std::uint32_t plane, std::uint32_t p, std::uint32_t q, scratch& sc) {
+  if (sc.plane != plane) {
+    sc.made.clear();
+    sc.plane = plane;
+  }
+  const std::uint64_t key = std::uint64_t{std::min(p, q)} << 32 | std::max(p, q);
+  const auto found = sc.made.find(key);
+  if (found != sc.made.end()) return found->second;
+  const std::uint32_t id = allocate(sc);
+  point& x = at(id);
+  x.p = p;
+  x.q = q;
+  x.plane = plane;
+  approximate(id);
   sc.made.emplace(key, id);
   return id;
 }

@@ -31,6 +31,10 @@
 #include "bsp/split_pattern.h"
 
 namespace exbsp {
+namespace tree_file {
+class writer;
+class reader;
+}
 
 class exact_geometry {
 public:
@@ -78,6 +82,15 @@ public:
   exact_triangle to_exact(const fragment& f) const {
     return exact_text([&](const exact_visitor& visit) { visit_exact(f, visit); });
   }
+  /// Saved trees (geometry_exact_file.cpp, docs/tree-file.md): writes the constructed points
+  /// the fragments use, renumbered densely, then the fragments; read_fragments reads them back
+  /// into a geometry made from the same soup, in which `usable[i]` says whether add_source
+  /// accepted triangle i. It checks every id and that each constructed point's segment
+  /// crosses its plane strictly (so every exact value is well defined), and restores each
+  /// point's certified approximation. Throws input_error through `in`.
+  void write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments) const;
+  void read_fragments(tree_file::reader& in, const triangle_soup& soup, const std::vector<char>& usable,
+                      std::vector<fragment>& fragments);
   /// Bytes held by the point table (for the memory benchmark).
   std::size_t points_memory() const;
 
@@ -118,6 +131,8 @@ private:
   const exact_value& exact_of(std::uint32_t x) const;
   const exact_plane& plane_of(std::uint32_t plane) const;
   std::uint32_t construct(std::uint32_t plane, std::uint32_t p, std::uint32_t q, scratch& sc);
+  /// Sets the certified centre and radius of constructed point id from its p, q and plane.
+  void approximate(std::uint32_t id);
 
   std::vector<std::array<std::uint32_t, 3>> sources_;  ///< input vertex ids (= point ids)
   std::vector<fast_plane_core> fast_;

@@ -15,6 +15,9 @@ namespace exbsp {
 inline mpq_srcptr mpq_of(const mpq_class& q) { return q.get_mpq_t(); }
 template <class Number>
 mpq_srcptr mpq_of(const Number& q) { return q.backend().data(); }
+inline mpq_ptr mutable_mpq_of(mpq_class& q) { return q.get_mpq_t(); }
+template <class Number>
+mpq_ptr mutable_mpq_of(Number& q) { return q.backend().data(); }
 
 using epeck_kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 
@@ -64,6 +67,11 @@ struct kernel_traits<epeck_kernel> : kernel_traits_defaults<epeck_kernel> {
     return out;
   }
   static mpq_srcptr rational(const epeck_kernel::FT& x) { return mpq_of(CGAL::exact(x)); }
+  static epeck_kernel::FT from_rational(mpq_srcptr q) {
+    epeck_kernel::Exact_kernel::FT e;
+    mpq_set(mutable_mpq_of(e), q);
+    return epeck_kernel::FT(e);
+  }
   static double to_double(const epeck_kernel::FT& x) { return rational_to_double(rational(x)); }
 };
 

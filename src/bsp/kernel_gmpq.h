@@ -15,6 +15,7 @@ struct kernel_traits<gmpq_kernel> : kernel_traits_defaults<gmpq_kernel> {
   static constexpr kernel_id id = kernel_id::gmpq;
   static constexpr bool exact = true;  // no filter: the slow reference on purpose
   static mpq_srcptr rational(const gmpq_kernel::FT& x) { return x.mpq(); }
+  static gmpq_kernel::FT from_rational(mpq_srcptr q) { return CGAL::Gmpq(q); }
   static double to_double(const gmpq_kernel::FT& x) { return rational_to_double(x.mpq()); }
 };
 

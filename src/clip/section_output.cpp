@@ -1,21 +1,18 @@
 // Output formats of `exbsp section` (section.h): JSON like `exbsp order`'s fragments, OFF of
-// kept ∪ cap, and an SVG of the outline in the cut plane. Written by hand as text (not via a
-// JSON library) so that doubles print with 17 significant digits exactly as `order` does.
+// kept ∪ cap, and an SVG of the outline in the cut plane. The JSON is text built with
+// core/json_text.h, so that doubles print with 17 significant digits exactly as `order` does.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "clip/section.h"
+#include "core/json_text.h"
 
 namespace exbsp {
 
 namespace {
 
-std::string num(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
+using json_text::number;
 
 /// A pixel coordinate rounded to 1/100, without trailing zeros.
 std::string px(double x) {
@@ -27,13 +24,9 @@ std::string px(double x) {
   return t == "-0" ? "0" : t;
 }
 
-void append_point(std::string& out, const section_point& p) {
-  out += "[" + num(p.v[0]) + ", " + num(p.v[1]) + ", " + num(p.v[2]) + "]";
-}
+void append_point(std::string& out, const section_point& p) { json_text::append_point(out, p.v); }
 
-void append_exact(std::string& out, const section_point& p) {
-  out += "[\"" + p.exact[0] + "\", \"" + p.exact[1] + "\", \"" + p.exact[2] + "\"]";
-}
+void append_exact(std::string& out, const section_point& p) { json_text::append_exact_point(out, p.exact); }
 
 /// "v": [...], "exact": [...] of a list of point indices.
 void append_points(std::string& out, const section_result& r, const std::uint32_t* idx, std::size_t n) {
@@ -55,8 +48,8 @@ double dot(const vec3d& a, const vec3d& b) { return a[0] * b[0] + a[1] * b[1] + 
 }  // namespace
 
 std::string section_json(const section_result& r) {
-  std::string out = "{\"plane\": [" + num(r.plane[0]) + ", " + num(r.plane[1]) + ", " + num(r.plane[2]) + ", " +
-                    num(r.plane[3]) + "],\n \"closed\": " + (r.closed ? "true" : "false") + ",\n \"kept\": [";
+  std::string out = "{\"plane\": [" + number(r.plane[0]) + ", " + number(r.plane[1]) + ", " + number(r.plane[2]) + ", " +
+                    number(r.plane[3]) + "],\n \"closed\": " + (r.closed ? "true" : "false") + ",\n \"kept\": [";
   for (std::size_t i = 0; i < r.kept.size(); ++i) {
     out += i ? ",\n  {\"face\": " : "\n  {\"face\": ";
     out += std::to_string(r.kept[i].face) + ", ";
@@ -85,7 +78,7 @@ std::string section_json(const section_result& r) {
          ", \"outline_edges\": " + std::to_string(s.outline_edges) +
          ", \"cap_triangles\": " + std::to_string(s.cap_triangles) +
          ", \"cap_steiner_points\": " + std::to_string(s.cap_steiner_points) +
-         ", \"split_constraints\": " + std::to_string(s.split_constraints) + ", \"seconds\": " + num(s.seconds) +
+         ", \"split_constraints\": " + std::to_string(s.split_constraints) + ", \"seconds\": " + number(s.seconds) +
          "}}\n";
   return out;
 }
@@ -104,7 +97,7 @@ std::string section_off(const section_result& r) {
   std::string out = "OFF\n" + std::to_string(order.size()) + " " + std::to_string(r.kept.size() + r.cap.size()) + " 0\n";
   for (std::uint32_t p : order) {
     const vec3d& v = r.points[p].v;
-    out += num(v[0]) + " " + num(v[1]) + " " + num(v[2]) + "\n";
+    out += number(v[0]) + " " + number(v[1]) + " " + number(v[2]) + "\n";
   }
   for (const auto* list : {&r.kept, &r.cap})
     for (const section_triangle& t : *list)
@@ -155,10 +148,10 @@ std::string section_svg(const section_result& r, const std::array<unsigned char,
   const std::string w = px(std::ceil(width)), h = px(std::ceil(height));
   std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + w + "\" height=\"" + h +
                     "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
-  out += "<!-- exbsp section by the plane " + num(r.plane[0]) + "*x + " + num(r.plane[1]) + "*y + " +
-         num(r.plane[2]) + "*z + " + num(r.plane[3]) + " = 0, seen from the kept side; u = (" +
-         num(basis[0][0]) + ", " + num(basis[0][1]) + ", " + num(basis[0][2]) + ") to the right, v = (" +
-         num(basis[1][0]) + ", " + num(basis[1][1]) + ", " + num(basis[1][2]) + ") upwards; scale " + num(scale) +
+  out += "<!-- exbsp section by the plane " + number(r.plane[0]) + "*x + " + number(r.plane[1]) + "*y + " +
+         number(r.plane[2]) + "*z + " + number(r.plane[3]) + " = 0, seen from the kept side; u = (" +
+         number(basis[0][0]) + ", " + number(basis[0][1]) + ", " + number(basis[0][2]) + ") to the right, v = (" +
+         number(basis[1][0]) + ", " + number(basis[1][1]) + ", " + number(basis[1][2]) + ") upwards; scale " + number(scale) +
          " px per unit -->\n";
   std::string loops, lines;
   for (const section_chain& c : r.outline) {

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -52,31 +51,6 @@ view::stage write_stage(const std::string& path, view::output_kind kind) {
 }
 
 }  // namespace
-
-std::vector<std::array<double, 2>> parse_drag_path(const std::string& text, const std::string& option) {
-  std::vector<std::array<double, 2>> path;
-  const char* p = text.data();
-  const char* end = text.data() + text.size();
-  const std::string usage = option + " expects screen points X0,Y0:X1,Y1:... (finite numbers), got '" + text + "'";
-  if (p == end) throw usage_error(usage);
-  while (true) {
-    std::array<double, 2> pt{};
-    for (int k = 0; k < 2; ++k) {
-      const auto r = std::from_chars(p, end, pt[k]);
-      if (r.ec != std::errc() || !std::isfinite(pt[k])) throw usage_error(usage);
-      p = r.ptr;
-      if (k == 0) {
-        if (p == end || *p != ',') throw usage_error(usage);
-        ++p;
-      }
-    }
-    path.push_back(pt);
-    if (p == end) break;
-    if (*p != ':') throw usage_error(usage);
-    ++p;
-  }
-  return path;
-}
 
 std::string frame_path(const std::string& output, std::size_t k) {
   const std::size_t slash = output.find_last_of('/');
@@ -143,7 +117,7 @@ std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(const scene::s
   return out;
 }
 
-void render_command(const render_request& request, std::ostream& log) {
+render_summary render_command(const render_request& request, std::ostream& log) {
   const std::string out = request.output_path.empty() ? std::string("exbsp.png") : request.output_path;
   view::output_kind kind;
   if (out == "-" || ends_with_ci(out, ".png")) {
@@ -160,8 +134,9 @@ void render_command(const render_request& request, std::ostream& log) {
   if (orbit && out == "-") throw usage_error("render: an orbit writes several files; it cannot go to standard output");
 
   const auto t0 = std::chrono::steady_clock::now();
-  scene::scene s = request.scene_path.empty() ? scene::demo_scene()
-                                              : scene::load_scene(request.scene_path, &log, request.strict);
+  scene::scene s = request.preloaded           ? *request.preloaded
+                   : request.scene_path.empty() ? scene::demo_scene()
+                                                : scene::load_scene(request.scene_path, &log, request.strict);
   if (!request.trackball.empty()) {
     if (request.trackball != "arcball" && request.trackball != "virtual")
       throw usage_error("render: --trackball must be arcball or virtual, got " + request.trackball);
@@ -179,6 +154,18 @@ void render_command(const render_request& request, std::ostream& log) {
   f.curves = s.curves;
   f.mesh_face_offsets = geometry.face_offsets;
   f.vector = s.vector;
+  f.build.progress = request.progress;
+  if (!request.kernel.empty()) f.build.kernel = parse_kernel(request.kernel);
+  f.build.max_fragments = request.max_fragments;
+  render_summary summary;
+  summary.triangles = f.soup.triangles.size();
+  const auto note_build = [&] {
+    if (!f.tree) return;
+    summary.fragments = f.tree->stats().fragments;
+    summary.build_seconds = f.tree->stats().build_seconds;
+    summary.kernel = f.tree->stats().kernel;
+  };
+  const auto elapsed = [&t0] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
 
   for (const std::string& name : view::effects_without_stage(s.effects, kind))
     log << "exbsp: warning: " << s.path << ": /effects/" << name << ": applies to PNG output only; ignored for " << out
@@ -211,7 +198,11 @@ void render_command(const render_request& request, std::ostream& log) {
       for (std::size_t k : f.rejected_meshes)
         log << "reject: " << s.meshes[k].key << " (" << s.meshes[k].file
             << ") is outside the view volume (bounding box): not built, not drawn\n";
-    return;
+    note_build();
+    summary.frames = 1;
+    summary.outputs.push_back(out);
+    summary.total_seconds = elapsed();
+    return summary;
   }
 
   // Orbit: build once, then the per-view stages for every frame.
@@ -232,6 +223,7 @@ void render_command(const render_request& request, std::ostream& log) {
   view::pipeline build;
   build.add("build", view::build_stage);
   build.run(f, stage_log);
+  note_build();
   for (std::size_t k = 0; k < views.size(); ++k) {
     f.view = views[k];
     if (request.verbose) {
@@ -245,7 +237,11 @@ void render_command(const render_request& request, std::ostream& log) {
     const view::stage w = write_stage(frame_path(out, k), kind);
     p.add(w.name, w.run);
     p.run(f, stage_log);
+    summary.outputs.push_back(frame_path(out, k));
   }
+  summary.frames = views.size();
+  summary.total_seconds = elapsed();
+  return summary;
 }
 
 }  // namespace exbsp

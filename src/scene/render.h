@@ -16,11 +16,14 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "bsp/engine.h"
 #include "scene/scene.h"
 
 namespace exbsp {
@@ -31,7 +34,16 @@ struct render_request {
   render_request(std::string scene, std::string output, bool verbose_log = false)
       : scene_path(std::move(scene)), output_path(std::move(output)), verbose(verbose_log) {}
 
-  std::string scene_path;   ///< empty: the built-in demo scene
+  std::string scene_path;   ///< empty: the built-in demo scene (unless `preloaded` is set)
+  /// A scene made by the caller (e.g. scene::mesh_scene for `render MESH`); used instead of
+  /// reading scene_path.
+  std::optional<scene::scene> preloaded;
+  /// The BSP kernel (empty: the default, exact). An inexact one is for comparisons only.
+  std::string kernel;
+  /// Stop with limit_error when the BSP would need more fragments (0: no limit).
+  std::size_t max_fragments = 0;
+  /// Progress of the BSP build (build_options::progress); may be empty.
+  std::function<void(const build_progress&)> progress;
   std::string output_path;  ///< .png, .svg or .pdf (by extension); "-": PNG on standard output
   bool verbose = false;     ///< print which pipeline stages ran, timings
   bool strict = false;      ///< unknown scene keys are errors (scene::load_scene), not warnings
@@ -43,16 +55,22 @@ struct render_request {
   std::size_t frames = 0;
 };
 
+/// What a render did, for the one-line summary the command line prints.
+struct render_summary {
+  std::size_t triangles = 0, fragments = 0, frames = 0;
+  double build_seconds = 0, total_seconds = 0;
+  std::string kernel;
+  /// Stop with limit_error when the BSP would need more fragments (0: no limit).
+  std::size_t max_fragments = 0;
+  std::vector<std::string> outputs;  ///< files written (or "-")
+};
+
 /// Loads the scene, builds one BSP of all its meshes, renders and writes output_path
 /// atomically (no partial file on error). With an orbit, writes the frames OUT_0000.png ...
-/// from one build. Log lines go to `log`.
+/// from one build. Log lines go to `log`. Returns what was done.
 /// Throws scene_error / input_error / output_error (exit 2), limit_error (exit 3), usage_error
 /// for a bad output name or orbit request (exit 2).
-void render_command(const render_request& request, std::ostream& log);
-
-/// Parses "X0,Y0:X1,Y1:..." (at least one point, finite numbers). Throws usage_error naming
-/// `option` otherwise.
-std::vector<std::array<double, 2>> parse_drag_path(const std::string& text, const std::string& option = "--orbit-drag");
+render_summary render_command(const render_request& request, std::ostream& log);
 
 /// OUT.png -> OUT_0000.png (k with at least 4 digits, before the extension).
 std::string frame_path(const std::string& output, std::size_t k);

@@ -4,9 +4,9 @@
 // Notation: window coordinates as viewport.h (y up, origin at the image's lower-left corner);
 // the viewport's picture has its lower-left corner at (place_x, place_y) of the image
 // (view_setup). PNG: the image is the background colour with the picture copied in; image row
-// r = image_height - 1 - j. SVG: an outer <svg> of the image's size with a background
-// rectangle, the viewport's document nested as an <svg> at x = place_x, y = image_height -
-// place_y - viewport height (SVG's y points down).
+// r = image_height - 1 - j. SVG and PDF are placed the same way by their own stages (the
+// drawing's placement, vector_drawing.h; svg_writer.h, vector_pdf.h), so this stage leaves
+// f.svg and f.pdf alone.
 #pragma once
 #include <string>
 
@@ -14,7 +14,7 @@
 
 namespace exbsp::view {
 
-/// Composes f.picture (PNG) or f.svg (SVG, when not empty) into the image of f.view.
+/// Composes f.picture (PNG) into the image of f.view.
 /// Precondition: the viewport lies inside the image. Returns a note for the verbose log.
 std::string place_stage(frame& f);
 

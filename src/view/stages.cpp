@@ -197,6 +197,7 @@ std::string svg_stage(frame& f) {
   f.svg = f.lines.empty() && !f.fog ? svg_document(f.view.vp, f.background, f.polygons)
                                      : svg_document(f.view.vp, f.background, f.polygons, f.lines,
                                                     f.fog ? &*f.fog : nullptr);
+  if (f.view.needs_placement()) f.svg = place_svg(f.svg, f.view.vp.height, placement_of(f));
   return "painter: " + std::to_string(f.polygons.size()) + " paths, " + std::to_string(f.lines.size()) +
          " curve pieces, " + std::to_string(f.svg.size()) + " bytes";
 }

@@ -121,7 +121,18 @@ std::string svg_document(const vector_drawing& d) {
   }
   if (!group.empty()) out += "</g>\n";
   out += "</svg>\n";
-  return out;
+  return d.placed() ? place_svg(out, d.height, d.placement) : out;
+}
+
+std::string place_svg(const std::string& document, int height, const drawing_placement& placement) {
+  std::string inner = document;
+  if (inner.compare(0, 5, "<?xml") == 0) inner.erase(0, inner.find('\n') + 1);
+  const std::string x = std::to_string(placement.x), y = std::to_string(placement.image_height - placement.y - height);
+  inner.replace(inner.find("<svg "), 5, "<svg x=\"" + x + "\" y=\"" + y + "\" ");
+  const std::string iw = std::to_string(placement.image_width), ih = std::to_string(placement.image_height);
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
+         iw + "\" height=\"" + ih + "\" viewBox=\"0 0 " + iw + " " + ih + "\">\n<rect x=\"0\" y=\"0\" width=\"" + iw +
+         "\" height=\"" + ih + "\" fill=\"" + hex_color(placement.background) + "\"/>\n" + inner + "</svg>\n";
 }
 
 std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons) {

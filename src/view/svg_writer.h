@@ -23,6 +23,12 @@
 // 1 x 1 square. With fog (fog.h) each polygon is filled with its colour fogged at its window
 // centroid (flat: SVG has no per-pixel fog), each curve piece at its midpoint (one path per
 // piece), and the background rectangle takes the fog colour.
+//
+// Placement (a viewport inside a larger "image", DESIGN.md section 5): both documents are
+// nested, unchanged, as an inner <svg x=".." y=".." width height> (which clips to the
+// viewport, as the PNG's copy does) in an outer <svg> of the image's size whose background
+// rectangle has the scene's background colour; y = image_height - place_y - height (SVG's y
+// points down). The PNG's "place" stage (placement.h) puts the raster picture in the same place.
 #pragma once
 #include <string>
 #include <vector>
@@ -45,8 +51,13 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
 std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons,
                          const std::vector<screen_line>& lines, const fog_shading* fog);
 
-/// The SVG document of a visible-region drawing (notation above).
+/// The SVG document of a visible-region drawing (notation above), placed in its image when
+/// d.placed().
 std::string svg_document(const vector_drawing& d);
+
+/// `document` (an SVG document of a viewport `height` pixels high) nested in the image of
+/// `placement` (notation above). Precondition: the viewport lies inside the image.
+std::string place_svg(const std::string& document, int height, const drawing_placement& placement);
 
 /// Stroke widths and dash pattern of edges (pixels), shared by the SVG and PDF writers.
 constexpr double visible_edge_width = 1.0;

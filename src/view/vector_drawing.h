@@ -98,13 +98,32 @@ struct vector_path {
   std::vector<std::vector<grid_point>> rings;  ///< closed rings (regions) or open polylines
 };
 
+/// Where a drawing goes in the output image (DESIGN.md section 5 "image"; the PNG's "place"
+/// stage, placement.h): the image is image_width x image_height pixels of `background`, with
+/// the drawing's lower-left corner at (x, y) (window coordinates, y up), clipped to the drawing.
+struct drawing_placement {
+  int image_width = 0, image_height = 0;  ///< 0 x 0: the image is the drawing
+  int x = 0, y = 0;
+  rgb8 background{255, 255, 255};  ///< the image around the drawing (the scene's background)
+};
+
 /// A drawing: background, then the paths in drawing order.
 struct vector_drawing {
   int width = 0, height = 0;  ///< pixels (the viewport)
   rgb8 background{255, 255, 255};
   bool painter = false;       ///< the painter's stack (one region per fragment, back to front)
   std::vector<vector_path> paths;
+  drawing_placement placement;  ///< set from the frame's view (view_setup::needs_placement)
+
+  /// True when the image is larger than the drawing or the drawing is not at its origin.
+  bool placed() const {
+    return placement.image_width > 0 && (placement.image_width != width || placement.image_height != height ||
+                                         placement.x != 0 || placement.y != 0);
+  }
 };
+
+/// The placement of a frame's drawing (from f.view and f.background).
+drawing_placement placement_of(const frame& f);
 
 /// The visible-region drawing of a frame whose transform+clip stage ran (and curves and fog
 /// stages when present): underlays, regions sorted by (mesh, face), then hidden edges (when asked),

@@ -26,12 +26,23 @@ std::string pdf_document(const vector_drawing& d) {
   std::string bytes;
   const double h = d.height;
   const double unit = 1.0 / static_cast<double>(grid_per_pixel);
+  const bool placed = d.placed();
+  const drawing_placement& place = d.placement;
   {
     std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-        cairo_pdf_surface_create_for_stream(append_bytes, &bytes, d.width, d.height), cairo_surface_destroy);
+        cairo_pdf_surface_create_for_stream(append_bytes, &bytes, placed ? place.image_width : d.width,
+                                            placed ? place.image_height : d.height),
+        cairo_surface_destroy);
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "exbsp");
     std::unique_ptr<cairo_t, decltype(&cairo_destroy)> context(cairo_create(surface.get()), cairo_destroy);
     cairo_t* cr = context.get();
+    if (placed) {  // the image's background, then the drawing translated and clipped to its viewport
+      set_color(cr, place.background);
+      cairo_paint(cr);
+      cairo_translate(cr, place.x, place.image_height - place.y - d.height);
+      cairo_rectangle(cr, 0, 0, d.width, d.height);
+      cairo_clip(cr);
+    }
     auto move_line = [&](const std::vector<grid_point>& ring) {
       for (std::size_t k = 0; k < ring.size(); ++k) {
         const double x = ring[k].x * unit, y = h - ring[k].y * unit;

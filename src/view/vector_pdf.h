@@ -4,7 +4,9 @@
 // Notation: one PDF point per pixel (the page is width x height pt); cairo's user space has
 // its origin at the top-left corner with y down, so a grid point (X, Y) is drawn at
 // (X / 100, height - Y / 100), the SVG's coordinates. Regions are filled with the nonzero
-// (winding) rule; edges and curves are stroked as in svg_writer.h.
+// (winding) rule; edges and curves are stroked as in svg_writer.h. A placed drawing
+// (vector_drawing::placed) is drawn on a page of the image's size, filled with the image's
+// background, translated to (x, image_height - y - height) and clipped to its viewport.
 #pragma once
 #include <string>
 

@@ -11,7 +11,7 @@
 # exits with status 1 after the summary. Logs: build/logs/<target>.log.
 #
 # Environment:
-#   FUZZ_TARGETS      targets to run (default: "fuzz_off fuzz_obj fuzz_ply fuzz_stl fuzz_scene fuzz_number")
+#   FUZZ_TARGETS      targets to run (default: "fuzz_off fuzz_obj fuzz_ply fuzz_stl fuzz_scene fuzz_number fuzz_tree")
 #   FUZZ_MAX_LEN      largest input in bytes (default 16384)
 #   FUZZ_TIMEOUT      seconds per input before libFuzzer reports a timeout (default 2)
 #   FUZZ_JOBS         parallel compile jobs (default 2)
@@ -21,7 +21,7 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 runs="${1:-1000000}"
-targets="${FUZZ_TARGETS:-fuzz_off fuzz_obj fuzz_ply fuzz_stl fuzz_scene fuzz_number}"
+targets="${FUZZ_TARGETS:-fuzz_off fuzz_obj fuzz_ply fuzz_stl fuzz_scene fuzz_number fuzz_tree}"
 max_len="${FUZZ_MAX_LEN:-16384}"
 timeout="${FUZZ_TIMEOUT:-2}"
 jobs="${FUZZ_JOBS:-2}"

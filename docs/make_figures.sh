@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Regenerates the README's pictures from the committed code (one command):
+#   docs/make_figures.sh [BUILD_DIR]   (default build/, built by scripts/build)
+# - docs/images/demo.png: `exbsp render` of the built-in demo scene;
+# - docs/images/exact_vs_double.png and .json: bench/kernel_figure on the CGAL corpus's pinion
+#   (data/meshes, extracted by scripts/setup): exact | double | pixels that differ.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${1:-$here/build}"
+[ -x "$build/src/app/exbsp" ] && [ -x "$build/bench/kernel_figure" ] ||
+  { echo "make_figures: build first (scripts/build)" >&2; exit 2; }
+cd "$here"
+"$build/src/app/exbsp" render -q -o "$here/docs/images/demo.png"
+"$build/bench/kernel_figure" data/meshes/pinion.off "$here/docs/images/exact_vs_double.png" \
+  --kernel double --view iso --size 360x360 | tee "$here/docs/images/exact_vs_double.json"

@@ -1,0 +1,105 @@
+// Saved trees of the exact kernel: the point table and the fragments (docs/tree-file.md).
+// Notation: see geometry_exact.h; V input vertices (point ids 0 .. V-1), C constructed points
+// SEG(p, q, plane) (ids V .. V+C-1 in the file, each after its endpoints), F fragments.
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include "bsp/geometry_exact.h"
+#include "bsp/tree_file.h"
+#include "core/errors.h"
+
+namespace exbsp {
+
+void exact_geometry::write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments) const {
+  // The constructed points in use: the fragments' vertices and, transitively, the endpoints of
+  // their segments. Endpoints have smaller ids (a point is made after them), so one pass
+  // downwards closes the set. Unused slots of claimed blocks are left out.
+  std::vector<char> used(claimed_, 0);
+  for (const fragment& f : fragments)
+    for (std::uint32_t id : f.v) used[id] = 1;
+  for (std::uint32_t id = claimed_; id-- > inputs_;) {
+    if (!used[id]) continue;
+    const point& pt = at(id);
+    used[pt.p] = used[pt.q] = 1;
+  }
+  std::vector<std::uint32_t> renumbered(claimed_, none);
+  std::uint32_t next = 0;
+  for (; next < inputs_; ++next) renumbered[next] = next;
+  for (std::uint32_t id = inputs_; id < claimed_; ++id)
+    if (used[id]) renumbered[id] = next++;
+  out.u64(next - inputs_);
+  for (std::uint32_t id = inputs_; id < claimed_; ++id) {
+    if (!used[id]) continue;
+    const point& pt = at(id);
+    out.u32(renumbered[pt.p]);
+    out.u32(renumbered[pt.q]);
+    out.u32(pt.plane);
+  }
+  out.u64(fragments.size());
+  for (const fragment& f : fragments) {
+    for (std::uint32_t id : f.v) out.u32(renumbered[id]);
+    out.u32(f.source);
+  }
+}
+
+void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& soup, const std::vector<char>& usable,
+                                    std::vector<fragment>& fragments) {
+  using tree_file::indexed;
+  const std::uint32_t triangles = static_cast<std::uint32_t>(soup.triangles.size());
+  const auto check_plane = [&](std::size_t at, const std::string& field, std::uint32_t plane, const char* what) {
+    if (plane >= triangles)
+      in.fail_at(at, field, std::string(what) + " " + std::to_string(plane) + " out of range (" +
+                                std::to_string(triangles) + " triangles)");
+    if (!usable[plane])
+      in.fail_at(at, field, std::string(what) + " " + std::to_string(plane) + " is a degenerate triangle (no plane)");
+  };
+
+  // Constructed points, each checked and approximated after its endpoints.
+  const std::uint64_t capacity = (std::uint64_t{1} << max_point_bits) - 2 * block - inputs_;
+  const auto constructed = static_cast<std::uint32_t>(in.count("points", 12, capacity));
+  const std::uint32_t total = inputs_ + constructed;
+  for (std::uint32_t c = 0; total && c <= (total - 1) >> chunk_bits; ++c)
+    if (!chunks_[c]) chunks_[c].reset(new point[chunk_size]);
+  claimed_ = std::max(claimed_, total);
+  for (std::uint32_t id = inputs_; id < total; ++id) {
+    const std::size_t where = in.offset();
+    const std::uint32_t p = in.u32("points"), q = in.u32("points"), plane = in.u32("points");
+    const std::string field = indexed("points", id);
+    if (p >= id || q >= id)
+      in.fail_at(where, field, "endpoint " + std::to_string(std::max(p, q)) + " is not an earlier point");
+    check_plane(where, field, plane, "plane");
+    point& x = at(id);
+    x.p = p;
+    x.q = q;
+    x.plane = plane;
+    // Exact signs (filter, structure, GMP): p and q strictly on opposite sides, so the
+    // point's exact value (fp q - fq p) / (fp - fq) has a non-zero denominator.
+    int budget = 32;
+    const int sp = point_sign(plane, p, budget);
+    budget = 32;
+    const int sq = point_sign(plane, q, budget);
+    if (sp * sq >= 0)
+      in.fail_at(where, field,
+                 "the segment between points " + std::to_string(p) + " and " + std::to_string(q) +
+                     " does not cross the plane of triangle " + std::to_string(plane));
+    approximate(id);
+  }
+
+  const std::size_t count = in.count("fragments", 16, std::numeric_limits<std::uint32_t>::max());
+  fragments.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t at = in.offset();
+    fragment& f = fragments[i];
+    for (std::uint32_t& id : f.v) id = in.u32("fragments");
+    f.source = in.u32("fragments");
+    for (std::uint32_t id : f.v)
+      if (id >= total)
+        in.fail_at(at, indexed("fragments", i),
+                   "point " + std::to_string(id) + " out of range (" + std::to_string(total) + " points)");
+    check_plane(at, indexed("fragments", i), f.source, "source triangle");
+    f.face = soup.triangles[f.source].face;
+  }
+}
+
+}  // namespace exbsp

@@ -1,0 +1,40 @@
+// `exbsp order` output (order_json.h), built as text through core/json_text.h (17 digits).
+#include "bsp/order_json.h"
+
+#include "core/json_text.h"
+
+namespace exbsp {
+
+std::string order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const vec3d& where, bool use_eye) {
+  const bool exact = is_exact(tree.kernel());
+  std::string out;
+  out.reserve(order.size() * (exact ? 400 : 200) + 64);
+  out += use_eye ? "{\"eye\": " : "{\"direction\": ";
+  json_text::append_point(out, where);
+  out += ",\n \"kernel\": \"" + to_string(tree.kernel()) + "\", \"heuristic\": \"" + tree.stats().heuristic +
+         "\",\n \"fragments\": [";
+  for (std::size_t n = 0; n < order.size(); ++n) {
+    const fragment_d f = tree.fragment(order[n]);
+    out += n ? ",\n  {\"face\": " : "\n  {\"face\": ";
+    out += std::to_string(f.face) + ", \"v\": [";
+    for (int i = 0; i < 3; ++i) {
+      if (i) out += ", ";
+      json_text::append_point(out, f.v[i]);
+    }
+    out += "]";
+    if (exact) {
+      const exact_triangle e = tree.fragment_exact(order[n]);
+      out += ", \"exact\": [";
+      for (int i = 0; i < 3; ++i) {
+        if (i) out += ", ";
+        json_text::append_exact_point(out, e[i]);
+      }
+      out += "]";
+    }
+    out += "}";
+  }
+  out += "\n ]}\n";
+  return out;
+}
+
+}  // namespace exbsp
