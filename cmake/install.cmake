@@ -11,13 +11,14 @@ include(CMakePackageConfigHelpers)
 set(EXBSP_PUBLIC_HEADERS
   core/errors.h
   mesh/soup.h mesh/mesh_io.h mesh/gmp_memory.h
-  bsp/engine.h bsp/exact_gmp.h
+  bsp/engine.h bsp/traversal.h bsp/exact_gmp.h
   clip/clip_types.h clip/bbox.h clip/cohen_sutherland.h clip/liang_barsky.h
   clip/sutherland_hodgman.h clip/convex_region.h clip/homogeneous.h clip/homogeneous_segment.h
   clip/section.h
   view/matrix.h view/camera.h view/phigs.h view/projection.h view/viewport.h view/transforms.h
   view/image.h view/png_io.h view/effect_settings.h view/screen_line.h view/screen_polygon.h
-  view/vector_drawing.h view/pipeline.h view/stages.h view/effects.h view/trackball.h view/bezier.h
+  view/vector_drawing.h view/sample_shader.h view/pipeline.h view/stages.h view/standard_pipeline.h
+  view/trackball.h view/bezier.h
   scene/procedural.h
   adapters/triangle_list.h adapters/cgal_face_graph.h
   exbsp.h)

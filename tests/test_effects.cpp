@@ -1,6 +1,6 @@
 // Tests of the opt-in effects (src/view/{lighting,fog,antialias,depth_of_field}.*), their
 // parameters in scene files, the stage lists ("a scene that names no effect pays nothing"),
-// and Bézier curves in the painter's sequence (src/view/curves.*, segment_clip.*,
+// and Bézier curves in the painter's sequence (src/view/curves.*, clip_stage.*,
 // line_raster.h): the depth rule against a brute-force per-pixel depth oracle, SVG order,
 // curves behind the eye, the line pixel rule.
 #include <gtest/gtest.h>
@@ -33,7 +33,6 @@
 #include "view/paint.h"
 #include "view/projection.h"
 #include "view/rasterizer.h"
-#include "view/segment_clip.h"
 #include "view/stages.h"
 
 namespace {
@@ -263,7 +262,6 @@ TEST(NoEffects, FrameProductsOfEffectsStayEmpty) {
   EXPECT_TRUE(f.fragment_colors.empty());
   EXPECT_TRUE(f.lines.empty());
   EXPECT_FALSE(f.fog.has_value());
-  EXPECT_FALSE(f.cells);
   EXPECT_EQ(f.picture.pixel(16, 16), (rgb8{200, 10, 10}));
 }
 
@@ -862,6 +860,132 @@ TEST(CurveDepth, CurvesWorkWithEveryEffectAndCullingShiftsTheirSlots) {
     EXPECT_FALSE(f.lines.empty());
     for (const screen_line& l : f.lines) EXPECT_LE(l.slot, f.polygons.size());
     EXPECT_LT(count_color(f.picture, f.background), 120 * 90);
+  }
+}
+
+// Degenerate placements: points and whole curves exactly on a node plane.
+
+/// Pixels of colour c in f's picture and in the picture of its curves alone.
+std::pair<int, int> drawn_and_bare(frame& f, rgb8 c) {
+  run(f, {});
+  frame bare = perspective_frame(triangle_soup{}, {}, f.view.cam, f.view.vp.width, f.view.vp.height);
+  bare.view = f.view;
+  bare.curves = f.curves;
+  run(bare, {});
+  return {count_color(f.picture, c), count_color(bare.picture, c)};
+}
+
+TEST(CurveDepth, ACurveEndExactlyOnAFacePlaneGoesWithItsOtherEnd) {
+  triangle_soup s;
+  add_quad(s, {-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0});
+  for (double eye_z : {6.0, -6.0}) {
+    frame f = perspective_frame(s, {{200, 200, 200}}, {{0.2, -0.3, eye_z}, {0, 0, 0}, {0, 1, 0}}, 100, 100);
+    // Rises from a point of the face (exactly on its plane) to z = 1.5, and a curve touching
+    // the plane at t = 1/2 only (control points z = 1, -1, 1: B(1/2) has z = 0 exactly).
+    f.curves.push_back({{{-1.5, -1, 0}, {0, 0, 1}, {1.5, 1, 1.5}}, {0, 0, 0}});
+    f.curves.push_back({{{-1, 1.2, 1}, {0, 1.2, -1}, {1, 1.2, 1}}, {255, 0, 0}});
+    const auto [black, bare_black] = drawn_and_bare(f, {0, 0, 0});
+    const auto [red, bare_red] = drawn_and_bare(f, {255, 0, 0});
+    EXPECT_GT(bare_black, 40);
+    EXPECT_GT(bare_red, 20);
+    if (eye_z > 0) {  // in front of the face: all of both curves
+      EXPECT_EQ(black, bare_black);
+      EXPECT_EQ(red, bare_red);
+    } else {  // behind it: hidden where the face covers them
+      EXPECT_LT(black, bare_black / 2);
+      EXPECT_LT(red, bare_red / 2);
+    }
+  }
+}
+
+TEST(CurveDepth, ALineLyingInAFacePlaneIsDrawnOverItFromBothSides) {
+  triangle_soup s;
+  add_quad(s, {-2, -2, -2}, {2, -2, -2}, {2, 2, 2}, {-2, 2, 2});  // the plane z = y
+  for (double side : {1.0, -1.0}) {
+    frame f = perspective_frame(s, {{200, 200, 200}}, {{0.3, -5 * side, 5 * side}, {0, 0, 0}, {0, 0, 1}}, 100, 100);
+    curve_spec line;
+    line.control_points = {{-1.3, 0.7, 0.7}, {1.1, -0.3, -0.3}, {0.9, 1.7, 1.7}, {-1.9, -1.1, -1.1}};
+    line.polyline = true;
+    f.curves.push_back(line);
+    const auto [drawn, bare] = drawn_and_bare(f, {0, 0, 0});
+    EXPECT_GT(bare, 60);
+    EXPECT_EQ(drawn, bare) << side;
+  }
+}
+
+TEST(CurveDepth, ACurveInTheTiltedPlaneOfAFaceIsDrawnOverItDespiteRounding) {
+  // A quadratic curve lies in the plane of its control points; the face is their triangle.
+  // Flattened points round off that plane by an ulp to either side; the control points'
+  // signs (all 0) put every chord on the plane, so the curve is a decal on the face.
+  const vec3d p0{-1.3, -0.7, 0.2}, p1{0.1, 2.9, -0.45}, p2{1.7, -0.9, 0.35};
+  triangle_soup s;
+  s.vertices = {p0, p1, p2};
+  s.add_polygon({0, 1, 2}, 0);
+  for (double side : {1.0, -1.0}) {
+    frame f = perspective_frame(s, {{200, 200, 200}}, {{0.4 * side, -0.5 * side, 6 * side}, {0, 0.4, 0}, {0, 1, 0}},
+                                120, 120);
+    f.curves.push_back({{p0, p1, p2}, {0, 0, 0}});
+    const auto [drawn, bare] = drawn_and_bare(f, {0, 0, 0});
+    EXPECT_GT(bare, 60);
+    EXPECT_EQ(drawn, bare) << side;
+  }
+}
+
+/// The cell of point p (sides clamped into [lo, hi] per node as the depth rule does for a
+/// piece of a curve with those hull signs), or {-1, 0} when p lies on a node plane.
+std::pair<std::int32_t, int> cell_of(const bsp& tree, const vec3d& p, const std::vector<vec3d>& hull) {
+  std::int32_t at = 0;
+  for (;;) {
+    const bsp_node n = tree.node(static_cast<std::size_t>(at));
+    int lo = 1, hi = -1;
+    for (const vec3d& h : hull) lo = std::min(lo, side_of_plane(n, h)), hi = std::max(hi, side_of_plane(n, h));
+    const int s = std::min(hi, std::max(lo, side_of_plane(n, p)));
+    if (s == 0) return {-1, 0};
+    const std::int32_t next = s > 0 ? n.positive : n.negative;
+    if (next < 0) return {at, s};
+    at = next;
+  }
+}
+
+TEST(CurveDepth, EveryPieceIsDrawnAtThePositionOfTheCellHoldingIt) {
+  // Point location of each piece's midpoint, node by node with the exact side test, against
+  // the chord pushing of place_chord: same cell, same position in the painter's sequence.
+  std::vector<frame> frames;
+  for (const char* name : {"curves", "lines"}) {
+    const scene::scene sc = scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
+    scene::scene_geometry g = scene::load_geometry(sc);
+    frame f;
+    f.view = scene::make_view_setup(sc);
+    f.soup = std::move(g.soup);
+    f.face_colors = std::move(g.face_colors);
+    f.curves = sc.curves;
+    frames.push_back(std::move(f));
+  }
+  frames.push_back(weaving_frame(240, 180));
+  frame o = weaving_frame(240, 180);
+  o.view.kind = projection_kind::orthographic;
+  o.view.projection = ortho(-4, 4, -3, 3, 1, 30);
+  o.view.direction = gaze_direction(o.view.cam);
+  frames.push_back(std::move(o));
+  for (frame& f : frames) {
+    run(f, {});
+    const curve_cells cells = make_curve_cells(*f.tree, f.view, f.order);
+    const placed_curves placed = place_curves(f);
+    ASSERT_GT(placed.pieces.size(), 10u);
+    std::size_t checked = 0;
+    for (const curve_piece& piece : placed.pieces) {
+      const vec3d m{0.5 * (piece.a[0] + piece.b[0]), 0.5 * (piece.a[1] + piece.b[1]), 0.5 * (piece.a[2] + piece.b[2])};
+      const curve_spec& c = f.curves[piece.curve];
+      const std::vector<vec3d> hull = c.polyline ? std::vector<vec3d>{c.control_points[piece.segment],
+                                                                      c.control_points[piece.segment + 1]}
+                                                 : c.control_points;
+      const auto [node, side] = cell_of(*f.tree, m, hull);
+      if (node < 0) continue;  // on a plane: the eye's side decides (ACurveDrawnOnAFace...)
+      ++checked;
+      EXPECT_EQ(piece.order_position, cells.position[static_cast<std::size_t>(node)][side > 0])
+          << "curve " << piece.curve << " segment " << piece.segment << " at t " << piece.t_begin;
+    }
+    EXPECT_GT(checked, placed.pieces.size() / 2);
   }
 }
 

@@ -26,6 +26,10 @@ public:
   virtual std::vector<bsp::ancestor> ancestors(std::size_t i) const = 0;
   /// Writes the body of a saved tree (tree_file.h): the common part, then the kernel's own.
   virtual void write_tree(tree_file::writer& out) const = 0;
+  virtual std::size_t node_count() const = 0;
+  virtual bsp_node node(std::size_t k) const = 0;
+  /// The traversal for an eye point (direction = false) or a direction of projection.
+  virtual void traverse(const vec3d& at, bool direction, bsp_visitor& visitor, bool back_to_front) const = 0;
 };
 
 /// The library's access to a bsp's implementation (bsp is its friend).
@@ -33,6 +37,13 @@ class bsp_access {
 public:
   static const bsp_impl& impl(const bsp& tree) { return *tree.impl_; }
 };
+
+namespace detail {
+/// usage_error "<function>: the eye must be finite" (engine.cpp).
+void require_eye(const vec3d& eye, const char* function);
+/// usage_error unless d is finite and not zero.
+void require_direction(const vec3d& d, const char* function);
+}  // namespace detail
 
 std::unique_ptr<bsp_impl> make_bsp_exact(const triangle_soup&, const build_options&);
 std::unique_ptr<bsp_impl> make_bsp_epeck(const triangle_soup&, const build_options&);

@@ -74,6 +74,42 @@ public:
     return traverse([&](std::uint32_t plane) { return geom_.side_of_direction(plane, d); }, back_to_front);
   }
 
+  /// The traversal of bsp/traversal.h, iterative: enter(node, s) when a node is reached,
+  /// list(node) at its coplanar list's place, cell(node, side) at an empty side's place.
+  /// s = side_of(plane source): s > 0 or 0: negative side, list, positive side; s < 0: positive,
+  /// list, negative (back to front; front to back visits the near side first).
+  template <class SideOf, class Enter, class List, class Cell>
+  void walk(SideOf&& side_of, bool back_to_front, Enter&& enter, List&& list, Cell&& cell) const {
+    if (nodes_.empty()) return;
+    struct task {
+      std::int32_t node;
+      std::int8_t then;  ///< 0: reach the node; +1 / -1: its list, then that side's cell if empty
+    };
+    std::vector<task> stack{{0, 0}};
+    while (!stack.empty()) {
+      const task t = stack.back();
+      stack.pop_back();
+      const node& nd = nodes_[t.node];
+      if (t.then != 0) {
+        list(t.node);
+        if ((t.then > 0 ? nd.positive : nd.negative) < 0) cell(t.node, static_cast<int>(t.then));
+        continue;
+      }
+      const int s = side_of(nd.plane_source);
+      enter(t.node, s);
+      const int near = s < 0 ? -1 : 1;
+      const int first = back_to_front ? -near : near;
+      const std::int32_t first_child = first > 0 ? nd.positive : nd.negative;
+      const std::int32_t second_child = first > 0 ? nd.negative : nd.positive;
+      if (second_child >= 0) stack.push_back({second_child, 0});
+      stack.push_back({t.node, static_cast<std::int8_t>(-first)});
+      if (first_child >= 0)
+        stack.push_back({first_child, 0});
+      else
+        cell(t.node, first);
+    }
+  }
+
 private:
   /// Refs to fragments: a pool_ index, or local_ref | index into a subtree's own pieces.
   static constexpr std::uint32_t local_ref = 0x80000000u;
@@ -112,42 +148,19 @@ private:
   std::vector<std::uint32_t> traverse(SideOf side_of, bool back_to_front) const {
     std::vector<std::uint32_t> out;
     out.reserve(fragments_.size());
-    if (nodes_.empty()) return out;
-    struct task {
-      std::int32_t node;
-      bool emit;
-    };
-    std::vector<task> stack{{0, false}};
-    while (!stack.empty()) {
-      const task t = stack.back();
-      stack.pop_back();
-      const node& nd = nodes_[t.node];
-      if (t.emit) {
-        for (std::uint32_t k = 0; k < nd.count; ++k) out.push_back(nd.first + k);
-        continue;
-      }
-      const int s = side_of(nd.plane_source);
-      // s > 0: negative, list, positive; s < 0: positive, list, negative; s = 0: as s > 0.
-      const std::int32_t first = s < 0 ? nd.positive : nd.negative;
-      const std::int32_t second = s < 0 ? nd.negative : nd.positive;
-      if (second >= 0) stack.push_back({second, false});
-      stack.push_back({t.node, true});
-      if (first >= 0) stack.push_back({first, false});
-    }
+    const auto none = [](std::int32_t, int) {};
+    walk(side_of, true, none, [&](std::int32_t k) {
+      for (std::uint32_t i = 0; i < nodes_[k].count; ++i) out.push_back(nodes_[k].first + i);
+    }, none);
     if (!back_to_front) std::reverse(out.begin(), out.end());
     return out;
   }
-  std::size_t choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part, int heuristic,
-                              std::uint64_t seed, std::uint64_t node_key, unsigned threads) const;
-  std::size_t choose_min_split(const std::vector<std::uint32_t>& list, const subtree& part,
-                               unsigned threads) const;
-  std::size_t choose_sampled(const std::vector<std::uint32_t>& list, const subtree& part,
-                             std::uint64_t seed, std::uint64_t node_key) const;
+
+  /// The list position of the splitter (heuristics.h).
+  std::size_t choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part,
+                              const build_context& ctx, std::uint64_t node_key, std::uint32_t depth) const;
 
   G geom_;
-  struct {
-    unsigned candidates, samples, weight;
-  } sampled_{16, 512, 8};
   std::vector<fragment> pool_;  ///< build time only: every fragment made, by index
   std::vector<std::uint32_t> node_fragments_;  ///< build time only: pool indices, node by node
   std::vector<fragment> fragments_;

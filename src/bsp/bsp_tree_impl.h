@@ -1,6 +1,6 @@
 // Definitions of basic_bsp_tree<G>. Included only by the per-kernel translation units
 // (bsp_<kernel>.cpp), which instantiate them explicitly.
-// Notation: see bsp_tree.h. Heuristic indices: 0 naive, 1 min-split, 2 sampled, 3 random.
+// Notation: see bsp_tree.h. The splitter heuristics are in heuristics.h.
 #pragma once
 #include <omp.h>
 
@@ -9,9 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
-#include <exception>
 #include <iterator>
-#include <limits>
 #include <mutex>
 #include <string>
 #include <utility>
@@ -19,54 +17,12 @@
 #include "bsp/bsp_impl.h"
 #include "bsp/bsp_tree.h"
 #include "bsp/exact_output.h"
+#include "bsp/heuristics.h"
+#include "bsp/parallel.h"
 #include "bsp/tree_file_impl.h"
 #include "core/errors.h"
 
 namespace exbsp {
-namespace detail {
-
-/// splitmix64: a fixed, portable mixing function (the same stream on every machine,
-/// unlike std::uniform_int_distribution).
-inline std::uint64_t mix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-int heuristic_index(const std::string& name);
-
-/// OpenMP team size for a requested thread count (0: all cores).
-inline int threads_for(unsigned requested) {
-  return requested ? static_cast<int>(requested) : omp_get_max_threads();
-}
-
-/// Collects the first exception thrown inside an OpenMP loop body (an exception must not
-/// leave a parallel region: that would terminate the process) and rethrows it outside.
-class parallel_failure {
-public:
-  template <class Body>
-  void run(Body&& body) {
-    if (failed_.load(std::memory_order_relaxed)) return;
-    try {
-      body();
-    } catch (...) {
-#pragma omp critical(exbsp_parallel_failure)
-      if (!error_) error_ = std::current_exception();
-      failed_.store(true);
-    }
-  }
-  bool failed() const { return failed_.load(std::memory_order_relaxed); }
-  void rethrow() {
-    if (error_) std::rethrow_exception(error_);
-  }
-
-private:
-  std::atomic<bool> failed_{false};
-  std::exception_ptr error_;
-};
-
-}  // namespace detail
 
 /// Classification of f against the plane; skips the third predicate when the first two
 /// already have opposite signs.
@@ -81,10 +37,10 @@ classification basic_bsp_tree<G>::classify(std::uint32_t plane, const fragment& 
 /// Shared state of one build: options and the counters updated by all threads.
 template <class G>
 struct basic_bsp_tree<G>::build_context {
-  build_context(const build_options& o, int h, std::chrono::steady_clock::time_point t)
+  build_context(const build_options& o, detail::heuristic_id h, std::chrono::steady_clock::time_point t)
       : options(o), heuristic(h), start(t) {}
   const build_options& options;
-  int heuristic;
+  detail::heuristic_id heuristic;
   std::chrono::steady_clock::time_point start;
   std::atomic<std::size_t> total_fragments{0}, splits{0}, placed{0}, nodes{0};
   std::mutex progress_mutex;
@@ -117,12 +73,11 @@ template <class G>
 basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options& options) : geom_(soup) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
-  const int heuristic = detail::heuristic_index(options.heuristic);
+  const detail::heuristic_id heuristic = detail::heuristic_for(options);
   stats_.kernel = to_string(G::id);
   stats_.heuristic = options.heuristic;
   stats_.seed = options.seed;
   stats_.input_triangles = soup.triangles.size();
-  sampled_ = {options.sampled_candidates, options.sampled_samples, options.sampled_split_weight};
 
   for (std::size_t i = 0; i < soup.vertices.size(); ++i)
     for (double x : soup.vertices[i])
@@ -262,7 +217,7 @@ template <class PushChild>
 void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx, PushChild&& push_child) {
   const auto fragment_at = [&](std::uint32_t ref) -> const fragment& { return resolve(part, ref); };
   const build_options& options = ctx.options;
-  const std::size_t splitter = choose_splitter(w.list, part, ctx.heuristic, options.seed, w.key, options.threads);
+  const std::size_t splitter = choose_splitter(w.list, part, ctx, w.key, w.depth);
   const std::uint32_t plane_source = fragment_at(w.list[splitter]).source;
 
   const auto id = static_cast<std::int32_t>(part.nodes.size());
@@ -336,110 +291,31 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx, P
 
 template <class G>
 std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part,
-                                         int heuristic, std::uint64_t seed, std::uint64_t node_key,
-                                         unsigned threads) const {
-  if (list.size() <= 1) return 0;
-  switch (heuristic) {
-    case 0: return 0;
-    case 1: return choose_min_split(list, part, threads);
-    case 2: return choose_sampled(list, part, seed, node_key);
-    default: return detail::mix64(seed ^ detail::mix64(node_key)) % list.size();
-  }
-}
-
-// min-split: the fragment whose plane straddles the fewest others, ties to the earliest.
-// Candidates are ranked by the key (count, index). The best complete key so far bounds the
-// rest: candidate j stops as soon as (count so far, j) can no longer beat it, so once a plane
-// with 0 straddlers is found at i, every later candidate is skipped at once. A fragment found
-// coplanar with an earlier candidate has the same count and loses the tie: it is skipped.
-// Candidates run in parallel; the result does not depend on scheduling.
-template <class G>
-std::size_t basic_bsp_tree<G>::choose_min_split(const std::vector<std::uint32_t>& list, const subtree& part,
-                                          unsigned threads) const {
-  const auto fragment_at = [&](std::uint32_t ref) -> const fragment& { return resolve(part, ref); };
+                                               const build_context& ctx, std::uint64_t node_key,
+                                               std::uint32_t depth) const {
   const std::size_t n = list.size();
-  std::vector<std::atomic<unsigned char>> same_plane(n);
-  for (auto& f : same_plane) f.store(0, std::memory_order_relaxed);
-  const auto key = [](std::uint64_t count, std::uint64_t index) { return count << 32 | index; };
-  std::atomic<std::uint64_t> best{std::numeric_limits<std::uint64_t>::max()};
-  const long long nn = static_cast<long long>(n);
-  detail::parallel_failure failure;
-#pragma omp parallel for schedule(dynamic, 8) if (n > 64) num_threads(detail::threads_for(threads))
-  for (long long ii = 0; ii < nn; ++ii) {
-    failure.run([&] {
-      const auto i = static_cast<std::uint64_t>(ii);
-      if (same_plane[i].load(std::memory_order_relaxed)) return;
-      if (key(0, i) >= best.load(std::memory_order_relaxed)) return;
-      const fragment& candidate = fragment_at(list[i]);
-      std::uint64_t c = 0;
-      for (std::size_t j = 0; j < n; ++j) {
-        if (j == i) continue;
-        const fragment& other = fragment_at(list[j]);
-        const classification cls =
-            other.source == candidate.source ? classification::coplanar : classify(candidate.source, other);
-        const bool coplanar = cls == classification::coplanar;
-        if (cls == classification::straddling) {
-          if (key(++c, i) >= best.load(std::memory_order_relaxed)) return;  // cannot win
-        } else if (coplanar && j > i) {
-          same_plane[j].store(1, std::memory_order_relaxed);
-        }
-      }
-      std::uint64_t b = best.load(std::memory_order_relaxed);
-      const std::uint64_t mine = key(c, i);
-      while (mine < b && !best.compare_exchange_weak(b, mine, std::memory_order_relaxed)) {
-      }
-    });
-  }
-  failure.rethrow();
-  return static_cast<std::size_t>(best.load() & 0xffffffffu);
-}
-
-// sampled: up to C candidates drawn with the seed, each scored on an evenly spaced sample
-// of at most S fragments by W * splits + |positive - negative| (the split/balance score of
-// classic BSP compilers); lowest score wins, ties to the earliest candidate. C, S, W are
-// build_options::sampled_candidates, sampled_samples, sampled_split_weight (16, 512, 8).
-template <class G>
-std::size_t basic_bsp_tree<G>::choose_sampled(const std::vector<std::uint32_t>& list, const subtree& part,
-                                        std::uint64_t seed, std::uint64_t node_key) const {
-  const auto fragment_at = [&](std::uint32_t ref) -> const fragment& { return resolve(part, ref); };
-  const std::size_t n = list.size();
-  const std::size_t max_candidates = std::max(1u, sampled_.candidates);
-  const std::size_t max_sample = std::max(1u, sampled_.samples);
-  const long long weight = sampled_.weight;
-  std::vector<std::size_t> candidates;
-  if (n <= max_candidates) {
-    for (std::size_t i = 0; i < n; ++i) candidates.push_back(i);
-  } else {
-    const std::uint64_t h = detail::mix64(seed ^ detail::mix64(node_key + 0x51ed));
-    for (std::size_t k = 0; k < max_candidates; ++k) candidates.push_back(detail::mix64(h + k) % n);
-    std::sort(candidates.begin(), candidates.end());
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  }
-  const std::size_t m = std::min(n, max_sample);
-  std::size_t best = candidates.front();
-  long long best_score = std::numeric_limits<long long>::max();
-  for (std::size_t i : candidates) {
-    const fragment& candidate = fragment_at(list[i]);
-    long long splits = 0, pos = 0, neg = 0, score = 0;
-    for (std::size_t k = 0; k < m && score < best_score; ++k) {
-      const std::size_t j = k * n / m;
-      const fragment& other = fragment_at(list[j]);
-      if (other.source == candidate.source) continue;  // coplanar by construction
-      switch (classify(candidate.source, other)) {
-        case classification::straddling: ++splits; break;
-        case classification::positive: ++pos; break;
-        case classification::negative: ++neg; break;
-        case classification::coplanar: break;
-      }
-      score = weight * splits;
-    }
-    score = weight * splits + std::llabs(pos - neg);
-    if (score < best_score) {
-      best_score = score;
-      best = i;
+  if (n <= 1) return 0;
+  // cls(i, j): list[j] against list[i]'s plane; the same source is coplanar by construction.
+  const auto cls = [&](std::size_t i, std::size_t j) {
+    const fragment& candidate = resolve(part, list[i]);
+    const fragment& other = resolve(part, list[j]);
+    return other.source == candidate.source ? classification::coplanar : classify(candidate.source, other);
+  };
+  const build_options& o = ctx.options;
+  switch (ctx.heuristic) {
+    case detail::heuristic_naive: return 0;
+    case detail::heuristic_min_split: return detail::choose_min_split(n, cls, o.threads);
+    case detail::heuristic_sampled: return detail::choose_sampled(n, cls, o, node_key);
+    case detail::heuristic_random: return detail::choose_random(n, o.seed, node_key);
+    case detail::heuristic_custom: {
+      const auto ids = [&](std::size_t i) {
+        const fragment& f = resolve(part, list[i]);
+        return std::make_pair(f.face, f.source);
+      };
+      return detail::choose_scored(n, cls, ids, o, node_key, depth);
     }
   }
-  return best;
+  return 0;
 }
 
 template <class G>
@@ -468,10 +344,14 @@ class bsp_kernel_impl final : public bsp_impl {
 public:
   bsp_kernel_impl(const triangle_soup& soup, const build_options& options)
       : input_{{}, 0, options.sampled_candidates, options.sampled_samples, options.sampled_split_weight, soup},
-        tree_(soup, options) {}
+        tree_(soup, options) {
+    init_planes(soup);
+  }
   /// A saved tree (tree_file.h).
   bsp_kernel_impl(tree_file::reader& in, tree_file::common_part&& common)
-      : input_(std::move(common)), tree_(input_, in) {}
+      : input_(std::move(common)), tree_(input_, in) {
+    init_planes(input_.soup);
+  }
   const build_stats& stats() const override { return tree_.stats(); }
   kernel_id kernel() const override { return G::id; }
   std::size_t fragment_count() const override { return tree_.fragments().size(); }
@@ -506,9 +386,36 @@ public:
     tree_.write_tree(out);
   }
 
+  std::size_t node_count() const override { return tree_.nodes().size(); }
+  bsp_node node(std::size_t k) const override {
+    if (k >= tree_.nodes().size()) throw usage_error("node: index out of range");
+    const auto& nd = tree_.nodes()[k];
+    return {static_cast<std::uint32_t>(k), nd.plane_source, planes_[k], nd.first, nd.count,
+            nd.negative, nd.positive, nd.parent, nd.side_in_parent};
+  }
+  void traverse(const vec3d& at, bool direction, bsp_visitor& visitor, bool back_to_front) const override {
+    const auto& geom = tree_.geometry();
+    const auto side_of = [&](std::uint32_t plane) {
+      return direction ? geom.side_of_direction(plane, at) : geom.side_of_eye(plane, at);
+    };
+    tree_.walk(side_of, back_to_front,
+               [&](std::int32_t k, int s) { visitor.enter(node(static_cast<std::size_t>(k)), s); },
+               [&](std::int32_t k) { visitor.fragments(node(static_cast<std::size_t>(k))); },
+               [&](std::int32_t k, int side) { visitor.cell(node(static_cast<std::size_t>(k)), side); });
+  }
+
 private:
+  void init_planes(const triangle_soup& soup) {
+    planes_.reserve(tree_.nodes().size());
+    for (const auto& nd : tree_.nodes()) {
+      const soup_triangle& t = soup.triangles[nd.plane_source];
+      planes_.push_back({soup.vertices[t.v[0]], soup.vertices[t.v[1]], soup.vertices[t.v[2]]});
+    }
+  }
+
   tree_file::common_part input_;  ///< the soup and options, for saving (its stats are unused)
   basic_bsp_tree<G> tree_;
+  std::vector<std::array<vec3d, 3>> planes_;  ///< per node: its plane's three input points
 };
 
 }  // namespace exbsp

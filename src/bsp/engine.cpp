@@ -6,6 +6,7 @@
 #include "bsp/bsp_impl.h"
 #include "bsp/bsp_tree.h"
 #include "bsp/exact_output.h"
+#include "bsp/heuristics.h"
 #include "core/errors.h"
 
 namespace exbsp {
@@ -37,18 +38,27 @@ const std::vector<std::string>& heuristic_names() {
 const char* default_heuristic() { return "sampled"; }
 
 namespace detail {
-int heuristic_index(const std::string& name) {
+heuristic_id heuristic_for(const build_options& options) {
   const auto& names = heuristic_names();
+  const std::string& name = options.heuristic;
+  if (name == "custom") {
+    if (!options.score) throw usage_error("heuristic 'custom' needs a score callback (build_options::score)");
+    return heuristic_custom;
+  }
   for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return static_cast<int>(i);
+    if (names[i] == name) {
+      if (options.score)
+        throw usage_error("a score callback is set but the heuristic is '" + name + "': use heuristic 'custom'");
+      return static_cast<heuristic_id>(i);
+    }
   std::string list;
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-  throw usage_error("unknown heuristic '" + name + "' (expected one of: " + list + ")");
+  throw usage_error("unknown heuristic '" + name + "' (expected one of: " + list + ", or custom with a score callback)");
 }
 }  // namespace detail
 
 bsp bsp::build(const triangle_soup& soup, const build_options& options) {
-  detail::heuristic_index(options.heuristic);  // fail fast on a bad name
+  detail::heuristic_for(options);  // fail fast on a bad name
   switch (options.kernel) {
     case kernel_id::exact: return bsp(make_bsp_exact(soup, options));
     case kernel_id::epeck: return bsp(make_bsp_epeck(soup, options));
@@ -80,17 +90,27 @@ exact_triangle bsp::fragment_exact(std::size_t i) const {
   return exact_text([&](const exact_visitor& visit) { impl_->visit_exact(i, visit); });
 }
 
-std::vector<std::uint32_t> bsp::order_from_eye(const vec3d& eye, bool back_to_front) const {
+namespace detail {
+void require_eye(const vec3d& eye, const char* function) {
   for (double x : eye)
-    if (!std::isfinite(x)) throw usage_error("order_from_eye: the eye must be finite");
+    if (!std::isfinite(x)) throw usage_error(std::string(function) + ": the eye must be finite");
+}
+
+void require_direction(const vec3d& d, const char* function) {
+  for (double x : d)
+    if (!std::isfinite(x)) throw usage_error(std::string(function) + ": the direction must be finite");
+  if (d[0] == 0 && d[1] == 0 && d[2] == 0)
+    throw usage_error(std::string(function) + ": the direction must not be zero");
+}
+}  // namespace detail
+
+std::vector<std::uint32_t> bsp::order_from_eye(const vec3d& eye, bool back_to_front) const {
+  detail::require_eye(eye, "order_from_eye");
   return impl_->order_from_eye(eye, back_to_front);
 }
 
 std::vector<std::uint32_t> bsp::order_for_direction(const vec3d& d, bool back_to_front) const {
-  for (double x : d)
-    if (!std::isfinite(x)) throw usage_error("order_for_direction: the direction must be finite");
-  if (d[0] == 0 && d[1] == 0 && d[2] == 0)
-    throw usage_error("order_for_direction: the direction must not be zero");
+  detail::require_direction(d, "order_for_direction");
   return impl_->order_for_direction(d, back_to_front);
 }
 

@@ -38,7 +38,6 @@ basic_bsp_tree<G>::basic_bsp_tree(const tree_file::common_part& common, tree_fil
   const triangle_soup& soup = common.soup;
   stats_ = common.stats;
   stats_.kernel = to_string(G::id);
-  sampled_ = {common.sampled_candidates, common.sampled_samples, common.sampled_split_weight};
 
   // The input triangles, with the build's degenerate test.
   std::vector<char> usable(soup.triangles.size(), 0);

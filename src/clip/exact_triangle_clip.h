@@ -10,6 +10,9 @@
 //     and (A, B, c) on c's side, in that order;
 //   - one vertex z on the plane, the other two opposite: relabel cyclically to (z, a, b);
 //     X = plane ∩ [a, b]; pieces (z, a, X) on a's side and (z, X, b) on b's side.
+// The classification and the split's combinatorics (which new points, which corners per
+// piece) are the BSP's own, bsp/split_pattern.h: one split for the tree, clipping and
+// sections (section.cpp); only the construction of the points is here.
 // Pieces keep the parent's orientation. With exact constructions (Epeck, Gmpq) the pieces of
 // both sides tile the parent exactly.
 //
@@ -24,6 +27,7 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include "bsp/split_pattern.h"
 #include "core/errors.h"
 
 namespace exbsp::clip {
@@ -43,8 +47,9 @@ struct exact_plane {
   typename K::Point_3 a, b, c;
 };
 
-/// How a triangle lies with respect to a plane (see the notation above).
-enum class triangle_plane_side { positive, negative, coplanar, straddling };
+/// How a triangle lies with respect to a plane (see the notation above): the BSP's
+/// classification (bsp/split_pattern.h).
+using triangle_plane_side = exbsp::classification;
 
 /// Both sides of a split: `positive` holds the pieces in the closed positive side (and a
 /// coplanar triangle), `negative` those in the open negative side, each in piece order.
@@ -116,52 +121,24 @@ typename K::Point_3 crossing_unchecked(const exact_plane<K>& plane, const typena
 }
 
 template <class K>
-triangle_plane_side classify_signs(const std::array<int, 3>& s) {
-  const bool any_pos = s[0] > 0 || s[1] > 0 || s[2] > 0;
-  const bool any_neg = s[0] < 0 || s[1] < 0 || s[2] < 0;
-  if (!any_pos && !any_neg) return triangle_plane_side::coplanar;
-  if (!any_neg) return triangle_plane_side::positive;
-  if (!any_pos) return triangle_plane_side::negative;
-  return triangle_plane_side::straddling;
-}
-
-template <class K>
 exact_split<K> split_unchecked(const exact_triangle<K>& t, const exact_plane<K>& plane) {
   const std::array<int, 3> s{side_of(plane, t.v[0]), side_of(plane, t.v[1]), side_of(plane, t.v[2])};
   exact_split<K> out;
-  switch (classify_signs<K>(s)) {
+  switch (exbsp::classify_signs(s)) {
     case triangle_plane_side::coplanar:
     case triangle_plane_side::positive: out.positive.push_back(t); return out;
     case triangle_plane_side::negative: out.negative.push_back(t); return out;
     case triangle_plane_side::straddling: break;
   }
-  auto side_list = [&out](int sign) -> std::vector<exact_triangle<K>>& {
-    return sign > 0 ? out.positive : out.negative;
-  };
-  for (std::size_t i = 0; i < 3; ++i) {
-    if (s[i] != 0) continue;
-    // One vertex z on the plane; straddling means the other two are strictly opposite.
-    const auto& z = t.v[i];
-    const auto& a = t.v[(i + 1) % 3];
-    const auto& b = t.v[(i + 2) % 3];
-    const typename K::Point_3 x = crossing_unchecked(plane, a, b);
-    side_list(s[(i + 1) % 3]).push_back(exact_triangle<K>{{z, a, x}});
-    side_list(s[(i + 2) % 3]).push_back(exact_triangle<K>{{z, x, b}});
-    return out;
+  const exbsp::split_pattern pattern = exbsp::make_split_pattern(s);
+  std::array<typename K::Point_3, 5> corner{t.v[0], t.v[1], t.v[2], {}, {}};
+  for (int j = 0; j < pattern.new_points; ++j)
+    corner[3 + j] = crossing_unchecked(plane, t.v[pattern.from[j]], t.v[pattern.to[j]]);
+  for (int k = 0; k < pattern.pieces; ++k) {
+    const auto& c = pattern.corner[k];
+    (pattern.side[k] > 0 ? out.positive : out.negative)
+        .push_back(exact_triangle<K>{{corner[c[0]], corner[c[1]], corner[c[2]]}});
   }
-  // No vertex on the plane: c = v[i] is the one whose sign differs from the other two.
-  std::size_t lone = 0;
-  if (s[1] != s[0] && s[1] != s[2]) lone = 1;
-  if (s[2] != s[0] && s[2] != s[1]) lone = 2;
-  const auto& c = t.v[lone];
-  const auto& a = t.v[(lone + 1) % 3];
-  const auto& b = t.v[(lone + 2) % 3];
-  const typename K::Point_3 pa = crossing_unchecked(plane, c, a);  // A
-  const typename K::Point_3 pb = crossing_unchecked(plane, b, c);  // B
-  auto& ab_side = side_list(s[(lone + 1) % 3]);
-  ab_side.push_back(exact_triangle<K>{{a, b, pa}});
-  ab_side.push_back(exact_triangle<K>{{b, pb, pa}});
-  side_list(s[lone]).push_back(exact_triangle<K>{{pa, pb, c}});
   return out;
 }
 
@@ -170,7 +147,7 @@ exact_split<K> split_unchecked(const exact_triangle<K>& t, const exact_plane<K>&
 template <class K>
 triangle_plane_side classify_triangle(const exact_triangle<K>& t, const exact_plane<K>& plane) {
   detail::require_plane(plane, "classify_triangle");
-  return detail::classify_signs<K>(
+  return exbsp::classify_signs(
       {detail::side_of(plane, t.v[0]), detail::side_of(plane, t.v[1]), detail::side_of(plane, t.v[2])});
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "clip/homogeneous.h"
+#include "clip/liang_barsky.h"
 
 namespace exbsp::clip {
 
@@ -39,32 +40,20 @@ bool finite(const vec4& p) { return std::isfinite(p[0]) && std::isfinite(p[1]) &
 bool homogeneous_liang_barsky(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b, double* t0_out,
                               double* t1_out) {
   if (!finite(a) || !finite(b)) return false;
-  double t0 = 0, t1 = 1;
-  int enter_plane = -1, leave_plane = -1;
+  // d_k(P(t)) = da + t (db - da) >= 0 is (da - db) t <= da.
+  detail::parametric_interval kept;
   for (int k = 0; k < 6; ++k) {
     const double da = plane_distance(k, a), db = plane_distance(k, b);
     if (da < 0 && db < 0) return false;
-    if (da < 0) {  // enters through plane k
-      const double t = da / (da - db);
-      if (t > t0) {
-        t0 = t;
-        enter_plane = k;
-      }
-    } else if (db < 0) {  // leaves through plane k
-      const double t = da / (da - db);
-      if (t < t1) {
-        t1 = t;
-        leave_plane = k;
-      }
-    }
+    kept.add(da - db, da, k);
   }
-  if (t0 > t1) return false;
-  out_a = enter_plane < 0 ? a : lerp(a, b, t0);
-  out_b = leave_plane < 0 ? b : lerp(a, b, t1);
-  if (enter_plane >= 0) snap_to_plane(enter_plane, out_a);
-  if (leave_plane >= 0) snap_to_plane(leave_plane, out_b);
-  if (t0_out) *t0_out = t0;
-  if (t1_out) *t1_out = t1;
+  if (kept.empty()) return false;
+  out_a = kept.entry < 0 ? a : lerp(a, b, kept.t0);
+  out_b = kept.exit < 0 ? b : lerp(a, b, kept.t1);
+  if (kept.entry >= 0) snap_to_plane(kept.entry, out_a);
+  if (kept.exit >= 0) snap_to_plane(kept.exit, out_b);
+  if (t0_out) *t0_out = kept.t0;
+  if (t1_out) *t1_out = kept.t1;
   return true;
 }
 

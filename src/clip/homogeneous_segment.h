@@ -9,7 +9,9 @@
 // before the divide and never wraps around through infinity.
 // Liang–Barsky: for each plane with d_k(a) < 0 <= d_k(b) the segment enters at
 // t = d_k(a) / (d_k(a) - d_k(b)) (raising t0); with d_k(b) < 0 <= d_k(a) it leaves there
-// (lowering t1); both negative rejects it. The kept part is [t0, t1] when t0 <= t1.
+// (lowering t1); both negative rejects it. The kept part is [t0, t1] when t0 <= t1. This is
+// liang_barsky.h's parametric_interval with p = d_k(a) - d_k(b), q = d_k(a): one core for the
+// 2D/3D box clippers and this one.
 // Cohen–Sutherland: outcodes of both ends; both 0 accepts, a common bit rejects; otherwise the
 // end that is outside (a first) moves to the lowest plane k its code violates, at the same t
 // as above (always computed on the original segment, so t only grows for a and shrinks for

@@ -1,6 +1,5 @@
 // Liang–Barsky clipping (see liang_barsky.h for the p/q notation).
-// entry/exit hold the bit index (2k: min[k], 2k+1: max[k]) of the boundary that set t0/t1,
-// or -1 while t0 == 0 / t1 == 1 come from the segment's own ends.
+// Boundaries are numbered 2k: min[k], 2k+1: max[k] (parametric_interval's entry / exit).
 #include "clip/liang_barsky.h"
 
 #include <cstddef>
@@ -33,28 +32,16 @@ std::optional<liang_barsky_result<N>> clip_n(const segment<N>& s, const box<N>& 
   detail::require_finite(s.p1, function, "segment end");
   detail::require_valid_box(b, function);
 
-  double t0 = 0.0, t1 = 1.0;
-  int entry = -1, exit = -1;
+  detail::parametric_interval kept;
   for (std::size_t k = 0; k < N; ++k) {
     const double d = s.p1[k] - s.p0[k];
-    const double p_of[2] = {-d, d};
-    const double q_of[2] = {s.p0[k] - b.min[k], b.max[k] - s.p0[k]};
-    for (int side = 0; side < 2; ++side) {
-      const double p = p_of[side], q = q_of[side];
-      const int boundary = static_cast<int>(2 * k) + side;
-      if (p == 0.0) {
-        if (q < 0.0) return std::nullopt;  // parallel to this boundary and outside it
-        continue;
-      }
-      const double r = q / p;
-      if (p < 0.0) {
-        if (r > t0) { t0 = r; entry = boundary; }
-      } else {
-        if (r < t1) { t1 = r; exit = boundary; }
-      }
-    }
+    if (!kept.add(-d, s.p0[k] - b.min[k], static_cast<int>(2 * k)) ||
+        !kept.add(d, b.max[k] - s.p0[k], static_cast<int>(2 * k + 1)))
+      return std::nullopt;
   }
-  if (t0 > t1) return std::nullopt;
+  if (kept.empty()) return std::nullopt;
+  const double t0 = kept.t0, t1 = kept.t1;
+  const int entry = kept.entry, exit = kept.exit;
 
   // An end kept by its own parameter (t0 == 0 or t1 == 1) can still be a few ulps outside
   // when the ratio rounded onto the end; clamping is the identity for points inside.

@@ -16,6 +16,32 @@
 
 namespace exbsp::clip {
 
+namespace detail {
+
+/// The parametric core of Liang–Barsky, shared by the box clippers below and the homogeneous
+/// one (homogeneous_segment.h): the kept interval [t0, t1] of P(t), t in [0, 1], under
+/// inequalities p t <= q, with the boundaries that set its ends (-1: the segment's own end).
+struct parametric_interval {
+  double t0 = 0, t1 = 1;
+  int entry = -1, exit = -1;
+  /// Adds p t <= q for `boundary`: p < 0 may raise t0 to q / p, p > 0 may lower t1 to it.
+  /// Returns false when p == 0 and q < 0 (parallel to the boundary and outside it).
+  bool add(double p, double q, int boundary) {
+    if (p == 0.0) return q >= 0.0;
+    const double r = q / p;
+    if (p < 0.0) {
+      if (r > t0) t0 = r, entry = boundary;
+    } else if (r < t1) {
+      t1 = r, exit = boundary;
+    }
+    return true;
+  }
+  /// True when nothing is kept.
+  bool empty() const { return t0 > t1; }
+};
+
+}  // namespace detail
+
 /// Result of Liang–Barsky: the parameter interval [t0, t1] of the kept part (0 <= t0 <= t1
 /// <= 1) and the kept segment P(t0) -> P(t1).
 template <std::size_t N>

@@ -11,9 +11,10 @@
 //      outline projected along the dominant axis of n, each face covered w times where w is
 //      the outline's winding number around it, found by an explicit-stack traversal from
 //      the infinite face (w changes by the net use of each constrained edge crossed).
-// The split is written here on point indices rather than calling clip::split_triangle on
-// points: the outline and the cap need to know which edge made each cut point (test_section
-// checks that the pieces equal split_triangle's exactly).
+// The split runs here on point indices rather than through clip::split_triangle on points
+// (the outline and the cap need to know which edge made each cut point), with the same
+// combinatorics, bsp/split_pattern.h (test_section checks that the pieces equal
+// split_triangle's exactly).
 #include "clip/section.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -30,6 +31,7 @@
 #include <unordered_map>
 
 #include "bsp/exact_output.h"
+#include "bsp/split_pattern.h"
 #include "core/errors.h"
 
 namespace exbsp {
@@ -418,40 +420,27 @@ cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32
   };
   for (const tri& t : m.tris) {
     if (collinear_triangle(m, t)) ++stats.degenerate_input;
-    const int s[3] = {side(t.v[0]), side(t.v[1]), side(t.v[2])};
-    const bool any_pos = s[0] > 0 || s[1] > 0 || s[2] > 0;
-    const bool any_neg = s[0] < 0 || s[1] < 0 || s[2] < 0;
-    if (!any_neg) {
+    const std::array<int, 3> s{side(t.v[0]), side(t.v[1]), side(t.v[2])};
+    const classification c = classify_signs(s);
+    if (c == classification::positive || c == classification::coplanar) {
       r.kept.push_back(t);
       ++stats.kept_whole;
-      if (!any_pos) ++stats.in_plane;
+      if (c == classification::coplanar) ++stats.in_plane;
       continue;
     }
-    if (!any_pos) {
+    if (c == classification::negative) {
       ++stats.removed;
       in_plane_edges(t, removed_edges);
       continue;
     }
     ++stats.split;
-    int zero = -1;
-    for (int i = 0; i < 3; ++i)
-      if (s[i] == 0) zero = i;
-    if (zero >= 0) {  // (z, a, b): X on [a, b]; (z, a, X) on a's side, (z, X, b) on b's side
-      const int ia = (zero + 1) % 3, ib = (zero + 2) % 3;
-      const std::uint32_t z = t.v[zero], a = t.v[ia], b = t.v[ib];
-      const std::uint32_t x = cross(a, b);
-      emit(s[ia], tri{{z, a, x}, t.face});
-      emit(s[ib], tri{{z, x, b}, t.face});
-      continue;
+    const split_pattern pattern = make_split_pattern(s);
+    std::array<std::uint32_t, 5> corner{t.v[0], t.v[1], t.v[2], 0, 0};
+    for (int j = 0; j < pattern.new_points; ++j) corner[3 + j] = cross(t.v[pattern.from[j]], t.v[pattern.to[j]]);
+    for (int k = 0; k < pattern.pieces; ++k) {
+      const auto& p = pattern.corner[k];
+      emit(pattern.side[k], tri{{corner[p[0]], corner[p[1]], corner[p[2]]}, t.face});
     }
-    int lone = 0;  // c: alone on its side
-    if (s[1] != s[0] && s[1] != s[2]) lone = 1;
-    if (s[2] != s[0] && s[2] != s[1]) lone = 2;
-    const std::uint32_t c = t.v[lone], a = t.v[(lone + 1) % 3], b = t.v[(lone + 2) % 3];
-    const std::uint32_t pa = cross(c, a), pb = cross(b, c);
-    emit(s[(lone + 1) % 3], tri{{a, b, pa}, t.face});
-    emit(s[(lone + 1) % 3], tri{{b, pb, pa}, t.face});
-    emit(s[lone], tri{{pa, pb, c}, t.face});
   }
 
   // Pass 2: merge equal points on the plane (non-conforming input only), count edge uses.

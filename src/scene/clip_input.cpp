@@ -14,10 +14,13 @@
 #include "core/errors.h"
 #include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"
-#include "scene/json_reader.h"
 #include "core/atomic_file.h"
+#include "view/json_reader.h"
 
 namespace exbsp::scene {
+
+using nlohmann::json;
+using view::reader;
 
 namespace {
 

@@ -13,9 +13,9 @@
 #include "core/errors.h"
 #include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"
-#include "scene/json_reader.h"
 #include "scene/scene_parts.h"
 #include "view/effects.h"
+#include "view/json_reader.h"
 #include "view/projection.h"
 
 namespace exbsp::scene {
@@ -85,115 +85,16 @@ void parse_projection(const reader& r, const json& doc, scene& s) {
   }
 }
 
-/// Fails naming KEY/PARAM for a member of `params` not in `known`.
-void reject_unknown_parameters(const reader& r, const json& params, const std::string& key, const std::string& name,
-                               std::initializer_list<const char*> known) {
-  std::string list;
-  for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-  for (auto it = params.begin(); it != params.end(); ++it) {
-    const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; });
-    if (!ok)
-      r.fail(key + "/" + it.key(),
-             "unknown parameter (" + name + " takes " + (list.empty() ? std::string("none") : list) + ")");
-  }
-}
-
-/// A finite number > 0 (or >= 0 when `zero_ok`).
-double positive(const reader& r, const json& v, const std::string& key, bool zero_ok = false) {
-  const double d = r.number(v, key);
-  if (zero_ok ? !(d >= 0) : !(d > 0))
-    r.fail(key, std::string("must be ") + (zero_ok ? ">= 0" : "> 0") + " (got " + number_text(d) + ")");
-  return d;
-}
-
-void parse_lighting(const reader& r, const json& p, const std::string& key, view::lighting_settings& l) {
-  reject_unknown_parameters(r, p, key, "lighting", {"direction", "intensity", "ambient", "two_sided"});
-  if (const json* v = r.optional(p, "direction")) {
-    l.direction = r.triple(*v, key + "/direction");
-    if (!(view::length(l.direction) > 0)) r.fail(key + "/direction", "must not be the zero vector");
-  }
-  if (const json* v = r.optional(p, "intensity")) l.intensity = positive(r, *v, key + "/intensity", true);
-  if (const json* v = r.optional(p, "ambient")) l.ambient = positive(r, *v, key + "/ambient", true);
-  if (const json* v = r.optional(p, "two_sided")) {
-    if (!v->is_boolean()) r.fail(key + "/two_sided", "must be true or false");
-    l.two_sided = v->get<bool>();
-  }
-}
-
-void parse_fog(const reader& r, const json& p, const std::string& key, const scene& s, view::fog_settings& f) {
-  reject_unknown_parameters(r, p, key, "fog", {"mode", "start", "end", "density", "color"});
-  f.mode = view::fog_mode::linear;
-  if (const json* v = r.optional(p, "mode")) {
-    const std::string m = v->is_string() ? v->get<std::string>() : std::string();
-    if (m == "exp")
-      f.mode = view::fog_mode::exponential;
-    else if (m != "linear")
-      r.fail(key + "/mode", "must be \"linear\" or \"exp\"");
-  }
-  const double near_dist = s.projection.near_dist, far_dist = s.projection.far_dist;
-  if (f.mode == view::fog_mode::linear) {
-    if (p.contains("density")) r.fail(key + "/density", "only for mode \"exp\" (linear fog takes start and end)");
-    f.start = near_dist;
-    f.end = far_dist;
-    if (const json* v = r.optional(p, "start")) f.start = positive(r, *v, key + "/start", true);
-    if (const json* v = r.optional(p, "end")) f.end = positive(r, *v, key + "/end");
-    if (!(f.end > f.start))
-      r.fail(key + "/end", "must be greater than start (start " + number_text(f.start) + ", end " + number_text(f.end) + ")");
-    if (f.end > far_dist)
-      r.warn(key + "/end", "fog ends beyond the far plane (" + number_text(far_dist) +
-                               "): geometry cut by the far plane will pop instead of fading");
-  } else {
-    if (p.contains("start")) r.fail(key + "/start", "only for mode \"linear\" (exp fog takes density)");
-    if (p.contains("end")) r.fail(key + "/end", "only for mode \"linear\" (exp fog takes density)");
-    f.density = std::log(255.0) / far_dist;
-    if (const json* v = r.optional(p, "density")) f.density = positive(r, *v, key + "/density");
-  }
-  f.color = s.background;
-  if (const json* v = r.optional(p, "color")) f.color = r.color(*v, key + "/color");
-}
-
-void parse_depth_of_field(const reader& r, const json& p, const std::string& key, const scene& s,
-                          view::depth_of_field_settings& d) {
-  reject_unknown_parameters(r, p, key, "depth_of_field", {"focal_length", "aperture", "f_number", "focus_distance", "samples"});
-  if (s.projection.kind != view::projection_kind::perspective && s.projection.kind != view::projection_kind::frustum)
-    r.fail(key, "needs a perspective or frustum projection (a parallel projection has no lens)");
-  d.focal_length = positive(r, r.require(p, key, "focal_length"), key + "/focal_length");
-  const json* aperture = r.optional(p, "aperture");
-  const json* f_number = r.optional(p, "f_number");
-  if (aperture && f_number) r.fail(key + "/f_number", "give aperture or f_number, not both");
-  if (!aperture && !f_number) r.fail(key + "/aperture", "missing key (the lens diameter; or give f_number)");
-  d.aperture = aperture ? positive(r, *aperture, key + "/aperture")
-                        : d.focal_length / positive(r, *f_number, key + "/f_number");
-  if (!(std::isfinite(d.aperture) && d.aperture > 0)) r.fail(key + "/f_number", "gives an impossible aperture");
-  d.focus_distance = positive(r, r.require(p, key, "focus_distance"), key + "/focus_distance");
-  if (!(d.focus_distance > d.focal_length))
-    r.fail(key + "/focus_distance", "must be greater than focal_length (a thin lens cannot focus closer than f)");
-  if (const json* v = r.optional(p, "samples")) {
-    const long long n = r.integer(*v, key + "/samples");
-    if (n < 2 || n > 1024) r.fail(key + "/samples", "must be in 2..1024 (got " + std::to_string(n) + ")");
-    d.samples = static_cast<int>(n);
-  }
-}
-
-void parse_antialias(const reader& r, const json& p, const std::string& key, const scene& s,
-                     view::antialias_settings& a) {
-  reject_unknown_parameters(r, p, key, "antialias", {"samples"});
-  if (const json* v = r.optional(p, "samples")) {
-    const long long n = r.integer(*v, key + "/samples");
-    if (n < 1 || n > 8) r.fail(key + "/samples", "must be in 1..8 (got " + std::to_string(n) + ")");
-    a.samples = static_cast<int>(n);
-  }
-  if (static_cast<long long>(std::max(s.width, s.height)) * a.samples > max_viewport_side)
-    r.fail(key + "/samples", "the supersampled image would exceed " + std::to_string(max_viewport_side) +
-                                 " pixels a side (viewport " + std::to_string(s.width) + "x" + std::to_string(s.height) + ")");
-}
-
 void parse_effects(const reader& r, const json& doc, scene& s) {
   const json* e = r.optional(doc, "effects");
   if (!e) return;
   r.object(*e, "/effects");
   std::string known;
   for (const view::effect_description& d : view::effect_catalog()) known += (known.empty() ? "" : ", ") + d.name;
+  const bool parallel = s.projection.kind != view::projection_kind::perspective &&
+                        s.projection.kind != view::projection_kind::frustum;
+  const view::effect_scene facts{parallel, s.projection.near_dist, s.projection.far_dist, s.background,
+                                 s.width, s.height, max_viewport_side};
   for (auto it = e->begin(); it != e->end(); ++it) {
     const std::string key = "/effects/" + it.key();
     const view::effect_description* d = view::find_effect(it.key());
@@ -210,17 +111,7 @@ void parse_effects(const reader& r, const json& doc, scene& s) {
     if (!enabled) continue;
     if (!d->available) r.fail(key, "effect not supported yet");
     const json params = v.is_object() ? v : json::object();
-    view::effect_settings& es = s.effect_settings;
-    if (d->name == "lighting")
-      parse_lighting(r, params, key, es.lighting);
-    else if (d->name == "fog")
-      parse_fog(r, params, key, s, es.fog);
-    else if (d->name == "depth_of_field")
-      parse_depth_of_field(r, params, key, s, es.depth_of_field);
-    else if (d->name == "antialias")
-      parse_antialias(r, params, key, s, es.antialias);
-    else
-      reject_unknown_parameters(r, params, key, d->name, {});
+    d->parse(r, params, key, facts, s.effect_settings);
     s.effects.push_back(d->name);
   }
 }
@@ -254,7 +145,7 @@ void parse_vector(const reader& r, const json& doc, scene& s) {
   const json* v = r.optional(doc, "svg");
   if (!v) return;
   r.object(*v, "/svg");
-  reject_unknown_parameters(r, *v, "/svg", "svg", {"mode", "edges", "crease_deg"});
+  r.reject_unknown(*v, "/svg", "svg", {"mode", "edges", "crease_deg"});
   auto text = [&](const char* name) -> std::string {
     const json& t = (*v)[name];
     if (!t.is_string()) r.fail(std::string("/svg/") + name, std::string("must be a string (got ") + t.type_name() + ")");

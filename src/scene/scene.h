@@ -53,8 +53,9 @@
 // pieces enter the BSP as the nearest doubles of their exact points, like every other input.
 //
 // Effects: "effects": {NAME: true | false | {PARAM: value, ...}}; NAME from
-// view::effect_catalog(); `true` or {} takes every default; an unknown NAME or PARAM, or a bad
-// value, is a scene_error naming /effects/NAME or /effects/NAME/PARAM. Parameters and defaults:
+// view::effect_catalog(), whose entry also reads the parameters (view/<effect>.h); `true` or
+// {} takes every default; an unknown NAME or PARAM, or a bad value, is a scene_error naming
+// /effects/NAME or /effects/NAME/PARAM. Parameters and defaults:
 //   backface_culling  (none)
 //   lighting          direction [0,0,1] (towards the light, not zero), intensity 0.8 (>= 0),
 //                     ambient 0.2 (>= 0), two_sided true

@@ -4,8 +4,14 @@
 #pragma once
 #include <string>
 
-#include "scene/json_reader.h"
 #include "scene/scene.h"
+#include "view/json_reader.h"
+
+namespace exbsp::scene {
+using nlohmann::json;
+using view::number_text;
+using view::reader;
+}  // namespace exbsp::scene
 
 namespace exbsp::scene::detail {
 

@@ -10,6 +10,7 @@
 #pragma once
 #include <string>
 
+#include "view/json_reader.h"
 #include "view/pipeline.h"
 
 namespace exbsp::view {
@@ -17,5 +18,10 @@ namespace exbsp::view {
 /// "antialias": f.picture = box_downsample(paint_frame(f, N), N), N = f.settings.antialias.samples.
 /// Throws usage_error when N is outside 1..8 or the supersampled image is too large.
 std::string antialias_stage(frame& f);
+
+/// "antialias" parameters into out.antialias; scene_error names the bad key (also when N
+/// times the viewport exceeds scene.max_side).
+void parse_antialias_parameters(const reader& r, const json& params, const std::string& key,
+                                const effect_scene& scene, effect_settings& out);
 
 }  // namespace exbsp::view

@@ -2,10 +2,12 @@
 // (src/clip/homogeneous.h), which clips against w+x, w-x, w+y, w-y, w+z, w-z >= 0 before the
 // divide, interpolates each crossing from the lexicographically smaller end point (shared
 // edges give bit-identical vertices) and puts the crossing exactly on its plane.
+// Segments (curves, lines): clip/homogeneous_segment.h, Liang–Barsky or Cohen–Sutherland.
 // This file is the only place that knows which clipper the pipeline uses.
 #include "view/clip_stage.h"
 
 #include "clip/homogeneous.h"
+#include "clip/homogeneous_segment.h"
 
 namespace exbsp::view {
 
@@ -21,5 +23,19 @@ void clip_to_view_volume(const std::vector<hpoint>& in, std::vector<hpoint>& out
 }
 
 unsigned view_volume_outcode(const hpoint& p) { return clip::homogeneous_outcode({p.x, p.y, p.z, p.w}); }
+
+bool clip_segment_to_view_volume(const hpoint& a, const hpoint& b, hpoint& out_a, hpoint& out_b, double* t0_out,
+                                 double* t1_out, segment_clipper clipper) {
+  const clip::vec4 ca{a.x, a.y, a.z, a.w}, cb{b.x, b.y, b.z, b.w};
+  clip::vec4 oa, ob;
+  const bool kept = clipper == segment_clipper::cohen_sutherland
+                        ? clip::homogeneous_cohen_sutherland(ca, cb, oa, ob, t0_out, t1_out)
+                        : clip::homogeneous_liang_barsky(ca, cb, oa, ob, t0_out, t1_out);
+  if (kept) {
+    out_a = {oa[0], oa[1], oa[2], oa[3]};
+    out_b = {ob[0], ob[1], ob[2], ob[3]};
+  }
+  return kept;
+}
 
 }  // namespace exbsp::view

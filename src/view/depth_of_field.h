@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "view/json_reader.h"
 #include "view/pipeline.h"
 
 namespace exbsp::view {
@@ -52,5 +53,10 @@ view_setup lens_view(const view_setup& view, const lens_offset& lens, double foc
 /// but f.picture is restored to the centre view afterwards. Throws usage_error for a parallel
 /// view or bad settings.
 std::string depth_of_field_stage(frame& f, const pipeline& per_view);
+
+/// "depth_of_field" parameters into out.depth_of_field; scene_error names the bad key
+/// (also for a parallel projection: no lens).
+void parse_depth_of_field_parameters(const reader& r, const json& params, const std::string& key,
+                                     const effect_scene& scene, effect_settings& out);
 
 }  // namespace exbsp::view

@@ -68,7 +68,16 @@ struct effect_settings {
   antialias_settings antialias;
 };
 
-/// What the "fog" stage prepares for the painters (raster, antialias, svg): the settings and
+/// What the defaults and checks of effect parameters depend on in a scene.
+struct effect_scene {
+  bool parallel = false;        ///< orthographic or oblique projection (no lens, planar fog distance)
+  double near_dist = 1, far_dist = 100;
+  rgb8 background{255, 255, 255};
+  int width = 1, height = 1;    ///< the viewport
+  int max_side = 16384;         ///< the largest image side a scene may ask for
+};
+
+/// What the "fog" stage computes for a view (its sample shader reads it): the settings and
 /// the inverse of the projection, to turn a window point (x, y, depth) back into eye space.
 struct fog_shading {
   fog_settings settings;

@@ -11,26 +11,39 @@
 //   raster           replaces the "raster" stage (PNG only): antialias.
 //   after_raster     the finished image (PNG only); such a stage may re-run the per-view
 //                    stages for other views: depth_of_field.
-// The parameters of each effect are in frame::settings (effect_settings.h). Effects designed
-// but not implemented yet would be listed with available = false; the scene parser rejects
-// those with a "not supported yet" error.
+// One entry per effect describes all of it: its name, its hook, its parameters' reader (JSON
+// object -> its member of effect_settings, with defaults and checks; the scene parser calls
+// it for every named effect) and its stage. The parameters of each effect travel in
+// frame::settings (effect_settings.h). Adding an effect: its settings struct, its file
+// (view/<effect>.{h,cpp}: parameters reader and stage) and one line in effect_catalog().
+// Effects designed but not implemented yet would be listed with available = false; the scene
+// parser rejects those with a "not supported yet" error. The stage lists built from this
+// catalogue are declared in standard_pipeline.h (public, free of JSON types).
 #pragma once
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "pipeline.h"
+#include "view/json_reader.h"
+#include "view/pipeline.h"
+#include "view/standard_pipeline.h"
 
 namespace exbsp::view {
 
 /// Where an effect's stage is inserted.
 enum class effect_hook { after_order, after_transform, raster, after_raster };
 
+/// Reads an effect's parameters `params` (a JSON object; {} for `true`) at JSON pointer `key`
+/// into its member of `out`; throws scene_error naming the bad or unknown parameter's key.
+using effect_parameters_reader = void (*)(const reader& r, const json& params, const std::string& key,
+                                          const effect_scene& scene, effect_settings& out);
+
 /// One known effect.
 struct effect_description {
   std::string name;
   effect_hook hook;
   bool available;                          ///< false: known name, not implemented yet
+  effect_parameters_reader parse;          ///< its parameters (none: every parameter is unknown)
   std::function<std::string(frame&)> run;  ///< the stage (hooks after_order, after_transform, raster)
   /// after_raster stages: also given the per-view stages ("order" up to raster/antialias) to
   /// render other views of the same BSP.
@@ -43,23 +56,5 @@ const std::vector<effect_description>& effect_catalog();
 
 /// The effect called `name`, or nullptr.
 const effect_description* find_effect(const std::string& name);
-
-/// Output of the pipeline.
-enum class output_kind { png, svg, pdf };
-
-/// The stages that depend on the view, for `output` with the named effects (each must be
-/// available; throws usage_error otherwise), in this order:
-///   order, [after_order effects], transform+clip, [curves when `curves`],
-///   [after_transform effects], then for PNG: raster (or the raster effect, antialias),
-///   [after_raster effects]; for SVG: svg, for PDF: pdf (png_only effects have no stage).
-/// Re-running these stages on a frame whose "build" ran renders another view of the same BSP.
-pipeline per_view_pipeline(const std::vector<std::string>& effects, output_kind output, bool curves = false);
-
-/// "build" followed by per_view_pipeline(effects, output, curves). The caller appends the
-/// "write" stage.
-pipeline standard_pipeline(const std::vector<std::string>& effects, output_kind output, bool curves = false);
-
-/// The effects among `effects` that have no stage in `output` (png_only effects for SVG and PDF).
-std::vector<std::string> effects_without_stage(const std::vector<std::string>& effects, output_kind output);
 
 }  // namespace exbsp::view

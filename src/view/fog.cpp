@@ -83,33 +83,12 @@ rgb8 fog_color(const fog_shading& fog, rgb8 base, double d) {
   return {mix(base.r, c.r, v), mix(base.g, c.g, v), mix(base.b, c.b, v)};
 }
 
-depth_plane polygon_depth_plane(const std::vector<window_point>& v) {
-  depth_plane p;
-  if (v.empty()) return p;
-  double best = 0;
-  std::size_t kb = 0;
-  for (std::size_t k = 1; k + 1 < v.size(); ++k) {
-    const double det = (v[k].x - v[0].x) * (v[k + 1].y - v[0].y) - (v[k + 1].x - v[0].x) * (v[k].y - v[0].y);
-    if (std::fabs(det) > std::fabs(best)) {
-      best = det;
-      kb = k;
-    }
-  }
-  if (!(std::fabs(best) > 1e-9)) {  // edge-on: the mean depth
-    for (const window_point& w : v) p.z0 += w.z;
-    p.z0 /= static_cast<double>(v.size());
-    return p;
-  }
-  const window_point &a = v[0], &b = v[kb], &c = v[kb + 1];
-  // Solve zx (bx-ax) + zy (by-ay) = bz-az and zx (cx-ax) + zy (cy-ay) = cz-az (Cramer).
-  p.zx = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / best;
-  p.zy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / best;
-  p.z0 = a.z - p.zx * a.x - p.zy * a.y;
-  return p;
-}
-
 std::string fog_stage(frame& f) {
   f.fog = make_fog_shading(f.settings.fog, f.view);
+  const fog_shading fog = *f.fog;
+  f.shader = sample_shader{
+      [fog](rgb8 c, double x, double y, double z) { return fog_color(fog, c, eye_distance(fog, x, y, z)); },
+      fog.settings.color};
   const fog_settings& s = f.settings.fog;
   char buf[128];
   if (s.mode == fog_mode::linear)
@@ -117,6 +96,40 @@ std::string fog_stage(frame& f) {
   else
     std::snprintf(buf, sizeof buf, "exp density %g, %s distance", s.density, f.fog->radial ? "radial" : "planar");
   return buf;
+}
+
+void parse_fog_parameters(const reader& r, const json& p, const std::string& key, const effect_scene& scene,
+                          effect_settings& out) {
+  fog_settings& f = out.fog;
+  r.reject_unknown(p, key, "fog", {"mode", "start", "end", "density", "color"});
+  f.mode = fog_mode::linear;
+  if (const json* v = r.optional(p, "mode")) {
+    const std::string m = v->is_string() ? v->get<std::string>() : std::string();
+    if (m == "exp")
+      f.mode = fog_mode::exponential;
+    else if (m != "linear")
+      r.fail(key + "/mode", "must be \"linear\" or \"exp\"");
+  }
+  const double near_dist = scene.near_dist, far_dist = scene.far_dist;
+  if (f.mode == fog_mode::linear) {
+    if (p.contains("density")) r.fail(key + "/density", "only for mode \"exp\" (linear fog takes start and end)");
+    f.start = near_dist;
+    f.end = far_dist;
+    if (const json* v = r.optional(p, "start")) f.start = r.positive(*v, key + "/start", true);
+    if (const json* v = r.optional(p, "end")) f.end = r.positive(*v, key + "/end");
+    if (!(f.end > f.start))
+      r.fail(key + "/end", "must be greater than start (start " + number_text(f.start) + ", end " + number_text(f.end) + ")");
+    if (f.end > far_dist)
+      r.warn(key + "/end", "fog ends beyond the far plane (" + number_text(far_dist) +
+                               "): geometry cut by the far plane will pop instead of fading");
+  } else {
+    if (p.contains("start")) r.fail(key + "/start", "only for mode \"linear\" (exp fog takes density)");
+    if (p.contains("end")) r.fail(key + "/end", "only for mode \"linear\" (exp fog takes density)");
+    f.density = std::log(255.0) / far_dist;
+    if (const json* v = r.optional(p, "density")) f.density = r.positive(*v, key + "/density");
+  }
+  f.color = scene.background;
+  if (const json* v = r.optional(p, "color")) f.color = r.color(*v, key + "/color");
 }
 
 }  // namespace exbsp::view

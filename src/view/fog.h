@@ -1,4 +1,6 @@
-// The "fog" effect (a screen-space stage after transform+clip; the painters apply it).
+// The "fog" effect: a screen-space stage after transform+clip that installs its colour
+// change as the frame's sample_shader (sample_shader.h); the painters apply it without
+// knowing it is fog.
 //
 // Notation: a window point (x, y, z) (viewport.h: z is the depth in [depth_near, depth_far])
 // goes back to normalized device coordinates ndc = (2 (x - vp.x) / width - 1,
@@ -8,16 +10,16 @@
 // the same distance, so the far plane's corners fade as its centre does) and d = -z_eye for
 // parallel views. Visibility v(d) (effect_settings.h): linear clamp((end - d)/(end - start),
 // 0, 1) or exponential exp(-density d); colour = v surface + (1 - v) fog colour, rounded.
-//
-// Over a planar polygon the window depth z is an affine function of (x, y) (a projective map
-// sends planes to planes), so each polygon's depth at a pixel centre comes from its plane
-// z = zx x + zy y + z0 through its window vertices: per-pixel fog without a depth buffer.
+// The painters give each sample's window point, so fog is per pixel in PNG (polygon depths
+// from their depth planes, sample_shader.h) and per path in SVG and PDF.
 #pragma once
 #include <string>
 #include <vector>
 
 #include "view/effect_settings.h"
+#include "view/json_reader.h"
 #include "view/pipeline.h"
+#include "view/sample_shader.h"
 
 namespace exbsp::view {
 
@@ -34,18 +36,13 @@ double eye_distance(const fog_shading& fog, double x, double y, double z);
 /// `base` fogged at eye distance d.
 rgb8 fog_color(const fog_shading& fog, rgb8 base, double d);
 
-/// The depth plane z = zx x + zy y + z0 of a window-space polygon; for a polygon seen
-/// edge-on (no stable plane) zx = zy = 0 and z0 is the mean depth.
-struct depth_plane {
-  double zx = 0, zy = 0, z0 = 0;
-  double at(double x, double y) const { return zx * x + zy * y + z0; }
-};
-/// The plane through the polygon's widest fan triangle.
-depth_plane polygon_depth_plane(const std::vector<window_point>& v);
-
-/// "fog": f.fog = make_fog_shading(f.settings.fog, f.view). Colours are applied by the
-/// painters: per pixel in raster/antialias, per path (at the centroid) in svg, and the
-/// background takes the fog colour.
+/// "fog": f.fog = make_fog_shading(f.settings.fog, f.view) and f.shader = its sample
+/// shader: fog_color at each sample's eye distance; the background takes the fog colour.
 std::string fog_stage(frame& f);
+
+/// "fog" parameters into out.fog (defaults from the scene's near, far and background; warns
+/// when a linear fog ends beyond the far plane); scene_error names the bad key.
+void parse_fog_parameters(const reader& r, const json& params, const std::string& key,
+                          const effect_scene& scene, effect_settings& out);
 
 }  // namespace exbsp::view

@@ -11,6 +11,7 @@
 #pragma once
 #include <string>
 
+#include "view/json_reader.h"
 #include "view/pipeline.h"
 
 namespace exbsp::view {
@@ -26,5 +27,9 @@ vector3 shading_normal(const fragment_d& fr, const view_setup& view, bool two_si
 /// (sized like f.fragments; transform+clip reads it). Throws usage_error for a zero or
 /// non-finite light direction.
 std::string lighting_stage(frame& f);
+
+/// "lighting" parameters (scene.h lists them) into out.lighting; scene_error names the bad key.
+void parse_lighting_parameters(const reader& r, const json& params, const std::string& key,
+                               const effect_scene& scene, effect_settings& out);
 
 }  // namespace exbsp::view

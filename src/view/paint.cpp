@@ -7,7 +7,6 @@
 #include <thread>
 
 #include "core/errors.h"
-#include "view/fog.h"
 #include "view/line_raster.h"
 #include "view/rasterizer.h"
 
@@ -141,12 +140,12 @@ void paint_line(const frame& f, const screen_line& l, int scale, image& img) {
   const double ax = scale * (l.a.x - vp.x), ay = scale * (l.a.y - vp.y);
   const double bx = scale * (l.b.x - vp.x), by = scale * (l.b.y - vp.y);
   auto cover = [&](int i, int j, double t) {
-    if (!f.fog) {
+    if (!f.shader) {
       img.set_pixel(i, j, l.color);
       return;
     }
     const double x = l.a.x + t * (l.b.x - l.a.x), y = l.a.y + t * (l.b.y - l.a.y), z = l.a.z + t * (l.b.z - l.a.z);
-    img.set_pixel(i, j, fog_color(*f.fog, l.color, eye_distance(*f.fog, x, y, z)));
+    img.set_pixel(i, j, f.shader->shade(l.color, x, y, z));
   };
   if (l.point)
     for_each_point_pixel(ax, ay, scale, img.width(), img.height(), cover);
@@ -159,7 +158,7 @@ void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vect
   const viewport& vp = f.view.vp;
   poly.clear();
   for (const window_point& w : p.v) poly.push_back({scale * (w.x - vp.x), scale * (w.y - vp.y)});
-  if (!f.fog) {
+  if (!f.shader) {
     paint_spans(poly, rows, mask, [&](int, int) { return p.color; });
     return;
   }
@@ -168,7 +167,7 @@ void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vect
   paint_spans(poly, rows, mask, [&](int i, int j) {
     const double x = vp.x + (i + 0.5) / scale, y = vp.y + (j + 0.5) / scale;
     const double z = std::min(hi, std::max(lo, plane.at(x, y)));
-    return fog_color(*f.fog, p.color, eye_distance(*f.fog, x, y, z));
+    return f.shader->shade(p.color, x, y, z);
   });
 }
 
@@ -210,7 +209,7 @@ image paint_frame(const frame& f, int scale) {
   if (scale < 1) throw usage_error("paint_frame: scale must be >= 1");
   const long long w = static_cast<long long>(vp.width) * scale, h = static_cast<long long>(vp.height) * scale;
   if (w > 65536 || h > 65536) throw usage_error("paint_frame: the supersampled image would exceed 65536 pixels a side");
-  image img(static_cast<int>(w), static_cast<int>(h), f.fog ? f.fog->settings.color : f.background);
+  image img(static_cast<int>(w), static_cast<int>(h), f.shader ? f.shader->background : f.background);
   const pixel_rows rows{img.data().data(), img.width(), img.height()};
   if (effective_paint_order(f) == paint_order::front_to_back) {
     paint_front_to_back(f, scale, rows);

@@ -1,5 +1,6 @@
 // The painter: polygons back to front (top-left rule, rasterizer.h) with curve lines
-// (line_raster.h) in their painter's slots (curves.h), optionally fogged per pixel (fog.h),
+// (line_raster.h) in their painter's slots (curves.h), each sample through the frame's
+// sample_shader when a screen effect installed one (sample_shader.h: fog, per pixel),
 // at 1x or N x N resolution (antialias.h). No depth buffer.
 //
 // Two walks give the same image. The reference (back_to_front) paints every polygon of
@@ -24,7 +25,7 @@ namespace exbsp::view {
 /// frame with lines is painted back_to_front.
 paint_order effective_paint_order(const frame& f);
 
-/// Paints the background (the fog colour when fog is on), then for every slot k the lines of
+/// Paints the background (the sample shader's, when there is one), then for every slot k the lines of
 /// slot k and polygon k of f.polygons: the image of the back-to-front walk, whichever walk
 /// (effective_paint_order) computes it. Throws usage_error unless 1 <= scale and the scaled
 /// image fits (image.h).

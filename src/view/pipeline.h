@@ -3,7 +3,7 @@
 // Data flow (DESIGN.md section 1): world-space soup -> BSP build -> fragments converted once to
 // double -> back-to-front order for the view -> [world-space effects: backface_culling,
 // lighting] -> modelview, projection, homogeneous clip, divide, viewport -> [curves] ->
-// [screen effects: fog] -> rasterizer (painter's algorithm; antialias replaces it) or SVG ->
+// [screen effects: fog, a sample shader] -> rasterizer (painter's algorithm; antialias replaces it) or SVG ->
 // [image effects: depth_of_field] -> write.
 // Only the stages a scene asks for are in the list, so an effect that is not named costs
 // nothing, and the curves stage exists only when the scene has curves. Effects plug in at
@@ -24,6 +24,7 @@
 #include "effect_settings.h"
 #include "image.h"
 #include "matrix.h"
+#include "sample_shader.h"
 #include "screen_line.h"
 #include "screen_polygon.h"
 #include "vector_drawing.h"
@@ -64,8 +65,6 @@ struct view_setup {
 /// front-to-back with a coverage mask. Both give the same image.
 enum class paint_order { back_to_front, front_to_back };
 
-struct bsp_cell_tree;  // curves.h: the BSP's shape, rebuilt once for placing curve pieces
-
 /// The data flowing through the stages. Inputs are set by the caller; each stage fills the
 /// products it is responsible for.
 struct frame {
@@ -96,8 +95,8 @@ struct frame {
   std::string pdf;                         ///< "pdf": the PDF document
   std::vector<rgb8> fragment_colors;       ///< "lighting": colour by fragment index (empty: face colours)
   std::vector<screen_line> lines;          ///< "curves": clipped curve pieces in painter's slots
-  std::optional<fog_shading> fog;          ///< "fog": applied per pixel by raster/antialias, per path by svg
-  std::shared_ptr<const bsp_cell_tree> cells;  ///< "curves": the shape of `tree`, built once per tree
+  std::optional<fog_shading> fog;          ///< "fog": its parameters for this view
+  std::optional<sample_shader> shader;     ///< screen effects ("fog"): the painters' per-sample colour change
 
   // Counters for --verbose.
   std::size_t culled = 0;         ///< fragments removed by backface_culling

@@ -75,13 +75,11 @@ clipped_point transform_point(const mat4& pm, const viewport& vp, const vec3d& p
 std::string build_stage(frame& f) {
   if (f.soup.triangles.empty()) {  // nothing to draw: no tree, no fragments
     f.tree.reset();
-    f.cells.reset();
     f.fragments.clear();
     f.points.clear();
     f.fragment_points.clear();
     return "empty scene";
   }
-  f.cells.reset();  // the curves stage's copy of the old tree's shape
   f.tree.emplace(bsp::build(f.soup, f.build));
   f.fragments = f.tree->fragments_double();
   index_points(f);
@@ -96,6 +94,7 @@ std::string order_stage(frame& f) {
   f.fragment_colors.clear();
   f.lines.clear();
   f.fog.reset();
+  f.shader.reset();
   if (!f.tree) {
     if (!f.fragments.empty()) throw usage_error("order_stage: the BSP has not been built");
     f.order.clear();
@@ -194,9 +193,9 @@ std::string svg_stage(frame& f) {
     f.svg = svg_document(d);
     return "visible regions: " + drawing_note(d, f.svg.size());
   }
-  f.svg = f.lines.empty() && !f.fog ? svg_document(f.view.vp, f.background, f.polygons)
-                                     : svg_document(f.view.vp, f.background, f.polygons, f.lines,
-                                                    f.fog ? &*f.fog : nullptr);
+  f.svg = f.lines.empty() && !f.shader ? svg_document(f.view.vp, f.background, f.polygons)
+                                        : svg_document(f.view.vp, f.background, f.polygons, f.lines,
+                                                       f.shader ? &*f.shader : nullptr);
   if (f.view.needs_placement()) f.svg = place_svg(f.svg, f.view.vp.height, placement_of(f));
   return "painter: " + std::to_string(f.polygons.size()) + " paths, " + std::to_string(f.lines.size()) +
          " curve pieces, " + std::to_string(f.svg.size()) + " bytes";

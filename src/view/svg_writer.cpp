@@ -6,7 +6,6 @@
 #include <cstdio>
 
 #include "core/atomic_file.h"
-#include "view/fog.h"
 
 namespace exbsp::view {
 
@@ -140,7 +139,7 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
 }
 
 std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons,
-                         const std::vector<screen_line>& lines, const fog_shading* fog) {
+                         const std::vector<screen_line>& lines, const sample_shader* shader) {
   std::string out;
   out.reserve(256 + polygons.size() * 120 + lines.size() * 40);
   const std::string w = std::to_string(vp.width), h = std::to_string(vp.height);
@@ -148,7 +147,7 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" + h +
          "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
   out += "<rect x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
-         hex_color(fog ? fog->settings.color : background) + "\"/>\n";
+         hex_color(shader ? shader->background : background) + "\"/>\n";
   if (svg_seam_stroke > 0) {
     out += "<g stroke-width=\"";
     append_number(out, svg_seam_stroke);
@@ -166,10 +165,10 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
     while (next_line < lines.size() && lines[next_line].slot <= slot) {
       const screen_line& first = lines[next_line];
       rgb8 c = first.color;
-      if (fog) {
+      if (shader) {
         const double mx = 0.5 * (first.a.x + first.b.x), my = 0.5 * (first.a.y + first.b.y),
                      mz = 0.5 * (first.a.z + first.b.z);
-        c = fog_color(*fog, c, eye_distance(*fog, mx, my, mz));
+        c = shader->shade(c, mx, my, mz);
       }
       const std::string color = hex_color(c);
       if (first.point) {
@@ -187,7 +186,7 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
       out += " L";
       point(first.b.x, first.b.y);
       ++next_line;
-      while (!fog && next_line < lines.size()) {
+      while (!shader && next_line < lines.size()) {
         const screen_line& l = lines[next_line];
         const screen_line& prev = lines[next_line - 1];
         if (l.point || l.slot != prev.slot || l.curve != prev.curve || l.a.x != prev.b.x || l.a.y != prev.b.y) break;
@@ -203,7 +202,7 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
     const screen_polygon& p = polygons[k];
     if (p.v.size() < 3) continue;
     rgb8 fill = p.color;
-    if (fog) {
+    if (shader) {
       double cx = 0, cy = 0, cz = 0;
       for (const window_point& v : p.v) {
         cx += v.x;
@@ -211,7 +210,7 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
         cz += v.z;
       }
       const double n = static_cast<double>(p.v.size());
-      fill = fog_color(*fog, fill, eye_distance(*fog, cx / n, cy / n, cz / n));
+      fill = shader->shade(fill, cx / n, cy / n, cz / n);
     }
     const std::string color = hex_color(fill);
     out += "<path data-face=\"" + std::to_string(p.face) + "\" data-fragment=\"" + std::to_string(p.fragment) +

@@ -20,9 +20,10 @@
 // Curves (curves.h) are written in their painter's slots between the polygons: each run of
 // pieces of one curve in one slot is one <path data-curve="K"> polyline, no fill, stroked in
 // the curve's colour with width 1 (the PNG's 1-pixel lines), butt caps; a degree-0 curve is a
-// 1 x 1 square. With fog (fog.h) each polygon is filled with its colour fogged at its window
-// centroid (flat: SVG has no per-pixel fog), each curve piece at its midpoint (one path per
-// piece), and the background rectangle takes the fog colour.
+// 1 x 1 square. With a sample shader (sample_shader.h: fog) each polygon is filled with its
+// colour shaded at its window centroid (flat: SVG has no per-pixel shading), each curve piece
+// at its midpoint (one path per piece), and the background rectangle takes the shader's
+// background.
 //
 // Placement (a viewport inside a larger "image", DESIGN.md section 5): both documents are
 // nested, unchanged, as an inner <svg x=".." y=".." width height> (which clips to the
@@ -33,7 +34,7 @@
 #include <string>
 #include <vector>
 
-#include "view/effect_settings.h"
+#include "view/sample_shader.h"
 #include "view/screen_line.h"
 #include "view/screen_polygon.h"
 #include "view/vector_drawing.h"
@@ -46,10 +47,10 @@ constexpr double svg_seam_stroke = 0.5;
 /// The SVG document: a background rectangle, then one path per polygon in order.
 std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons);
 
-/// The SVG document with curve pieces in their slots (lines sorted by slot) and, when `fog`
-/// is not null, flat fog as described above.
+/// The SVG document with curve pieces in their slots (lines sorted by slot) and, when `shader`
+/// is not null, flat shading as described above.
 std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons,
-                         const std::vector<screen_line>& lines, const fog_shading* fog);
+                         const std::vector<screen_line>& lines, const sample_shader* shader);
 
 /// The SVG document of a visible-region drawing (notation above), placed in its image when
 /// d.placed().

@@ -13,9 +13,8 @@
 #include <unordered_set>
 
 #include "core/errors.h"
-#include "view/fog.h"
+#include "view/clip_stage.h"
 #include "view/pipeline.h"
-#include "view/segment_clip.h"
 
 namespace exbsp::view {
 
@@ -359,16 +358,16 @@ std::uint32_t mesh_of(const frame& f, std::uint32_t face) {
   return static_cast<std::uint32_t>(std::max<std::ptrdiff_t>(0, it - f.mesh_face_offsets.begin() - 1));
 }
 
-rgb8 fogged(const frame& f, rgb8 c, double x, double y, double z) {
-  return f.fog ? fog_color(*f.fog, c, eye_distance(*f.fog, x, y, z)) : c;
+rgb8 shaded(const frame& f, rgb8 c, double x, double y, double z) {
+  return f.shader ? f.shader->shade(c, x, y, z) : c;
 }
 
-/// A curve piece (or point) as a path, fogged at its midpoint.
+/// A curve piece (or point) as a path, shaded at its midpoint.
 vector_path curve_path(const frame& f, const screen_line& l) {
   vector_path p;
   p.kind = l.point ? vector_path::kind_type::point : vector_path::kind_type::curve;
   p.face = l.curve;
-  p.color = fogged(f, l.color, 0.5 * (l.a.x + l.b.x), 0.5 * (l.a.y + l.b.y), 0.5 * (l.a.z + l.b.z));
+  p.color = shaded(f, l.color, 0.5 * (l.a.x + l.b.x), 0.5 * (l.a.y + l.b.y), 0.5 * (l.a.z + l.b.z));
   const viewport& vp = f.view.vp;
   p.rings.push_back({{to_grid(l.a.x - vp.x), to_grid(l.a.y - vp.y)}});
   if (!l.point) p.rings.back().push_back({to_grid(l.b.x - vp.x), to_grid(l.b.y - vp.y)});
@@ -685,7 +684,7 @@ vector_drawing visible_drawing(const frame& f) {
   vector_drawing d;
   d.width = vp.width;
   d.height = vp.height;
-  d.background = f.fog ? f.fog->settings.color : f.background;
+  d.background = f.shader ? f.shader->background : f.background;
   d.placement = placement_of(f);
   tiled_coverage coverage(static_cast<long long>(vp.width) * grid_per_pixel,
                           static_cast<long long>(vp.height) * grid_per_pixel);
@@ -770,7 +769,7 @@ vector_drawing visible_drawing(const frame& f) {
     r.face = face;
     r.mesh = mesh_of(f, face);
     const double n = static_cast<double>(acc.n);
-    r.color = fogged(f, acc.color, acc.sx / n, acc.sy / n, acc.sz / n);
+    r.color = shaded(f, acc.color, acc.sx / n, acc.sy / n, acc.sz / n);
     for (cl::Path& ring : merged) {
       remove_spikes(ring);
       if (ring.size() >= 3 && mean_width(ring) >= min_region_width) r.rings.push_back(to_ring(ring));
@@ -814,7 +813,7 @@ vector_drawing painter_drawing(const frame& f) {
   vector_drawing d;
   d.width = vp.width;
   d.height = vp.height;
-  d.background = f.fog ? f.fog->settings.color : f.background;
+  d.background = f.shader ? f.shader->background : f.background;
   d.placement = placement_of(f);
   d.painter = true;
   std::size_t next_line = 0;
@@ -837,7 +836,7 @@ vector_drawing painter_drawing(const frame& f) {
       ring.push_back({q.X, q.Y});
     }
     const double n = static_cast<double>(p.v.size());
-    r.color = fogged(f, p.color, sx / n, sy / n, sz / n);
+    r.color = shaded(f, p.color, sx / n, sy / n, sz / n);
     r.rings.push_back(std::move(ring));
     d.paths.push_back(std::move(r));
   }

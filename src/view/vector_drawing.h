@@ -34,8 +34,9 @@
 //
 // Curves and lines: each clipped piece (curves.h, painter's slot k: behind polygons k..n-1)
 // keeps what is outside the coverage of those polygons; drawn over the regions.
-// Effects: lighting gives each face its colour (flat per face); fog is flat per region (its
-// colour at the region's mean window point) and per curve piece (at its midpoint); depth of
+// Effects: lighting gives each face its colour (flat per face); a screen effect's sample
+// shader (sample_shader.h: fog) is applied flat per region (at the region's mean window
+// point) and per curve piece (at its midpoint); depth of
 // field and antialias are raster-only (the CLI warns and ignores them for vector output).
 #pragma once
 #include <cstdint>

@@ -1,5 +1,6 @@
-// JSON reading with JSON-pointer error messages, shared by the scene parser (scene.cpp,
-// scene_parts.cpp) and `exbsp clip` (clip_input.cpp). Internal to src/scene (not installed).
+// JSON reading with JSON-pointer error messages, for the view's types (numbers, triples,
+// colours): the scene parser (src/scene), `exbsp clip` (scene/clip_input.cpp) and the effects'
+// parameter readers (effects.h) share it.
 //
 // Notation: `key` is always the JSON pointer of the value being read ("/meshes/0/color/1");
 // every failure is a scene_error naming the file and that key.
@@ -17,7 +18,7 @@
 #include "view/image.h"
 #include "view/matrix.h"
 
-namespace exbsp::scene {
+namespace exbsp::view {
 
 using nlohmann::json;
 
@@ -91,12 +92,12 @@ public:
     return static_cast<long long>(d);
   }
 
-  view::vector3 triple(const json& v, const std::string& key) const {
+  vector3 triple(const json& v, const std::string& key) const {
     if (!v.is_array() || v.size() != 3) fail(key, "must be an array of 3 numbers");
     return {number(v[0], key + "/0"), number(v[1], key + "/1"), number(v[2], key + "/2")};
   }
 
-  view::rgb8 color(const json& v, const std::string& key) const {
+  rgb8 color(const json& v, const std::string& key) const {
     if (!v.is_array() || v.size() != 3) fail(key, "must be an array of 3 integers in 0..255");
     std::uint8_t c[3];
     for (int k = 0; k < 3; ++k) {
@@ -110,6 +111,27 @@ public:
     return {c[0], c[1], c[2]};
   }
 
+  /// Fails naming KEY/PARAM for a member of `params` not in `known` (the parameters of `name`).
+  void reject_unknown(const json& params, const std::string& key, const std::string& name,
+                      std::initializer_list<const char*> known) const {
+    std::string list;
+    for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+    for (auto it = params.begin(); it != params.end(); ++it) {
+      const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; });
+      if (!ok)
+        fail(key + "/" + it.key(),
+             "unknown parameter (" + name + " takes " + (list.empty() ? std::string("none") : list) + ")");
+    }
+  }
+
+  /// A finite number > 0 (or >= 0 when `zero_ok`).
+  double positive(const json& v, const std::string& key, bool zero_ok = false) const {
+    const double d = number(v, key);
+    if (zero_ok ? !(d >= 0) : !(d > 0))
+      fail(key, std::string("must be ") + (zero_ok ? ">= 0" : "> 0") + " (got " + number_text(d) + ")");
+    return d;
+  }
+
   const std::string& file() const { return file_; }
 
 private:
@@ -118,4 +140,4 @@ private:
   bool strict_;
 };
 
-}  // namespace exbsp::scene
+}  // namespace exbsp::view

@@ -1,0 +1,257 @@
+// Splitter heuristics of the BSP build (DESIGN.md section 3): which fragment of a node's list
+// gives the node its plane. Private to src/bsp; the tree (bsp_tree_impl.h) calls choose_splitter.
+//
+// Notation: a node's list holds n >= 2 fragments at positions 0..n-1 (list order). cls(i, j) is
+// the exact classification of the fragment at position j against the plane of the fragment at
+// position i (a fragment of the same input triangle as i is coplanar by construction). A
+// heuristic returns a position. Every heuristic is deterministic: its result depends only on
+// the list, the options, the seed and the node's path key, never on the number of threads.
+//   naive      position 0;
+//   min-split  the fewest straddlers over the whole list, ties to the earliest;
+//   sampled    seeded candidates scored on an evenly spaced sample, W * splits + |pos - neg|;
+//   random     one seeded position;
+//   custom     build_options::score over build_options::score_candidates, lowest score wins,
+//              ties to the earliest candidate.
+#pragma once
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "bsp/engine.h"
+#include "bsp/parallel.h"
+#include "bsp/split_pattern.h"
+#include "core/errors.h"
+
+namespace exbsp {
+namespace detail {
+
+/// splitmix64: a fixed, portable mixing function (the same stream on every machine,
+/// unlike std::uniform_int_distribution).
+inline std::uint64_t mix64(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+/// Heuristic indices; the first four follow heuristic_names().
+enum heuristic_id : int {
+  heuristic_naive,
+  heuristic_min_split,
+  heuristic_sampled,
+  heuristic_random,
+  heuristic_custom
+};
+
+/// The heuristic `options` ask for (engine.cpp). Throws usage_error for an unknown name,
+/// for "custom" without options.score and for options.score with another heuristic.
+heuristic_id heuristic_for(const build_options& options);
+
+// min-split: the position whose plane straddles the fewest others, ties to the earliest.
+// Candidates are ranked by the key (count, index). The best complete key so far bounds the
+// rest: candidate j stops as soon as (count so far, j) can no longer beat it, so once a plane
+// with 0 straddlers is found at i, every later candidate is skipped at once. A fragment found
+// coplanar with an earlier candidate has the same count and loses the tie: it is skipped.
+// Candidates run in parallel; the result does not depend on scheduling.
+template <class Classify>
+std::size_t choose_min_split(std::size_t n, const Classify& cls, unsigned threads) {
+  std::vector<std::atomic<unsigned char>> same_plane(n);
+  for (auto& f : same_plane) f.store(0, std::memory_order_relaxed);
+  const auto key = [](std::uint64_t count, std::uint64_t index) { return count << 32 | index; };
+  std::atomic<std::uint64_t> best{std::numeric_limits<std::uint64_t>::max()};
+  const long long nn = static_cast<long long>(n);
+  parallel_failure failure;
+#pragma omp parallel for schedule(dynamic, 8) if (n > 64) num_threads(threads_for(threads))
+  for (long long ii = 0; ii < nn; ++ii) {
+    failure.run([&] {
+      const auto i = static_cast<std::uint64_t>(ii);
+      if (same_plane[i].load(std::memory_order_relaxed)) return;
+      if (key(0, i) >= best.load(std::memory_order_relaxed)) return;
+      std::uint64_t c = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (j == i) continue;
+        const classification k = cls(i, j);
+        if (k == classification::straddling) {
+          if (key(++c, i) >= best.load(std::memory_order_relaxed)) return;  // cannot win
+        } else if (k == classification::coplanar && j > i) {
+          same_plane[j].store(1, std::memory_order_relaxed);
+        }
+      }
+      std::uint64_t b = best.load(std::memory_order_relaxed);
+      const std::uint64_t mine = key(c, i);
+      while (mine < b && !best.compare_exchange_weak(b, mine, std::memory_order_relaxed)) {
+      }
+    });
+  }
+  failure.rethrow();
+  return static_cast<std::size_t>(best.load() & 0xffffffffu);
+}
+
+/// The sampled heuristic's candidate positions: all n when n <= max_candidates, otherwise
+/// max_candidates seeded draws, sorted, duplicates removed.
+inline std::vector<std::size_t> sampled_candidate_positions(std::size_t n,
+                                                            std::size_t max_candidates,
+                                                            std::uint64_t seed,
+                                                            std::uint64_t node_key) {
+  std::vector<std::size_t> candidates;
+  if (n <= max_candidates) {
+    for (std::size_t i = 0; i < n; ++i) candidates.push_back(i);
+    return candidates;
+  }
+  const std::uint64_t h = mix64(seed ^ mix64(node_key + 0x51ed));
+  for (std::size_t k = 0; k < max_candidates; ++k) candidates.push_back(mix64(h + k) % n);
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  return candidates;
+}
+
+/// The sample a candidate is scored on: positions k * n / m, k = 0..m-1, m = min(n, samples).
+inline std::size_t sample_size(std::size_t n, unsigned samples) {
+  return std::min<std::size_t>(n, std::max(1u, samples));
+}
+inline std::size_t sample_position(std::size_t k, std::size_t n, std::size_t m) {
+  return k * n / m;
+}
+
+// sampled: up to C candidates drawn with the seed, each scored on an evenly spaced sample
+// of at most S fragments by W * splits + |positive - negative| (the split/balance score of
+// classic BSP compilers); lowest score wins, ties to the earliest candidate. C, S, W are
+// build_options::sampled_candidates, sampled_samples, sampled_split_weight (16, 512, 8).
+// A candidate stops early once its splits alone cannot beat the best score.
+template <class Classify>
+std::size_t choose_sampled(std::size_t n, const Classify& cls, const build_options& o,
+                           std::uint64_t node_key) {
+  const std::vector<std::size_t> candidates =
+      sampled_candidate_positions(n, std::max(1u, o.sampled_candidates), o.seed, node_key);
+  const std::size_t m = sample_size(n, o.sampled_samples);
+  const long long weight = o.sampled_split_weight;
+  std::size_t best = candidates.front();
+  long long best_score = std::numeric_limits<long long>::max();
+  for (std::size_t i : candidates) {
+    long long splits = 0, pos = 0, neg = 0, score = 0;
+    for (std::size_t k = 0; k < m && score < best_score; ++k) {
+      switch (cls(i, sample_position(k, n, m))) {
+        case classification::straddling:
+          ++splits;
+          break;
+        case classification::positive:
+          ++pos;
+          break;
+        case classification::negative:
+          ++neg;
+          break;
+        case classification::coplanar:
+          break;  // the candidate itself, or in its plane
+      }
+      score = weight * splits;
+    }
+    score = weight * splits + std::llabs(pos - neg);
+    if (score < best_score) {
+      best_score = score;
+      best = i;
+    }
+  }
+  return best;
+}
+
+/// random: one position drawn with the seed and the node's path key.
+inline std::size_t choose_random(std::size_t n, std::uint64_t seed, std::uint64_t node_key) {
+  return mix64(seed ^ mix64(node_key)) % n;
+}
+
+/// Counts of one candidate's plane over positions position(k), k = 0..m-1 (the candidate
+/// itself skipped).
+template <class Classify, class Position>
+void count_sides(std::size_t i, const Classify& cls, std::size_t m, const Position& position,
+                 candidate_score_input& in) {
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::size_t j = position(k);
+    if (j == i) continue;
+    switch (cls(i, j)) {
+      case classification::straddling:
+        ++in.straddling;
+        break;
+      case classification::positive:
+        ++in.positive;
+        break;
+      case classification::negative:
+        ++in.negative;
+        break;
+      case classification::coplanar:
+        ++in.coplanar;
+        break;
+    }
+  }
+}
+
+/// Calls options.score; throws usage_error for a NaN score (it would make the choice
+/// depend on the order of comparisons).
+inline double checked_score(const build_options& o, const candidate_score_input& in) {
+  const double s = o.score(in);
+  if (std::isnan(s))
+    throw usage_error("score callback returned NaN for candidate " + std::to_string(in.candidate) +
+                      " (face " + std::to_string(in.face) + ")");
+  return s;
+}
+
+// custom: options.score for each candidate, lowest score wins, ties to the earliest. With
+// candidate_set::all every position is a candidate, counted against the whole list (in
+// parallel over candidates, like min-split, but without its bound: a score is opaque); with
+// candidate_set::sampled the sampled heuristic's candidates are counted on its sample.
+// `ids(i)` gives the fragment at position i as {face, source}.
+template <class Classify, class Ids>
+std::size_t choose_scored(std::size_t n, const Classify& cls, const Ids& ids,
+                          const build_options& o, std::uint64_t node_key, std::uint32_t depth) {
+  const auto input_for = [&](std::size_t i) {
+    candidate_score_input in;
+    in.candidate = i;
+    const auto id = ids(i);
+    in.face = id.first;
+    in.source = id.second;
+    in.list_size = n;
+    in.depth = depth;
+    return in;
+  };
+  std::vector<std::size_t> candidates;
+  std::vector<double> scores;
+  if (o.score_candidates == candidate_set::sampled) {
+    candidates =
+        sampled_candidate_positions(n, std::max(1u, o.sampled_candidates), o.seed, node_key);
+    const std::size_t m = sample_size(n, o.sampled_samples);
+    for (std::size_t i : candidates) {
+      candidate_score_input in = input_for(i);
+      count_sides(
+          i, cls, m, [&](std::size_t k) { return sample_position(k, n, m); }, in);
+      scores.push_back(checked_score(o, in));
+    }
+  } else {
+    candidates.resize(n);
+    scores.resize(n);
+    const long long nn = static_cast<long long>(n);
+    parallel_failure failure;
+#pragma omp parallel for schedule(dynamic, 8) if (n > 64) num_threads(threads_for(o.threads))
+    for (long long ii = 0; ii < nn; ++ii) {
+      failure.run([&] {
+        const auto i = static_cast<std::size_t>(ii);
+        candidate_score_input in = input_for(i);
+        count_sides(
+            i, cls, n, [](std::size_t k) { return k; }, in);
+        candidates[i] = i;
+        scores[i] = checked_score(o, in);
+      });
+    }
+    failure.rethrow();
+  }
+  std::size_t best = 0;  // index into candidates: the first lowest score
+  for (std::size_t k = 1; k < candidates.size(); ++k)
+    if (scores[k] < scores[best]) best = k;
+  return candidates[best];
+}
+
+}  // namespace detail
+}  // namespace exbsp

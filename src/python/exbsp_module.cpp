@@ -1,0 +1,463 @@
+// The Python module `exbsp` (pybind11, numpy arrays in and out); docs/python.md is its manual.
+//
+// Notation: a mesh is (vertices, faces[, face_ids]): vertices an (n, 3) float64 array (the
+// exact input, DESIGN.md section 2); faces an (m, k >= 3) integer array or a list of polygons,
+// fan-triangulated, face id = row index unless face_ids gives one per row. Exact coordinates
+// come out as fractions.Fraction, parsed from the engine's reduced "p/q" text.
+// Errors: exbsp::usage_error -> exbsp.UsageError (a ValueError), input_error -> exbsp.InputError
+// (a ValueError, with .file and .line), limit_error -> exbsp.LimitError (a MemoryError), any
+// other exbsp::error -> exbsp.Error; an exception raised by a Python score callback propagates
+// unchanged. The GIL is released while the engine runs and taken back for each callback.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bsp/engine.h"
+#include "clip/section.h"
+#include "core/errors.h"
+#include "core/version.h"
+#include "mesh/mesh_io.h"
+
+namespace py = pybind11;
+
+namespace {
+
+using exbsp::usage_error;
+
+/// The value of a Python integer or numpy integer (not a float); `what` names it in messages.
+long long integer(py::handle h, const std::string& what) {
+  PyObject* as_index = PyNumber_Index(h.ptr());
+  if (!as_index) {
+    PyErr_Clear();
+    throw usage_error(what + " is not an integer");
+  }
+  const long long v = PyLong_AsLongLong(as_index);
+  Py_DECREF(as_index);
+  if (v == -1 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw usage_error(what + " is out of range");
+  }
+  return v;
+}
+
+/// faces[i][j] = v checked as an index into vertex_count vertices.
+std::uint32_t vertex_index(long long v, std::size_t i, std::size_t j, std::size_t vertex_count) {
+  if (v < 0 || static_cast<unsigned long long>(v) >= vertex_count)
+    throw usage_error("faces[" + std::to_string(i) + "][" + std::to_string(j) +
+                      "] = " + std::to_string(v) + " is not a vertex index (" +
+                      std::to_string(vertex_count) + " vertices)");
+  return static_cast<std::uint32_t>(v);
+}
+std::uint32_t vertex_index(py::handle h, std::size_t i, std::size_t j, std::size_t vertex_count) {
+  return vertex_index(integer(h, "faces[" + std::to_string(i) + "][" + std::to_string(j) + "]"), i,
+                      j, vertex_count);
+}
+
+/// A soup from numpy/sequence input (see the notation above). Throws usage_error naming the
+/// offending argument for shapes, non-integer or out-of-range indices and short polygons.
+exbsp::triangle_soup soup_from(
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+    const py::object& faces, const py::object& face_ids) {
+  exbsp::triangle_soup soup;
+  soup.source = "<python>";
+  if (vertices.size() != 0 && (vertices.ndim() != 2 || vertices.shape(1) != 3))
+    throw usage_error("vertices must be an (n, 3) array of float64");
+  const auto n = static_cast<std::size_t>(vertices.size() / 3);
+  const double* v = vertices.data();
+  soup.vertices.resize(n);
+  for (std::size_t i = 0; i < n; ++i) soup.vertices[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+
+  // Rows of `faces`: a 2-D integer array, or any sequence of sequences (polygons).
+  std::vector<std::vector<std::uint32_t>> polygons;
+  const bool is_array = py::isinstance<py::array>(faces);
+  if (is_array &&
+      py::reinterpret_borrow<py::array>(faces).size() != 0) {  // fast path: the integers directly
+    const auto a = py::reinterpret_borrow<py::array>(faces);
+    const char kind = a.dtype().kind();
+    if (kind != 'i' && kind != 'u')
+      throw usage_error("faces must be an integer array (got dtype " +
+                        std::string(py::str(a.dtype())) + ")");
+    if (a.ndim() != 2 || a.shape(1) < 3)
+      throw usage_error("faces must be an (m, k) array with k >= 3");
+    const auto rows = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!rows) throw py::error_already_set();
+    const auto m = static_cast<std::size_t>(rows.shape(0)),
+               k = static_cast<std::size_t>(rows.shape(1));
+    polygons.assign(m, std::vector<std::uint32_t>(k));
+    for (std::size_t i = 0; i < m; ++i)
+      for (std::size_t j = 0; j < k; ++j)
+        polygons[i][j] = vertex_index(rows.data()[i * k + j], i, j, n);
+  }
+  std::size_t i = 0;
+  if (!is_array)
+    for (py::handle row : py::iter(faces)) {
+      if (!py::isinstance<py::sequence>(row))
+        throw usage_error("faces[" + std::to_string(i) + "] is not a sequence of vertex indices");
+      std::vector<std::uint32_t> polygon;
+      std::size_t j = 0;
+      for (py::handle index : py::iter(row)) polygon.push_back(vertex_index(index, i, j++, n));
+      if (polygon.size() < 3)
+        throw usage_error("faces[" + std::to_string(i) + "] has " + std::to_string(polygon.size()) +
+                          " vertices (a face needs at least 3)");
+      polygons.push_back(std::move(polygon));
+      ++i;
+    }
+  std::vector<std::uint32_t> ids;
+  if (!face_ids.is_none()) {
+    std::size_t k = 0;
+    for (py::handle id : py::iter(face_ids)) {
+      const long long value = integer(id, "face_ids[" + std::to_string(k) + "]");
+      if (value < 0 || value > 0xfffffffeLL)
+        throw usage_error("face_ids[" + std::to_string(k) + "] = " + std::to_string(value) +
+                          " is not a face id");
+      ids.push_back(static_cast<std::uint32_t>(value));
+      ++k;
+    }
+    if (ids.size() != polygons.size())
+      throw usage_error("face_ids has " + std::to_string(ids.size()) + " entries for " +
+                        std::to_string(polygons.size()) + " faces");
+  }
+  for (std::size_t f = 0; f < polygons.size(); ++f)
+    soup.add_polygon(polygons[f], ids.empty() ? static_cast<std::uint32_t>(f) : ids[f]);
+  return soup;
+}
+
+/// fractions.Fraction of the engine's "p/q" text.
+py::object fraction(const std::string& text) {
+  static const auto* fraction_type =
+      new py::object(py::module_::import("fractions").attr("Fraction"));
+  return (*fraction_type)(text);
+}
+
+py::tuple exact_point(const std::array<std::string, 3>& p) {
+  return py::make_tuple(fraction(p[0]), fraction(p[1]), fraction(p[2]));
+}
+
+py::dict stats_dict(const exbsp::build_stats& s) {
+  py::dict d;
+  d["input_triangles"] = s.input_triangles;
+  d["degenerate_input"] = s.degenerate_input;
+  d["fragments"] = s.fragments;
+  d["splits"] = s.splits;
+  d["nodes"] = s.nodes;
+  d["depth"] = s.depth;
+  d["build_seconds"] = s.build_seconds;
+  d["peak_rss_bytes"] = s.peak_rss_bytes;
+  d["kernel"] = s.kernel;
+  d["heuristic"] = s.heuristic;
+  d["seed"] = s.seed;
+  return d;
+}
+
+/// A numpy array of `shape` (row-major) with element j = at(j).
+template <class T, class At>
+py::array_t<T> make_array(std::vector<py::ssize_t> shape, const At& at) {
+  py::array_t<T> out(shape);
+  T* p = out.mutable_data();
+  for (py::ssize_t j = 0; j < out.size(); ++j) p[j] = at(static_cast<std::size_t>(j));
+  return out;
+}
+
+template <class T>
+py::array_t<T> to_numpy(const std::vector<T>& v) {
+  return make_array<T>({static_cast<py::ssize_t>(v.size())}, [&](std::size_t j) { return v[j]; });
+}
+
+/// (n, 3) uint32 corner indices and (n,) face ids of section or soup triangles.
+template <class Triangle, class Corners>
+std::pair<py::array_t<std::uint32_t>, py::array_t<std::uint32_t>> triangle_arrays(
+    const std::vector<Triangle>& ts, Corners corners) {
+  const auto n = static_cast<py::ssize_t>(ts.size());
+  return {
+      make_array<std::uint32_t>({n, 3}, [&](std::size_t j) { return (ts[j / 3].*corners)[j % 3]; }),
+      make_array<std::uint32_t>({n}, [&](std::size_t j) { return ts[j].face; })};
+}
+
+/// exbsp.build: see docs/python.md.
+exbsp::bsp build(const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+                 const py::object& faces, const std::string& kernel,
+                 const std::optional<std::string>& heuristic, std::uint64_t seed,
+                 const py::object& score, const std::string& candidates,
+                 const std::array<unsigned, 3>& sampled, std::optional<unsigned> threads,
+                 std::size_t max_fragments, const py::object& face_ids) {
+  const exbsp::triangle_soup soup = soup_from(vertices, faces, face_ids);
+  exbsp::build_options o;
+  o.kernel = exbsp::parse_kernel(kernel);
+  o.heuristic = heuristic ? *heuristic : score.is_none() ? exbsp::default_heuristic() : "custom";
+  o.seed = seed;
+  // A Python score runs under the GIL: on other threads each call also makes and drops a
+  // Python thread state (5x slower on 2 threads than on 1, measured), so one thread by default.
+  o.threads = threads ? *threads : score.is_none() ? 0u : 1u;
+  o.max_fragments = max_fragments;
+  o.sampled_candidates = sampled[0];
+  o.sampled_samples = sampled[1];
+  o.sampled_split_weight = sampled[2];
+  if (candidates == "all")
+    o.score_candidates = exbsp::candidate_set::all;
+  else if (candidates == "sampled")
+    o.score_candidates = exbsp::candidate_set::sampled;
+  else
+    throw usage_error("candidates must be 'all' or 'sampled' (got '" + candidates + "')");
+  if (!score.is_none()) {
+    if (!PyCallable_Check(score.ptr())) throw usage_error("score must be callable");
+    // Called from the build's threads without the GIL: take it for each call.
+    o.score = [score](const exbsp::candidate_score_input& in) {
+      py::gil_scoped_acquire gil;
+      const py::object result = score(in);
+      const double value = PyFloat_AsDouble(result.ptr());  // a number (TypeError for "1.5")
+      if (value == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+      return value;
+    };
+  }
+  // Ctrl-C: the engine reports progress about every 256 nodes, one call at a time from any of
+  // its threads; on the calls that come on this (the main) thread a pending signal raises
+  // KeyboardInterrupt and the build stops (PyErr_CheckSignals does nothing on other threads).
+  o.progress = [](const exbsp::build_progress&) {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  };
+  py::gil_scoped_release no_gil;
+  return exbsp::bsp::build(soup, o);
+}
+
+std::size_t checked_index(const exbsp::bsp& t, py::ssize_t i) {
+  const auto n = static_cast<py::ssize_t>(t.fragment_count());
+  if (i < -n || i >= n)
+    throw py::index_error("fragment index " + std::to_string(i) + " out of range (" +
+                          std::to_string(n) + " fragments)");
+  return static_cast<std::size_t>(i < 0 ? i + n : i);
+}
+
+/// exbsp.section: see docs/python.md.
+py::dict section(const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+                 const py::object& faces, const std::array<double, 4>& plane, bool cap, bool exact,
+                 const py::object& face_ids) {
+  const exbsp::triangle_soup soup = soup_from(vertices, faces, face_ids);
+  exbsp::section_options options;
+  options.cap = cap;
+  options.exact_text = exact;
+  exbsp::section_result r;
+  {
+    py::gil_scoped_release no_gil;
+    r = exbsp::section(soup, plane, options);
+  }
+  const auto points = make_array<double>({static_cast<py::ssize_t>(r.points.size()), 3},
+                                         [&](std::size_t j) { return r.points[j / 3].v[j % 3]; });
+  py::dict d;
+  d["plane"] = py::make_tuple(plane[0], plane[1], plane[2], plane[3]);
+  d["closed"] = r.closed;
+  d["points"] = points;
+  if (exact) {
+    py::list ex;
+    for (const auto& pt : r.points) ex.append(exact_point(pt.exact));
+    d["exact"] = ex;
+  }
+  const auto kept = triangle_arrays(r.kept, &exbsp::section_triangle::p);
+  d["kept"] = kept.first;
+  d["kept_faces"] = kept.second;
+  py::list outline;
+  for (const auto& c : r.outline) {
+    py::dict chain;
+    chain["closed"] = c.closed;
+    chain["points"] = to_numpy(c.p);
+    outline.append(chain);
+  }
+  d["outline"] = outline;
+  d["cap"] = triangle_arrays(r.cap, &exbsp::section_triangle::p).first;
+  d["cap_face"] = r.cap_face;
+  py::dict s;
+  s["input_triangles"] = r.stats.input_triangles;
+  s["degenerate_input"] = r.stats.degenerate_input;
+  s["kept_whole"] = r.stats.kept_whole;
+  s["in_plane"] = r.stats.in_plane;
+  s["split"] = r.stats.split;
+  s["removed"] = r.stats.removed;
+  s["cut_points"] = r.stats.cut_points;
+  s["outline_edges"] = r.stats.outline_edges;
+  s["cap_triangles"] = r.stats.cap_triangles;
+  s["cap_steiner_points"] = r.stats.cap_steiner_points;
+  s["split_constraints"] = r.stats.split_constraints;
+  s["seconds"] = r.stats.seconds;
+  d["stats"] = s;
+  return d;
+}
+
+/// exbsp.read_mesh: (vertices (n, 3) float64, triangles (t, 3) uint32, face_ids (t,) uint32).
+py::tuple read_mesh(const std::string& path) {
+  exbsp::triangle_soup soup;
+  {
+    py::gil_scoped_release no_gil;
+    soup = exbsp::read_mesh(path);
+  }
+  const auto v = make_array<double>({static_cast<py::ssize_t>(soup.vertices.size()), 3},
+                                    [&](std::size_t j) { return soup.vertices[j / 3][j % 3]; });
+  const auto t = triangle_arrays(soup.triangles, &exbsp::soup_triangle::v);
+  return py::make_tuple(v, t.first, t.second);
+}
+
+/// A Python exception class named exbsp.NAME deriving from `bases` (a tuple), added to `m`.
+py::handle new_exception(py::module_& m, const char* name, const py::tuple& bases,
+                         const char* doc) {
+  const std::string full = std::string("exbsp.") + name;
+  py::object type = py::reinterpret_steal<py::object>(
+      PyErr_NewExceptionWithDoc(full.c_str(), doc, bases.ptr(), nullptr));
+  if (!type) throw py::error_already_set();
+  m.attr(name) = type;
+  return type;  // m keeps a reference
+}
+
+}  // namespace
+
+PYBIND11_MODULE(exbsp, m) {
+  m.doc() = "Exact-predicate BSP trees and exact sections of triangle meshes (see docs/python.md).";
+  m.attr("__version__") = exbsp::version_string;
+  m.attr("version") = exbsp::version_string;
+  m.attr("HEURISTICS") = py::tuple(py::cast(exbsp::heuristic_names()));
+  m.attr("KERNELS") = py::make_tuple("exact", "epeck", "gmpq", "epick", "double");
+  m.attr("DEFAULT_HEURISTIC") = exbsp::default_heuristic();
+
+  // Exception classes; the translator keeps them alive for the module's lifetime.
+  // Handles, not objects: no Py_DECREF after the interpreter has finalized (the module holds them).
+  static py::handle error_type, usage_type, input_type, limit_type, output_type;
+  error_type = new_exception(m, "Error", py::make_tuple(py::handle(PyExc_Exception)),
+                             "Base of exbsp's errors.");
+  usage_type =
+      new_exception(m, "UsageError", py::make_tuple(error_type, py::handle(PyExc_ValueError)),
+                    "A bad argument: shape, index, name, non-finite coordinate.");
+  input_type =
+      new_exception(m, "InputError", py::make_tuple(error_type, py::handle(PyExc_ValueError)),
+                    "A bad mesh file; .file and .line (0: none) name the place.");
+  limit_type =
+      new_exception(m, "LimitError", py::make_tuple(error_type, py::handle(PyExc_MemoryError)),
+                    "A resource limit (max_fragments) was reached; nothing is returned.");
+  output_type =
+      new_exception(m, "OutputError", py::make_tuple(error_type, py::handle(PyExc_OSError)),
+                    "A file could not be written (Tree.save); nothing partial is left.");
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const exbsp::input_error& e) {
+      py::object err = input_type(e.what());  // an instance carrying .file and .line
+      err.attr("file") = e.file();
+      err.attr("line") = e.line();
+      PyErr_SetObject(input_type.ptr(), err.ptr());
+    } catch (const exbsp::usage_error& e) {
+      PyErr_SetString(usage_type.ptr(), e.what());
+    } catch (const exbsp::limit_error& e) {
+      PyErr_SetString(limit_type.ptr(), e.what());
+    } catch (const exbsp::output_error& e) {
+      PyErr_SetString(output_type.ptr(), e.what());
+    } catch (const exbsp::error& e) {
+      PyErr_SetString(error_type.ptr(), e.what());
+    }
+  });
+
+  py::class_<exbsp::candidate_score_input>(
+      m, "Candidate", "What a score callback sees for one candidate splitter at one node.")
+      .def_readonly("candidate", &exbsp::candidate_score_input::candidate,
+                    "position in the node's list")
+      .def_readonly("face", &exbsp::candidate_score_input::face, "its face id")
+      .def_readonly("source", &exbsp::candidate_score_input::source,
+                    "its input triangle (whose plane it is)")
+      .def_readonly("positive", &exbsp::candidate_score_input::positive)
+      .def_readonly("negative", &exbsp::candidate_score_input::negative)
+      .def_readonly("straddling", &exbsp::candidate_score_input::straddling,
+                    "fragments the plane would split")
+      .def_readonly("coplanar", &exbsp::candidate_score_input::coplanar)
+      .def_readonly("list_size", &exbsp::candidate_score_input::list_size)
+      .def_readonly("depth", &exbsp::candidate_score_input::depth, "the node's depth (root: 1)")
+      .def("__repr__", [](const exbsp::candidate_score_input& c) {
+        return "Candidate(candidate=" + std::to_string(c.candidate) +
+               ", face=" + std::to_string(c.face) + ", positive=" + std::to_string(c.positive) +
+               ", negative=" + std::to_string(c.negative) +
+               ", straddling=" + std::to_string(c.straddling) +
+               ", coplanar=" + std::to_string(c.coplanar) +
+               ", list_size=" + std::to_string(c.list_size) + ", depth=" + std::to_string(c.depth) +
+               ")";
+      });
+
+  py::class_<exbsp::bsp>(
+      m, "Tree", "A built BSP tree (exbsp.build). Immutable; safe to share between threads.")
+      .def_property_readonly("stats", [](const exbsp::bsp& t) { return stats_dict(t.stats()); })
+      .def_property_readonly("kernel",
+                             [](const exbsp::bsp& t) { return exbsp::to_string(t.kernel()); })
+      .def("__len__", &exbsp::bsp::fragment_count)
+      .def(
+          "order",
+          [](const exbsp::bsp& t, const std::optional<exbsp::vec3d>& eye,
+             const std::optional<exbsp::vec3d>& direction, bool back_to_front) {
+            if (eye.has_value() == direction.has_value())
+              throw usage_error("order: give exactly one of eye=(x, y, z) or direction=(x, y, z)");
+            std::vector<std::uint32_t> order;
+            {
+              py::gil_scoped_release no_gil;
+              order = eye ? t.order_from_eye(*eye, back_to_front)
+                          : t.order_for_direction(*direction, back_to_front);
+            }
+            return to_numpy(order);
+          },
+          py::kw_only(), py::arg("eye") = py::none(), py::arg("direction") = py::none(),
+          py::arg("back_to_front") = true,
+          "Fragment indices back to front (or front to back) for an eye point or a direction of "
+          "projection.")
+      .def(
+          "fragments",
+          [](const exbsp::bsp& t) {
+            const std::vector<exbsp::fragment_d> f = t.fragments_double();
+            const auto n = static_cast<py::ssize_t>(f.size());
+            const auto v = make_array<double>(
+                {n, 3, 3}, [&](std::size_t j) { return f[j / 9].v[j / 3 % 3][j % 3]; });
+            const auto faces =
+                make_array<std::uint32_t>({n}, [&](std::size_t j) { return f[j].face; });
+            return py::make_tuple(v, faces);
+          },
+          "(vertices (k, 3, 3) float64, face ids (k,) uint32) of the fragments in storage order.")
+      .def(
+          "exact",
+          [](const exbsp::bsp& t, py::ssize_t i) {
+            const exbsp::exact_triangle e = t.fragment_exact(checked_index(t, i));
+            return py::make_tuple(exact_point(e[0]), exact_point(e[1]), exact_point(e[2]));
+          },
+          py::arg("i"), "Fragment i's corners as ((Fraction,) * 3,) * 3 (exact kernels only).")
+      .def(
+          "ancestors",
+          [](const exbsp::bsp& t, py::ssize_t i) {
+            py::list out;
+            for (const auto& a : t.ancestors(checked_index(t, i)))
+              out.append(py::make_tuple(a.plane_face, a.side));
+            return out;
+          },
+          py::arg("i"), "[(input triangle whose plane it is, side +1/-1), ...] from the root down.")
+      .def("save", &exbsp::bsp::save, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
+           "Writes the tree to a file (docs/tree-file.md); exbsp.load reads it back.")
+      .def(
+          "serialize", [](const exbsp::bsp& t) { return py::bytes(t.serialize()); },
+          "The bytes save writes.")
+      .def(py::pickle([](const exbsp::bsp& t) { return py::bytes(t.serialize()); },
+                      [](const py::bytes& b) {
+                        return exbsp::bsp::deserialize(std::string(b), "<pickled exbsp.Tree>");
+                      }));
+
+  m.def("build", &build, py::arg("vertices"), py::arg("faces"), py::kw_only(),
+        py::arg("kernel") = "exact", py::arg("heuristic") = py::none(), py::arg("seed") = 0,
+        py::arg("score") = py::none(), py::arg("candidates") = "all",
+        py::arg("sampled") = std::array<unsigned, 3>{16, 512, 8}, py::arg("threads") = py::none(),
+        py::arg("max_fragments") = 0, py::arg("face_ids") = py::none(),
+        "Builds the exact BSP tree of a mesh; see docs/python.md.");
+  m.def("section", &section, py::arg("vertices"), py::arg("faces"), py::arg("plane"), py::kw_only(),
+        py::arg("cap") = true, py::arg("exact") = true, py::arg("face_ids") = py::none(),
+        "Cuts a mesh exactly by the plane A*x + B*y + C*z + D = 0, keeping >= 0; see "
+        "docs/python.md.");
+  m.def("load", &exbsp::bsp::load, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
+        "Reads a tree saved by Tree.save or `exbsp build --save` (InputError when it is bad).");
+  m.def(
+      "deserialize",
+      [](const py::bytes& b) { return exbsp::bsp::deserialize(std::string(b), "<bytes>"); },
+      py::arg("data"), "A tree from the bytes Tree.serialize returns.");
+  m.def("read_mesh", &read_mesh, py::arg("path"),
+        "Reads an OFF/OBJ/PLY/STL file: (vertices, triangles, face_ids).");
+}
