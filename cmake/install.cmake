@@ -1,21 +1,53 @@
-# cmake --install: headers, static libraries and a CMake package config (find_package(exbsp)).
-include(GNUInstallDirs)
+# cmake --install: the public headers, libexbsp (static, and shared with EXBSP_BUILD_SHARED),
+# the exbsp command line and a CMake package (find_package(exbsp [COMPONENTS openmesh])).
+#
+# Only the headers listed here are installed, under <prefix>/include/exbsp/<module>/; they
+# include each other by relative paths ("../mesh/soup.h"), so a consumer's include path holds
+# <prefix>/include alone and #include <exbsp/bsp/engine.h> (or <exbsp/exbsp.h>) works. No
+# installed header includes CGAL, Boost, OpenMP, nlohmann-json or a private exbsp header
+# (tests/install_consumer.sh compiles each one alone against the installed tree). The others
+# (bsp_tree_impl.h, kernel_*.h, geometry_*.h, reader_util.h, ...) stay in src/.
 include(CMakePackageConfigHelpers)
-set(EXBSP_INSTALL_TARGETS exbsp_options exbsp_gmp exbsp_cgal_flags exbsp_polyclipping exbsp_cairo
-    exbsp_core exbsp_mesh exbsp_bsp exbsp_clip exbsp_view exbsp_scene)
-install(TARGETS ${EXBSP_INSTALL_TARGETS} EXPORT exbspTargets
-  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/exbsp)
-install(TARGETS exbsp RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-foreach(module core mesh bsp clip view scene)
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/${module}/
-    DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/exbsp/${module} FILES_MATCHING PATTERN "*.h")
+set(EXBSP_PUBLIC_HEADERS
+  core/errors.h
+  mesh/soup.h mesh/mesh_io.h mesh/gmp_memory.h
+  bsp/engine.h bsp/traversal.h bsp/exact_gmp.h
+  clip/clip_types.h clip/bbox.h clip/cohen_sutherland.h clip/liang_barsky.h
+  clip/sutherland_hodgman.h clip/convex_region.h clip/homogeneous.h clip/homogeneous_segment.h
+  clip/section.h
+  view/matrix.h view/camera.h view/phigs.h view/projection.h view/viewport.h view/transforms.h
+  view/image.h view/png_io.h view/effect_settings.h view/screen_line.h view/screen_polygon.h
+  view/vector_drawing.h view/sample_shader.h view/pipeline.h view/stages.h view/standard_pipeline.h
+  view/trackball.h view/bezier.h
+  scene/procedural.h
+  adapters/triangle_list.h adapters/cgal_face_graph.h
+  exbsp.h)
+if(EXBSP_HAVE_OPENMESH)
+  list(APPEND EXBSP_PUBLIC_HEADERS adapters/openmesh.h)
+endif()
+foreach(header ${EXBSP_PUBLIC_HEADERS})
+  get_filename_component(dir ${header} DIRECTORY)
+  install(FILES ${PROJECT_SOURCE_DIR}/src/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/exbsp/${dir})
 endforeach()
 install(FILES ${PROJECT_BINARY_DIR}/generated/core/version.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/exbsp/core)
+
+install(TARGETS ${EXBSP_LIBRARY_TARGETS} EXPORT exbspTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS exbsp RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT exbspTargets NAMESPACE exbsp:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/exbsp)
+
+# exbspConfig.cmake re-finds the libraries the static library links (GMP, MPFR, cairo, Clipper)
+# with the same lookup files exbsp's build used, so the exported link interface names imported
+# targets (exbsp::gmp, ...) and never this machine's absolute paths.
+set(EXBSP_PACKAGE_STATIC ON)
+set(EXBSP_PACKAGE_SHARED ${EXBSP_BUILD_SHARED})
+set(EXBSP_PACKAGE_OPENMESH ${EXBSP_HAVE_OPENMESH})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/exbspConfig.cmake.in
   ${PROJECT_BINARY_DIR}/exbspConfig.cmake INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/exbsp)
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/exbspConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/exbspConfig.cmake ${PROJECT_BINARY_DIR}/exbspConfigVersion.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/gmp.cmake ${PROJECT_SOURCE_DIR}/cmake/cairo.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/polyclipping.cmake ${PROJECT_SOURCE_DIR}/cmake/imported_dependency.cmake
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/exbsp)

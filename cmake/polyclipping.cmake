@@ -3,10 +3,13 @@
 # Debian ships no CMake package for it, so find_path/find_library first, with pkg-config's
 # polyclipping.pc as a hint.
 #
-# Defines the INTERFACE target exbsp_polyclipping (installed with exbsp's export set).
-if(TARGET exbsp_polyclipping)
+# Defines the imported target exbsp::polyclipping. Installed with the package and included by
+# exbspConfig.cmake (the static libexbsp.a needs it at link time); in a consumer's
+# find_package(exbsp) a missing Clipper sets exbsp_FOUND to FALSE instead of failing.
+if(TARGET exbsp::polyclipping)
   return()
 endif()
+include(${CMAKE_CURRENT_LIST_DIR}/imported_dependency.cmake)
 find_package(PkgConfig QUIET)
 if(PKG_CONFIG_FOUND)
   pkg_check_modules(EXBSP_PC_POLYCLIPPING QUIET polyclipping)
@@ -14,10 +17,6 @@ endif()
 find_path(EXBSP_POLYCLIPPING_INCLUDE_DIR polyclipping/clipper.hpp HINTS ${EXBSP_PC_POLYCLIPPING_INCLUDEDIR})
 find_library(EXBSP_POLYCLIPPING_LIBRARY NAMES polyclipping HINTS ${EXBSP_PC_POLYCLIPPING_LIBRARY_DIRS})
 if(NOT EXBSP_POLYCLIPPING_INCLUDE_DIR OR NOT EXBSP_POLYCLIPPING_LIBRARY)
-  message(FATAL_ERROR "Clipper (polyclipping/clipper.hpp, libpolyclipping) not found: "
-                      "run scripts/setup (apt-get install libpolyclipping-dev)")
+  exbsp_missing_dependency("Clipper (polyclipping/clipper.hpp, libpolyclipping) not found: apt-get install libpolyclipping-dev (exbsp's scripts/setup does)")
 endif()
-message(STATUS "Clipper: ${EXBSP_POLYCLIPPING_LIBRARY}")
-add_library(exbsp_polyclipping INTERFACE)
-target_include_directories(exbsp_polyclipping SYSTEM INTERFACE ${EXBSP_POLYCLIPPING_INCLUDE_DIR})
-target_link_libraries(exbsp_polyclipping INTERFACE ${EXBSP_POLYCLIPPING_LIBRARY})
+exbsp_imported_library(exbsp::polyclipping "${EXBSP_POLYCLIPPING_LIBRARY}" "${EXBSP_POLYCLIPPING_INCLUDE_DIR}")

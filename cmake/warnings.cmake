@@ -1,4 +1,6 @@
 # Project-wide compile settings: warnings, reproducible doubles, optional strictness and sanitizers.
+# exbsp_options is linked by exbsp's own targets (modules, CLI, tests, benchmarks) and never
+# installed: the installed libraries carry none of these flags to consumers (docs/package.md).
 add_library(exbsp_options INTERFACE)
 target_compile_features(exbsp_options INTERFACE cxx_std_17)
 target_compile_options(exbsp_options INTERFACE -Wall -Wextra -ffp-contract=off)
@@ -24,6 +26,3 @@ if(EXBSP_TSAN)
   target_compile_options(exbsp_options INTERFACE -fsanitize=thread -fno-omit-frame-pointer)
   target_link_options(exbsp_options INTERFACE -fsanitize=thread)
 endif()
-# Installed consumers write #include <exbsp/bsp/engine.h>; exbsp's own headers include
-# "bsp/..." relative to include/exbsp (each module adds that directory).
-target_include_directories(exbsp_options INTERFACE $<INSTALL_INTERFACE:include>)

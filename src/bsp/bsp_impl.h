@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "bsp/engine.h"
+#include "bsp/exact_output.h"
 
 namespace exbsp {
 namespace tree_file {
@@ -17,7 +18,9 @@ public:
   virtual kernel_id kernel() const = 0;
   virtual std::size_t fragment_count() const = 0;
   virtual fragment_d fragment(std::size_t i) const = 0;
-  virtual exact_triangle fragment_exact(std::size_t i) const = 0;
+  /// Calls visit(k, axis, value) for the exact coordinates of fragment i (k, axis = 0..2).
+  /// Throws usage_error for an index out of range or an inexact kernel.
+  virtual void visit_exact(std::size_t i, const exact_visitor& visit) const = 0;
   virtual std::vector<std::uint32_t> order_from_eye(const vec3d& eye, bool back_to_front) const = 0;
   virtual std::vector<std::uint32_t> order_for_direction(const vec3d& d, bool back_to_front) const = 0;
   virtual std::vector<bsp::ancestor> ancestors(std::size_t i) const = 0;
@@ -27,6 +30,12 @@ public:
   virtual bsp_node node(std::size_t k) const = 0;
   /// The traversal for an eye point (direction = false) or a direction of projection.
   virtual void traverse(const vec3d& at, bool direction, bsp_visitor& visitor, bool back_to_front) const = 0;
+};
+
+/// The library's access to a bsp's implementation (bsp is its friend).
+class bsp_access {
+public:
+  static const bsp_impl& impl(const bsp& tree) { return *tree.impl_; }
 };
 
 namespace detail {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <deque>
 #include <iterator>
+#include <mutex>
 #include <string>
 #include <utility>
 
@@ -42,6 +43,23 @@ struct basic_bsp_tree<G>::build_context {
   detail::heuristic_id heuristic;
   std::chrono::steady_clock::time_point start;
   std::atomic<std::size_t> total_fragments{0}, splits{0}, placed{0}, nodes{0};
+  std::mutex progress_mutex;
+  bool progress_threw = false;  ///< guarded by progress_mutex
+  /// Calls options.progress on this thread unless another thread is inside it (then this
+  /// report is skipped): one call at a time, from any thread, so a cancelling exception
+  /// arrives while any part of the tree is still being built. What it throws propagates, and
+  /// progress is not called again.
+  void report(std::size_t placed_now, std::size_t nodes_now) {
+    const std::unique_lock<std::mutex> lock(progress_mutex, std::try_to_lock);
+    if (!lock.owns_lock() || progress_threw) return;
+    try {
+      options.progress({placed_now, total_fragments.load(std::memory_order_relaxed), nodes_now,
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+    } catch (...) {
+      progress_threw = true;
+      throw;
+    }
+  }
   /// Counts `added` new fragments; throws limit_error beyond options.max_fragments.
   void check_limit(std::size_t added) {
     const std::size_t total = total_fragments.fetch_add(added, std::memory_order_relaxed) + added;
@@ -268,9 +286,7 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx, P
 
   const std::size_t placed = ctx.placed.fetch_add(nd.count, std::memory_order_relaxed) + nd.count;
   const std::size_t nodes = ctx.nodes.fetch_add(1, std::memory_order_relaxed) + 1;
-  if (options.progress && (nodes & 255) == 0 && omp_get_thread_num() == 0)
-    options.progress({placed, ctx.total_fragments.load(std::memory_order_relaxed), nodes,
-                      std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx.start).count()});
+  if (options.progress && (nodes & 255) == 0) ctx.report(placed, nodes);
 }
 
 template <class G>
@@ -344,9 +360,9 @@ public:
     tree_.geometry().prepare_output(tree_.fragments());
     return tree_.geometry().to_double(tree_.fragments()[i]);
   }
-  exact_triangle fragment_exact(std::size_t i) const override {
+  void visit_exact(std::size_t i, const exact_visitor& visit) const override {
     if (i >= tree_.fragments().size()) throw usage_error("fragment_exact: index out of range");
-    return tree_.geometry().to_exact(tree_.fragments()[i]);
+    tree_.geometry().visit_exact(tree_.fragments()[i], visit);
   }
   std::vector<std::uint32_t> order_from_eye(const vec3d& e, bool back_to_front) const override {
     return tree_.order_from_eye(e, back_to_front);

@@ -5,6 +5,7 @@
 
 #include "bsp/bsp_impl.h"
 #include "bsp/bsp_tree.h"
+#include "bsp/exact_output.h"
 #include "bsp/heuristics.h"
 #include "core/errors.h"
 
@@ -85,7 +86,9 @@ std::vector<fragment_d> bsp::fragments_double() const {
   return out;
 }
 
-exact_triangle bsp::fragment_exact(std::size_t i) const { return impl_->fragment_exact(i); }
+exact_triangle bsp::fragment_exact(std::size_t i) const {
+  return exact_text([&](const exact_visitor& visit) { impl_->visit_exact(i, visit); });
+}
 
 namespace detail {
 void require_eye(const vec3d& eye, const char* function) {

@@ -18,8 +18,8 @@
 #include <string_view>
 #include <vector>
 
-#include "bsp/traversal.h"
-#include "mesh/soup.h"
+#include "../mesh/soup.h"
+#include "traversal.h"
 
 namespace exbsp {
 
@@ -101,7 +101,12 @@ struct build_options {
   /// is returned.
   std::function<double(const candidate_score_input&)> score;
   candidate_set score_candidates = candidate_set::all;
-  /// Called every few thousand fragments; may be empty.
+  /// Called about every 256 nodes and once when the tree is complete; may be empty. Calls
+  /// never overlap (one at a time) but may come from the build's worker threads.
+  /// Cancellation: to cancel a build, throw from `progress` (exbsp::build_cancelled is meant
+  /// for it; any exception works). It is not called again; the exception propagates out of
+  /// bsp::build unchanged once every worker thread has stopped (each finishes at most the
+  /// node it is splitting); no tree is returned and everything the build allocated is freed.
   std::function<void(const build_progress&)> progress;
 };
 
@@ -129,14 +134,16 @@ struct fragment_d {
 using exact_triangle = std::array<std::array<std::string, 3>, 3>;
 
 class bsp_impl;
+class bsp_access;  // private: the library's own access to the implementation (bsp_impl.h)
 
 /// A built BSP tree. Movable, not copyable. Thread-safe for concurrent const use.
 class bsp {
 public:
   /// Builds the tree of `soup`. Throws usage_error for an unknown heuristic (or "custom"
   /// without options.score, or options.score with another heuristic), limit_error when
-  /// options.max_fragments is exceeded, and whatever options.score or options.progress throw. Degenerate triangles are skipped
-  /// and counted in stats().degenerate_input.
+  /// options.max_fragments is exceeded, and whatever options.score or options.progress throw
+  /// (cancellation, see build_options::progress). Degenerate triangles are skipped and counted
+  /// in stats().degenerate_input.
   static bsp build(const triangle_soup& soup, const build_options& options = {});
 
   bsp(bsp&&) noexcept;
@@ -202,6 +209,7 @@ public:
   static bool is_saved_tree(const std::string& path);
 
 private:
+  friend class bsp_access;
   explicit bsp(std::unique_ptr<bsp_impl> impl);
   std::unique_ptr<bsp_impl> impl_;
 };

@@ -4,7 +4,7 @@
 //
 // A geometry is what bsp_tree<G> asks of its number type (see geometry_exact.h for the other
 // one): a fragment type with .source and .face, add_source, sign, split, side_of_eye,
-// side_of_direction, to_double, to_exact, and a per-subtree scratch object.
+// side_of_direction, to_double, visit_exact, and a per-subtree scratch object.
 #pragma once
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -200,17 +200,16 @@ public:
                   kernel_traits<K>::to_double(f.v[k].z())};
     return out;
   }
-  exact_triangle to_exact(const fragment& f) const {
+  void visit_exact(const fragment& f, const exact_visitor& visit) const {
     if constexpr (exact) {
-      exact_triangle out;
       for (int k = 0; k < 3; ++k) {
-        out[k][0] = rational_to_string(kernel_traits<K>::rational(f.v[k].x()));
-        out[k][1] = rational_to_string(kernel_traits<K>::rational(f.v[k].y()));
-        out[k][2] = rational_to_string(kernel_traits<K>::rational(f.v[k].z()));
+        visit(k, 0, kernel_traits<K>::rational(f.v[k].x()));
+        visit(k, 1, kernel_traits<K>::rational(f.v[k].y()));
+        visit(k, 2, kernel_traits<K>::rational(f.v[k].z()));
       }
-      return out;
     } else {
       (void)f;
+      (void)visit;
       throw usage_error("exact coordinates need an exact kernel (exact, epeck or gmpq), not " + to_string(id));
     }
   }

@@ -311,13 +311,11 @@ fragment_d exact_geometry::to_double(const fragment& f) const {
   return {f.face, {rounded_[f.v[0]], rounded_[f.v[1]], rounded_[f.v[2]]}};
 }
 
-exact_triangle exact_geometry::to_exact(const fragment& f) const {
-  exact_triangle out;
+void exact_geometry::visit_exact(const fragment& f, const exact_visitor& visit) const {
   for (int k = 0; k < 3; ++k) {
     const exact_value& e = exact_of(f.v[k]);
-    for (int j = 0; j < 3; ++j) out[k][j] = rational_to_string(e.x[j].get_mpq_t());
+    for (int j = 0; j < 3; ++j) visit(k, j, e.x[j].get_mpq_t());
   }
-  return out;
 }
 
 std::size_t exact_geometry::points_memory() const {

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "bsp/engine.h"
+#include "bsp/exact_output.h"
 #include "bsp/fast_orientation.h"
 #include "bsp/split_pattern.h"
 
@@ -76,7 +77,11 @@ public:
   /// Precondition of to_double.
   void prepare_output(const std::vector<fragment>& fragments) const;
   fragment_d to_double(const fragment& f) const;
-  exact_triangle to_exact(const fragment& f) const;
+  void visit_exact(const fragment& f, const exact_visitor& visit) const;
+  /// The same as text (bsp::fragment_exact's form).
+  exact_triangle to_exact(const fragment& f) const {
+    return exact_text([&](const exact_visitor& visit) { visit_exact(f, visit); });
+  }
   /// Saved trees (geometry_exact_file.cpp, docs/tree-file.md): writes the constructed points
   /// the fragments use, renumbered densely, then the fragments; read_fragments reads them back
   /// into a geometry made from the same soup, in which `usable[i]` says whether add_source

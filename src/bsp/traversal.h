@@ -17,7 +17,7 @@
 #include <array>
 #include <cstdint>
 
-#include "mesh/soup.h"
+#include "../mesh/soup.h"
 
 namespace exbsp {
 

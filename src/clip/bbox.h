@@ -8,7 +8,7 @@
 #include <array>
 #include <vector>
 
-#include "clip/clip_types.h"
+#include "clip_types.h"
 
 namespace exbsp::clip {
 

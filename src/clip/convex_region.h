@@ -13,8 +13,8 @@
 #pragma once
 #include <vector>
 
-#include "clip/clip_types.h"
-#include "clip/sutherland_hodgman.h"
+#include "clip_types.h"
+#include "sutherland_hodgman.h"
 
 namespace exbsp::clip {
 

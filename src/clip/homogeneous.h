@@ -20,7 +20,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "clip/clip_types.h"
+#include "clip_types.h"
 
 namespace exbsp::clip {
 

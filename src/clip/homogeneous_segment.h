@@ -21,7 +21,7 @@
 // Floating point (both): t0 == 0 keeps a bit-for-bit and t1 == 1 keeps b; an end point
 // produced by a plane is then put exactly on it (x = -w for w + x = 0, and so on).
 #pragma once
-#include "clip/clip_types.h"
+#include "clip_types.h"
 
 namespace exbsp::clip {
 

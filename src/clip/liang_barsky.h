@@ -12,7 +12,7 @@
 #pragma once
 #include <optional>
 
-#include "clip/clip_types.h"
+#include "clip_types.h"
 
 namespace exbsp::clip {
 

@@ -39,7 +39,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/soup.h"
+#include "../mesh/soup.h"
 
 namespace exbsp {
 

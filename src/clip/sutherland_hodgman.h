@@ -33,7 +33,7 @@
 #pragma once
 #include <vector>
 
-#include "clip/clip_types.h"
+#include "clip_types.h"
 
 namespace exbsp::clip {
 

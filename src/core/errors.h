@@ -60,6 +60,14 @@ private:
   std::string file_;
 };
 
+/// The caller cancelled a build by throwing this from build_options::progress (bsp/engine.h);
+/// bsp::build lets it through unchanged and keeps nothing of the partial tree.
+class build_cancelled : public error {
+public:
+  build_cancelled() : error("build cancelled") {}
+  using error::error;
+};
+
 /// A caller broke a documented precondition (e.g. a zero direction vector).
 class usage_error : public error {
 public:

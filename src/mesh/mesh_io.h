@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "mesh/soup.h"
+#include "soup.h"
 
 namespace exbsp {
 

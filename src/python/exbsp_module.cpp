@@ -213,8 +213,9 @@ exbsp::bsp build(const py::array_t<double, py::array::c_style | py::array::force
       return value;
     };
   }
-  // Ctrl-C: the engine reports progress every 256 nodes from its first thread; a pending
-  // signal raises (KeyboardInterrupt) there and the build stops.
+  // Ctrl-C: the engine reports progress about every 256 nodes, one call at a time from any of
+  // its threads; on the calls that come on this (the main) thread a pending signal raises
+  // KeyboardInterrupt and the build stops (PyErr_CheckSignals does nothing on other threads).
   o.progress = [](const exbsp::build_progress&) {
     py::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();

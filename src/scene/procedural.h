@@ -7,7 +7,7 @@
 #pragma once
 #include <vector>
 
-#include "mesh/soup.h"
+#include "../mesh/soup.h"
 
 namespace exbsp::scene {
 

@@ -5,7 +5,7 @@
 // and the viewing matrix is Mv = R_uvw * T(-eye), where R_uvw has rows u, v, w. In eye
 // coordinates the camera sits at the origin looking down -z with +y up (as OpenGL).
 #pragma once
-#include "view/matrix.h"
+#include "matrix.h"
 
 namespace exbsp::view {
 

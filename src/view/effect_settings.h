@@ -6,9 +6,9 @@
 // Notation: world units are the units of the scene's coordinates; "eye distance" is measured
 // from the camera's eye point; colours are 0..255 per channel.
 #pragma once
-#include "view/image.h"
-#include "view/matrix.h"
-#include "view/viewport.h"
+#include "image.h"
+#include "matrix.h"
+#include "viewport.h"
 
 namespace exbsp::view {
 

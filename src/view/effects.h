@@ -17,7 +17,8 @@
 // frame::settings (effect_settings.h). Adding an effect: its settings struct, its file
 // (view/<effect>.{h,cpp}: parameters reader and stage) and one line in effect_catalog().
 // Effects designed but not implemented yet would be listed with available = false; the scene
-// parser rejects those with a "not supported yet" error.
+// parser rejects those with a "not supported yet" error. The stage lists built from this
+// catalogue are declared in standard_pipeline.h (public, free of JSON types).
 #pragma once
 #include <functional>
 #include <string>
@@ -25,6 +26,7 @@
 
 #include "view/json_reader.h"
 #include "view/pipeline.h"
+#include "view/standard_pipeline.h"
 
 namespace exbsp::view {
 
@@ -54,23 +56,5 @@ const std::vector<effect_description>& effect_catalog();
 
 /// The effect called `name`, or nullptr.
 const effect_description* find_effect(const std::string& name);
-
-/// Output of the pipeline.
-enum class output_kind { png, svg, pdf };
-
-/// The stages that depend on the view, for `output` with the named effects (each must be
-/// available; throws usage_error otherwise), in this order:
-///   order, [after_order effects], transform+clip, [curves when `curves`],
-///   [after_transform effects], then for PNG: raster (or the raster effect, antialias),
-///   [after_raster effects]; for SVG: svg, for PDF: pdf (png_only effects have no stage).
-/// Re-running these stages on a frame whose "build" ran renders another view of the same BSP.
-pipeline per_view_pipeline(const std::vector<std::string>& effects, output_kind output, bool curves = false);
-
-/// "build" followed by per_view_pipeline(effects, output, curves). The caller appends the
-/// "write" stage.
-pipeline standard_pipeline(const std::vector<std::string>& effects, output_kind output, bool curves = false);
-
-/// The effects among `effects` that have no stage in `output` (png_only effects for SVG and PDF).
-std::vector<std::string> effects_without_stage(const std::vector<std::string>& effects, output_kind output);
 
 }  // namespace exbsp::view

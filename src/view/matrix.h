@@ -12,7 +12,7 @@
 #include <array>
 #include <cmath>
 
-#include "mesh/soup.h"
+#include "../mesh/soup.h"
 
 namespace exbsp::view {
 

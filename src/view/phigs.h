@@ -20,8 +20,8 @@
 // The product M * O is the whole viewing transform. For the pipeline it is split into a rigid
 // model_view (perspective: T(-PRP) * O, eye at the origin; parallel: O) and a projection.
 #pragma once
-#include "view/camera.h"
-#include "view/matrix.h"
+#include "camera.h"
+#include "matrix.h"
 
 namespace exbsp::view {
 

@@ -18,17 +18,17 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
-#include "mesh/soup.h"
-#include "view/camera.h"
-#include "view/effect_settings.h"
-#include "view/image.h"
-#include "view/matrix.h"
-#include "view/sample_shader.h"
-#include "view/screen_line.h"
-#include "view/screen_polygon.h"
-#include "view/vector_drawing.h"
-#include "view/viewport.h"
+#include "../bsp/engine.h"
+#include "../mesh/soup.h"
+#include "camera.h"
+#include "effect_settings.h"
+#include "image.h"
+#include "matrix.h"
+#include "sample_shader.h"
+#include "screen_line.h"
+#include "screen_polygon.h"
+#include "vector_drawing.h"
+#include "viewport.h"
 
 namespace exbsp::view {
 

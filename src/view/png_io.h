@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "view/image.h"
+#include "image.h"
 
 namespace exbsp::view {
 

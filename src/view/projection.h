@@ -8,7 +8,7 @@
 // maps dop onto -z and leaves the plane z = z_p (the view plane, containing the window)
 // fixed; the sheared volume is then projected orthographically: oblique = ortho * shear.
 #pragma once
-#include "view/matrix.h"
+#include "matrix.h"
 
 namespace exbsp::view {
 

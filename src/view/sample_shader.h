@@ -15,8 +15,8 @@
 #include <functional>
 #include <vector>
 
-#include "view/image.h"
-#include "view/viewport.h"
+#include "image.h"
+#include "viewport.h"
 
 namespace exbsp::view {
 

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "mesh/soup.h"
-#include "view/image.h"
-#include "view/viewport.h"
+#include "../mesh/soup.h"
+#include "image.h"
+#include "viewport.h"
 
 namespace exbsp::view {
 

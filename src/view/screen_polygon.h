@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "view/image.h"
-#include "view/viewport.h"
+#include "image.h"
+#include "viewport.h"
 
 namespace exbsp::view {
 

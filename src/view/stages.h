@@ -6,7 +6,7 @@
 #pragma once
 #include <string>
 
-#include "view/pipeline.h"
+#include "pipeline.h"
 
 namespace exbsp::view {
 

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "view/matrix.h"
+#include "matrix.h"
 
 namespace exbsp::view {
 

@@ -43,7 +43,7 @@
 #include <string>
 #include <vector>
 
-#include "view/image.h"
+#include "image.h"
 
 namespace exbsp::view {
 

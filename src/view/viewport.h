@@ -6,7 +6,7 @@
 // Images are stored top row first (PNG): image row r holds window pixel row j = height - 1 - r,
 // whose top edge is at window y = height - r.
 #pragma once
-#include "view/matrix.h"
+#include "matrix.h"
 
 namespace exbsp::view {
 
