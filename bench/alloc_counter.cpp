@@ -104,7 +104,15 @@ void* operator new(std::size_t n, std::align_val_t a) {
 void* operator new[](std::size_t n, std::align_val_t a) {
   return exbsp::bench::alloc_counter::allocate_aligned(n, static_cast<std::size_t>(a));
 }
-void operator delete(void* p, std::align_val_t) noexcept { exbsp::bench::alloc_counter::release(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { exbsp::bench::alloc_counter::release(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { exbsp::bench::alloc_counter::release(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { exbsp::bench::alloc_counter::release(p); }
+void operator delete(void* p, std::align_val_t) noexcept {
+  exbsp::bench::alloc_counter::release(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+  exbsp::bench::alloc_counter::release(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+  exbsp::bench::alloc_counter::release(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+  exbsp::bench::alloc_counter::release(p);
+}

@@ -40,7 +40,8 @@ std::vector<std::array<vec3d, 4>> make_point_sets(bool coplanar) {
   for (auto& s : sets)
     for (auto& p : s) {
       if (coplanar) {
-        const double x = static_cast<double>(rng.next() % 1024) / 64, y = static_cast<double>(rng.next() % 1024) / 64;
+        const double x = static_cast<double>(rng.next() % 1024) / 64,
+                     y = static_cast<double>(rng.next() % 1024) / 64;
         p = {x, y, x + y};
       } else {
         p = {rng.uniform(), rng.uniform(), rng.uniform()};
@@ -54,7 +55,8 @@ void bm_orientation_kernel(benchmark::State& state) {
   const auto sets = make_point_sets(state.range(0) != 0);
   std::vector<std::array<typename K::Point_3, 4>> pts(sets.size());
   for (std::size_t i = 0; i < sets.size(); ++i)
-    for (int k = 0; k < 4; ++k) pts[i][k] = typename K::Point_3(sets[i][k][0], sets[i][k][1], sets[i][k][2]);
+    for (int k = 0; k < 4; ++k)
+      pts[i][k] = typename K::Point_3(sets[i][k][0], sets[i][k][1], sets[i][k][2]);
   const auto orientation = K().orientation_3_object();
   std::size_t i = 0;
   for (auto _ : state) {
@@ -67,7 +69,8 @@ void bm_orientation_kernel(benchmark::State& state) {
 void bm_orientation_fast(benchmark::State& state) {
   const auto sets = make_point_sets(state.range(0) != 0);
   std::vector<fast_plane> planes(sets.size());
-  for (std::size_t i = 0; i < sets.size(); ++i) planes[i] = make_fast_plane(sets[i][0], sets[i][1], sets[i][2]);
+  for (std::size_t i = 0; i < sets.size(); ++i)
+    planes[i] = make_fast_plane(sets[i][0], sets[i][1], sets[i][2]);
   std::size_t i = 0, undecided = 0;
   for (auto _ : state) {
     const std::size_t k = i++ % sets.size();
@@ -75,7 +78,8 @@ void bm_orientation_fast(benchmark::State& state) {
     undecided += s == 2;
     benchmark::DoNotOptimize(s);
   }
-  state.counters["undecided"] = benchmark::Counter(static_cast<double>(undecided), benchmark::Counter::kAvgIterations);
+  state.counters["undecided"] =
+      benchmark::Counter(static_cast<double>(undecided), benchmark::Counter::kAvgIterations);
   state.SetLabel(state.range(0) ? "coplanar" : "general");
 }
 
@@ -90,7 +94,10 @@ template <class K>
 void bm_split_triangle(benchmark::State& state) {
   using P = typename K::Point_3;
   split_mix rng(11);
-  struct item { std::array<P, 3> plane, t; std::array<int, 3> s; };
+  struct item {
+    std::array<P, 3> plane, t;
+    std::array<int, 3> s;
+  };
   std::vector<item> items;
   const auto orientation = K().orientation_3_object();
   while (items.size() < 256) {
@@ -98,8 +105,10 @@ void bm_split_triangle(benchmark::State& state) {
     for (auto& p : plane) p = P(rng.uniform(), rng.uniform(), rng.uniform());
     for (auto& p : t) p = P(rng.uniform(), rng.uniform(), rng.uniform());
     std::array<int, 3> s;
-    for (int k = 0; k < 3; ++k) s[k] = static_cast<int>(orientation(plane[0], plane[1], plane[2], t[k]));
-    if (classify_signs(s) == classification::straddling && s[0] && s[1] && s[2]) items.push_back({plane, t, s});
+    for (int k = 0; k < 3; ++k)
+      s[k] = static_cast<int>(orientation(plane[0], plane[1], plane[2], t[k]));
+    if (classify_signs(s) == classification::straddling && s[0] && s[1] && s[2])
+      items.push_back({plane, t, s});
   }
   std::size_t i = 0;
   for (auto _ : state) {
@@ -147,7 +156,10 @@ void bm_build(benchmark::State& state) {
   }
   state.counters["fragments"] = static_cast<double>(fragments);
 }
-BENCHMARK(bm_build<double_kernel>)->Name("BM_build/double")->Arg(300)->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_build<double_kernel>)
+    ->Name("BM_build/double")
+    ->Arg(300)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_build<epick_kernel>)->Name("BM_build/epick")->Arg(300)->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_build<epeck_kernel>)->Name("BM_build/epeck")->Arg(300)->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_build<gmpq_kernel>)->Name("BM_build/gmpq")->Arg(300)->Unit(benchmark::kMillisecond);

@@ -77,7 +77,8 @@ view::view_setup orbit_view(const view::view_setup& v, std::size_t k, std::size_
   view::view_setup o = v;
   const double a = 2 * 3.14159265358979323846 * static_cast<double>(k) / static_cast<double>(n);
   const view::vector3 d = v.cam.eye - v.cam.look_at;
-  o.cam.eye = v.cam.look_at + view::vector3{d.x * std::cos(a) - d.y * std::sin(a), d.x * std::sin(a) + d.y * std::cos(a), d.z};
+  o.cam.eye = v.cam.look_at + view::vector3{d.x * std::cos(a) - d.y * std::sin(a),
+                                            d.x * std::sin(a) + d.y * std::cos(a), d.z};
   o.model_view = view::look_at(o.cam);
   return o;
 }
@@ -85,7 +86,8 @@ view::view_setup orbit_view(const view::view_setup& v, std::size_t k, std::size_
 #if EXBSP_HAVE_OSMESA
 /// OSMesa z-buffer rendering of the input triangles; fills `out` and returns the image.
 /// With orbit > 0, also draws the orbit's cameras and reports "orbit_fps".
-std::vector<unsigned char> render_osmesa(const view::frame& f, std::size_t frames, std::size_t orbit, json& out) {
+std::vector<unsigned char> render_osmesa(const view::frame& f, std::size_t frames,
+                                         std::size_t orbit, json& out) {
   const int w = f.view.vp.width, h = f.view.vp.height;
   std::vector<unsigned char> buffer(static_cast<std::size_t>(w) * h * 4);
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
@@ -110,7 +112,8 @@ std::vector<unsigned char> render_osmesa(const view::frame& f, std::size_t frame
   GLuint vbo[2];
   glGenBuffers(2, vbo);
   glBindBuffer(GL_ARRAY_BUFFER, vbo[0]);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(xyz.size() * sizeof(float)), xyz.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(xyz.size() * sizeof(float)), xyz.data(),
+               GL_STATIC_DRAW);
   glVertexPointer(3, GL_FLOAT, 0, nullptr);
   glBindBuffer(GL_ARRAY_BUFFER, vbo[1]);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(rgb.size()), rgb.data(), GL_STATIC_DRAW);
@@ -168,7 +171,8 @@ std::vector<unsigned char> render_osmesa(const view::frame& f, std::size_t frame
 
 int main(int argc, char** argv) {
   CLI::App app{"bench_render: per-frame times of the exbsp pipeline and of an OSMesa z-buffer"};
-  std::string mesh, kernel = "epeck", heuristic = "sampled", out_path, svg_path = "bench/out/render.svg";
+  std::string mesh, kernel = "epeck", heuristic = "sampled", out_path,
+                    svg_path = "bench/out/render.svg";
   std::size_t soup_n = 0, frames = 5, orbit = 36;
   int width = 1024, height = 768;
   app.add_option("--mesh", mesh, "mesh file");
@@ -183,7 +187,8 @@ int main(int argc, char** argv) {
   app.add_option("--out", out_path, "append the JSON line here (default: stdout)");
   CLI11_PARSE(app, argc, argv);
   try {
-    const bench::input_spec in = bench::parse_input_spec(mesh.empty() ? "soup:" + std::to_string(soup_n) : "mesh:" + mesh);
+    const bench::input_spec in =
+        bench::parse_input_spec(mesh.empty() ? "soup:" + std::to_string(soup_n) : "mesh:" + mesh);
     view::frame f;
     f.soup = bench::load_input(in);
     f.build.kernel = parse_kernel(kernel);
@@ -192,8 +197,10 @@ int main(int argc, char** argv) {
     for (std::uint32_t i = 0; i < f.soup.face_count; ++i) f.face_colors[i] = face_color(i);
     bench::set_bench_view(f, width, height);
 
-    json line = {{"input", in.name}, {"triangles", f.soup.triangles.size()}, {"kernel", kernel},
-                 {"heuristic", heuristic}, {"width", width}, {"height", height}, {"frames", frames}};
+    json line = {{"input", in.name}, {"triangles", f.soup.triangles.size()},
+                 {"kernel", kernel}, {"heuristic", heuristic},
+                 {"width", width},   {"height", height},
+                 {"frames", frames}};
     auto t0 = clock_type::now();
     view::build_stage(f);
     line["build_seconds"] = seconds_since(t0);
@@ -216,13 +223,15 @@ int main(int argc, char** argv) {
       view::raster_stage(f);
       stage_times["raster all cores"].push_back(seconds_since(t0));
       f.raster_threads = threads;
-      if (f.picture.data() != fast.data()) throw std::runtime_error("raster: one band and all bands differ");
+      if (f.picture.data() != fast.data())
+        throw std::runtime_error("raster: one band and all bands differ");
       f.painter = view::paint_order::back_to_front;
       t0 = clock_type::now();
       view::raster_stage(f);
       stage_times["raster back to front"].push_back(seconds_since(t0));
       f.painter = view::paint_order::front_to_back;
-      if (f.picture.data() != fast.data()) throw std::runtime_error("raster: front to back and back to front differ");
+      if (f.picture.data() != fast.data())
+        throw std::runtime_error("raster: front to back and back to front differ");
       t0 = clock_type::now();
       view::svg_stage(f);
       stage_times["svg"].push_back(seconds_since(t0));
@@ -235,7 +244,8 @@ int main(int argc, char** argv) {
     for (const auto& [name, times] : stage_times) {
       stages[name] = median(times);
       stages_min[name] = *std::min_element(times.begin(), times.end());
-      if (name == "order" || name == "transform+clip" || name == "raster") frame_total += median(times);
+      if (name == "order" || name == "transform+clip" || name == "raster")
+        frame_total += median(times);
     }
     line["stage_seconds_median"] = stages;
     line["stage_seconds_min"] = stages_min;
@@ -267,7 +277,8 @@ int main(int argc, char** argv) {
       std::size_t same = 0;
       for (int j = 0; j < height; ++j)
         for (int i = 0; i < width; ++i) {
-          const unsigned char* g = &gl_image[4 * (static_cast<std::size_t>(j) * width + i)];  // row 0 = bottom
+          const unsigned char* g =
+              &gl_image[4 * (static_cast<std::size_t>(j) * width + i)];  // row 0 = bottom
           const view::rgb8 p = f.picture.pixel(i, j);
           same += p.r == g[0] && p.g == g[1] && p.b == g[2];
         }
@@ -281,8 +292,9 @@ int main(int argc, char** argv) {
     if (!out_path.empty()) file.open(out_path, std::ios::app);
     (out_path.empty() ? std::cout : file) << line.dump() << "\n";
     std::cerr << "bench_render: " << in.name << ": " << line["fragments"] << " fragments, frame "
-              << frame_total << " s, osmesa " << gl.value("frame_seconds_median", 0.0) << " s; orbit "
-              << line.value("orbit_fps", 0.0) << " fps, osmesa " << gl.value("orbit_fps", 0.0) << " fps\n";
+              << frame_total << " s, osmesa " << gl.value("frame_seconds_median", 0.0)
+              << " s; orbit " << line.value("orbit_fps", 0.0) << " fps, osmesa "
+              << gl.value("orbit_fps", 0.0) << " fps\n";
   } catch (const std::exception& e) {
     std::cerr << "bench_render: error: " << e.what() << "\n";
     return 2;

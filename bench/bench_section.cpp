@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
   bool exact_text = true;
   app.add_option("MESH", mesh, "mesh file")->capture_default_str();
   app.add_option("--repeats", repeats, "runs per plane (median reported)")->capture_default_str();
-  app.add_option("--exact-text", exact_text, "also write the exact rationals as text (as `exbsp section` JSON)")
+  app.add_option("--exact-text", exact_text,
+                 "also write the exact rationals as text (as `exbsp section` JSON)")
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   const exbsp::triangle_soup soup = exbsp::read_mesh(mesh);
@@ -45,12 +46,14 @@ int main(int argc, char** argv) {
       times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     }
     std::sort(times.begin(), times.end());
-    std::printf("{\"mesh\": \"%s\", \"plane\": \"%s\", \"triangles\": %zu, \"closed\": %s, \"split\": %zu, "
-                "\"kept\": %zu, \"cap_triangles\": %zu, \"loops\": %zu, \"exact_text\": %s, \"median_seconds\": %.4f, "
-                "\"min_seconds\": %.4f, \"max_seconds\": %.4f}\n",
-                mesh.c_str(), name, soup.triangles.size(), r.closed ? "true" : "false", r.stats.split, r.kept.size(),
-                r.cap.size(), r.outline.size(), exact_text ? "true" : "false", times[times.size() / 2], times.front(),
-                times.back());
+    std::printf(
+        "{\"mesh\": \"%s\", \"plane\": \"%s\", \"triangles\": %zu, \"closed\": %s, \"split\": %zu, "
+        "\"kept\": %zu, \"cap_triangles\": %zu, \"loops\": %zu, \"exact_text\": %s, "
+        "\"median_seconds\": %.4f, "
+        "\"min_seconds\": %.4f, \"max_seconds\": %.4f}\n",
+        mesh.c_str(), name, soup.triangles.size(), r.closed ? "true" : "false", r.stats.split,
+        r.kept.size(), r.cap.size(), r.outline.size(), exact_text ? "true" : "false",
+        times[times.size() / 2], times.front(), times.back());
   }
   return 0;
 }

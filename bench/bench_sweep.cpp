@@ -10,8 +10,8 @@
 //      steady_clock), with the process CPU time of the same builds alongside.
 // A build that runs longer than --time-cap seconds is stopped through the progress callback
 // (status "timeout"), one that needs more than --max-fragments fragments by limit_error
-// (status "limit": a runaway inexact build); --limit NAME=N skips a kernel or heuristic on inputs of more than N
-// triangles (status "skipped").
+// (status "limit": a runaway inexact build); --limit NAME=N skips a kernel or heuristic on inputs
+// of more than N triangles (status "skipped").
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -53,16 +53,19 @@ struct sweep_options {
   std::size_t repeats = 3;
   double time_cap = 120;
   std::map<std::string, std::size_t> limits;  ///< kernel or heuristic -> max input triangles
-  std::map<std::string, std::size_t> repeats_for;  ///< kernel or heuristic -> timed rounds (overrides)
-  std::map<std::string, double> time_cap_for;      ///< kernel or heuristic -> time cap (overrides)
+  std::map<std::string, std::size_t>
+      repeats_for;                             ///< kernel or heuristic -> timed rounds (overrides)
+  std::map<std::string, double> time_cap_for;  ///< kernel or heuristic -> time cap (overrides)
   bool defects = false;
-  std::vector<unsigned> sampled{16, 512, 8};  ///< sampled heuristic: candidates, samples, split weight
+  std::vector<unsigned> sampled{16, 512,
+                                8};  ///< sampled heuristic: candidates, samples, split weight
   std::size_t control_max_triangles = 20000;  ///< defect checks of exact kernels only up to here
-  bool skip_counted = false;                  ///< no counted build (profiling): stats from the timed builds
+  bool skip_counted = false;  ///< no counted build (profiling): stats from the timed builds
   defect_options defect;
   std::uint64_t build_seed = 0;
   unsigned threads = 0;
-  std::size_t max_fragments = 4000000;  ///< a runaway build stops here (status "limit"), not in the OOM killer
+  std::size_t max_fragments =
+      4000000;  ///< a runaway build stops here (status "limit"), not in the OOM killer
   std::string label;
 };
 
@@ -91,8 +94,8 @@ struct run_state {
 /// The value for a (kernel, heuristic) run: an override for the kernel, else for the
 /// heuristic, else the default.
 template <class T>
-T value_for(const std::map<std::string, T>& overrides, const std::string& kernel, const std::string& heuristic,
-            T fallback) {
+T value_for(const std::map<std::string, T>& overrides, const std::string& kernel,
+            const std::string& heuristic, T fallback) {
   if (const auto it = overrides.find(kernel); it != overrides.end()) return it->second;
   if (const auto it = overrides.find(heuristic); it != overrides.end()) return it->second;
   return fallback;
@@ -105,7 +108,8 @@ std::string load_average() {
   return one;
 }
 
-build_options make_options(const std::string& kernel, const std::string& heuristic, const sweep_options& o) {
+build_options make_options(const std::string& kernel, const std::string& heuristic,
+                           const sweep_options& o) {
   build_options b;
   b.heuristic = heuristic;
   b.seed = o.build_seed;
@@ -116,19 +120,27 @@ build_options make_options(const std::string& kernel, const std::string& heurist
   b.sampled_split_weight = o.sampled[2];
   const double cap = value_for(o.time_cap_for, kernel, heuristic, o.time_cap);
   b.progress = [cap](const build_progress& p) {
-    if (cap > 0 && p.seconds > cap) throw timeout_error("time cap of " + std::to_string(cap) + " s exceeded");
+    if (cap > 0 && p.seconds > cap)
+      throw timeout_error("time cap of " + std::to_string(cap) + " s exceeded");
   };
   return b;
 }
 
 json defects_json(const defect_report& d) {
-  return {{"fragments", d.fragments},         {"non_finite", d.non_finite}, {"off_plane", d.off_plane},
-          {"split_sources", d.split_sources}, {"not_tiling", d.not_tiling},
-          {"misclassified", d.misclassified}, {"ancestor_tests", d.ancestor_tests},
-          {"eyes", d.eyes},                   {"order_samples", d.order_samples},
-          {"occluding_pairs", d.occluding_pairs}, {"order_errors", d.order_errors},
+  return {{"fragments", d.fragments},
+          {"non_finite", d.non_finite},
+          {"off_plane", d.off_plane},
+          {"split_sources", d.split_sources},
+          {"not_tiling", d.not_tiling},
+          {"misclassified", d.misclassified},
+          {"ancestor_tests", d.ancestor_tests},
+          {"eyes", d.eyes},
+          {"order_samples", d.order_samples},
+          {"occluding_pairs", d.occluding_pairs},
+          {"order_errors", d.order_errors},
           {"seconds", d.seconds},
-          {"seconds_parts", {d.seconds_plane, d.seconds_tiling, d.seconds_classification, d.seconds_order}}};
+          {"seconds_parts",
+           {d.seconds_plane, d.seconds_tiling, d.seconds_classification, d.seconds_order}}};
 }
 
 /// The CGAL kernel behind a geometry (void for exbsp's own exact geometry).
@@ -143,12 +155,13 @@ struct cgal_kernel_of<cgal_geometry<K>> {
 /// Defects are checked for the CGAL kernels but gmpq (too slow; identical to epeck); the exact
 /// kernel's tree is identical to epeck's (tests/test_exact_kernel.cpp), so it has epeck's zeros.
 template <class G>
-constexpr bool checkable =
-    !std::is_void_v<typename cgal_kernel_of<G>::type> && !std::is_same_v<typename cgal_kernel_of<G>::type, gmpq_kernel>;
+constexpr bool checkable = !std::is_void_v<typename cgal_kernel_of<G>::type> &&
+                           !std::is_same_v<typename cgal_kernel_of<G>::type, gmpq_kernel>;
 
 /// Phase 1: the counted build, statistics and defects.
 template <class G>
-void counted_build(const triangle_soup& soup, const std::string& heuristic, const sweep_options& o, run_state& st) {
+void counted_build(const triangle_soup& soup, const std::string& heuristic, const sweep_options& o,
+                   run_state& st) {
   const build_options options = make_options(st.kernel, heuristic, o);
   std::optional<basic_bsp_tree<G>> tree;
   alloc_counter::start();
@@ -179,7 +192,8 @@ void counted_build(const triangle_soup& soup, const std::string& heuristic, cons
   r["tree_heap_bytes"] = alloc_counter::live();
   r["allocations"] = alloc_counter::allocations();
   r["peak_heap_bytes_per_fragment"] =
-      s.fragments ? static_cast<double>(alloc_counter::peak()) / static_cast<double>(s.fragments) : 0.0;
+      s.fragments ? static_cast<double>(alloc_counter::peak()) / static_cast<double>(s.fragments)
+                  : 0.0;
   if constexpr (checkable<G>) {
     const bool control = G::exact;
     if (o.defects && (!control || s.input_triangles <= o.control_max_triangles))
@@ -189,7 +203,8 @@ void counted_build(const triangle_soup& soup, const std::string& heuristic, cons
 
 /// Phase 2: one timed build, accounting off.
 template <class G>
-void timed_build(const triangle_soup& soup, const std::string& heuristic, const sweep_options& o, run_state& st) {
+void timed_build(const triangle_soup& soup, const std::string& heuristic, const sweep_options& o,
+                 run_state& st) {
   const build_options options = make_options(st.kernel, heuristic, o);
   std::optional<basic_bsp_tree<G>> tree;
   const double cpu0 = process_cpu_seconds();
@@ -225,7 +240,8 @@ struct dispatch {
   template <class... Args>
   static void run(const std::string& kernel, Args&&... args) {
     if (kernel == "exact") return Fn<exact_geometry>::run(std::forward<Args>(args)...);
-    if (kernel == "double") return Fn<cgal_geometry<double_kernel>>::run(std::forward<Args>(args)...);
+    if (kernel == "double")
+      return Fn<cgal_geometry<double_kernel>>::run(std::forward<Args>(args)...);
     if (kernel == "epick") return Fn<cgal_geometry<epick_kernel>>::run(std::forward<Args>(args)...);
     if (kernel == "epeck") return Fn<cgal_geometry<epeck_kernel>>::run(std::forward<Args>(args)...);
     if (kernel == "gmpq") return Fn<cgal_geometry<gmpq_kernel>>::run(std::forward<Args>(args)...);
@@ -235,18 +251,23 @@ struct dispatch {
 template <class K>
 struct counted_fn {
   template <class... Args>
-  static void run(Args&&... args) { counted_build<K>(std::forward<Args>(args)...); }
+  static void run(Args&&... args) {
+    counted_build<K>(std::forward<Args>(args)...);
+  }
 };
 template <class K>
 struct timed_fn {
   template <class... Args>
-  static void run(Args&&... args) { timed_build<K>(std::forward<Args>(args)...); }
+  static void run(Args&&... args) {
+    timed_build<K>(std::forward<Args>(args)...);
+  }
 };
 
 void sweep_input(const input_spec& in, const sweep_options& o, std::ostream& out) {
   const auto load0 = std::chrono::steady_clock::now();
   const triangle_soup soup = load_input(in);
-  const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load0).count();
+  const double load_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - load0).count();
   const std::size_t n = soup.triangles.size();
   for (const std::string& heuristic : o.heuristics) {
     std::vector<run_state> runs;
@@ -257,7 +278,8 @@ void sweep_input(const input_spec& in, const sweep_options& o, std::ostream& out
         const auto it = o.limits.find(name);
         if (it != o.limits.end() && n > it->second) {
           st.status = "skipped";
-          st.reason = name + " only on inputs of at most " + std::to_string(it->second) + " triangles";
+          st.reason =
+              name + " only on inputs of at most " + std::to_string(it->second) + " triangles";
         }
       }
       runs.push_back(std::move(st));
@@ -283,13 +305,21 @@ void sweep_input(const input_spec& in, const sweep_options& o, std::ostream& out
         if (rep < value_for(o.repeats_for, st.kernel, heuristic, o.repeats))
           guarded(st, [&] { dispatch<timed_fn>::run(st.kernel, soup, heuristic, o, st); });
     for (run_state& st : runs) {
-      json line = {{"label", o.label},        {"input", in.name},          {"input_kind", in.kind},
-                   {"input_size", in.size},   {"input_seed", in.seed},     {"triangles", n},
-                   {"kernel", st.kernel},     {"heuristic", heuristic},    {"seed", o.build_seed},
-                   {"threads", o.threads},    {"sampled", o.sampled},
+      json line = {{"label", o.label},
+                   {"input", in.name},
+                   {"input_kind", in.kind},
+                   {"input_size", in.size},
+                   {"input_seed", in.seed},
+                   {"triangles", n},
+                   {"kernel", st.kernel},
+                   {"heuristic", heuristic},
+                   {"seed", o.build_seed},
+                   {"threads", o.threads},
+                   {"sampled", o.sampled},
                    {"repeats", value_for(o.repeats_for, st.kernel, heuristic, o.repeats)},
                    {"time_cap", value_for(o.time_cap_for, st.kernel, heuristic, o.time_cap)},
-                   {"status", st.status},     {"load_seconds", load_seconds},
+                   {"status", st.status},
+                   {"load_seconds", load_seconds},
                    {"load_average", load_average()}};
       if (!st.reason.empty()) line["reason"] = st.reason;
       for (auto& [k, v] : st.result.items()) line[k] = v;
@@ -301,14 +331,15 @@ void sweep_input(const input_spec& in, const sweep_options& o, std::ostream& out
       }
       out << line.dump() << "\n";
       out.flush();
-      std::cerr << "[" << o.label << "] " << in.name << " " << heuristic << " " << st.kernel << ": " << st.status;
+      std::cerr << "[" << o.label << "] " << in.name << " " << heuristic << " " << st.kernel << ": "
+                << st.status;
       if (line.contains("fragments")) std::cerr << ", " << line["fragments"] << " fragments";
       if (line.contains("build_seconds_median")) std::cerr << ", " << median(st.wall) << " s";
       if (line.contains("defects")) {
         const json& d = line["defects"];
         std::cerr << ", defects off_plane " << d["off_plane"] << " not_tiling " << d["not_tiling"]
-                  << " misclassified " << d["misclassified"] << " order " << d["order_errors"] << "/"
-                  << d["occluding_pairs"];
+                  << " misclassified " << d["misclassified"] << " order " << d["order_errors"]
+                  << "/" << d["occluding_pairs"];
       }
       std::cerr << "\n";
     }
@@ -320,7 +351,8 @@ std::vector<std::string> split_list(const std::string& s) {
   std::size_t at = 0;
   while (at <= s.size()) {
     const auto comma = s.find(',', at);
-    const std::string item = s.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+    const std::string item =
+        s.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
     if (!item.empty()) out.push_back(item);
     if (comma == std::string::npos) break;
     at = comma + 1;
@@ -355,17 +387,21 @@ int main(int argc, char** argv) {
   app.add_flag("--defects", o.defects, "exact defect checks on the counted build (not gmpq)");
   app.add_option("--control-max-triangles", o.control_max_triangles,
                  "defect checks of the exact control kernel (epeck) only up to N input triangles");
-  app.add_flag("--skip-counted", o.skip_counted, "no counted build: only the timed ones (for profiling)");
-  app.add_option("--order-samples", o.defect.samples, "sample rays per eye for order errors (fragment centroids of a stride; 0: all)");
+  app.add_flag("--skip-counted", o.skip_counted,
+               "no counted build: only the timed ones (for profiling)");
+  app.add_option("--order-samples", o.defect.samples,
+                 "sample rays per eye for order errors (fragment centroids of a stride; 0: all)");
   app.add_option("--exact-order-samples", o.defect.exact_samples,
                  "the same for the exact control kernel epeck (0: all)");
   app.add_option("--eyes", o.defect.eyes, "eyes for order errors (at most 8; 0: no order check)");
   app.add_option("--seed", o.build_seed, "heuristic seed");
   app.add_option("--threads", o.threads, "build threads (0: all cores)");
-  app.add_option("--sampled", o.sampled, "sampled heuristic: CANDIDATES SAMPLES SPLIT_WEIGHT (default 16 512 8)")
+  app.add_option("--sampled", o.sampled,
+                 "sampled heuristic: CANDIDATES SAMPLES SPLIT_WEIGHT (default 16 512 8)")
       ->expected(3)
       ->delimiter(',');
-  app.add_option("--max-fragments", o.max_fragments, "stop a build beyond N fragments (status limit; 0: none)");
+  app.add_option("--max-fragments", o.max_fragments,
+                 "stop a build beyond N fragments (status limit; 0: none)");
   app.add_option("--label", o.label, "label copied into every line");
   app.add_option("--out", out_path, "append JSON lines here (default: stdout)");
   CLI11_PARSE(app, argc, argv);
@@ -395,7 +431,9 @@ int main(int argc, char** argv) {
     }
     std::vector<input_spec> specs;
     for (const auto& m : meshes) specs.push_back(parse_input_spec("mesh:" + m));
-    for (auto n : soups) specs.push_back(parse_input_spec("soup:" + std::to_string(n) + ":" + std::to_string(input_seed)));
+    for (auto n : soups)
+      specs.push_back(
+          parse_input_spec("soup:" + std::to_string(n) + ":" + std::to_string(input_seed)));
     for (auto k : sticks) specs.push_back(parse_input_spec("sticks:" + std::to_string(k)));
     for (const auto& s : inputs) specs.push_back(parse_input_spec(s));
     std::ofstream file;

@@ -49,17 +49,21 @@ int main(int argc, char** argv) {
   exbsp::install_gmp_memory_functions();
   CLI::App app{"bench_tree_file: load time and size of saved trees against build time"};
   std::vector<std::string> meshes;
-  std::string kernel = "exact", heuristic = exbsp::default_heuristic(), dir = std::filesystem::temp_directory_path();
+  std::string kernel = "exact", heuristic = exbsp::default_heuristic(),
+              dir = std::filesystem::temp_directory_path();
   int repeats = 5;
   app.add_option("MESH", meshes, "mesh files")->required();
   app.add_option("--kernel", kernel, "kernel")->capture_default_str();
   app.add_option("--heuristic", heuristic, "heuristic")->capture_default_str();
-  app.add_option("--repeats", repeats, "saves and loads per mesh (median)")->check(CLI::Range(1, 100))->capture_default_str();
+  app.add_option("--repeats", repeats, "saves and loads per mesh (median)")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
   app.add_option("--dir", dir, "directory for the temporary tree files")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
-  std::fprintf(stderr, "%-22s %9s %9s %9s %8s %9s %9s %8s %8s %10s %10s\n", "mesh", "triangles", "fragments", "build s",
-               "save s", "load s", "build/ld", "file MB", "B/frag", "draw(mesh)", "draw(file)");
+  std::fprintf(stderr, "%-22s %9s %9s %9s %8s %9s %9s %8s %8s %10s %10s\n", "mesh", "triangles",
+               "fragments", "build s", "save s", "load s", "build/ld", "file MB", "B/frag",
+               "draw(mesh)", "draw(file)");
   try {
     for (const std::string& mesh : meshes) {
       const exbsp::triangle_soup soup = exbsp::read_mesh(mesh);
@@ -93,7 +97,8 @@ int main(int argc, char** argv) {
       std::filesystem::remove(path);
       const double load = median(loads), save = median(saves);
       const std::size_t fragments = tree.fragment_count();
-      const double per_fragment = fragments ? static_cast<double>(bytes) / static_cast<double>(fragments) : 0;
+      const double per_fragment =
+          fragments ? static_cast<double>(bytes) / static_cast<double>(fragments) : 0;
       nlohmann::json j{{"mesh", mesh},
                        {"kernel", kernel},
                        {"heuristic", heuristic},
@@ -111,8 +116,9 @@ int main(int argc, char** argv) {
                        {"repeats", repeats}};
       std::cout << j.dump() << std::endl;
       std::fprintf(stderr, "%-22s %9zu %9zu %9.3f %8.3f %9.3f %8.1fx %8.2f %8.1f %10.3f %10.3f\n",
-                   std::filesystem::path(mesh).filename().string().c_str(), tree.stats().input_triangles, fragments,
-                   build_seconds, save, load, load > 0 ? build_seconds / load : 0, static_cast<double>(bytes) / 1e6,
+                   std::filesystem::path(mesh).filename().string().c_str(),
+                   tree.stats().input_triangles, fragments, build_seconds, save, load,
+                   load > 0 ? build_seconds / load : 0, static_cast<double>(bytes) / 1e6,
                    per_fragment, build_seconds + draw_built, load + draw_loaded);
     }
   } catch (const std::exception& e) {

@@ -47,7 +47,8 @@ std::size_t count_of(const std::string& text, const std::string& what) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app("bench_vector: SVG/PDF bytes, paths and time per frame, painter's stack vs visible regions");
+  CLI::App app(
+      "bench_vector: SVG/PDF bytes, paths and time per frame, painter's stack vs visible regions");
   std::vector<std::string> inputs;
   std::size_t frames = 5;
   int width = 800, height = 600;
@@ -73,10 +74,16 @@ int main(int argc, char** argv) {
   const std::vector<mode> modes = {
       {"painter svg", view::output_kind::svg, {vo::mode_kind::painter, vo::edges_kind::none, 30}},
       {"visible svg", view::output_kind::svg, {vo::mode_kind::visible, vo::edges_kind::none, 30}},
-      {"visible svg, edges", view::output_kind::svg, {vo::mode_kind::visible, vo::edges_kind::visible, 30}},
-      {"visible svg, edges+hidden", view::output_kind::svg, {vo::mode_kind::visible, vo::edges_kind::visible_hidden, 30}},
+      {"visible svg, edges",
+       view::output_kind::svg,
+       {vo::mode_kind::visible, vo::edges_kind::visible, 30}},
+      {"visible svg, edges+hidden",
+       view::output_kind::svg,
+       {vo::mode_kind::visible, vo::edges_kind::visible_hidden, 30}},
       {"painter pdf", view::output_kind::pdf, {vo::mode_kind::painter, vo::edges_kind::none, 30}},
-      {"visible pdf, edges", view::output_kind::pdf, {vo::mode_kind::visible, vo::edges_kind::visible, 30}},
+      {"visible pdf, edges",
+       view::output_kind::pdf,
+       {vo::mode_kind::visible, vo::edges_kind::visible, 30}},
   };
   for (const std::string& spec : inputs) {
     const bench::input_spec in = bench::parse_input_spec(spec);
@@ -120,7 +127,8 @@ int main(int argc, char** argv) {
       std::cout << line.dump() << std::endl;
       if (out) out << line.dump() << "\n";
       if (!keep_dir.empty()) {
-        std::string file = in.name + "_" + m.name + (m.kind == view::output_kind::svg ? ".svg" : ".pdf");
+        std::string file =
+            in.name + "_" + m.name + (m.kind == view::output_kind::svg ? ".svg" : ".pdf");
         std::replace(file.begin(), file.end(), ' ', '_');
         std::replace(file.begin(), file.end(), ',', '_');
         std::ofstream(keep_dir + "/" + file, std::ios::binary) << doc;

@@ -13,13 +13,15 @@ namespace exbsp::bench {
 namespace {
 
 /// Fixed eye directions (not unit: the eye is a double point, exact as it is).
-constexpr double eye_directions[8][3] = {{1, 0.6, 0.3},  {-0.4, 1, -0.7}, {0.2, -0.5, 1},  {-1, -0.8, -0.6},
-                                         {0.7, -1, 0.1}, {-0.3, 0.2, -1}, {0.9, 0.9, -0.8}, {-0.6, -0.1, 0.9}};
+constexpr double eye_directions[8][3] = {{1, 0.6, 0.3},    {-0.4, 1, -0.7},  {0.2, -0.5, 1},
+                                         {-1, -0.8, -0.6}, {0.7, -1, 0.1},   {-0.3, 0.2, -1},
+                                         {0.9, 0.9, -0.8}, {-0.6, -0.1, 0.9}};
 
 }  // namespace
 
 template <class K>
-defect_report check_defects(const bsp_tree<K>& tree, const triangle_soup& soup, const defect_options& options) {
+defect_report check_defects(const bsp_tree<K>& tree, const triangle_soup& soup,
+                            const defect_options& options) {
   using E = exbsp_test::exact_kernel_of<K>;
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
@@ -61,8 +63,10 @@ defect_report check_defects(const bsp_tree<K>& tree, const triangle_soup& soup, 
       const double* dir = eye_directions[k];
       const double far = 2 * b.diagonal();
       const vec3d eye{c[0] + far * dir[0], c[1] + far * dir[1], c[2] + far * dir[2]};
-      const exbsp_test::viewpoint<E> vp{true, exbsp_test::exact_point<E>(eye), {}, "eye " + std::to_string(k)};
-      const auto tally = exbsp_test::check_order_along_rays(v, vp, exbsp_test::tree_order(tree, vp), samples, r);
+      const exbsp_test::viewpoint<E> vp{
+          true, exbsp_test::exact_point<E>(eye), {}, "eye " + std::to_string(k)};
+      const auto tally =
+          exbsp_test::check_order_along_rays(v, vp, exbsp_test::tree_order(tree, vp), samples, r);
       ++d.eyes;
       d.order_samples += tally.rays;
       d.occluding_pairs += tally.pairs;
@@ -74,11 +78,11 @@ defect_report check_defects(const bsp_tree<K>& tree, const triangle_soup& soup, 
   return d;
 }
 
-template defect_report check_defects<double_kernel>(const bsp_tree<double_kernel>&, const triangle_soup&,
-                                                    const defect_options&);
-template defect_report check_defects<epick_kernel>(const bsp_tree<epick_kernel>&, const triangle_soup&,
-                                                   const defect_options&);
-template defect_report check_defects<epeck_kernel>(const bsp_tree<epeck_kernel>&, const triangle_soup&,
-                                                   const defect_options&);
+template defect_report check_defects<double_kernel>(const bsp_tree<double_kernel>&,
+                                                    const triangle_soup&, const defect_options&);
+template defect_report check_defects<epick_kernel>(const bsp_tree<epick_kernel>&,
+                                                   const triangle_soup&, const defect_options&);
+template defect_report check_defects<epeck_kernel>(const bsp_tree<epeck_kernel>&,
+                                                   const triangle_soup&, const defect_options&);
 
 }  // namespace exbsp::bench

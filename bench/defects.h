@@ -38,22 +38,23 @@ struct defect_options {
 
 struct defect_report {
   std::size_t fragments = 0;
-  std::size_t non_finite = 0;      ///< fragments with an infinite or NaN coordinate (rounded division)
+  std::size_t non_finite = 0;  ///< fragments with an infinite or NaN coordinate (rounded division)
   std::size_t off_plane = 0;
-  std::size_t split_sources = 0;   ///< sources with >= 2 fragments (the ones tiling is checked on)
+  std::size_t split_sources = 0;  ///< sources with >= 2 fragments (the ones tiling is checked on)
   std::size_t not_tiling = 0;
   std::size_t misclassified = 0;
   std::size_t ancestor_tests = 0;  ///< (fragment, ancestor) pairs checked
   std::size_t eyes = 0;
-  std::size_t order_samples = 0;   ///< sample rays over all eyes
+  std::size_t order_samples = 0;  ///< sample rays over all eyes
   std::size_t occluding_pairs = 0;
   std::size_t order_errors = 0;
-  double seconds = 0;              ///< whole check, the exact copy of the tree included
+  double seconds = 0;  ///< whole check, the exact copy of the tree included
   double seconds_plane = 0, seconds_tiling = 0, seconds_classification = 0, seconds_order = 0;
 };
 
 /// Checks a tree built from `soup`. Defined for double_kernel, epick_kernel, epeck_kernel.
 template <class K>
-defect_report check_defects(const bsp_tree<K>& tree, const triangle_soup& soup, const defect_options& options);
+defect_report check_defects(const bsp_tree<K>& tree, const triangle_soup& soup,
+                            const defect_options& options);
 
 }  // namespace exbsp::bench

@@ -4,7 +4,8 @@
 // (fragment limit 200000), checked exactly by the tests' tree checker, and counted.
 //
 // Output: one line per (kernel, generator) on stdout,
-//   EXBSP-INEXACT kernel=double generator=near_coplanar cases=100 cases_with_splits=.. order=3/5 ...
+//   EXBSP-INEXACT kernel=double generator=near_coplanar cases=100 cases_with_splits=.. order=3/5
+//   ...
 // where invariant=A/B means A cases broke the invariant, with B broken items over those cases;
 // with --out FILE also one JSON object per line. RapidCheck's RC_PARAMS sets the seed and the
 // number of cases (default here: seed=20261121 max_success=100).
@@ -34,7 +35,8 @@ struct inexact_record {
 };
 
 template <class K>
-void record_case(const soup_case& c, const std::string& h, std::uint64_t seed, inexact_record& rec) {
+void record_case(const soup_case& c, const std::string& h, std::uint64_t seed,
+                 inexact_record& rec) {
   const exbsp::triangle_soup soup = c.soup();
   exbsp::build_options o;
   o.heuristic = h;
@@ -62,9 +64,11 @@ void record_case(const soup_case& c, const std::string& h, std::uint64_t seed, i
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Which invariants the inexact kernels break, per test generator (see the top of the source)"};
+  CLI::App app{
+      "Which invariants the inexact kernels break, per test generator (see the top of the source)"};
   std::string out_path;
-  app.add_option("--out", out_path, "also write one JSON object per (kernel, generator) to this file");
+  app.add_option("--out", out_path,
+                 "also write one JSON object per (kernel, generator) to this file");
   CLI11_PARSE(app, argc, argv);
   ::setenv("RC_PARAMS", "seed=20261121 max_success=100", 0);
 
@@ -72,14 +76,20 @@ int main(int argc, char** argv) {
     std::string name;
     rc::Gen<soup_case> gen;
   };
-  std::vector<named_gen> gens{{"random_soup", random_soup()},       {"grid_soup", grid_soup()},
-                              {"coplanar_stack", coplanar_stack()}, {"vertex_on_plane", vertex_on_plane()},
-                              {"near_coplanar", near_coplanar()},   {"scale_disparity", scale_disparity()},
-                              {"slivers", slivers()},               {"mesh_like", mesh_like()},
+  std::vector<named_gen> gens{{"random_soup", random_soup()},
+                              {"grid_soup", grid_soup()},
+                              {"coplanar_stack", coplanar_stack()},
+                              {"vertex_on_plane", vertex_on_plane()},
+                              {"near_coplanar", near_coplanar()},
+                              {"scale_disparity", scale_disparity()},
+                              {"slivers", slivers()},
+                              {"mesh_like", mesh_like()},
                               {"cyclic_sticks", cyclic_sticks()}};
   const auto files = present_cad_meshes();
-  if (!files.empty()) gens.push_back({"cad_subset_40", cad_subset(files, 40)});
-  else std::cerr << "bench_inexact: data/meshes/ is missing (run scripts/setup): no CAD subsets\n";
+  if (!files.empty())
+    gens.push_back({"cad_subset_40", cad_subset(files, 40)});
+  else
+    std::cerr << "bench_inexact: data/meshes/ is missing (run scripts/setup): no CAD subsets\n";
   std::map<std::string, inexact_record> records;  // "kernel generator"
   bool all_ran = true;
   for (const auto& g : gens) {
@@ -95,10 +105,14 @@ int main(int argc, char** argv) {
   if (!out_path.empty()) json_out.open(out_path);
   for (const auto& [key, rec] : records) {
     const std::string kernel = key.substr(0, key.find(' ')), gen = key.substr(key.find(' ') + 1);
-    std::string line = "EXBSP-INEXACT kernel=" + kernel + " generator=" + gen + " cases=" + std::to_string(rec.cases) +
+    std::string line = "EXBSP-INEXACT kernel=" + kernel + " generator=" + gen +
+                       " cases=" + std::to_string(rec.cases) +
                        " cases_with_splits=" + std::to_string(rec.cases_with_splits);
-    nlohmann::json j = {{"kernel", kernel}, {"generator", gen}, {"cases", rec.cases},
-                        {"cases_with_splits", rec.cases_with_splits}, {"broken", nlohmann::json::object()}};
+    nlohmann::json j = {{"kernel", kernel},
+                        {"generator", gen},
+                        {"cases", rec.cases},
+                        {"cases_with_splits", rec.cases_with_splits},
+                        {"broken", nlohmann::json::object()}};
     for (const auto& [inv, n] : rec.broken) {
       line += " " + inv + "=" + std::to_string(n.first) + "/" + std::to_string(n.second);
       j["broken"][inv] = {{"cases", n.first}, {"items", n.second}};
@@ -107,6 +121,7 @@ int main(int argc, char** argv) {
     std::cout << line << "\n";
     if (json_out) json_out << j.dump() << "\n";
   }
-  std::cout << "EXBSP-INEXACT format: invariant=<cases that broke it>/<broken items over those cases>\n";
+  std::cout
+      << "EXBSP-INEXACT format: invariant=<cases that broke it>/<broken items over those cases>\n";
   return all_ran ? 0 : 1;
 }

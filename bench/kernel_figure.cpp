@@ -61,7 +61,8 @@ rendered render(const scene::scene& s, kernel_id kernel) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::cerr << "usage: kernel_figure MESH OUT.png [--kernel double|epick] [--view V] [--size WxH]\n";
+    std::cerr
+        << "usage: kernel_figure MESH OUT.png [--kernel double|epick] [--view V] [--size WxH]\n";
     return 2;
   }
   try {
@@ -72,10 +73,14 @@ int main(int argc, char** argv) {
     options.height = 360;
     for (int k = 3; k + 1 < argc; k += 2) {
       const std::string key = argv[k], value = argv[k + 1];
-      if (key == "--kernel") kernel = value;
-      else if (key == "--view") options.view = value;
-      else if (key == "--size" && std::sscanf(value.c_str(), "%dx%d", &options.width, &options.height) == 2) {}
-      else throw usage_error("unknown option " + key + " " + value);
+      if (key == "--kernel")
+        kernel = value;
+      else if (key == "--view")
+        options.view = value;
+      else if (key == "--size" &&
+               std::sscanf(value.c_str(), "%dx%d", &options.width, &options.height) == 2) {
+      } else
+        throw usage_error("unknown option " + key + " " + value);
     }
     auto soup = std::make_shared<const triangle_soup>(read_mesh(mesh));
     const scene::scene s = scene::mesh_scene(soup, mesh, options);
@@ -88,18 +93,24 @@ int main(int argc, char** argv) {
       for (int i = 0; i < w; ++i) {
         const view::rgb8 a = exact.picture.pixel(i, j), b = rounded.picture.pixel(i, j);
         const bool differ = a.r != b.r || a.g != b.g || a.b != b.b;
-        const bool background = a.r == s.background.r && a.g == s.background.g && a.b == s.background.b;
+        const bool background =
+            a.r == s.background.r && a.g == s.background.g && a.b == s.background.b;
         covered += !background;
         differing += differ;
         panel.set_pixel(i, j, a);
         panel.set_pixel(w + i, j, b);
-        const auto dim = [](std::uint8_t c) { return static_cast<std::uint8_t>(160 + c * 95 / 255); };
-        panel.set_pixel(2 * w + i, j, differ ? view::rgb8{230, 0, 200} : view::rgb8{dim(a.r), dim(a.g), dim(a.b)});
+        const auto dim = [](std::uint8_t c) {
+          return static_cast<std::uint8_t>(160 + c * 95 / 255);
+        };
+        panel.set_pixel(
+            2 * w + i, j,
+            differ ? view::rgb8{230, 0, 200} : view::rgb8{dim(a.r), dim(a.g), dim(a.b)});
       }
     view::write_png(panel, out);
-    std::printf("{\"mesh\": \"%s\", \"kernel\": \"%s\", \"fragments\": %zu, \"non_finite_fragments\": %zu, "
-                "\"differing_pixels\": %zu, \"covered_pixels\": %zu}\n",
-                mesh.c_str(), kernel.c_str(), rounded.fragments, rounded.non_finite, differing, covered);
+    std::printf(
+        "{\"mesh\": \"%s\", \"kernel\": \"%s\", \"fragments\": %zu, \"non_finite_fragments\": %zu, "
+        "\"differing_pixels\": %zu, \"covered_pixels\": %zu}\n",
+        mesh.c_str(), kernel.c_str(), rounded.fragments, rounded.non_finite, differing, covered);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "kernel_figure: error: " << e.what() << "\n";

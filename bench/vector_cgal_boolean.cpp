@@ -48,6 +48,8 @@ int main(int argc, char** argv) {
   }
   double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
-  printf("CGAL Polygon_set_2<Epeck>: %zu of %zu polygons, %zu visible, wall %.2f s, cpu %.2f s, %.2f ms/polygon\n",
-         done, f.polygons.size(), visible, wall, cpu, 1000 * cpu / done);
+  printf(
+      "CGAL Polygon_set_2<Epeck>: %zu of %zu polygons, %zu visible, wall %.2f s, cpu %.2f s, %.2f "
+      "ms/polygon\n",
+      done, f.polygons.size(), visible, wall, cpu, 1000 * cpu / done);
 }

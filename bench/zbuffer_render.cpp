@@ -27,7 +27,8 @@ int main(int argc, char** argv) {
     return 2;
   }
 #if !EXBSP_HAVE_OSMESA
-  std::cerr << "zbuffer_render: built without OSMesa (apt-get install libosmesa6-dev, then reconfigure)\n";
+  std::cerr << "zbuffer_render: built without OSMesa (apt-get install libosmesa6-dev, then "
+               "reconfigure)\n";
   return 2;
 #else
   using nlohmann::json;
@@ -39,19 +40,20 @@ int main(int argc, char** argv) {
       exbsp::osmesa::zbuffer_scene z;
       z.image_width = z.vp_width = job.at("width").get<int>();
       z.image_height = z.vp_height = job.at("height").get<int>();
-      const auto bg = job.at("background").get<std::array<int, 3>>();
+      const auto bg = job.at("background").get<std::array<int, 3> >();
       z.background = {static_cast<std::uint8_t>(bg[0]), static_cast<std::uint8_t>(bg[1]),
-                       static_cast<std::uint8_t>(bg[2])};
-      z.projection = job.at("clip_from_world").get<std::array<double, 16>>();
+                      static_cast<std::uint8_t>(bg[2])};
+      z.projection = job.at("clip_from_world").get<std::array<double, 16> >();
       z.nearer_is_smaller = job.value("nearer", std::string("smaller")) == "smaller";
       z.mirror_y = true;
       const json& tris = job.at("triangles");
       const json& cols = job.at("colors");
-      if (tris.size() != cols.size()) throw std::runtime_error("\"triangles\" and \"colors\" differ in length");
+      if (tris.size() != cols.size())
+        throw std::runtime_error("\"triangles\" and \"colors\" differ in length");
       for (std::size_t k = 0; k < tris.size(); ++k) {
-        const auto t = tris[k].get<std::array<double, 9>>();
+        const auto t = tris[k].get<std::array<double, 9> >();
         z.triangles.push_back({{{t[0], t[1], t[2]}, {t[3], t[4], t[5]}, {t[6], t[7], t[8]}}});
-        const auto c = cols[k].get<std::array<int, 3>>();
+        const auto c = cols[k].get<std::array<int, 3> >();
         z.colors.push_back({static_cast<std::uint8_t>(c[0]), static_cast<std::uint8_t>(c[1]),
                             static_cast<std::uint8_t>(c[2])});
       }

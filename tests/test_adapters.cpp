@@ -51,17 +51,18 @@ using surface_mesh = CGAL::Surface_mesh<epick::Point_3>;
 using polyhedron = CGAL::Polyhedron_3<epick>;
 
 // The unit cube's corners and its six quads, outward (as scene::make_box).
-const std::array<vec3d, 8> cube_corners{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                                          {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
-const std::array<std::array<int, 4>, 6> cube_quads{{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                                   {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
+const std::array<vec3d, 8> cube_corners{
+    {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
+const std::array<std::array<int, 4>, 6> cube_quads{
+    {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
 
 template <class Mesh>
 Mesh openmesh_cube(const vec3d& shift = {0, 0, 0}) {
   Mesh m;
   std::vector<typename Mesh::VertexHandle> v;
   for (const vec3d& p : cube_corners)
-    v.push_back(m.add_vertex(typename Mesh::Point(p[0] + shift[0], p[1] + shift[1], p[2] + shift[2])));
+    v.push_back(
+        m.add_vertex(typename Mesh::Point(p[0] + shift[0], p[1] + shift[1], p[2] + shift[2])));
   for (const auto& q : cube_quads) m.add_face(v[q[0]], v[q[1]], v[q[2]], v[q[3]]);
   return m;
 }
@@ -84,7 +85,8 @@ FaceGraph cgal_cube() {
 // The soup's triangles as corner coordinates with face ids, for comparisons.
 std::vector<std::pair<std::uint32_t, std::array<vec3d, 3>>> triangles_of(const triangle_soup& s) {
   std::vector<std::pair<std::uint32_t, std::array<vec3d, 3>>> out;
-  for (const auto& t : s.triangles) out.push_back({t.face, {s.vertices[t.v[0]], s.vertices[t.v[1]], s.vertices[t.v[2]]}});
+  for (const auto& t : s.triangles)
+    out.push_back({t.face, {s.vertices[t.v[0]], s.vertices[t.v[1]], s.vertices[t.v[2]]}});
   return out;
 }
 
@@ -93,7 +95,9 @@ triangle_soup soup_cube() {
   triangle_soup s;
   s.vertices.assign(cube_corners.begin(), cube_corners.end());
   std::uint32_t f = 0;
-  for (const auto& q : cube_quads) s.add_polygon({std::uint32_t(q[0]), std::uint32_t(q[1]), std::uint32_t(q[2]), std::uint32_t(q[3])}, f++);
+  for (const auto& q : cube_quads)
+    s.add_polygon(
+        {std::uint32_t(q[0]), std::uint32_t(q[1]), std::uint32_t(q[2]), std::uint32_t(q[3])}, f++);
   s.face_count = f;
   return s;
 }
@@ -151,8 +155,10 @@ TEST(OpenMeshToSoup, PolygonsAreFanTriangulatedWithFaceIds) {
   // A pentagon, a triangle and a quad: 3 + 1 + 2 triangles, fans from each face's first corner.
   poly_mesh m;
   std::vector<poly_mesh::VertexHandle> v;
-  for (int i = 0; i < 5; ++i) v.push_back(m.add_vertex({std::cos(i * 1.2566), std::sin(i * 1.2566), 0}));
-  const auto p = m.add_vertex({0, 0, 3}), q = m.add_vertex({1, 0, 3}), r = m.add_vertex({1, 1, 3}), t = m.add_vertex({0, 1, 3});
+  for (int i = 0; i < 5; ++i)
+    v.push_back(m.add_vertex({std::cos(i * 1.2566), std::sin(i * 1.2566), 0}));
+  const auto p = m.add_vertex({0, 0, 3}), q = m.add_vertex({1, 0, 3}), r = m.add_vertex({1, 1, 3}),
+             t = m.add_vertex({0, 1, 3});
   const auto u = m.add_vertex({5, 5, 5});
   m.add_face(std::vector<poly_mesh::VertexHandle>(v.begin(), v.end()));
   m.add_face(p, q, u);
@@ -182,7 +188,8 @@ TEST(OpenMeshToSoup, FloatPointsWidenExactlyAndTriMeshWorks) {
   EXPECT_EQ(fs.triangles.size(), 12u);
 
   tri_mesh tm;
-  const auto a = tm.add_vertex({0, 0, 0}), b = tm.add_vertex({1, 0, 0}), c = tm.add_vertex({0, 1, 0});
+  const auto a = tm.add_vertex({0, 0, 0}), b = tm.add_vertex({1, 0, 0}),
+             c = tm.add_vertex({0, 1, 0});
   tm.add_face(a, b, c);
   const triangle_soup ts = exbsp::openmesh::soup_from_mesh(tm);
   ASSERT_EQ(ts.triangles.size(), 1u);
@@ -373,7 +380,8 @@ TEST(CgalToSoup, DegenerateFaceIsKeptAndCountedByTheBuild) {
 
 TEST(CgalToSoup, EpeckPointsMadeFromDoublesConvertExactly) {
   CGAL::Surface_mesh<CGAL::Epeck::Point_3> g;
-  const auto a = g.add_vertex({0.1, 0.2, 0.3}), b = g.add_vertex({1, 0, 0}), c = g.add_vertex({0, 1, 0});
+  const auto a = g.add_vertex({0.1, 0.2, 0.3}), b = g.add_vertex({1, 0, 0}),
+             c = g.add_vertex({0, 1, 0});
   g.add_face(a, b, c);
   const triangle_soup s = exbsp::cgal::soup_from_face_graph(g);
   EXPECT_EQ(s.vertices[0], (vec3d{0.1, 0.2, 0.3}));
@@ -387,7 +395,8 @@ TEST(CgalFromExbsp, SurfaceMeshRoundTripKeepsFaceIdsAndIsClosed) {
   const auto frags = tree.fragments_double();
   const auto order = tree.order_for_direction({-1, -2, -3});
   surface_mesh out;
-  auto ids = out.add_property_map<surface_mesh::Face_index, std::uint32_t>("f:exbsp_face_id", 0).first;
+  auto ids =
+      out.add_property_map<surface_mesh::Face_index, std::uint32_t>("f:exbsp_face_id", 0).first;
   exbsp::cgal::append_fragments(out, frags, ids, order);
   ASSERT_EQ(out.number_of_faces(), order.size());
   EXPECT_EQ(out.number_of_vertices(), 8u);

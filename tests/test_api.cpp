@@ -152,20 +152,20 @@ TEST(Cancel, ThrowingOnTheFinalReportStillReturnsNoTree) {
   EXPECT_EQ(calls, 1);
 }
 
-TEST(Cancel, DefaultMessage) {
-  EXPECT_STREQ(exbsp::build_cancelled().what(), "build cancelled");
-}
+TEST(Cancel, DefaultMessage) { EXPECT_STREQ(exbsp::build_cancelled().what(), "build cancelled"); }
 
 // Cancels once the build has made `after_nodes` nodes, with 1 and 2 threads and every kernel
 // family: the caller's exception arrives unchanged, progress is not called after it threw, and
 // a later build with the same options gives the tree an uncancelled build gives.
-void cancel_midway(kernel_id kernel, const std::string& heuristic, int triangles, std::size_t after_nodes) {
+void cancel_midway(kernel_id kernel, const std::string& heuristic, int triangles,
+                   std::size_t after_nodes) {
   const triangle_soup soup = random_triangles(triangles, 3);
   build_options plain;
   plain.kernel = kernel;
   plain.heuristic = heuristic;
   const bsp reference = bsp::build(soup, plain);
-  ASSERT_GT(reference.stats().nodes, after_nodes + 512) << "the input must outlast the cancel point";
+  ASSERT_GT(reference.stats().nodes, after_nodes + 512)
+      << "the input must outlast the cancel point";
   for (unsigned threads : {1u, 2u}) {
     SCOPED_TRACE("threads " + std::to_string(threads));
     build_options o = plain;

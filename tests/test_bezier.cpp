@@ -41,7 +41,9 @@ double scale_of(const std::vector<vec3d>& pts) {
 }
 
 // --- generators (called inside properties) ---
-double random_coordinate(int range = 1000) { return *rc::gen::inRange(-range * 1000, range * 1000 + 1) / 1000.0; }
+double random_coordinate(int range = 1000) {
+  return *rc::gen::inRange(-range * 1000, range * 1000 + 1) / 1000.0;
+}
 vec3d random_point() { return {random_coordinate(), random_coordinate(), random_coordinate()}; }
 std::vector<vec3d> random_control_points(std::size_t min_degree, std::size_t max_degree) {
   const auto n = *rc::gen::inRange<std::size_t>(min_degree, max_degree + 1);
@@ -51,9 +53,9 @@ std::vector<vec3d> random_control_points(std::size_t min_degree, std::size_t max
 }
 /// t in [0, 1] with 0 and 1 themselves likely.
 double random_parameter() {
-  return *rc::gen::oneOf(rc::gen::just(0.0), rc::gen::just(1.0),
-                         rc::gen::map(rc::gen::inRange(0, (1 << 30) + 1),
-                                      [](int k) { return k / double(1 << 30); }));
+  return *rc::gen::oneOf(
+      rc::gen::just(0.0), rc::gen::just(1.0),
+      rc::gen::map(rc::gen::inRange(0, (1 << 30) + 1), [](int k) { return k / double(1 << 30); }));
 }
 
 // --- Bernstein weights ---
@@ -337,7 +339,12 @@ TEST(BezierPreconditions, DegreeZeroCurveIsAPoint) {
   const auto halves = c.split(0.4);
   EXPECT_EQ(halves.first.control_points(), std::vector<vec3d>{p});
   EXPECT_EQ(halves.second.control_points(), std::vector<vec3d>{p});
-  const auto flat = exbsp::flatten(c, [](const vec3d& q) { return vec2d{q[0], q[1]}; }, 0.5);
+  const auto flat = exbsp::flatten(
+      c,
+      [](const vec3d& q) {
+        return vec2d{q[0], q[1]};
+      },
+      0.5);
   ASSERT_EQ(flat.points.size(), 1u);
   EXPECT_EQ(flat.points[0], p);
   EXPECT_EQ(flat.parameters, std::vector<double>{0.0});
@@ -414,35 +421,58 @@ RC_GTEST_PROP(BezierFlatten, PolylineWithinToleranceUnderPerspectiveProjectionIn
 
 TEST(BezierFlatten, LineIsOneChord) {
   const bezier_curve c({{0, 0, 0}, {10, 5, 3}});
-  const auto f = exbsp::flatten(c, [](const vec3d& p) { return vec2d{p[0], p[1]}; }, 0.1);
+  const auto f = exbsp::flatten(
+      c,
+      [](const vec3d& p) {
+        return vec2d{p[0], p[1]};
+      },
+      0.1);
   EXPECT_EQ(f.parameters, (std::vector<double>{0.0, 1.0}));
   EXPECT_EQ(f.forced_chords, 0u);
 }
 
 TEST(BezierFlatten, TerminatesOnCoincidentControlPoints) {
   const bezier_curve c(std::vector<vec3d>(12, vec3d{1, 1, 1}));
-  const auto f = exbsp::flatten(c, [](const vec3d& p) { return vec2d{p[0], p[1]}; }, 1e-300);
+  const auto f = exbsp::flatten(
+      c,
+      [](const vec3d& p) {
+        return vec2d{p[0], p[1]};
+      },
+      1e-300);
   EXPECT_EQ(f.parameters, (std::vector<double>{0.0, 1.0}));
 }
 
 TEST(BezierFlatten, CurveAlongTheViewDirectionIsOneChord) {
   const bezier_curve c({{0, 0, 0}, {0, 0, 5}, {0, 0, -3}, {0, 0, 9}});
-  const auto f = exbsp::flatten(c, [](const vec3d& p) { return vec2d{p[0], p[1]}; }, 0.25);
+  const auto f = exbsp::flatten(
+      c,
+      [](const vec3d& p) {
+        return vec2d{p[0], p[1]};
+      },
+      0.25);
   EXPECT_EQ(f.points.size(), 2u);
 }
 
 TEST(BezierFlatten, TerminatesWhenProjectionReturnsNaN) {
   const bezier_curve c({{0, 0, 0}, {1, 3, 0}, {2, -3, 0}, {3, 0, 0}});
   const double nan = std::nan("");
-  const auto all_nan = exbsp::flatten(c, [nan](const vec3d&) { return vec2d{nan, nan}; }, 0.5);
+  const auto all_nan = exbsp::flatten(
+      c,
+      [nan](const vec3d&) {
+        return vec2d{nan, nan};
+      },
+      0.5);
   EXPECT_EQ(all_nan.points.size(), 2u);
   EXPECT_EQ(all_nan.forced_chords, 1u);
   // NaN only at x > 2.9: the bad part is isolated by subdivision, up to max_depth.
   exbsp::flatten_options options;
   options.max_depth = 10;
   const auto some_nan = exbsp::flatten(
-      c, [nan](const vec3d& p) { return p[0] > 2.9 ? vec2d{nan, nan} : vec2d{p[0], p[1]}; }, 0.5,
-      options);
+      c,
+      [nan](const vec3d& p) {
+        return p[0] > 2.9 ? vec2d{nan, nan} : vec2d{p[0], p[1]};
+      },
+      0.5, options);
   EXPECT_GT(some_nan.forced_chords, 0u);
   EXPECT_LE(some_nan.points.size(), (1u << 10) + 1u);
   EXPECT_EQ(some_nan.parameters.back(), 1.0);
@@ -452,8 +482,12 @@ TEST(BezierFlatten, MaxDepthBoundsWorkOnHugeCurveAtTinyTolerance) {
   const bezier_curve c({{0, 0, 0}, {1e12, 1e12, 0}, {-1e12, 1e12, 0}, {1, 0, 0}});
   exbsp::flatten_options options;
   options.max_depth = 8;
-  const auto f =
-      exbsp::flatten(c, [](const vec3d& p) { return vec2d{p[0], p[1]}; }, 1e-6, options);
+  const auto f = exbsp::flatten(
+      c,
+      [](const vec3d& p) {
+        return vec2d{p[0], p[1]};
+      },
+      1e-6, options);
   EXPECT_EQ(f.points.size(), 257u);
   EXPECT_EQ(f.forced_chords, 256u);
 }

@@ -138,9 +138,9 @@ using exbsp_test::soup_of;
 
 TEST(Tree, coplanar_both_orientations_stay_at_the_node) {
   const auto soup = soup_of({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}},
-                             {{{5, 5, 0}, {4, 6, 0}, {6, 6, 0}}},   // same plane, flipped
-                             {{{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}},   // same triangle, flipped
-                             {{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}}}); // parallel, above
+                             {{{5, 5, 0}, {4, 6, 0}, {6, 6, 0}}},    // same plane, flipped
+                             {{{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}},    // same triangle, flipped
+                             {{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}}});  // parallel, above
   exbsp::build_options o;
   o.heuristic = "naive";
   const exbsp::bsp tree = exbsp::bsp::build(soup, o);
@@ -169,8 +169,8 @@ TEST(Tree, coplanar_both_orientations_stay_at_the_node) {
 
 TEST(Tree, degenerate_triangles_are_skipped_and_counted) {
   auto soup = soup_of({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}},
-                       {{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}},     // collinear
-                       {{{3, 3, 3}, {3, 3, 3}, {3, 3, 3}}}});   // a point
+                       {{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}},    // collinear
+                       {{{3, 3, 3}, {3, 3, 3}, {3, 3, 3}}}});  // a point
   const exbsp::bsp tree = exbsp::bsp::build(soup, {});
   EXPECT_EQ(tree.stats().input_triangles, 3u);
   EXPECT_EQ(tree.stats().degenerate_input, 2u);
@@ -237,7 +237,8 @@ TEST(Painter, cyclic_overlap_has_no_depth_order_but_bsp_splits_it) {
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
           double zi, zj;
-          if (i != j && z_at(tris[i], x, y, zi) && z_at(tris[j], x, y, zj) && zi > zj) above[i][j] = true;
+          if (i != j && z_at(tris[i], x, y, zi) && z_at(tris[j], x, y, zj) && zi > zj)
+            above[i][j] = true;
         }
   // Every permutation draws some pair in the wrong order.
   std::array<int, 3> perm{0, 1, 2};

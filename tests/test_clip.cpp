@@ -563,7 +563,8 @@ RC_GTEST_PROP(SutherlandHodgman, RandomConvexPolygonsMatchPointSampling, ()) {
   const auto out = sutherland_hodgman_clip(poly, region);
   const double tol = 1e-9 * polygon_scale(poly);
   std::vector<half_plane2> lines = region;
-  for (std::size_t i = 0; i < poly.size(); ++i) lines.push_back(left_of(poly[i], poly[(i + 1) % poly.size()]));
+  for (std::size_t i = 0; i < poly.size(); ++i)
+    lines.push_back(left_of(poly[i], poly[(i + 1) % poly.size()]));
   int checked = 0;
   for (int i = 0; i < 200; ++i) {
     const vec2 p{gen_double(-11, 11), gen_double(-11, 11)};
@@ -624,8 +625,9 @@ RC_GTEST_PROP(SutherlandHodgman, ThreeDTriangleClippedByABoxStaysInItsPlane, ())
       RC_ASSERT(p[k] <= b.max[k] + 1e-12 * scale);
     }
     if (n_len > 1e-6 * scale * scale) {
-      const double off = (n[0] * (p[0] - tri[0][0]) + n[1] * (p[1] - tri[0][1]) +
-                          n[2] * (p[2] - tri[0][2])) / n_len;
+      const double off =
+          (n[0] * (p[0] - tri[0][0]) + n[1] * (p[1] - tri[0][1]) + n[2] * (p[2] - tri[0][2])) /
+          n_len;
       RC_ASSERT(std::abs(off) <= 1e-9 * scale);
     }
   }
@@ -704,7 +706,8 @@ mat4 frustum_matrix(double l, double r, double b, double t, double n, double f) 
 
 vec4 transform(const mat4& m, const vec3& p) {
   vec4 out;
-  for (std::size_t i = 0; i < 4; ++i) out[i] = m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2] + m[i][3];
+  for (std::size_t i = 0; i < 4; ++i)
+    out[i] = m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2] + m[i][3];
   return out;
 }
 
@@ -749,10 +752,11 @@ std::vector<vec3> to_ndc(const std::vector<vec4>& points) {
 /// space by the frustum's half-spaces; checks that both give the same polygon in NDC.
 void check_against_eye_space(const std::array<vec3, 3>& eye, const frustum_params& fp) {
   const mat4 m = frustum_matrix(fp.l, fp.r, fp.b, fp.t, fp.n, fp.f);
-  const auto clipped = homogeneous_clip_triangle({transform(m, eye[0]), transform(m, eye[1]),
-                                                  transform(m, eye[2])});
-  const auto oracle = sutherland_hodgman_clip(std::vector<vec3>(eye.begin(), eye.end()),
-                                              frustum_half_spaces(fp.l, fp.r, fp.b, fp.t, fp.n, fp.f));
+  const auto clipped =
+      homogeneous_clip_triangle({transform(m, eye[0]), transform(m, eye[1]), transform(m, eye[2])});
+  const auto oracle =
+      sutherland_hodgman_clip(std::vector<vec3>(eye.begin(), eye.end()),
+                              frustum_half_spaces(fp.l, fp.r, fp.b, fp.t, fp.n, fp.f));
   std::vector<vec4> oracle_clip;
   for (const vec3& p : oracle) oracle_clip.push_back(transform(m, p));
   for (const vec4& p : clipped.positions) RC_ASSERT(p[3] > 0.0);
@@ -810,7 +814,8 @@ RC_GTEST_PROP(HomogeneousClip, TriviallyAcceptedTriangleIsUnchanged, ()) {
 
 RC_GTEST_PROP(HomogeneousClip, TriangleWithAllWNegativeIsRejected, ()) {
   std::array<vec4, 3> tri;
-  for (auto& p : tri) p = {gen_double(-3, 3), gen_double(-3, 3), gen_double(-3, 3), -gen_double(1e-6, 3)};
+  for (auto& p : tri)
+    p = {gen_double(-3, 3), gen_double(-3, 3), gen_double(-3, 3), -gen_double(1e-6, 3)};
   RC_CLASSIFY(homogeneous_trivially_rejected(tri), "trivially rejected");
   const auto out = homogeneous_clip_triangle(tri, {1, 2, 3});
   RC_ASSERT(out.empty());
@@ -858,7 +863,8 @@ RC_GTEST_PROP(HomogeneousClip, MatchesEyeSpaceClippingByTheFrustum, ()) {
 
 RC_GTEST_PROP(HomogeneousClip, ResultIsInsideTheViewVolume, ()) {
   std::array<vec4, 3> tri;
-  for (auto& p : tri) p = {gen_double(-4, 4), gen_double(-4, 4), gen_double(-4, 4), gen_double(-2, 4)};
+  for (auto& p : tri)
+    p = {gen_double(-4, 4), gen_double(-4, 4), gen_double(-4, 4), gen_double(-2, 4)};
   const auto out = homogeneous_clip_triangle(tri);
   RC_ASSERT(out.empty() || out.size() >= 3);
   for (const vec4& p : out.positions) {
@@ -876,14 +882,15 @@ RC_GTEST_PROP(HomogeneousClip, AttributesAreInterpolatedWithThePosition, ()) {
   const std::array<vec3, 3> eye{gen_eye_point(), gen_eye_point(), gen_eye_point()};
   std::vector<double> attributes;
   for (const vec3& p : eye) attributes.insert(attributes.end(), p.begin(), p.end());
-  const auto out = homogeneous_clip_triangle({transform(m, eye[0]), transform(m, eye[1]),
-                                              transform(m, eye[2])}, attributes);
+  const auto out = homogeneous_clip_triangle(
+      {transform(m, eye[0]), transform(m, eye[1]), transform(m, eye[2])}, attributes);
   RC_ASSERT(out.attribute_count == 3u);
   for (std::size_t i = 0; i < out.size(); ++i) {
     const double* a = out.attributes_of(i);
     const vec4 expected = transform(m, {a[0], a[1], a[2]});
     for (std::size_t k = 0; k < 4; ++k)
-      RC_ASSERT(std::abs(expected[k] - out.positions[i][k]) <= 1e-11 * (1 + std::abs(expected[k])) * 100);
+      RC_ASSERT(std::abs(expected[k] - out.positions[i][k]) <=
+                1e-11 * (1 + std::abs(expected[k])) * 100);
   }
 }
 
@@ -903,7 +910,8 @@ std::vector<std::array<double, 5>> vertices_on_shared_edge(const homogeneous_pol
   return out;
 }
 
-bool same_bits(const std::vector<std::array<double, 5>>& a, const std::vector<std::array<double, 5>>& b) {
+bool same_bits(const std::vector<std::array<double, 5>>& a,
+               const std::vector<std::array<double, 5>>& b) {
   return a.size() == b.size() &&
          (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
 }
@@ -918,7 +926,8 @@ RC_GTEST_PROP(HomogeneousClip, TrianglesSharingAnEdgeGetBitIdenticalVerticesOnIt
     return vec4{gen_double(-3, 3), gen_double(-3, 3), gen_double(-3, 3), gen_double(-1, 3)};
   };
   const vec4 p = gen_vertex(), q = gen_vertex(), r = gen_vertex(), s = gen_vertex();
-  const double cp = gen_double(0, 1), cq = gen_double(0, 1), cr = gen_double(0, 1), cs = gen_double(0, 1);
+  const double cp = gen_double(0, 1), cq = gen_double(0, 1), cr = gen_double(0, 1),
+               cs = gen_double(0, 1);
   const auto first = homogeneous_clip_triangle({p, q, r}, {0, cp, 0, cq, 1, cr});
   const auto second = homogeneous_clip_triangle({q, p, s}, {0, cq, 0, cp, 1, cs});
   const auto on_first = vertices_on_shared_edge(first);
@@ -949,10 +958,12 @@ TEST(HomogeneousClip, BoundingBoxCornersRejectObjectsBeforeTriangleWork) {
     for (const vec3& c : box_corners(b)) out.push_back(transform(m, c));
     return out;
   };
-  EXPECT_TRUE(homogeneous_trivially_rejected(clip_corners({{-1, -1, 2}, {1, 1, 4}})));     // behind
-  EXPECT_TRUE(homogeneous_trivially_rejected(clip_corners({{-1, -1, -30}, {1, 1, -20}})));  // beyond far
-  EXPECT_TRUE(homogeneous_trivially_rejected(clip_corners({{20, -1, -6}, {30, 1, -4}})));   // right
-  EXPECT_FALSE(homogeneous_trivially_rejected(clip_corners({{-1, -1, -6}, {1, 1, 2}})));    // straddles
+  EXPECT_TRUE(homogeneous_trivially_rejected(clip_corners({{-1, -1, 2}, {1, 1, 4}})));  // behind
+  EXPECT_TRUE(
+      homogeneous_trivially_rejected(clip_corners({{-1, -1, -30}, {1, 1, -20}})));  // beyond far
+  EXPECT_TRUE(homogeneous_trivially_rejected(clip_corners({{20, -1, -6}, {30, 1, -4}})));  // right
+  EXPECT_FALSE(
+      homogeneous_trivially_rejected(clip_corners({{-1, -1, -6}, {1, 1, 2}})));  // straddles
   EXPECT_TRUE(homogeneous_trivially_accepted(clip_corners({{-0.5, -0.5, -6}, {0.5, 0.5, -4}})));
   EXPECT_FALSE(homogeneous_trivially_rejected(std::vector<vec4>{}));
   EXPECT_FALSE(homogeneous_trivially_accepted(std::vector<vec4>{}));
@@ -982,7 +993,8 @@ TEST(HomogeneousClip, BadInputThrowsUsageError) {
   const std::array<vec4, 3> tri{vec4{0, 0, 0, 1}, vec4{1, 0, 0, 1}, vec4{0, 1, 0, 1}};
   EXPECT_THROW(homogeneous_clip_triangle(tri, {1, 2}), exbsp::usage_error);
   EXPECT_THROW(homogeneous_clip_triangle(tri, {1, 2, std::nan("")}), exbsp::usage_error);
-  EXPECT_THROW(homogeneous_clip_triangle({vec4{0, 0, HUGE_VAL, 1}, tri[1], tri[2]}), exbsp::usage_error);
+  EXPECT_THROW(homogeneous_clip_triangle({vec4{0, 0, HUGE_VAL, 1}, tri[1], tri[2]}),
+               exbsp::usage_error);
   homogeneous_polygon bad;
   bad.attribute_count = 2;
   bad.positions = {tri.begin(), tri.end()};
@@ -1021,7 +1033,8 @@ typename K::Vector_3 cross_of(const exact_triangle<K>& t) {
 }
 
 template <class K>
-bool same_triangles(const std::vector<exact_triangle<K>>& a, const std::vector<exact_triangle<K>>& b) {
+bool same_triangles(const std::vector<exact_triangle<K>>& a,
+                    const std::vector<exact_triangle<K>>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i)
     for (std::size_t j = 0; j < 3; ++j)
@@ -1104,10 +1117,12 @@ void check_split(const exact_triangle<K>& t, const exact_plane<K>& plane) {
 template <class K>
 void check_random_split() {
   const bool small = *rc::gen::arbitrary<bool>();
-  const exact_plane<K> plane{exact_point<K>(gen_exact_coords(small)), exact_point<K>(gen_exact_coords(small)),
+  const exact_plane<K> plane{exact_point<K>(gen_exact_coords(small)),
+                             exact_point<K>(gen_exact_coords(small)),
                              exact_point<K>(gen_exact_coords(small))};
   RC_PRE(!CGAL::collinear(plane.a, plane.b, plane.c));
-  exact_triangle<K> t{{exact_point<K>(gen_exact_coords(small)), exact_point<K>(gen_exact_coords(small)),
+  exact_triangle<K> t{{exact_point<K>(gen_exact_coords(small)),
+                       exact_point<K>(gen_exact_coords(small)),
                        exact_point<K>(gen_exact_coords(small))}};
   // Sometimes put a vertex exactly on the plane (a point of the plane's own triangle).
   if (uniform_int(0, 4) == 0) t.v[uniform_int(0, 3)] = plane.b;
@@ -1142,7 +1157,8 @@ void check_box_clip() {
   for (std::size_t k = 0; k < 3; ++k) b.max[k] += 0.25;  // keep every face a plane
   std::array<vec3, 3> tri;
   for (auto& p : tri) p = gen_point(b, 3.0);
-  const exact_triangle<K> t{{exact_point<K>(tri[0]), exact_point<K>(tri[1]), exact_point<K>(tri[2])}};
+  const exact_triangle<K> t{
+      {exact_point<K>(tri[0]), exact_point<K>(tri[1]), exact_point<K>(tri[2])}};
   const auto planes = exact_box_planes<K>(b);
   const auto kept = clip_triangle(t, planes);
 
@@ -1168,27 +1184,38 @@ void check_box_clip() {
   RC_ASSERT(kept_sum + cut_off == cross_of(t));
 
   // The double Sutherland–Hodgman clip of the same triangle has the same vector area.
-  const vec3 area = vector_area(sutherland_hodgman_clip(std::vector<vec3>(tri.begin(), tri.end()),
-                                                        box_half_spaces(b)));
+  const vec3 area = vector_area(
+      sutherland_hodgman_clip(std::vector<vec3>(tri.begin(), tri.end()), box_half_spaces(b)));
   for (int k = 0; k < 3; ++k)
-    RC_ASSERT(std::abs(CGAL::to_double(kept_sum[k]) / 2 - area[static_cast<std::size_t>(k)]) <= 1e-9 * 100);
+    RC_ASSERT(std::abs(CGAL::to_double(kept_sum[k]) / 2 - area[static_cast<std::size_t>(k)]) <=
+              1e-9 * 100);
   RC_CLASSIFY(kept.empty(), "nothing kept");
 }
 
 }  // namespace
 
-RC_GTEST_PROP(ExactTriangleClip, EpeckPiecesTileTheTriangleOnTheirSides, ()) { check_random_split<epeck>(); }
-RC_GTEST_PROP(ExactTriangleClip, GmpqPiecesTileTheTriangleOnTheirSides, ()) { check_random_split<gmpq_kernel>(); }
-RC_GTEST_PROP(ExactTriangleClip, EpeckClipByABoxTilesAndMatchesSutherlandHodgman, ()) { check_box_clip<epeck>(); }
-RC_GTEST_PROP(ExactTriangleClip, GmpqClipByABoxTilesAndMatchesSutherlandHodgman, ()) { check_box_clip<gmpq_kernel>(); }
+RC_GTEST_PROP(ExactTriangleClip, EpeckPiecesTileTheTriangleOnTheirSides, ()) {
+  check_random_split<epeck>();
+}
+RC_GTEST_PROP(ExactTriangleClip, GmpqPiecesTileTheTriangleOnTheirSides, ()) {
+  check_random_split<gmpq_kernel>();
+}
+RC_GTEST_PROP(ExactTriangleClip, EpeckClipByABoxTilesAndMatchesSutherlandHodgman, ()) {
+  check_box_clip<epeck>();
+}
+RC_GTEST_PROP(ExactTriangleClip, GmpqClipByABoxTilesAndMatchesSutherlandHodgman, ()) {
+  check_box_clip<gmpq_kernel>();
+}
 
 RC_GTEST_PROP(ExactTriangleClip, PositiveSideIsWhereTheNormalPoints, ()) {
   using K = gmpq_kernel;
-  const exact_plane<K> h{exact_point<K>(gen_exact_coords(true)), exact_point<K>(gen_exact_coords(true)),
+  const exact_plane<K> h{exact_point<K>(gen_exact_coords(true)),
+                         exact_point<K>(gen_exact_coords(true)),
                          exact_point<K>(gen_exact_coords(true))};
   const K::Point_3 p = exact_point<K>(gen_exact_coords(false));
   const K::Vector_3 u = h.b - h.a, v = h.c - h.a, d = p - h.a;
-  const K::FT along = (u.y() * v.z() - u.z() * v.y()) * d.x() + (u.z() * v.x() - u.x() * v.z()) * d.y() +
+  const K::FT along = (u.y() * v.z() - u.z() * v.y()) * d.x() +
+                      (u.z() * v.x() - u.x() * v.z()) * d.y() +
                       (u.x() * v.y() - u.y() * v.x()) * d.z();
   RC_ASSERT(static_cast<int>(side(h, p)) == CGAL::sign(along));
 }
@@ -1203,7 +1230,8 @@ exact_triangle<K> tri3(const std::array<double, 3>& a, const std::array<double, 
 
 template <class K>
 void check_section3_convention() {
-  const exact_plane<K> z0{exact_point<K>({0, 0, 0}), exact_point<K>({1, 0, 0}), exact_point<K>({0, 1, 0})};
+  const exact_plane<K> z0{exact_point<K>({0, 0, 0}), exact_point<K>({1, 0, 0}),
+                          exact_point<K>({0, 1, 0})};
   // No vertex on the plane: c = (0,0,1) alone on the positive side, a = (2,0,-1), b = (0,2,-1).
   for (int rotation = 0; rotation < 3; ++rotation) {
     std::array<std::array<double, 3>, 3> v{{{0, 0, 1}, {2, 0, -1}, {0, 2, -1}}};
@@ -1233,7 +1261,8 @@ void check_section3_convention() {
   EXPECT_EQ(classify_triangle(in_plane, z0), triangle_plane_side::coplanar);
   EXPECT_TRUE(same_triangles(clip_triangle(in_plane, z0), {in_plane}));
   // Errors.
-  const exact_plane<K> line{exact_point<K>({0, 0, 0}), exact_point<K>({1, 1, 1}), exact_point<K>({2, 2, 2})};
+  const exact_plane<K> line{exact_point<K>({0, 0, 0}), exact_point<K>({1, 1, 1}),
+                            exact_point<K>({2, 2, 2})};
   EXPECT_THROW(split_triangle(in_plane, line), exbsp::usage_error);
   EXPECT_THROW(clip_triangle(in_plane, std::vector<exact_plane<K>>{z0, line}), exbsp::usage_error);
   EXPECT_THROW(plane_segment_intersection(z0, exact_point<K>({0, 0, 1}), exact_point<K>({0, 0, 0})),
@@ -1245,5 +1274,9 @@ void check_section3_convention() {
 
 }  // namespace
 
-TEST(ExactTriangleClip, EpeckFollowsTheSection3PieceConvention) { check_section3_convention<epeck>(); }
-TEST(ExactTriangleClip, GmpqFollowsTheSection3PieceConvention) { check_section3_convention<gmpq_kernel>(); }
+TEST(ExactTriangleClip, EpeckFollowsTheSection3PieceConvention) {
+  check_section3_convention<epeck>();
+}
+TEST(ExactTriangleClip, GmpqFollowsTheSection3PieceConvention) {
+  check_section3_convention<gmpq_kernel>();
+}

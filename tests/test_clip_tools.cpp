@@ -28,7 +28,8 @@ namespace fs = std::filesystem;
 
 double signed_area(const std::vector<vec2>& p) {
   double a = 0;
-  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) a += p[j][0] * p[i][1] - p[i][0] * p[j][1];
+  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++)
+    a += p[j][0] * p[i][1] - p[i][0] * p[j][1];
   return a / 2;
 }
 
@@ -36,13 +37,16 @@ double signed_area(const std::vector<vec2>& p) {
 
 TEST(ConvexRegion, DegeneratePolygonsAreRefused) {
   EXPECT_THROW(clip::convex_polygon_half_planes({{0, 0}, {1, 0}}), usage_error);
-  EXPECT_THROW(clip::convex_polygon_half_planes({{0, 0}, {1, 0}, {2, 0}}), usage_error);  // zero area
-  EXPECT_THROW(clip::convex_polygon_half_planes({{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}), usage_error);  // reflex
+  EXPECT_THROW(clip::convex_polygon_half_planes({{0, 0}, {1, 0}, {2, 0}}),
+               usage_error);  // zero area
+  EXPECT_THROW(clip::convex_polygon_half_planes({{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}),
+               usage_error);  // reflex
   EXPECT_THROW(clip::convex_polygon_half_planes({{0, 0}, {1, 0}, {NAN, 1}}), usage_error);
 }
 
 TEST(ConvexRegion, RepeatedAndCollinearVerticesAreAllowed) {
-  const auto h = clip::convex_polygon_half_planes({{0, 0}, {0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}, {0, 0}});
+  const auto h =
+      clip::convex_polygon_half_planes({{0, 0}, {0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}, {0, 0}});
   EXPECT_EQ(h.size(), 5u);  // one per edge of nonzero length
   for (const auto& p : h) EXPECT_GE(p.value({1, 1}), 0);
 }
@@ -54,7 +58,7 @@ TEST(ConvexRegion, BothOrientationsGiveTheSameRegion) {
     const auto h = clip::convex_polygon_half_planes(poly);
     ASSERT_EQ(h.size(), 4u);
     for (const auto& p : h) {
-      EXPECT_GT(p.value({2, 1.5}), 0);   // inside
+      EXPECT_GT(p.value({2, 1.5}), 0);        // inside
       EXPECT_EQ(p.value({0, 0}) >= 0, true);  // corner: on the boundary
     }
     bool outside = false;
@@ -64,13 +68,15 @@ TEST(ConvexRegion, BothOrientationsGiveTheSameRegion) {
 }
 
 TEST(ConvexRegion, HullOfCoplanarPointsIsRefused) {
-  EXPECT_THROW(clip::convex_hull_half_spaces({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}), usage_error);
+  EXPECT_THROW(clip::convex_hull_half_spaces({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}),
+               usage_error);
   EXPECT_THROW(clip::convex_hull_half_spaces({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), usage_error);
 }
 
 TEST(ConvexRegion, HullOfACubeContainsExactlyTheCube) {
   std::vector<vec3> pts;
-  for (int i = 0; i < 8; ++i) pts.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+  for (int i = 0; i < 8; ++i)
+    pts.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
   pts.push_back({0.5, 0.5, 0.5});  // an interior point changes nothing
   const auto h = clip::convex_hull_half_spaces(pts);
   EXPECT_EQ(h.size(), 12u);  // two triangles per square face
@@ -92,8 +98,11 @@ TEST(ConvexRegion, PolyhedronFromFaces) {
   ASSERT_EQ(h.size(), 4u);
   for (const auto& s : h) EXPECT_GT(s.value({0.1, 0.1, 0.1}), 0);
   // Not convex: a vertex of one face far outside another face's plane.
-  EXPECT_THROW(clip::convex_polyhedron_half_spaces({{a, b, c}, {a, d, b}, {a, c, d}, {b, {0, 0, -5}, c}}), usage_error);
-  EXPECT_THROW(clip::convex_polyhedron_half_spaces({{a, b, c}, {a, b, b}, {a, c, d}, {b, d, c}}), usage_error);
+  EXPECT_THROW(
+      clip::convex_polyhedron_half_spaces({{a, b, c}, {a, d, b}, {a, c, d}, {b, {0, 0, -5}, c}}),
+      usage_error);
+  EXPECT_THROW(clip::convex_polyhedron_half_spaces({{a, b, c}, {a, b, b}, {a, c, d}, {b, d, c}}),
+               usage_error);
 }
 
 // --- Sutherland–Hodgman pieces ----------------------------------------------------------------
@@ -136,8 +145,9 @@ TEST(SutherlandHodgmanPieces, ClockwiseInputKeepsItsOrientation) {
 
 TEST(SutherlandHodgmanPieces, CombShapeAgainstAWindowGivesEveryTooth) {
   // Spine [0, 8] x [0, 1]; teeth [1, 2], [3, 4], [5, 6], [7, 8] x [1, 4] and [0, 0.5] x [0, 4].
-  const std::vector<vec2> comb{{0, 0}, {8, 0}, {8, 4}, {7, 4}, {7, 1}, {6, 1}, {6, 4}, {5, 4}, {5, 1}, {4, 1},
-          {4, 4}, {3, 4}, {3, 1}, {2, 1}, {2, 4}, {1, 4}, {1, 1}, {0.5, 1}, {0.5, 4}, {0, 4}};
+  const std::vector<vec2> comb{{0, 0}, {8, 0}, {8, 4}, {7, 4},   {7, 1},   {6, 1}, {6, 4},
+                               {5, 4}, {5, 1}, {4, 1}, {4, 4},   {3, 4},   {3, 1}, {2, 1},
+                               {2, 4}, {1, 4}, {1, 1}, {0.5, 1}, {0.5, 4}, {0, 4}};
   const auto region = clip::window_half_planes(clip::make_window(-1, 9, 2, 3));
   const auto pieces = clip::sutherland_hodgman_pieces(comb, region);
   EXPECT_EQ(pieces.size(), 5u);
@@ -166,7 +176,8 @@ TEST(SutherlandHodgmanPieces, TouchingTheLineFromOutsideAddsNoPiece) {
 
 TEST(SutherlandHodgmanPieces, Planar3DPolygon) {
   // The U of the 2D test in the plane z = x (a tilted plane), clipped by y >= 2.
-  const std::vector<vec3> u{{0, 0, 0}, {3, 0, 3}, {3, 3, 3}, {2, 3, 2}, {2, 1, 2}, {1, 1, 1}, {1, 3, 1}, {0, 3, 0}};
+  const std::vector<vec3> u{{0, 0, 0}, {3, 0, 3}, {3, 3, 3}, {2, 3, 2},
+                            {2, 1, 2}, {1, 1, 1}, {1, 3, 1}, {0, 3, 0}};
   const auto pieces = clip::sutherland_hodgman_pieces(u, {{{0, 1, 0}, -2}});
   EXPECT_EQ(pieces.size(), 2u);
 }
@@ -174,14 +185,19 @@ TEST(SutherlandHodgmanPieces, Planar3DPolygon) {
 TEST(SutherlandHodgmanPieces, NothingLeft) {
   const std::vector<vec2> tri{{0, 0}, {1, 0}, {0, 1}};
   EXPECT_TRUE(clip::sutherland_hodgman_pieces(tri, {{1, 0, -5}}).empty());
-  EXPECT_TRUE(clip::sutherland_hodgman_pieces(tri, {{-1, 0, 0}}).empty());  // only the edge x = 0 left
+  EXPECT_TRUE(
+      clip::sutherland_hodgman_pieces(tri, {{-1, 0, 0}}).empty());  // only the edge x = 0 left
 }
 
 // --- exbsp clip: the library side -------------------------------------------------------------
 
-scene::clip_input parse(const std::string& text) { return scene::parse_clip_input(json::parse(text), "in.json"); }
+scene::clip_input parse(const std::string& text) {
+  return scene::parse_clip_input(json::parse(text), "in.json");
+}
 
-std::string error_key(const std::string& text) { return exbsp_test::error_key([&] { parse(text); }); }
+std::string error_key(const std::string& text) {
+  return exbsp_test::error_key([&] { parse(text); });
+}
 
 TEST(ClipInput, BadInputNamesTheKey) {
   EXPECT_EQ(error_key(R"({"segments": []})"), "/region");
@@ -189,20 +205,30 @@ TEST(ClipInput, BadInputNamesTheKey) {
   EXPECT_EQ(error_key(R"({"region": {"rect": [0, 0, -1, 1]}})"), "/region/rect/2");
   EXPECT_EQ(error_key(R"({"region": {"box": [0, 0, 0, 1, 1, "x"]}})"), "/region/box/5");
   EXPECT_EQ(error_key(R"({"region": {"disc": 1}})"), "/region/disc");
-  EXPECT_EQ(error_key(R"({"region": {"convex": [[0, 0], [2, 0], [1, 0.5], [2, 2], [0, 2]]}})"), "/region/convex");
-  EXPECT_EQ(error_key(R"({"region": {"convex": [[0, 0], [2, 0], [2, 2, 1]]}})"), "/region/convex/2");
-  EXPECT_EQ(error_key(R"({"region": {"halfspaces": [[1, 0, 0], [0, 0, 1]]}})"), "/region/halfspaces/1");
-  EXPECT_EQ(error_key(R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [[[0, 0], [1, 1]], [[0, 0], [1, 1, 1]]]})"),
-            "/segments/1/1");
-  EXPECT_EQ(error_key(R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [[[0, 0], [1, 1]], [[0, 0]]]})"), "/segments/1");
-  EXPECT_EQ(error_key(R"({"region": {"rect": [0, 0, 1, 1]}, "polygons": [[[0, 0], [1, 1]]]})"), "/polygons/0");
-  EXPECT_EQ(error_key(R"({"region": {"rect": [0, 0, 1, 1]}, "polygons": [[[0, 0], [1, 1], [1, null]]]})"),
-            "/polygons/0/2/1");
+  EXPECT_EQ(error_key(R"({"region": {"convex": [[0, 0], [2, 0], [1, 0.5], [2, 2], [0, 2]]}})"),
+            "/region/convex");
+  EXPECT_EQ(error_key(R"({"region": {"convex": [[0, 0], [2, 0], [2, 2, 1]]}})"),
+            "/region/convex/2");
+  EXPECT_EQ(error_key(R"({"region": {"halfspaces": [[1, 0, 0], [0, 0, 1]]}})"),
+            "/region/halfspaces/1");
+  EXPECT_EQ(
+      error_key(
+          R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [[[0, 0], [1, 1]], [[0, 0], [1, 1, 1]]]})"),
+      "/segments/1/1");
+  EXPECT_EQ(
+      error_key(R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [[[0, 0], [1, 1]], [[0, 0]]]})"),
+      "/segments/1");
+  EXPECT_EQ(error_key(R"({"region": {"rect": [0, 0, 1, 1]}, "polygons": [[[0, 0], [1, 1]]]})"),
+            "/polygons/0");
+  EXPECT_EQ(
+      error_key(R"({"region": {"rect": [0, 0, 1, 1]}, "polygons": [[[0, 0], [1, 1], [1, null]]]})"),
+      "/polygons/0/2/1");
   EXPECT_EQ(error_key(R"({"region": {"rect": [0, 0, 1, 1]}, "segment": []})"), "/segment");
 }
 
 TEST(ClipInput, SegmentsNeedARectOrBox) {
-  const auto in = parse(R"({"region": {"convex": [[0, 0], [1, 0], [0, 1]]}, "segments": [[[0, 0], [1, 1]]]})");
+  const auto in =
+      parse(R"({"region": {"convex": [[0, 0], [1, 0], [0, 1]]}, "segments": [[[0, 0], [1, 1]]]})");
   try {
     scene::run_clip(in, "", nullptr);
     FAIL();
@@ -227,9 +253,11 @@ TEST(ClipInput, CohenSutherlandAndLiangBarskyAgree) {
   EXPECT_EQ(cs["segments"][3], json::parse("[[0, 2], [0, 2]]"));  // touches the corner only
   EXPECT_EQ(cs["outcodes"][0], json::parse("[1, 2]"));
   EXPECT_EQ(lb["t"][0], json::parse("[0.16666666666666666, 0.8333333333333334]"));
-  EXPECT_NE(log.str().find("segment 0: p0 outcode 0001 (left), p1 outcode 0010 (right): clipped"), std::string::npos)
+  EXPECT_NE(log.str().find("segment 0: p0 outcode 0001 (left), p1 outcode 0010 (right): clipped"),
+            std::string::npos)
       << log.str();
-  EXPECT_NE(log.str().find("segment 1: p0 outcode 0101 (left|bottom), p1 outcode 1001 (left|top): trivially rejected"),
+  EXPECT_NE(log.str().find("segment 1: p0 outcode 0101 (left|bottom), p1 outcode 1001 (left|top): "
+                           "trivially rejected"),
             std::string::npos)
       << log.str();
 }
@@ -283,15 +311,18 @@ TEST_F(ClipCli, JsonSvgAndVerbose) {
 }
 
 TEST_F(ClipCli, BadInputExits2NamingTheKeyAndWritesNothing) {
-  write("bad.json", R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [[[0, 0], [1, 1]], [[0, 0], [1, 1]],
+  write("bad.json",
+        R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [[[0, 0], [1, 1]], [[0, 0], [1, 1]],
     [[0, 0], [1, 1]], [[0, 0], [1, "y"]]]})");
   for (const char* out : {"out.json", "out.svg"}) {
     const run_result r = run(std::string("clip bad.json -o ") + out);
     EXPECT_EQ(r.status, 2);
-    EXPECT_NE(r.err.find("bad.json: /segments/3/1/1: must be a number"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("bad.json: /segments/3/1/1: must be a number"), std::string::npos)
+        << r.err;
     EXPECT_FALSE(fs::exists(dir / out));
   }
-  write("concave.json", R"({"region": {"convex": [[0, 0], [2, 0], [1, 0.5], [2, 2], [0, 2]]}, "polygons": []})");
+  write("concave.json",
+        R"({"region": {"convex": [[0, 0], [2, 0], [1, 0.5], [2, 2], [0, 2]]}, "polygons": []})");
   run_result r = run("clip concave.json -o out.json");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("/region/convex: "), std::string::npos) << r.err;

@@ -24,8 +24,9 @@ using EP = EK::Point_3;
 
 /// Every invariant, every heuristic, both exact kernels (Gmpq, unfiltered, with a smaller ray
 /// budget unless `with_gmpq` is false), the standard viewpoints plus `eyes` and `directions`.
-void expect_every_invariant(const soup_case& c, const std::vector<vec3d>& eyes = {}, const std::vector<vec3d>& directions = {},
-                            std::size_t max_rays = 160, bool with_gmpq = true) {
+void expect_every_invariant(const soup_case& c, const std::vector<vec3d>& eyes = {},
+                            const std::vector<vec3d>& directions = {}, std::size_t max_rays = 160,
+                            bool with_gmpq = true) {
   for (const std::string& h : exbsp::heuristic_names()) {
     check_options o;
     o.seed = 20261121;
@@ -67,8 +68,12 @@ const tri_d stack_a{{{-2, -2, 0}, {2, -2, 0}, {0, 2, 0}}};
 // --- Coplanar stacks --------------------------------------------------------------------------
 
 TEST(CoplanarStack, overlapping_triangles_in_both_orientations_stay_at_one_node_in_list_order) {
-  const soup_case c = case_of("stack", {stack_a, flipped(stack_a), {{{-1, -1, 0}, {3, 0, 0}, {0, 3, 0}}},
-                                        flipped({{{-1, -1, 0}, {3, 0, 0}, {0, 3, 0}}}), stack_a, {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}});
+  const soup_case c = case_of("stack", {stack_a,
+                                        flipped(stack_a),
+                                        {{{-1, -1, 0}, {3, 0, 0}, {0, 3, 0}}},
+                                        flipped({{{-1, -1, 0}, {3, 0, 0}, {0, 3, 0}}}),
+                                        stack_a,
+                                        {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}});
   const exbsp::triangle_soup soup = c.soup();
   for (const std::string& h : exbsp::heuristic_names()) {
     exbsp::build_options o;
@@ -77,7 +82,8 @@ TEST(CoplanarStack, overlapping_triangles_in_both_orientations_stay_at_one_node_
     EXPECT_EQ(t.stats().nodes, 1u) << h;
     EXPECT_EQ(t.stats().splits, 0u) << h;
     ASSERT_EQ(t.fragments().size(), 6u) << h;
-    for (std::uint32_t i = 0; i < 6; ++i) EXPECT_EQ(t.fragments()[i].face, i) << h << ": the node list keeps list order";
+    for (std::uint32_t i = 0; i < 6; ++i)
+      EXPECT_EQ(t.fragments()[i].face, i) << h << ": the node list keeps list order";
     const std::vector<std::uint32_t> in_order{0, 1, 2, 3, 4, 5};
     EXPECT_EQ(t.order_from_eye(EP(0, 0, 5)), in_order);
     EXPECT_EQ(t.order_from_eye(EP(0, 0, -5)), in_order);
@@ -108,9 +114,11 @@ TEST(CoplanarStack, crosser_with_a_vertex_exactly_on_the_stack_plane_splits_into
 }
 
 TEST(CoplanarStack, crossers_touching_the_plane_with_a_vertex_or_an_edge_are_not_split) {
-  const soup_case c = case_of("stack + touching", {stack_a, flipped(stack_a),
-                                                   {{{0, 0, 0}, {1, 3, 1}, {-1, 3, 2}}},     // vertex on the plane
-                                                   {{{-1, 0, 0}, {1, 0, 0}, {0, 1, -2}}}});  // edge in the plane
+  const soup_case c =
+      case_of("stack + touching", {stack_a,
+                                   flipped(stack_a),
+                                   {{{0, 0, 0}, {1, 3, 1}, {-1, 3, 2}}},     // vertex on the plane
+                                   {{{-1, 0, 0}, {1, 0, 0}, {0, 1, -2}}}});  // edge in the plane
   const auto t = build_naive(c.soup());
   EXPECT_EQ(t.stats().splits, 0u);
   EXPECT_EQ(t.stats().nodes, 3u);
@@ -119,7 +127,9 @@ TEST(CoplanarStack, crossers_touching_the_plane_with_a_vertex_or_an_edge_are_not
 
 TEST(CoplanarStack, a_crosser_as_splitter_cuts_every_stack_triangle_in_both_orientations) {
   const tri_d crosser{{{0, -3, -1}, {0, 3, -1}, {0, 0, 2}}};  // the plane x = 0
-  const soup_case c = case_of("crosser first", {crosser, stack_a, flipped(stack_a), {{{-1, -1, 0}, {1, -1, 0}, {0, 0, 0}}}, stack_a});
+  const soup_case c = case_of(
+      "crosser first",
+      {crosser, stack_a, flipped(stack_a), {{{-1, -1, 0}, {1, -1, 0}, {0, 0, 0}}}, stack_a});
   const auto t = build_naive(c.soup());
   // Every stack triangle has a vertex on x = 0 and the other two on either side: two pieces each.
   EXPECT_EQ(t.stats().splits, 4u);
@@ -143,7 +153,8 @@ TEST(VertexOnPlane, a_vertex_on_three_node_planes_and_eyes_at_their_common_point
                                          {{{0, 0, 0}, {1, 1, -1}, {-1, -1, -1}}},
                                          {{{0, 0, 1}, {0, 1, 0}, {1, 0, 0}}},
                                          {{{0, 0, 2}, {1, 0, -1}, {-1, 0, -1}}}});
-  expect_every_invariant(c, {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {1, 0, 0}, {0, 0.5, 0.5}}, {{1, 1, 0}, {0, 0, 1}});
+  expect_every_invariant(c, {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {1, 0, 0}, {0, 0.5, 0.5}},
+                         {{1, 1, 0}, {0, 0, 1}});
 }
 
 RC_GTEST_PROP(VertexOnPlane, vertices_on_one_two_and_three_planes_satisfy_every_invariant, ()) {
@@ -154,10 +165,11 @@ RC_GTEST_PROP(VertexOnPlane, vertices_on_one_two_and_three_planes_satisfy_every_
 
 TEST(NearCoplanar, vertices_one_ulp_above_and_below_z_equals_0_1_are_classified_exactly) {
   const double h = 0.1, up = std::nextafter(h, 1.0), down = std::nextafter(h, 0.0);
-  const soup_case c = case_of("ulp", {{{{-1, -1, h}, {1, -1, h}, {0, 1, h}}},
-                                      {{{-0.5, -0.5, up}, {0.5, -0.5, down}, {0, 0.5, h}}},   // straddles, vertex on plane
-                                      {{{-0.5, 0.5, up}, {0.5, 0.5, up}, {0, -0.5, up}}},     // entirely 1 ulp above
-                                      {{{-0.7, 0.1, down}, {0.6, 0.2, up}, {0.1, 0.9, down}}}}); // straddles, 3 pieces
+  const soup_case c = case_of(
+      "ulp", {{{{-1, -1, h}, {1, -1, h}, {0, 1, h}}},
+              {{{-0.5, -0.5, up}, {0.5, -0.5, down}, {0, 0.5, h}}},  // straddles, vertex on plane
+              {{{-0.5, 0.5, up}, {0.5, 0.5, up}, {0, -0.5, up}}},    // entirely 1 ulp above
+              {{{-0.7, 0.1, down}, {0.6, 0.2, up}, {0.1, 0.9, down}}}});  // straddles, 3 pieces
   const auto t = build_naive(c.soup());
   // The root (the exact triangle, naive) keeps only itself: nothing one ulp off is coplanar.
   EXPECT_EQ(t.nodes()[0].count, 1u);
@@ -177,9 +189,10 @@ TEST(NearCoplanar, vertices_one_ulp_above_and_below_z_equals_0_1_are_classified_
 
 TEST(NearCoplanar, subnormal_offsets_from_z_equals_0_are_split_exactly) {
   const double tiny = std::nextafter(0.0, 1.0);  // 4.9e-324
-  const soup_case c = case_of("subnormal", {{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}},
-                                            {{{-0.5, -0.5, tiny}, {0.5, -0.5, -tiny}, {0, 0.5, tiny}}},
-                                            {{{-0.5, 0.5, tiny}, {0.5, 0.5, tiny}, {0, -0.5, 0}}}});
+  const soup_case c =
+      case_of("subnormal", {{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}},
+                            {{{-0.5, -0.5, tiny}, {0.5, -0.5, -tiny}, {0, 0.5, tiny}}},
+                            {{{-0.5, 0.5, tiny}, {0.5, 0.5, tiny}, {0, -0.5, 0}}}});
   const auto t = build_naive(c.soup());
   EXPECT_EQ(t.nodes()[0].count, 1u);
   EXPECT_GE(t.stats().splits, 1u);
@@ -188,16 +201,18 @@ TEST(NearCoplanar, subnormal_offsets_from_z_equals_0_are_split_exactly) {
     for (const EP& p : t.fragments()[i].v) on_plane |= p.z() == 0;
   EXPECT_TRUE(on_plane);
   for (std::size_t i : fragments_of_source(t, 2))
-    for (const EP& p : t.fragments()[i].v) EXPECT_GE(p.z(), 0) << "triangle 2 touches z = 0 and is not cut by it";
+    for (const EP& p : t.fragments()[i].v)
+      EXPECT_GE(p.z(), 0) << "triangle 2 touches z = 0 and is not cut by it";
   expect_every_invariant(c, {{0, 0, 0}, {0, 0, tiny}, {0.1, 0.1, -tiny}});
 }
 
 TEST(NearCoplanar, one_ulp_off_the_sloped_plane_y_equals_x) {
   auto on = [](double x, double z, int ulps) { return vec3d{x, ulps_from(x, ulps), z}; };
-  const soup_case c = case_of("sloped ulp", {{{on(-1, -1, 0), on(1, -1, 0), on(0.3, 1, 0)}},
-                                             {{on(0.1, 0.2, 1), on(0.7, -0.3, -1), on(-0.6, 0.4, 1)}},
-                                             {{on(0.2, 0.1, 1), on(0.6, 0.5, 1), on(-0.3, -0.2, 1)}},
-                                             {{on(0.25, 0.3, 0), on(0.8, -0.3, 0), on(-0.5, 0.6, 0)}}});
+  const soup_case c =
+      case_of("sloped ulp", {{{on(-1, -1, 0), on(1, -1, 0), on(0.3, 1, 0)}},
+                             {{on(0.1, 0.2, 1), on(0.7, -0.3, -1), on(-0.6, 0.4, 1)}},
+                             {{on(0.2, 0.1, 1), on(0.6, 0.5, 1), on(-0.3, -0.2, 1)}},
+                             {{on(0.25, 0.3, 0), on(0.8, -0.3, 0), on(-0.5, 0.6, 0)}}});
   expect_every_invariant(c, {on(0.5, 0, 0), on(0.5, 0, 1)}, {{1, 1, 0}, {1, -1, 0}});
 }
 
@@ -209,10 +224,11 @@ RC_GTEST_PROP(NearCoplanar, one_ulp_and_subnormal_offsets_satisfy_every_invarian
 
 TEST(ScaleDisparity, coordinates_near_1e9_with_millimetre_features_crossing_a_huge_triangle) {
   const double X = 1234567890.125, Y = -987654321.5, Z = 555555555.25;
-  const soup_case c = case_of("1e9", {{{{X - 1e9, Y - 1e9, Z}, {X + 1e9, Y, Z}, {X, Y + 1e9, Z}}},
-                                      {{{X, Y, Z - 1e-3}, {X + 2e-3, Y, Z + 1e-3}, {X, Y + 2e-3, Z + 1e-3}}},
-                                      {{{X + 1e-3, Y, Z}, {X + 1e-3, Y + 3e-3, Z - 2e-3}, {X + 1e-3, Y - 1e-3, Z + 2e-3}}},
-                                      {{{X - 1e9, Y, Z - 1e9}, {X + 1e9, Y + 1e-3, Z + 1e9}, {X, Y + 1e9, Z}}}});
+  const soup_case c = case_of(
+      "1e9", {{{{X - 1e9, Y - 1e9, Z}, {X + 1e9, Y, Z}, {X, Y + 1e9, Z}}},
+              {{{X, Y, Z - 1e-3}, {X + 2e-3, Y, Z + 1e-3}, {X, Y + 2e-3, Z + 1e-3}}},
+              {{{X + 1e-3, Y, Z}, {X + 1e-3, Y + 3e-3, Z - 2e-3}, {X + 1e-3, Y - 1e-3, Z + 2e-3}}},
+              {{{X - 1e9, Y, Z - 1e9}, {X + 1e9, Y + 1e-3, Z + 1e9}, {X, Y + 1e9, Z}}}});
   const auto t = build_naive(c.soup());
   EXPECT_GE(t.stats().splits, 2u);
   expect_every_invariant(c, {{X, Y, Z}, {X + 1e-3, Y, Z + 1}}, {{0, 0, -1}});
@@ -220,9 +236,11 @@ TEST(ScaleDisparity, coordinates_near_1e9_with_millimetre_features_crossing_a_hu
 
 TEST(ScaleDisparity, coordinates_near_1e_minus_300_whose_products_underflow_in_double) {
   const double s = 1e-300;
-  const soup_case c = case_of("1e-300", {{{{-s, -s, 0}, {s, -s, 0}, {0, s, 0}}},
-                                         {{{-s, 0, -s}, {s, 0, -s}, {0, 0.5 * s, s}}},
-                                         {{{0.3 * s, -s, -0.2 * s}, {0.1 * s, s, 0.7 * s}, {-0.9 * s, 0.2 * s, -0.4 * s}}}});
+  const soup_case c =
+      case_of("1e-300",
+              {{{{-s, -s, 0}, {s, -s, 0}, {0, s, 0}}},
+               {{{-s, 0, -s}, {s, 0, -s}, {0, 0.5 * s, s}}},
+               {{{0.3 * s, -s, -0.2 * s}, {0.1 * s, s, 0.7 * s}, {-0.9 * s, 0.2 * s, -0.4 * s}}}});
   const auto t = build_naive(c.soup());
   EXPECT_GE(t.stats().splits, 2u) << "the tiny triangles really cross each other";
   expect_every_invariant(c, {{0, 0, 0}, {s, s, s}}, {{0, 0, 1}});
@@ -269,7 +287,8 @@ bool transform_is_exact(const soup_case& c, int k) {
   return true;
 }
 
-RC_GTEST_PROP(ScaleDisparity, exact_similarities_down_to_1e_minus_300_and_up_to_1e150_give_the_same_tree, ()) {
+RC_GTEST_PROP(ScaleDisparity,
+              exact_similarities_down_to_1e_minus_300_and_up_to_1e150_give_the_same_tree, ()) {
   const soup_case c = *any_small_soup();
   int k = *rc::gen::element(-1000, -700, -40, 30, 500);
   if (!transform_is_exact(c, k)) k = 0;
@@ -281,7 +300,9 @@ RC_GTEST_PROP(ScaleDisparity, exact_similarities_down_to_1e_minus_300_and_up_to_
     const EK::FT s = k >= 0 ? EK::FT(std::ldexp(1.0, k)) : EK::FT(1) / EK::FT(std::ldexp(1.0, -k));
     const EK::FT q[3] = {p.x() * s, p.y() * s, p.z() * s};
     EK::FT r[3];
-    for (std::size_t a = 0; a < 3; ++a) r[a] = flip && a < 2 ? -q[(a + static_cast<std::size_t>(shift)) % 3] : q[(a + static_cast<std::size_t>(shift)) % 3];
+    for (std::size_t a = 0; a < 3; ++a)
+      r[a] = flip && a < 2 ? -q[(a + static_cast<std::size_t>(shift)) % 3]
+                           : q[(a + static_cast<std::size_t>(shift)) % 3];
     return EP(r[0], r[1], r[2]);
   };
   for (const std::string& h : exbsp::heuristic_names()) {
@@ -299,7 +320,8 @@ RC_GTEST_PROP(ScaleDisparity, exact_similarities_down_to_1e_minus_300_and_up_to_
       RC_ASSERT(ta.nodes()[i].count == tb.nodes()[i].count);
     }
     for (std::size_t i = 0; i < ta.fragments().size(); ++i)
-      for (std::size_t v = 0; v < 3; ++v) RC_ASSERT(map_point(ta.fragments()[i].v[v]) == tb.fragments()[i].v[v]);
+      for (std::size_t v = 0; v < 3; ++v)
+        RC_ASSERT(map_point(ta.fragments()[i].v[v]) == tb.fragments()[i].v[v]);
     const EP eye(0.375, -1.25, 2.5);
     RC_ASSERT(ta.order_from_eye(eye) == tb.order_from_eye(map_point(eye)));
   }
@@ -311,10 +333,14 @@ TEST(Slivers, needles_and_caps_with_angles_near_0_and_180_degrees_crossing_plane
   std::vector<tri_d> tris{{{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}}};
   for (int e = 3; e <= 15; e += 3) {
     const double eps = std::pow(10.0, -e);
-    tris.push_back({{{-0.5, 0.1 * e - 0.8, -1}, {0.5, 0.1 * e - 0.8, 1}, {0.5, 0.1 * e - 0.8 + eps, 1}}});  // needle
-    tris.push_back({{{0.1 * e - 0.8, -1, -1}, {0.1 * e - 0.8, 1, 1}, {0.1 * e - 0.8 + eps, 0, 0}}});        // cap
+    tris.push_back({{{-0.5, 0.1 * e - 0.8, -1},
+                     {0.5, 0.1 * e - 0.8, 1},
+                     {0.5, 0.1 * e - 0.8 + eps, 1}}});  // needle
+    tris.push_back(
+        {{{0.1 * e - 0.8, -1, -1}, {0.1 * e - 0.8, 1, 1}, {0.1 * e - 0.8 + eps, 0, 0}}});  // cap
   }
-  tris.push_back({{{0.3, 0.2, -1}, {0.3, 0.2, 1}, {0.3 + 1e-15, 0.2, 0}}});  // a needle pierced at its middle
+  tris.push_back(
+      {{{0.3, 0.2, -1}, {0.3, 0.2, 1}, {0.3 + 1e-15, 0.2, 0}}});  // a needle pierced at its middle
   const soup_case c = case_of("needles and caps", tris);
   const auto t = build_naive(c.soup());
   EXPECT_EQ(t.stats().degenerate_input, 0u);
@@ -361,16 +387,20 @@ TEST(MeshLike, shared_edges_t_junction_duplicate_and_reversed_copy_share_their_n
   expect_every_invariant(c, {{1, 0.5, 0}, {1, 0.5, 3}, {1, 1, 0}}, {{0, 0, -1}, {0, 1, 0}});
 }
 
-RC_GTEST_PROP(MeshLike, height_fields_with_t_junctions_duplicates_and_reversed_copies_satisfy_every_invariant, ()) {
+RC_GTEST_PROP(MeshLike,
+              height_fields_with_t_junctions_duplicates_and_reversed_copies_satisfy_every_invariant,
+              ()) {
   rc_assert_invariants_for_every_heuristic<EK>(*mesh_like());
 }
 
-TEST(DegenerateInput, collinear_and_point_triangles_inside_a_coplanar_stack_are_skipped_and_counted) {
-  const soup_case c = case_of("collinear in stack", {stack_a,
-                                                      {{{-2, -2, 0}, {0, 0, 0}, {2, 2, 0}}},  // collinear, in the plane
-                                                      {{{0, 0, -1}, {0, 0, 0}, {0, 0, 1}}},   // collinear, crossing it
-                                                      {{{1, 1, 1}, {1, 1, 1}, {1, 1, 1}}},    // a point
-                                                      {{{0, -1, -1}, {0, 1, 1}, {0, 1, -1}}}});
+TEST(DegenerateInput,
+     collinear_and_point_triangles_inside_a_coplanar_stack_are_skipped_and_counted) {
+  const soup_case c = case_of("collinear in stack",
+                              {stack_a,
+                               {{{-2, -2, 0}, {0, 0, 0}, {2, 2, 0}}},  // collinear, in the plane
+                               {{{0, 0, -1}, {0, 0, 0}, {0, 0, 1}}},   // collinear, crossing it
+                               {{{1, 1, 1}, {1, 1, 1}, {1, 1, 1}}},    // a point
+                               {{{0, -1, -1}, {0, 1, 1}, {0, 1, -1}}}});
   const auto t = build_naive(c.soup());
   EXPECT_EQ(t.stats().degenerate_input, 3u);
   EXPECT_EQ(t.stats().input_triangles, 5u);
@@ -411,11 +441,13 @@ bool over_somewhere(const tri_d& a, const tri_d& b) {
   const std::array<EP, 3> B{exact_point<EK>(b[0]), exact_point<EK>(b[1]), exact_point<EK>(b[2])};
   auto flat = [](const EP& p) { return P2(p.x(), p.y()); };
   std::vector<P2> pa{flat(A[0]), flat(A[1]), flat(A[2])}, pb{flat(B[0]), flat(B[1]), flat(B[2])};
-  if (CGAL::orientation(pa[0], pa[1], pa[2]) == CGAL::COLLINEAR || CGAL::orientation(pb[0], pb[1], pb[2]) == CGAL::COLLINEAR)
+  if (CGAL::orientation(pa[0], pa[1], pa[2]) == CGAL::COLLINEAR ||
+      CGAL::orientation(pb[0], pb[1], pb[2]) == CGAL::COLLINEAR)
     return false;  // vertical: no area seen from above
   if (CGAL::orientation(pa[0], pa[1], pa[2]) == CGAL::CLOCKWISE) std::swap(pa[1], pa[2]);
   std::vector<P2> overlap = pb;
-  for (std::size_t e = 0; e < 3 && !overlap.empty(); ++e) overlap = clip_left(overlap, pa[e], pa[(e + 1) % 3]);
+  for (std::size_t e = 0; e < 3 && !overlap.empty(); ++e)
+    overlap = clip_left(overlap, pa[e], pa[(e + 1) % 3]);
   if (overlap.size() < 3) return false;
   EK::FT area2 = 0;
   for (std::size_t i = 0; i < overlap.size(); ++i) {
@@ -457,17 +489,20 @@ TEST(CyclicOverlap, regular_pinwheels_of_3_to_8_sticks_are_true_depth_cycles_and
       const double phi = 6.283185307179586 * k / n;
       const vec3d radial{std::cos(phi), std::sin(phi), 0}, along{-std::sin(phi), std::cos(phi), 0};
       const vec3d tail = add(radial, scale(-5, along)), tip = add(radial, scale(5, along));
-      tris.push_back({add(tail, scale(0.25, radial)), sub(tail, scale(0.25, radial)), vec3d{tip[0], tip[1], 5}});
+      tris.push_back({add(tail, scale(0.25, radial)), sub(tail, scale(0.25, radial)),
+                      vec3d{tip[0], tip[1], 5}});
     }
     ASSERT_TRUE(has_depth_cycle(tris)) << n << " sticks";
     const soup_case c = case_of("pinwheel " + std::to_string(n), tris);
     const auto t = build_naive(c.soup());
     EXPECT_GE(t.stats().splits, 1u) << n;
-    expect_every_invariant(c, {{0, 0, 100}, {0, 0, 2.5}, {0.1, -0.2, 1}}, {{0, 0, -1}, {0.05, 0.1, -1}}, 64, n <= 4);
+    expect_every_invariant(c, {{0, 0, 100}, {0, 0, 2.5}, {0.1, -0.2, 1}},
+                           {{0, 0, -1}, {0.05, 0.1, -1}}, 64, n <= 4);
   }
 }
 
-RC_GTEST_PROP(CyclicOverlap, random_pinwheels_of_3_to_8_sticks_are_drawn_correctly_from_above_and_everywhere, ()) {
+RC_GTEST_PROP(CyclicOverlap,
+              random_pinwheels_of_3_to_8_sticks_are_drawn_correctly_from_above_and_everywhere, ()) {
   const soup_case c = *cyclic_sticks(3, 8);
   const bool cyclic = has_depth_cycle(c.tris);
   RC_CLASSIFY(cyclic, "true depth cycle");
@@ -488,7 +523,8 @@ RC_GTEST_PROP(CyclicOverlap, random_pinwheels_of_3_to_8_sticks_are_drawn_correct
 // --- Eyes exactly at every split point and on every node plane --------------------------------
 
 TEST(Eyes, exactly_at_every_fragment_vertex_and_on_every_node_plane_of_a_split_scene) {
-  const soup_case c = case_of("split scene", {stack_a, {{{0.5, 0.25, 0}, {-1, 3, 1}, {2, 3, -1}}},
+  const soup_case c = case_of("split scene", {stack_a,
+                                              {{{0.5, 0.25, 0}, {-1, 3, 1}, {2, 3, -1}}},
                                               {{{0, -3, -1}, {0, 3, -1}, {0, 0, 2}}},
                                               {{{-2, 0, -2}, {2, 0.5, -2}, {0, 0.25, 2}}}});
   const exbsp::triangle_soup soup = c.soup();
@@ -503,7 +539,10 @@ TEST(Eyes, exactly_at_every_fragment_vertex_and_on_every_node_plane_of_a_split_s
       for (const EP& p : f) eyes.push_back({true, p, {}, "eye at a fragment vertex"});
     for (const auto& nd : v.nodes) {
       const auto& p = v.sources[nd.plane_source];
-      eyes.push_back({true, p[0] + (p[1] - p[0]) * EK::FT(3) - (p[2] - p[0]) * EK::FT(2), {}, "eye on a node plane"});
+      eyes.push_back({true,
+                      p[0] + (p[1] - p[0]) * EK::FT(3) - (p[2] - p[0]) * EK::FT(2),
+                      {},
+                      "eye on a node plane"});
       eyes.push_back({false, CGAL::ORIGIN, p[2] - p[1], "direction parallel to a node plane"});
     }
     for (const auto& vp : eyes) check_orders(t, v, vp, 64, r);

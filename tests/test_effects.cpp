@@ -78,7 +78,9 @@ int count_color(const image& img, rgb8 c) {
   return n;
 }
 
-int color_distance(rgb8 a, rgb8 b) { return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b); }
+int color_distance(rgb8 a, rgb8 b) {
+  return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
+}
 
 // ---------------------------------------------------------------------------------------
 // Effect parameters in scene files
@@ -93,47 +95,77 @@ TEST(EffectParsing, EveryErrorNamesTheEffectOrParameterKey) {
   const std::vector<bad_effect> cases = {
       {"unknown effect", {{"bloom", true}}, "/effects/bloom"},
       {"effect not an object", {{"fog", "thick"}}, "/effects/fog"},
-      {"backface_culling takes no parameter", {{"backface_culling", {{"front", true}}}}, "/effects/backface_culling/front"},
+      {"backface_culling takes no parameter",
+       {{"backface_culling", {{"front", true}}}},
+       "/effects/backface_culling/front"},
       {"lighting unknown parameter", {{"lighting", {{"colour", 3}}}}, "/effects/lighting/colour"},
-      {"lighting direction zero", {{"lighting", {{"direction", {0, 0, 0}}}}}, "/effects/lighting/direction"},
-      {"lighting direction two numbers", {{"lighting", {{"direction", {0, 1}}}}}, "/effects/lighting/direction"},
-      {"lighting direction not a number", {{"lighting", {{"direction", {0, "up", 1}}}}}, "/effects/lighting/direction/1"},
-      {"lighting intensity negative", {{"lighting", {{"intensity", -0.5}}}}, "/effects/lighting/intensity"},
-      {"lighting ambient a string", {{"lighting", {{"ambient", "dim"}}}}, "/effects/lighting/ambient"},
-      {"lighting two_sided a number", {{"lighting", {{"two_sided", 1}}}}, "/effects/lighting/two_sided"},
+      {"lighting direction zero",
+       {{"lighting", {{"direction", {0, 0, 0}}}}},
+       "/effects/lighting/direction"},
+      {"lighting direction two numbers",
+       {{"lighting", {{"direction", {0, 1}}}}},
+       "/effects/lighting/direction"},
+      {"lighting direction not a number",
+       {{"lighting", {{"direction", {0, "up", 1}}}}},
+       "/effects/lighting/direction/1"},
+      {"lighting intensity negative",
+       {{"lighting", {{"intensity", -0.5}}}},
+       "/effects/lighting/intensity"},
+      {"lighting ambient a string",
+       {{"lighting", {{"ambient", "dim"}}}},
+       "/effects/lighting/ambient"},
+      {"lighting two_sided a number",
+       {{"lighting", {{"two_sided", 1}}}},
+       "/effects/lighting/two_sided"},
       {"fog unknown mode", {{"fog", {{"mode", "exp2"}}}}, "/effects/fog/mode"},
       {"fog end before start", {{"fog", {{"start", 10}, {"end", 5}}}}, "/effects/fog/end"},
       {"fog start negative", {{"fog", {{"start", -1}, {"end", 5}}}}, "/effects/fog/start"},
-      {"fog density for linear", {{"fog", {{"mode", "linear"}, {"density", 0.1}}}}, "/effects/fog/density"},
-      {"fog exp density zero", {{"fog", {{"mode", "exp"}, {"density", 0}}}}, "/effects/fog/density"},
+      {"fog density for linear",
+       {{"fog", {{"mode", "linear"}, {"density", 0.1}}}},
+       "/effects/fog/density"},
+      {"fog exp density zero",
+       {{"fog", {{"mode", "exp"}, {"density", 0}}}},
+       "/effects/fog/density"},
       {"fog exp with start", {{"fog", {{"mode", "exp"}, {"start", 1}}}}, "/effects/fog/start"},
       {"fog colour out of range", {{"fog", {{"color", {0, 0, 256}}}}}, "/effects/fog/color/2"},
       {"fog unknown parameter", {{"fog", {{"height", 2}}}}, "/effects/fog/height"},
-      {"dof without parameters", {{"depth_of_field", true}}, "/effects/depth_of_field/focal_length"},
+      {"dof without parameters",
+       {{"depth_of_field", true}},
+       "/effects/depth_of_field/focal_length"},
       {"dof focal length negative",
        {{"depth_of_field", {{"focal_length", -1}, {"aperture", 0.1}, {"focus_distance", 5}}}},
        "/effects/depth_of_field/focal_length"},
       {"dof aperture and f_number",
-       {{"depth_of_field", {{"focal_length", 0.05}, {"aperture", 0.1}, {"f_number", 2}, {"focus_distance", 5}}}},
+       {{"depth_of_field",
+         {{"focal_length", 0.05}, {"aperture", 0.1}, {"f_number", 2}, {"focus_distance", 5}}}},
        "/effects/depth_of_field/f_number"},
-      {"dof neither aperture nor f_number", {{"depth_of_field", {{"focal_length", 0.05}, {"focus_distance", 5}}}},
+      {"dof neither aperture nor f_number",
+       {{"depth_of_field", {{"focal_length", 0.05}, {"focus_distance", 5}}}},
        "/effects/depth_of_field/aperture"},
-      {"dof f_number zero", {{"depth_of_field", {{"focal_length", 0.05}, {"f_number", 0}, {"focus_distance", 5}}}},
+      {"dof f_number zero",
+       {{"depth_of_field", {{"focal_length", 0.05}, {"f_number", 0}, {"focus_distance", 5}}}},
        "/effects/depth_of_field/f_number"},
       {"dof focus inside the focal length",
        {{"depth_of_field", {{"focal_length", 2}, {"aperture", 0.1}, {"focus_distance", 1.5}}}},
        "/effects/depth_of_field/focus_distance"},
-      {"dof focus missing", {{"depth_of_field", {{"focal_length", 0.05}, {"aperture", 0.1}}}},
+      {"dof focus missing",
+       {{"depth_of_field", {{"focal_length", 0.05}, {"aperture", 0.1}}}},
        "/effects/depth_of_field/focus_distance"},
       {"dof one sample",
-       {{"depth_of_field", {{"focal_length", 0.05}, {"aperture", 0.1}, {"focus_distance", 5}, {"samples", 1}}}},
+       {{"depth_of_field",
+         {{"focal_length", 0.05}, {"aperture", 0.1}, {"focus_distance", 5}, {"samples", 1}}}},
        "/effects/depth_of_field/samples"},
       {"dof fractional samples",
-       {{"depth_of_field", {{"focal_length", 0.05}, {"aperture", 0.1}, {"focus_distance", 5}, {"samples", 8.5}}}},
+       {{"depth_of_field",
+         {{"focal_length", 0.05}, {"aperture", 0.1}, {"focus_distance", 5}, {"samples", 8.5}}}},
        "/effects/depth_of_field/samples"},
       {"antialias zero samples", {{"antialias", {{"samples", 0}}}}, "/effects/antialias/samples"},
-      {"antialias too many samples", {{"antialias", {{"samples", 9}}}}, "/effects/antialias/samples"},
-      {"antialias unknown parameter", {{"antialias", {{"filter", "gauss"}}}}, "/effects/antialias/filter"},
+      {"antialias too many samples",
+       {{"antialias", {{"samples", 9}}}},
+       "/effects/antialias/samples"},
+      {"antialias unknown parameter",
+       {{"antialias", {{"filter", "gauss"}}}},
+       "/effects/antialias/filter"},
   };
   for (const bad_effect& c : cases) {
     json d = valid_scene();
@@ -147,9 +179,15 @@ TEST(EffectParsing, EveryErrorNamesTheEffectOrParameterKey) {
 
 TEST(EffectParsing, DepthOfFieldNeedsALens) {
   json d = valid_scene();
-  d["projection"] = {{"type", "orthographic"}, {"left", -1}, {"right", 1}, {"bottom", -1}, {"top", 1},
-                     {"near", 1}, {"far", 9}};
-  d["effects"] = {{"depth_of_field", {{"focal_length", 0.05}, {"aperture", 0.1}, {"focus_distance", 5}}}};
+  d["projection"] = {{"type", "orthographic"},
+                     {"left", -1},
+                     {"right", 1},
+                     {"bottom", -1},
+                     {"top", 1},
+                     {"near", 1},
+                     {"far", 9}};
+  d["effects"] = {
+      {"depth_of_field", {{"focal_length", 0.05}, {"aperture", 0.1}, {"focus_distance", 5}}}};
   std::string message;
   EXPECT_EQ(error_key(d, &message), "/effects/depth_of_field");
   EXPECT_NE(message.find("perspective or frustum"), std::string::npos) << message;
@@ -166,18 +204,21 @@ TEST(EffectParsing, DefaultsAndGivenValues) {
   EXPECT_EQ(e.lighting.ambient, 0.2);
   EXPECT_TRUE(e.lighting.two_sided);
   EXPECT_EQ(e.fog.mode, fog_mode::linear);
-  EXPECT_EQ(e.fog.start, 1);    // near
-  EXPECT_EQ(e.fog.end, 100);    // far
+  EXPECT_EQ(e.fog.start, 1);                   // near
+  EXPECT_EQ(e.fog.end, 100);                   // far
   EXPECT_EQ(e.fog.color, (rgb8{10, 20, 30}));  // the background
   EXPECT_EQ(e.antialias.samples, 4);
 
-  d["effects"] = {{"fog", {{"mode", "exp"}}},
-                  {"depth_of_field", {{"focal_length", 0.05}, {"f_number", 2}, {"focus_distance", 5}}},
-                  {"lighting", {{"direction", {1, 2, 3}}, {"intensity", 0.5}, {"ambient", 0}, {"two_sided", false}}}};
+  d["effects"] = {
+      {"fog", {{"mode", "exp"}}},
+      {"depth_of_field", {{"focal_length", 0.05}, {"f_number", 2}, {"focus_distance", 5}}},
+      {"lighting",
+       {{"direction", {1, 2, 3}}, {"intensity", 0.5}, {"ambient", 0}, {"two_sided", false}}}};
   s = parse(d);
   EXPECT_EQ(s.effect_settings.fog.mode, fog_mode::exponential);
-  EXPECT_NEAR(s.effect_settings.fog.density * 100, std::log(255.0), 1e-12);  // 1/255 at the far plane
-  EXPECT_DOUBLE_EQ(s.effect_settings.depth_of_field.aperture, 0.025);        // f / N
+  EXPECT_NEAR(s.effect_settings.fog.density * 100, std::log(255.0),
+              1e-12);                                                  // 1/255 at the far plane
+  EXPECT_DOUBLE_EQ(s.effect_settings.depth_of_field.aperture, 0.025);  // f / N
   EXPECT_EQ(s.effect_settings.depth_of_field.samples, 32);
   EXPECT_EQ(s.effect_settings.lighting.direction.z, 3);
   EXPECT_FALSE(s.effect_settings.lighting.two_sided);
@@ -203,7 +244,8 @@ TEST(NoEffects, StageListContainsNoEffectStage) {
   ASSERT_TRUE(s.effects.empty());
   ASSERT_TRUE(s.curves.empty());
   for (output_kind out : {output_kind::png, output_kind::svg}) {
-    const std::vector<std::string> names = standard_pipeline(s.effects, out, !s.curves.empty()).names();
+    const std::vector<std::string> names =
+        standard_pipeline(s.effects, out, !s.curves.empty()).names();
     EXPECT_EQ(names, (std::vector<std::string>{"build", "order", "transform+clip",
                                                out == output_kind::png ? "raster" : "svg"}));
     for (const effect_description& e : effect_catalog())
@@ -219,10 +261,13 @@ TEST(NoEffects, StageListContainsNoEffectStage) {
 }
 
 TEST(NoEffects, RenderCommandRunsOnlyThePlainStages) {
-  const std::string out = (std::filesystem::temp_directory_path() / "exbsp_test_effects_plain.png").string();
+  const std::string out =
+      (std::filesystem::temp_directory_path() / "exbsp_test_effects_plain.png").string();
   std::ostringstream log;
   render_command({"", out, true}, log);  // the built-in demo names no effect
-  EXPECT_NE(log.str().find("stages: reject, build, order, transform+clip, raster, write\n"), std::string::npos) << log.str();
+  EXPECT_NE(log.str().find("stages: reject, build, order, transform+clip, raster, write\n"),
+            std::string::npos)
+      << log.str();
   for (const effect_description& e : effect_catalog())
     EXPECT_EQ(log.str().find("stage " + e.name), std::string::npos) << e.name;
   std::filesystem::remove(out);
@@ -231,7 +276,8 @@ TEST(NoEffects, RenderCommandRunsOnlyThePlainStages) {
 TEST(NoEffects, FrameProductsOfEffectsStayEmpty) {
   triangle_soup s;
   add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
-  frame f = perspective_frame(std::move(s), {{200, 10, 10}}, {{0, 0, 4}, {0, 0, 0}, {0, 1, 0}}, 32, 32);
+  frame f =
+      perspective_frame(std::move(s), {{200, 10, 10}}, {{0, 0, 4}, {0, 0, 0}, {0, 1, 0}}, 32, 32);
   run(f, {});
   EXPECT_TRUE(f.fragment_colors.empty());
   EXPECT_TRUE(f.lines.empty());
@@ -249,7 +295,8 @@ frame lit_square_frame(bool normal_up) {
     add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
   else
     add_quad(s, {-1, -1, 0}, {-1, 1, 0}, {1, 1, 0}, {1, -1, 0});
-  return perspective_frame(std::move(s), {{200, 100, 50}}, {{0, 0, 4}, {0, 0, 0}, {0, 1, 0}}, 40, 40);
+  return perspective_frame(std::move(s), {{200, 100, 50}}, {{0, 0, 4}, {0, 0, 0}, {0, 1, 0}}, 40,
+                           40);
 }
 
 TEST(Lighting, FaceTowardsTheLightGetsAmbientPlusIntensityAndAwayGetsAmbient) {
@@ -283,7 +330,8 @@ TEST(Lighting, TwoSidedFacesTheViewerAndOneSidedKeepsTheWinding) {
 }
 
 TEST(Lighting, ColoursClampAt255AndSplitPiecesShareTheirColour) {
-  EXPECT_EQ(lambert_color({200, 100, 0}, {0, 0, 1}, {{0, 0, 1}, 1.0, 0.5, true}), (rgb8{255, 150, 0}));
+  EXPECT_EQ(lambert_color({200, 100, 0}, {0, 0, 1}, {{0, 0, 1}, 1.0, 0.5, true}),
+            (rgb8{255, 150, 0}));
   // The cyclic planks force a split: every piece of a face gets the same colour.
   triangle_soup s;
   for (int i = 0; i < 3; ++i) {
@@ -291,16 +339,18 @@ TEST(Lighting, ColoursClampAt255AndSplitPiecesShareTheirColour) {
     const double cx = -0.75 * nx, cy = -0.75 * ny;
     std::vector<vec3d> v;
     for (auto [t, w] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}})
-      v.push_back({cx + 2.1 * t * ux + 0.3 * w * nx, cy + 2.1 * t * uy + 0.3 * w * ny, 0.25 * 2.1 * t});
+      v.push_back(
+          {cx + 2.1 * t * ux + 0.3 * w * nx, cy + 2.1 * t * uy + 0.3 * w * ny, 0.25 * 2.1 * t});
     add_quad(s, v[0], v[1], v[2], v[3]);
   }
-  frame f = perspective_frame(std::move(s), {{250, 0, 0}, {0, 250, 0}, {0, 0, 250}}, {{0.3, -2, 8}, {0, 0, 0}, {0, 1, 0}},
-                              100, 100);
+  frame f = perspective_frame(std::move(s), {{250, 0, 0}, {0, 250, 0}, {0, 0, 250}},
+                              {{0.3, -2, 8}, {0, 0, 0}, {0, 1, 0}}, 100, 100);
   f.settings.lighting = {{0.3, -0.2, 1}, 0.7, 0.2, true};
   run(f, {"lighting"});
   ASSERT_GT(f.tree->stats().splits, 0u);
   std::vector<std::set<std::tuple<int, int, int>>> by_face(3);
-  for (const screen_polygon& p : f.polygons) by_face[p.face].insert({p.color.r, p.color.g, p.color.b});
+  for (const screen_polygon& p : f.polygons)
+    by_face[p.face].insert({p.color.r, p.color.g, p.color.b});
   for (const auto& colours : by_face) EXPECT_EQ(colours.size(), 1u);
 }
 
@@ -311,8 +361,8 @@ TEST(Lighting, ColoursClampAt255AndSplitPiecesShareTheirColour) {
 frame floor_frame(double far_dist) {
   triangle_soup s;
   add_quad(s, {-20, -2, 0}, {20, -2, 0}, {20, 200, 0}, {-20, 200, 0});
-  return perspective_frame(std::move(s), {{40, 160, 40}}, {{0, -3, 1.5}, {0, 30, 0.2}, {0, 0, 1}}, 60, 80, 50, 0.5,
-                           far_dist);
+  return perspective_frame(std::move(s), {{40, 160, 40}}, {{0, -3, 1.5}, {0, 30, 0.2}, {0, 0, 1}},
+                           60, 80, 50, 0.5, far_dist);
 }
 
 TEST(Fog, FarPixelsApproachTheFogColourMonotonically) {
@@ -352,7 +402,8 @@ TEST(Fog, LinearFogEndingAtTheFarPlaneHidesTheFarPlanePop) {
   auto wall_at = [](double depth, bool fog) {
     triangle_soup s;
     add_quad(s, {-30, -30, -depth}, {30, -30, -depth}, {30, 30, -depth}, {-30, 30, -depth});
-    frame f = perspective_frame(std::move(s), {{40, 160, 40}}, {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, 60, 40, 50, 0.5, 30);
+    frame f = perspective_frame(std::move(s), {{40, 160, 40}}, {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}},
+                                60, 40, 50, 0.5, 30);
     f.background = {230, 235, 240};
     f.settings.fog = {fog_mode::linear, 2, 30, 1, f.background};
     run(f, fog ? std::vector<std::string>{"fog"} : std::vector<std::string>{});
@@ -427,14 +478,16 @@ TEST(Antialias, TwoTrianglesSharingAnEdgeShowNoSeam) {
           for (int l = 0; l < n; ++l) {
             const double x = i + (k + 0.5) / n, y = j + (l + 0.5) / n;
             bool in = true;
-            for (int e = 0; e < 4; ++e) in = in && orient2d(q[e].x, q[e].y, q[(e + 1) % 4].x, q[(e + 1) % 4].y, x, y) > 0;
+            for (int e = 0; e < 4; ++e)
+              in = in && orient2d(q[e].x, q[e].y, q[(e + 1) % 4].x, q[(e + 1) % 4].y, x, y) > 0;
             all = all && in;
             any = any || in;
           }
         const rgb8 c = f.picture.pixel(i, j);
         if (all) {
           ++interior;
-          ASSERT_EQ(c, blue) << "seam at pixel " << i << "," << j << " with " << n << "x" << n << " samples";
+          ASSERT_EQ(c, blue) << "seam at pixel " << i << "," << j << " with " << n << "x" << n
+                             << " samples";
         } else if (any) {
           ++edge;
           EXPECT_NE(c, blue);  // a blend with the background
@@ -463,7 +516,8 @@ TEST(Antialias, OneSampleIsThePlainRasterAndBoxDownsampleAverages) {
   hi.set_pixel(1, 1, {255, 3, 0});
   hi.set_pixel(3, 1, {100, 100, 100});
   const image lo = box_downsample(hi, 2);
-  EXPECT_EQ(lo.pixel(0, 0), (rgb8{128, 65, 64}));  // (255 + 255) / 4, (255 + 3) / 4, 255 / 4, rounded
+  EXPECT_EQ(lo.pixel(0, 0),
+            (rgb8{128, 65, 64}));  // (255 + 255) / 4, (255 + 3) / 4, 255 / 4, rounded
   EXPECT_EQ(lo.pixel(1, 0), (rgb8{25, 25, 25}));
   EXPECT_THROW(box_downsample(hi, 3), usage_error);
 }
@@ -478,7 +532,8 @@ int edge_width(double u, double aperture, double focus, int samples = 48) {
   triangle_soup s;
   const double e = 0.0137 * u;  // the edge lands between pixel centres
   add_quad(s, {-10 * u, -10 * u, -u}, {e, -10 * u, -u}, {e, 10 * u, -u}, {-10 * u, 10 * u, -u});
-  frame f = perspective_frame(std::move(s), {{220, 0, 0}}, {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, 120, 60, 40, 0.1, 1000);
+  frame f = perspective_frame(std::move(s), {{220, 0, 0}}, {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, 120,
+                              60, 40, 0.1, 1000);
   f.settings.depth_of_field = {0.05, aperture, focus, samples};
   run(f, aperture > 0 ? std::vector<std::string>{"depth_of_field"} : std::vector<std::string>{});
   int width = 0;
@@ -503,7 +558,8 @@ TEST(DepthOfField, InFocusPlaneStaysSharpAndOutOfFocusPlaneBlursWithAperture) {
       EXPECT_GT(w, previous) << "u " << u << " aperture " << aperture;
       previous = w;
       triangle_soup none;
-      frame f = perspective_frame(none, {}, {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, 120, 60, 40, 0.1, 1000);
+      frame f =
+          perspective_frame(none, {}, {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, 120, 60, 40, 0.1, 1000);
       const double c = circle_of_confusion_pixels({0.05, aperture, focus, 48}, f.view, u);
       EXPECT_NEAR(w, c, 0.15 * c + 2) << "u " << u << " aperture " << aperture;
     }
@@ -522,7 +578,8 @@ TEST(DepthOfField, ThinLensCircleOfConfusionAndTheShearedLensViews) {
   // From opposite rim points of the lens a point at depth u lands c_px apart, a point on the
   // focus plane at the same pixel.
   triangle_soup none;
-  frame f = perspective_frame(none, {}, {{1, 2, 3}, {1.5, 2.2, -5}, {0, 1, 0}}, 200, 150, 50, 0.2, 100);
+  frame f =
+      perspective_frame(none, {}, {{1, 2, 3}, {1.5, 2.2, -5}, {0, 1, 0}}, 200, 150, 50, 0.2, 100);
   const camera_basis b = look_at_basis(f.view.cam.eye, f.view.cam.look_at, f.view.cam.up);
   const depth_of_field_settings big{0.05, 0.4, 4.0, 32};
   const view_setup left = lens_view(f.view, {-0.2, 0}, big.focus_distance);
@@ -535,7 +592,8 @@ TEST(DepthOfField, ThinLensCircleOfConfusionAndTheShearedLensViews) {
   for (double u : {1.0, 4.0, 12.0}) {
     const point3 p = f.view.cam.eye + (u * gaze + 0.3 * b.u + 0.2 * b.v);
     const window_point l = window_of(left, p), r = window_of(right, p);
-    EXPECT_NEAR(std::hypot(l.x - r.x, l.y - r.y), circle_of_confusion_pixels(big, f.view, u), 1e-6) << u;
+    EXPECT_NEAR(std::hypot(l.x - r.x, l.y - r.y), circle_of_confusion_pixels(big, f.view, u), 1e-6)
+        << u;
   }
   // The lens samples: the centre first, all within the disk, spread around it.
   const std::vector<lens_offset> lens = lens_samples(32, 0.4);
@@ -554,7 +612,8 @@ TEST(DepthOfField, ReusesTheBspAndRestoresTheCentreView) {
   triangle_soup s;
   add_quad(s, {-1, -1, -5}, {1, -1, -5}, {1, 1, -5}, {-1, 1, -5});
   add_quad(s, {-3, -3, -12}, {3, -3, -12}, {3, 3, -12}, {-3, 3, -12});
-  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, 64, 48);
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
+                              {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, 64, 48);
   f.settings.depth_of_field = {0.05, 0.3, 5, 8};
   const view_setup centre = f.view;
   std::ostringstream log;
@@ -573,7 +632,8 @@ TEST(DepthOfField, ReusesTheBspAndRestoresTheCentreView) {
 TEST(SegmentClip, KeepsInsideCutsBehindTheEyeAndRejectsOutside) {
   hpoint a, b;
   double t0, t1;
-  ASSERT_TRUE(clip_segment_to_view_volume({0.1, 0.2, 0.3, 1}, {-0.5, 0.4, -0.2, 2}, a, b, &t0, &t1));
+  ASSERT_TRUE(
+      clip_segment_to_view_volume({0.1, 0.2, 0.3, 1}, {-0.5, 0.4, -0.2, 2}, a, b, &t0, &t1));
   EXPECT_EQ(t0, 0);
   EXPECT_EQ(t1, 1);
   EXPECT_EQ(a.x, 0.1);
@@ -595,7 +655,8 @@ TEST(SegmentClip, KeepsInsideCutsBehindTheEyeAndRejectsOutside) {
 TEST(LinePixels, ColumnCentreRuleOnePixelPerColumnNoGapsAtJoints) {
   std::vector<int> count(20 * 10, 0);
   auto add = [&](double x0, double y0, double x1, double y1) {
-    for_each_line_pixel(x0, y0, x1, y1, 1, 20, 10, [&](int i, int j, double) { ++count[j * 20 + i]; });
+    for_each_line_pixel(x0, y0, x1, y1, 1, 20, 10,
+                        [&](int i, int j, double) { ++count[j * 20 + i]; });
   };
   // Two segments of one polyline, x-major, sharing the vertex (7.5, 3.2) on a column centre.
   add(0.2, 1.1, 7.5, 3.2);
@@ -603,13 +664,16 @@ TEST(LinePixels, ColumnCentreRuleOnePixelPerColumnNoGapsAtJoints) {
   for (int i = 0; i < 20; ++i) {
     int in_column = 0;
     for (int j = 0; j < 10; ++j) in_column += count[j * 20 + i];
-    EXPECT_EQ(in_column, i <= 18 ? 1 : 0) << "column " << i;  // centres 0.5 .. 18.5 lie in [0.2, 18.9)
+    EXPECT_EQ(in_column, i <= 18 ? 1 : 0)
+        << "column " << i;  // centres 0.5 .. 18.5 lie in [0.2, 18.9)
   }
   // The pixel painted in column 7 contains the joint: floor(3.2) = row 3.
   EXPECT_EQ(count[3 * 20 + 7], 1);
   // Reversed direction: start included, end excluded.
   std::set<std::pair<int, int>> px;
-  for_each_line_pixel(9.5, 2.0, 2.5, 2.0, 1, 20, 10, [&](int i, int j, double) { px.insert({i, j}); });
+  for_each_line_pixel(9.5, 2.0, 2.5, 2.0, 1, 20, 10, [&](int i, int j, double) {
+    px.insert({i, j});
+  });
   EXPECT_EQ(px.size(), 7u);  // centres 9.5 down to 3.5
   EXPECT_TRUE(px.count({9, 2}));
   EXPECT_FALSE(px.count({2, 2}));
@@ -621,7 +685,8 @@ TEST(LinePixels, ColumnCentreRuleOnePixelPerColumnNoGapsAtJoints) {
   n = 0;
   for_each_line_pixel(3, 3, 3, 3, 1, 20, 10, [&](int, int, double) { ++n; });
   for_each_line_pixel(-50, -50, -10, -30, 1, 20, 10, [&](int, int, double) { ++n; });
-  for_each_line_pixel(0, 0, std::numeric_limits<double>::infinity(), 1, 1, 20, 10, [&](int, int, double) { ++n; });
+  for_each_line_pixel(0, 0, std::numeric_limits<double>::infinity(), 1, 1, 20, 10,
+                      [&](int, int, double) { ++n; });
   EXPECT_EQ(n, 0);
 }
 
@@ -666,16 +731,21 @@ image depth_oracle(const frame& f) {
     return {q.x, q.y};
   };
   for (const curve_spec& cs : f.curves) {
-    const flattened_curve poly = flatten(bezier_curve(cs.control_points), project, curve_tolerance_px);
+    const flattened_curve poly =
+        flatten(bezier_curve(cs.control_points), project, curve_tolerance_px);
     for (std::size_t s = 0; s + 1 < poly.points.size(); ++s) {
       hpoint a, b;
-      if (!clip_segment_to_view_volume(pm * to_point(poly.points[s]), pm * to_point(poly.points[s + 1]), a, b)) continue;
+      if (!clip_segment_to_view_volume(pm * to_point(poly.points[s]),
+                                       pm * to_point(poly.points[s + 1]), a, b))
+        continue;
       const window_point wa = to_window(f.view.vp, a.x / a.w, a.y / a.w, a.z / a.w);
       const window_point wb = to_window(f.view.vp, b.x / b.w, b.y / b.w, b.z / b.w);
       for_each_line_pixel(wa.x, wa.y, wb.x, wb.y, 1, w, h, [&](int i, int j, double t) {
         const std::size_t k = static_cast<std::size_t>(j) * w + i;
-        const double x = wa.x + t * (wb.x - wa.x), y = wa.y + t * (wb.y - wa.y), z = wa.z + t * (wb.z - wa.z);
-        if (depth[k] == std::numeric_limits<double>::infinity() || z < plane[k].at(x, y)) img.set_pixel(i, j, cs.color);
+        const double x = wa.x + t * (wb.x - wa.x), y = wa.y + t * (wb.y - wa.y),
+                     z = wa.z + t * (wb.z - wa.z);
+        if (depth[k] == std::numeric_limits<double>::infinity() || z < plane[k].at(x, y))
+          img.set_pixel(i, j, cs.color);
       });
     }
   }
@@ -686,12 +756,14 @@ image depth_oracle(const frame& f) {
 /// curve pierces; the black curve runs at y ~ 0: in front of A, behind B, through C.
 frame weaving_frame(int width, int height) {
   triangle_soup s;
-  add_quad(s, {-3, 2, -2}, {0.5, 2, -2}, {0.5, 2, 2}, {-3, 2, 2});        // A
-  add_quad(s, {0.9, -2, -2}, {3, -2, -2}, {3, -2, 2}, {0.9, -2, 2});      // B
-  add_quad(s, {-0.8, -0.4, -1.5}, {0.4, 0.2, -1.5}, {0.4, 0.2, 1.5}, {-0.8, -0.4, 1.5});  // C: y = x/2
+  add_quad(s, {-3, 2, -2}, {0.5, 2, -2}, {0.5, 2, 2}, {-3, 2, 2});    // A
+  add_quad(s, {0.9, -2, -2}, {3, -2, -2}, {3, -2, 2}, {0.9, -2, 2});  // B
+  add_quad(s, {-0.8, -0.4, -1.5}, {0.4, 0.2, -1.5}, {0.4, 0.2, 1.5},
+           {-0.8, -0.4, 1.5});  // C: y = x/2
   frame f = perspective_frame(std::move(s), {{220, 40, 40}, {40, 60, 220}, {40, 180, 60}},
                               {{0.4, -7, 1.8}, {0, 0, 0}, {0, 0, 1}}, width, height, 50, 0.5, 50);
-  f.curves.push_back({{{-3.2, 0.1, 0.6}, {-1, -0.7, -1.4}, {1, 0.8, 1.2}, {3.3, -0.1, -0.5}}, {0, 0, 0}});
+  f.curves.push_back(
+      {{{-3.2, 0.1, 0.6}, {-1, -0.7, -1.4}, {1, 0.8, 1.2}, {3.3, -0.1, -0.5}}, {0, 0, 0}});
   f.curves.push_back({{{-2.5, 0.3, -1.2}, {0, -0.3, 2.6}, {2.6, 0.3, -1.0}}, {250, 200, 0}});
   return f;
 }
@@ -758,12 +830,14 @@ TEST(CurveDepth, SvgPlacesTheCurveBetweenTheFacesBehindAndInFrontOfIt) {
   triangle_soup s;
   add_quad(s, {-2, 2, -1}, {2, 2, -1}, {2, 2, 1}, {-2, 2, 1});      // face 0 behind the curve
   add_quad(s, {-1, -2, -2}, {1, -2, -2}, {1, -2, 2}, {-1, -2, 2});  // face 1 in front of it
-  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, -8, 0.5}, {0, 0, 0}, {0, 0, 1}}, 120, 90);
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
+                              {{0, -8, 0.5}, {0, 0, 0}, {0, 0, 1}}, 120, 90);
   f.curves.push_back({{{-3, 0, 0}, {0, 0.5, 1}, {3, 0, 0}}, {0, 0, 0}});
   f.vector.mode = vector_options::mode_kind::painter;  // the painter's stack keeps every fragment
   run(f, {}, output_kind::svg);
   std::vector<std::string> sequence;  // "face0", "face1", "curve", in document order
-  for (std::size_t at = f.svg.find("data-"); at != std::string::npos; at = f.svg.find("data-", at + 1)) {
+  for (std::size_t at = f.svg.find("data-"); at != std::string::npos;
+       at = f.svg.find("data-", at + 1)) {
     if (f.svg.compare(at, 12, "data-curve=\"") == 0) {
       sequence.push_back("curve");
     } else if (f.svg.compare(at, 15, "data-fragment=\"") == 0) {
@@ -774,8 +848,9 @@ TEST(CurveDepth, SvgPlacesTheCurveBetweenTheFacesBehindAndInFrontOfIt) {
   ASSERT_FALSE(sequence.empty());
   const auto first_curve = std::find(sequence.begin(), sequence.end(), "curve");
   ASSERT_NE(first_curve, sequence.end());
-  EXPECT_EQ(std::find(first_curve, sequence.end(), "face0"), sequence.end());  // all of face 0 before
-  EXPECT_EQ(std::find(sequence.begin(), first_curve, "face1"), first_curve);   // all of face 1 after
+  EXPECT_EQ(std::find(first_curve, sequence.end(), "face0"),
+            sequence.end());  // all of face 0 before
+  EXPECT_EQ(std::find(sequence.begin(), first_curve, "face1"), first_curve);  // all of face 1 after
   // One polyline path: the pieces of the curve in that slot are joined.
   EXPECT_EQ(std::count(sequence.begin(), sequence.end(), "curve"), 1);
   EXPECT_NE(f.svg.find("fill=\"none\" stroke=\"#000000\" stroke-width=\"1\""), std::string::npos);
@@ -785,7 +860,8 @@ TEST(CurveDepth, ACurveDrawnOnAFaceIsDrawnOverIt) {
   triangle_soup s;
   add_quad(s, {-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0});
   for (double eye_z : {6.0, -6.0}) {  // from the front and from behind
-    frame f = perspective_frame(s, {{200, 200, 200}}, {{0.2, -0.3, eye_z}, {0, 0, 0}, {0, 1, 0}}, 100, 100);
+    frame f = perspective_frame(s, {{200, 200, 200}}, {{0.2, -0.3, eye_z}, {0, 0, 0}, {0, 1, 0}},
+                                100, 100);
     f.curves.push_back({{{-1.5, -1, 0}, {0, 3, 0}, {1.5, -1, 0}}, {0, 0, 0}});
     run(f, {});
     frame bare = perspective_frame(triangle_soup{}, {}, f.view.cam, 100, 100);
@@ -800,7 +876,8 @@ TEST(CurveDepth, ACurveDrawnOnAFaceIsDrawnOverIt) {
 TEST(CurveDepth, PointsBehindTheEyeAreClippedBeforeTheDivide) {
   triangle_soup s;
   add_quad(s, {-2, -2, -10}, {2, -2, -10}, {2, 2, -10}, {-2, 2, -10});
-  frame f = perspective_frame(std::move(s), {{200, 200, 200}}, {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, 80, 60, 60, 0.5, 50);
+  frame f = perspective_frame(std::move(s), {{200, 200, 200}}, {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}},
+                              80, 60, 60, 0.5, 50);
   // From far behind the eye, past its side, to far in front; and one curve entirely behind.
   f.curves.push_back({{{0.5, 0.2, 30}, {3, -1, 0.1}, {-4, 1, -0.2}, {-0.5, -0.4, -20}}, {0, 0, 0}});
   f.curves.push_back({{{0, 0, 1}, {1, 1, 5}, {-1, 2, 3}}, {255, 0, 0}});
@@ -825,8 +902,10 @@ TEST(CurveDepth, PointsBehindTheEyeAreClippedBeforeTheDivide) {
 }
 
 TEST(CurveDepth, CurvesWorkWithEveryEffectAndCullingShiftsTheirSlots) {
-  for (const std::vector<std::string>& effects :
-       {std::vector<std::string>{"backface_culling"}, {"lighting", "fog"}, {"antialias"}, {"depth_of_field"}}) {
+  for (const std::vector<std::string>& effects : {std::vector<std::string>{"backface_culling"},
+                                                  {"lighting", "fog"},
+                                                  {"antialias"},
+                                                  {"depth_of_field"}}) {
     frame f = weaving_frame(120, 90);
     f.settings.depth_of_field = {0.05, 0.1, 7, 4};
     f.settings.fog = {fog_mode::linear, 5, 12, 1, {255, 255, 255}};
@@ -842,7 +921,8 @@ TEST(CurveDepth, CurvesWorkWithEveryEffectAndCullingShiftsTheirSlots) {
 /// Pixels of colour c in f's picture and in the picture of its curves alone.
 std::pair<int, int> drawn_and_bare(frame& f, rgb8 c) {
   run(f, {});
-  frame bare = perspective_frame(triangle_soup{}, {}, f.view.cam, f.view.vp.width, f.view.vp.height);
+  frame bare =
+      perspective_frame(triangle_soup{}, {}, f.view.cam, f.view.vp.width, f.view.vp.height);
   bare.view = f.view;
   bare.curves = f.curves;
   run(bare, {});
@@ -853,7 +933,8 @@ TEST(CurveDepth, ACurveEndExactlyOnAFacePlaneGoesWithItsOtherEnd) {
   triangle_soup s;
   add_quad(s, {-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0});
   for (double eye_z : {6.0, -6.0}) {
-    frame f = perspective_frame(s, {{200, 200, 200}}, {{0.2, -0.3, eye_z}, {0, 0, 0}, {0, 1, 0}}, 100, 100);
+    frame f = perspective_frame(s, {{200, 200, 200}}, {{0.2, -0.3, eye_z}, {0, 0, 0}, {0, 1, 0}},
+                                100, 100);
     // Rises from a point of the face (exactly on its plane) to z = 1.5, and a curve touching
     // the plane at t = 1/2 only (control points z = 1, -1, 1: B(1/2) has z = 0 exactly).
     f.curves.push_back({{{-1.5, -1, 0}, {0, 0, 1}, {1.5, 1, 1.5}}, {0, 0, 0}});
@@ -876,9 +957,11 @@ TEST(CurveDepth, ALineLyingInAFacePlaneIsDrawnOverItFromBothSides) {
   triangle_soup s;
   add_quad(s, {-2, -2, -2}, {2, -2, -2}, {2, 2, 2}, {-2, 2, 2});  // the plane z = y
   for (double side : {1.0, -1.0}) {
-    frame f = perspective_frame(s, {{200, 200, 200}}, {{0.3, -5 * side, 5 * side}, {0, 0, 0}, {0, 0, 1}}, 100, 100);
+    frame f = perspective_frame(s, {{200, 200, 200}},
+                                {{0.3, -5 * side, 5 * side}, {0, 0, 0}, {0, 0, 1}}, 100, 100);
     curve_spec line;
-    line.control_points = {{-1.3, 0.7, 0.7}, {1.1, -0.3, -0.3}, {0.9, 1.7, 1.7}, {-1.9, -1.1, -1.1}};
+    line.control_points = {
+        {-1.3, 0.7, 0.7}, {1.1, -0.3, -0.3}, {0.9, 1.7, 1.7}, {-1.9, -1.1, -1.1}};
     line.polyline = true;
     f.curves.push_back(line);
     const auto [drawn, bare] = drawn_and_bare(f, {0, 0, 0});
@@ -896,8 +979,9 @@ TEST(CurveDepth, ACurveInTheTiltedPlaneOfAFaceIsDrawnOverItDespiteRounding) {
   s.vertices = {p0, p1, p2};
   s.add_polygon({0, 1, 2}, 0);
   for (double side : {1.0, -1.0}) {
-    frame f = perspective_frame(s, {{200, 200, 200}}, {{0.4 * side, -0.5 * side, 6 * side}, {0, 0.4, 0}, {0, 1, 0}},
-                                120, 120);
+    frame f =
+        perspective_frame(s, {{200, 200, 200}},
+                          {{0.4 * side, -0.5 * side, 6 * side}, {0, 0.4, 0}, {0, 1, 0}}, 120, 120);
     f.curves.push_back({{p0, p1, p2}, {0, 0, 0}});
     const auto [drawn, bare] = drawn_and_bare(f, {0, 0, 0});
     EXPECT_GT(bare, 60);
@@ -907,12 +991,14 @@ TEST(CurveDepth, ACurveInTheTiltedPlaneOfAFaceIsDrawnOverItDespiteRounding) {
 
 /// The cell of point p (sides clamped into [lo, hi] per node as the depth rule does for a
 /// piece of a curve with those hull signs), or {-1, 0} when p lies on a node plane.
-std::pair<std::int32_t, int> cell_of(const bsp& tree, const vec3d& p, const std::vector<vec3d>& hull) {
+std::pair<std::int32_t, int> cell_of(const bsp& tree, const vec3d& p,
+                                     const std::vector<vec3d>& hull) {
   std::int32_t at = 0;
   for (;;) {
     const bsp_node n = tree.node(static_cast<std::size_t>(at));
     int lo = 1, hi = -1;
-    for (const vec3d& h : hull) lo = std::min(lo, side_of_plane(n, h)), hi = std::max(hi, side_of_plane(n, h));
+    for (const vec3d& h : hull)
+      lo = std::min(lo, side_of_plane(n, h)), hi = std::max(hi, side_of_plane(n, h));
     const int s = std::min(hi, std::max(lo, side_of_plane(n, p)));
     if (s == 0) return {-1, 0};
     const std::int32_t next = s > 0 ? n.positive : n.negative;
@@ -926,7 +1012,8 @@ TEST(CurveDepth, EveryPieceIsDrawnAtThePositionOfTheCellHoldingIt) {
   // the chord pushing of place_chord: same cell, same position in the painter's sequence.
   std::vector<frame> frames;
   for (const char* name : {"curves", "lines"}) {
-    const scene::scene sc = scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
+    const scene::scene sc =
+        scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
     scene::scene_geometry g = scene::load_geometry(sc);
     frame f;
     f.view = scene::make_view_setup(sc);
@@ -948,11 +1035,13 @@ TEST(CurveDepth, EveryPieceIsDrawnAtThePositionOfTheCellHoldingIt) {
     ASSERT_GT(placed.pieces.size(), 10u);
     std::size_t checked = 0;
     for (const curve_piece& piece : placed.pieces) {
-      const vec3d m{0.5 * (piece.a[0] + piece.b[0]), 0.5 * (piece.a[1] + piece.b[1]), 0.5 * (piece.a[2] + piece.b[2])};
+      const vec3d m{0.5 * (piece.a[0] + piece.b[0]), 0.5 * (piece.a[1] + piece.b[1]),
+                    0.5 * (piece.a[2] + piece.b[2])};
       const curve_spec& c = f.curves[piece.curve];
-      const std::vector<vec3d> hull = c.polyline ? std::vector<vec3d>{c.control_points[piece.segment],
-                                                                      c.control_points[piece.segment + 1]}
-                                                 : c.control_points;
+      const std::vector<vec3d> hull = c.polyline
+                                          ? std::vector<vec3d>{c.control_points[piece.segment],
+                                                               c.control_points[piece.segment + 1]}
+                                          : c.control_points;
       const auto [node, side] = cell_of(*f.tree, m, hull);
       if (node < 0) continue;  // on a plane: the eye's side decides (ACurveDrawnOnAFace...)
       ++checked;

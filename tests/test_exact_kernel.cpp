@@ -20,7 +20,6 @@ using namespace exbsp_test;
 using exbsp::exact_geometry;
 using exbsp::vec3d;
 
-
 /// The geometry of `soup` with every triangle added as a source; fragments[i] for triangle i.
 struct geometry_fixture {
   explicit geometry_fixture(const exbsp::triangle_soup& s) : soup(s), geom(soup) {
@@ -31,8 +30,10 @@ struct geometry_fixture {
     }
   }
   /// Splits fragment `f` by the plane of source `plane` (it must straddle it).
-  std::vector<exact_geometry::fragment> split(const exact_geometry::fragment& f, std::uint32_t plane) {
-    const std::array<int, 3> s{geom.sign(plane, f, 0), geom.sign(plane, f, 1), geom.sign(plane, f, 2)};
+  std::vector<exact_geometry::fragment> split(const exact_geometry::fragment& f,
+                                              std::uint32_t plane) {
+    const std::array<int, 3> s{geom.sign(plane, f, 0), geom.sign(plane, f, 1),
+                               geom.sign(plane, f, 2)};
     EXPECT_EQ(exbsp::classify_signs(s), exbsp::classification::straddling);
     const exbsp::split_pattern pat = exbsp::make_split_pattern(s);
     std::array<exact_geometry::fragment, 3> out;
@@ -159,14 +160,15 @@ TEST(ExactKernel, shared_split_points_are_made_once) {
   for (const auto& f : a) ids_a.insert(f.v.begin(), f.v.end());
   for (const auto& f : b) ids_b.insert(f.v.begin(), f.v.end());
   std::vector<std::uint32_t> common;
-  std::set_intersection(ids_a.begin(), ids_a.end(), ids_b.begin(), ids_b.end(), std::back_inserter(common));
+  std::set_intersection(ids_a.begin(), ids_a.end(), ids_b.begin(), ids_b.end(),
+                        std::back_inserter(common));
   EXPECT_EQ(common.size(), 3u);  // the two shared vertices and the one shared split point
 }
 
 // --- exact = gmpq = epeck --------------------------------------------------------------------
 
-void expect_exact_equals(exbsp::kernel_id other, const exbsp::triangle_soup& soup, const std::string& h,
-                         std::uint64_t seed, const std::string& what) {
+void expect_exact_equals(exbsp::kernel_id other, const exbsp::triangle_soup& soup,
+                         const std::string& h, std::uint64_t seed, const std::string& what) {
   exbsp::build_options a, b;
   a.heuristic = b.heuristic = h;
   a.seed = b.seed = seed;
@@ -184,15 +186,17 @@ void expect_exact_equals(exbsp::kernel_id other, const exbsp::triangle_soup& sou
     const std::size_t from = begin == std::string::npos ? 0 : begin + 1;
     return s.substr(from, std::min<std::size_t>(400, s.find('\n', from) - from));
   };
-  const std::string message = what + " / exact vs " + exbsp::to_string(other) + " / " + h + ": line " +
-                              std::to_string(line) + "\n exact: " + line_of(x) + "\n other: " + line_of(y);
+  const std::string message = what + " / exact vs " + exbsp::to_string(other) + " / " + h +
+                              ": line " + std::to_string(line) + "\n exact: " + line_of(x) +
+                              "\n other: " + line_of(y);
   ADD_FAILURE() << message;
   RC_FAIL(message);
 }
 
 RC_GTEST_PROP(ExactKernel, equals_gmpq_and_epeck_on_every_generator_and_heuristic, ()) {
-  const soup_case c = *rc::gen::oneOf(any_small_soup(), coplanar_stack(), vertex_on_plane(), near_coplanar(),
-                                      scale_disparity(), slivers(), mesh_like(), cyclic_sticks());
+  const soup_case c =
+      *rc::gen::oneOf(any_small_soup(), coplanar_stack(), vertex_on_plane(), near_coplanar(),
+                      scale_disparity(), slivers(), mesh_like(), cyclic_sticks());
   const exbsp::triangle_soup soup = c.soup();
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
   for (const std::string& h : exbsp::heuristic_names()) {
@@ -207,23 +211,24 @@ TEST(ExactKernel, equals_epeck_on_cad_subsets) {
   EXPECT_TRUE(rc::check("exact equals epeck on CAD subsets", [&] {
     const soup_case c = *cad_subset(files, 150);
     const auto seed = *rc::gen::arbitrary<std::uint64_t>();
-    expect_exact_equals(exbsp::kernel_id::epeck, c.soup(), *rc::gen::elementOf(exbsp::heuristic_names()), seed,
-                        c.kind);
+    expect_exact_equals(exbsp::kernel_id::epeck, c.soup(),
+                        *rc::gen::elementOf(exbsp::heuristic_names()), seed, c.kind);
   }));
 }
 
 TEST(ExactKernel, equals_epeck_and_gmpq_on_corpus_meshes) {
   // Every small corpus mesh against gmpq, larger ones against epeck (gmpq takes minutes).
   std::string missing;
-  for (const char* name : {"cube.off", "tetrahedron.off", "cross.off", "pyramid.off", "joint.off", "elephant.off",
-                           "fandisk.off", "cheese.off", "blade.off"}) {
+  for (const char* name : {"cube.off", "tetrahedron.off", "cross.off", "pyramid.off", "joint.off",
+                           "elephant.off", "fandisk.off", "cheese.off", "blade.off"}) {
     const soup_case* mesh = cad_mesh(name);
     if (!mesh) {
       missing += std::string(" data/meshes/") + name;
       continue;
     }
     const exbsp::triangle_soup soup = mesh->soup();
-    if (soup.triangles.size() <= 3000) expect_exact_equals(exbsp::kernel_id::gmpq, soup, "sampled", 0, name);
+    if (soup.triangles.size() <= 3000)
+      expect_exact_equals(exbsp::kernel_id::gmpq, soup, "sampled", 0, name);
     expect_exact_equals(exbsp::kernel_id::epeck, soup, "sampled", 0, name);
   }
   EXBSP_NEED_CORPUS(missing.empty(), missing);

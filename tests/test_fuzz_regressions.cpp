@@ -13,7 +13,8 @@ namespace {
 using exbsp_test::read_file;
 
 TEST(FuzzRegressions, scene_findings_are_scene_errors_naming_the_file) {
-  const std::filesystem::path dir = std::filesystem::path(EXBSP_SOURCE_DIR) / "tests/fuzz/crashes/fuzz_scene";
+  const std::filesystem::path dir =
+      std::filesystem::path(EXBSP_SOURCE_DIR) / "tests/fuzz/crashes/fuzz_scene";
   std::size_t checked = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() != ".json") continue;

@@ -1,8 +1,8 @@
 // The pluggable heuristic (heuristic "custom", build_options::score): a callback that
 // reproduces min-split or sampled gives exactly their tree; the same tree for every exact
 // kernel and every thread count; what the callback sees; errors and exceptions propagate.
-// Notation: "observable" (support/observable.h) is everything a user can see of a tree as one string;
-// its first line ends with the heuristic's name, which same_tree ignores.
+// Notation: "observable" (support/observable.h) is everything a user can see of a tree as one
+// string; its first line ends with the heuristic's name, which same_tree ignores.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 

@@ -70,13 +70,16 @@ const std::string triangle_off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 std::string scene_with(const std::string& mesh_entry, const std::string& extra = "") {
   return "{\"meshes\": [" + mesh_entry +
          "],\n \"camera\": {\"eye\": [3,3,3], \"look_at\": [0,0,0], \"up\": [0,0,1]},\n"
-         " \"projection\": {\"type\": \"perspective\", \"fovy_deg\": 40, \"near\": 1, \"far\": 100},\n"
+         " \"projection\": {\"type\": \"perspective\", \"fovy_deg\": 40, \"near\": 1, \"far\": "
+         "100},\n"
          " \"viewport\": {\"width\": 32, \"height\": 24}" +
          extra + "}\n";
 }
 
 /// The two-layer grid of k + k sticks (support/inputs.h): the naive heuristic grows as k^3.
-std::string sticks_off(int k) { return exbsp_test::off_text(exbsp_test::make_sticks(static_cast<std::size_t>(k))); }
+std::string sticks_off(int k) {
+  return exbsp_test::off_text(exbsp_test::make_sticks(static_cast<std::size_t>(k)));
+}
 
 /// Fixture: a fresh temporary directory per test; the CLI runs inside it.
 class Hostile : public exbsp_test::cli_fixture {};
@@ -91,7 +94,8 @@ TEST(JsonNesting, empty_and_flat_texts_pass) {
 
 TEST(JsonNesting, the_limit_itself_passes_one_more_level_fails_naming_the_line) {
   const std::size_t limit = exbsp::max_json_depth;
-  EXPECT_NO_THROW(exbsp::check_json_nesting(std::string(limit, '[') + std::string(limit, ']'), "x.json"));
+  EXPECT_NO_THROW(
+      exbsp::check_json_nesting(std::string(limit, '[') + std::string(limit, ']'), "x.json"));
   const std::string deep = "{\"a\":\n" + std::string(limit, '[') + std::string(limit, ']') + "}";
   try {
     exbsp::check_json_nesting(deep, "x.json");
@@ -105,7 +109,8 @@ TEST(JsonNesting, the_limit_itself_passes_one_more_level_fails_naming_the_line) 
 }
 
 TEST(JsonNesting, brackets_inside_strings_do_not_count) {
-  const std::string s = "{\"k\": \"" + std::string(1000, '[') + "\\\"" + std::string(1000, '{') + "\"}";
+  const std::string s =
+      "{\"k\": \"" + std::string(1000, '[') + "\\\"" + std::string(1000, '{') + "\"}";
   EXPECT_NO_THROW(exbsp::check_json_nesting(s, "x.json"));
 }
 
@@ -114,10 +119,12 @@ TEST(JsonNesting, a_scene_nested_100000_deep_under_an_effect_is_an_error_not_a_c
   for (int i = 0; i < 100000; ++i) deep += "{\"a\":";
   deep += "1";
   deep += std::string(100000, '}');
-  const std::string text = scene_with("{\"file\": \"t.off\"}", ",\n \"effects\": {\"fog\": {\"color\": " + deep + "}}");
+  const std::string text =
+      scene_with("{\"file\": \"t.off\"}", ",\n \"effects\": {\"fog\": {\"color\": " + deep + "}}");
   EXPECT_THROW(exbsp::scene::parse_scene_text(text, "deep.json"), input_error);
   std::string arrays = std::string(100000, '[') + std::string(100000, ']');
-  EXPECT_THROW(exbsp::scene::parse_scene_text(scene_with("{\"file\": \"t.off\"}", ",\n \"x\": " + arrays), "deep.json"),
+  EXPECT_THROW(exbsp::scene::parse_scene_text(
+                   scene_with("{\"file\": \"t.off\"}", ",\n \"x\": " + arrays), "deep.json"),
                input_error);
 }
 
@@ -126,7 +133,8 @@ TEST_F(Hostile, render_of_a_deeply_nested_scene_exits_2_naming_the_file_and_writ
   std::string deep;
   for (int i = 0; i < 100000; ++i) deep += "{\"a\":";
   deep += "1" + std::string(100000, '}');
-  write_file(dir / "deep.json", scene_with("{\"file\": \"t.off\"}", ",\n \"effects\": {\"lighting\": " + deep + "}"));
+  write_file(dir / "deep.json",
+             scene_with("{\"file\": \"t.off\"}", ",\n \"effects\": {\"lighting\": " + deep + "}"));
   const result r = run("render deep.json -o out.png");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_TRUE(contains(r.err, "deep.json:5: JSON nested too deeply")) << r.err;
@@ -134,8 +142,9 @@ TEST_F(Hostile, render_of_a_deeply_nested_scene_exits_2_naming_the_file_and_writ
 }
 
 TEST_F(Hostile, clip_input_nesting_and_special_files_exit_2_naming_the_file) {
-  std::string deep = "{\"region\": {\"rect\": [0, 0, 1, 1]},\n \"segments\": " + std::string(100000, '[') +
-                     std::string(100000, ']') + "}";
+  std::string deep =
+      "{\"region\": {\"rect\": [0, 0, 1, 1]},\n \"segments\": " + std::string(100000, '[') +
+      std::string(100000, ']') + "}";
   write_file(dir / "deep.json", deep);
   const result r = run("clip deep.json -o out.json");
   EXPECT_EQ(r.status, 2) << r.err;
@@ -158,7 +167,8 @@ TEST_F(Hostile, writer_refuses_an_empty_name_and_a_directory) {
   } catch (const output_error& e) {
     EXPECT_EQ(e.file(), (dir / "d").string());
   }
-  EXPECT_THROW(exbsp::write_file_atomically((dir / "missing" / "x.json").string(), "x"), output_error);
+  EXPECT_THROW(exbsp::write_file_atomically((dir / "missing" / "x.json").string(), "x"),
+               output_error);
   EXPECT_EQ(file_names(), std::vector<std::string>{"d"});
   EXPECT_EQ(exbsp::pending_temporary_files(), 0);
 }
@@ -186,7 +196,8 @@ TEST_F(Hostile, writer_keeps_a_symlinked_target_a_symlink_and_writes_through_it)
 }
 
 TEST_F(Hostile, writer_writes_devices_in_place) {
-  struct stat before {}, after {};
+  struct stat before {
+  }, after{};
   ASSERT_EQ(::stat("/dev/null", &before), 0);
   exbsp::write_file_atomically("/dev/null", "discarded");
   ASSERT_EQ(::stat("/dev/null", &after), 0);
@@ -276,7 +287,9 @@ TEST(GmpMemory, an_allocation_failure_throws_bad_alloc) {
   ASSERT_GE(child, 0);
   if (child == 0) {
     exbsp::install_gmp_memory_functions();
-    struct rlimit cap {std::size_t{512} << 20, std::size_t{512} << 20};
+    struct rlimit cap {
+      std::size_t{512} << 20, std::size_t{512} << 20
+    };
     ::setrlimit(RLIMIT_AS, &cap);
     int code = 1;
     try {
@@ -290,7 +303,8 @@ TEST(GmpMemory, an_allocation_failure_throws_bad_alloc) {
   }
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal "
+                                 << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
   EXPECT_EQ(WEXITSTATUS(status), 42);
 }
 
@@ -298,12 +312,15 @@ class MemoryCap : public Hostile, public ::testing::WithParamInterface<const cha
 
 TEST_P(MemoryCap, order_under_an_address_space_cap_exits_3_without_output) {
   if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
-  if (std::system("command -v prlimit >/dev/null 2>&1") != 0) GTEST_SKIP() << "prlimit (util-linux) not installed";
+  if (std::system("command -v prlimit >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "prlimit (util-linux) not installed";
   write_file(dir / "sticks.off", sticks_off(96));
   const std::string kernel = GetParam();
-  const std::string args = "order sticks.off --direction 0.3,0.2,-1 --heuristic naive --threads 2 --kernel " + kernel;
+  const std::string args =
+      "order sticks.off --direction 0.3,0.2,-1 --heuristic naive --threads 2 --kernel " + kernel;
   // No fragment limit: the build runs into the cap (std::bad_alloc, also from GMP).
-  const result r = run(args + " --max-fragments 0 -o out.json", "prlimit --as=" + std::to_string(200 << 20));
+  const result r =
+      run(args + " --max-fragments 0 -o out.json", "prlimit --as=" + std::to_string(200 << 20));
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_TRUE(contains(r.err, "out of memory")) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out.json"));
@@ -322,18 +339,22 @@ INSTANTIATE_TEST_SUITE_P(Kernels, MemoryCap, ::testing::Values("exact", "epeck",
 // or libgomp could not allocate its team and exited 1; both at caps of 150-200 MB.
 TEST_F(Hostile, a_large_soup_under_an_address_space_cap_exits_3_never_aborts) {
   if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
-  if (std::system("command -v prlimit >/dev/null 2>&1") != 0) GTEST_SKIP() << "prlimit (util-linux) not installed";
+  if (std::system("command -v prlimit >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "prlimit (util-linux) not installed";
   write_file(dir / "soup.off", exbsp_test::off_text(exbsp_test::make_random_soup(100000, 12345)));
   // Caps well below the build's peak: the exact kernel needs about 160 MB here (epeck 950 MB),
   // so 200 MB would let it finish.
   // Epeck at 100 MB is left out: there libgomp fails to create a thread of the root's
   // parallel side tests ("Thread creation failed", exit 1) although the pool was started in
   // main; found 2026-11-23, not yet understood (see the stop note). 120 and 150 MB exit 3.
-  const std::vector<std::pair<const char*, std::vector<int>>> caps{{"exact", {100, 120}}, {"epeck", {120, 150}}};
+  const std::vector<std::pair<const char*, std::vector<int>>> caps{{"exact", {100, 120}},
+                                                                   {"epeck", {120, 150}}};
   for (const auto& [kernel, kernel_caps] : caps)
     for (int cap_mb : kernel_caps) {
-      const result r = run(std::string("build soup.off --heuristic naive --threads 2 --max-fragments 0 --kernel ") + kernel,
-                           "prlimit --as=" + std::to_string(cap_mb << 20));
+      const result r = run(
+          std::string("build soup.off --heuristic naive --threads 2 --max-fragments 0 --kernel ") +
+              kernel,
+          "prlimit --as=" + std::to_string(cap_mb << 20));
       EXPECT_EQ(r.status, 3) << kernel << ", " << cap_mb << " MB: " << r.err;
       EXPECT_TRUE(contains(r.err, "out of memory")) << r.err;
     }
@@ -347,7 +368,8 @@ TEST_F(Hostile, the_default_fragment_budget_is_shown_and_can_be_lifted) {
   write_file(dir / "sticks.off", sticks_off(6));
   const result small = run("build sticks.off --heuristic naive --max-fragments 30");
   EXPECT_EQ(small.status, 3);
-  EXPECT_TRUE(contains(small.err, "raise it with --max-fragments N, or 0 for no limit")) << small.err;
+  EXPECT_TRUE(contains(small.err, "raise it with --max-fragments N, or 0 for no limit"))
+      << small.err;
   EXPECT_EQ(run("build sticks.off --heuristic naive --max-fragments 0").status, 0);
 }
 
@@ -362,7 +384,8 @@ TEST_F(Hostile, absurd_thread_counts_exit_2_and_absurd_omp_num_threads_is_ignore
   }
   EXPECT_EQ(run("build t.off --threads 1").status, 0);
   for (const char* env : {"100000", "0", "garbage", "4294967297"}) {
-    const result r = run("build t.off --heuristic min-split", std::string("OMP_NUM_THREADS=") + env);
+    const result r =
+        run("build t.off --heuristic min-split", std::string("OMP_NUM_THREADS=") + env);
     EXPECT_EQ(r.status, 0) << env << ": " << r.err;
     EXPECT_TRUE(contains(r.err, "OMP_NUM_THREADS")) << r.err;
   }
@@ -387,18 +410,23 @@ TEST_F(Hostile, special_files_are_refused_naming_the_file_without_reading_or_wai
   const result s = run("render f.json -o out.png", "timeout 60");
   EXPECT_EQ(s.status, 2) << s.err;
   EXPECT_TRUE(contains(s.err, "f.json: cannot read a FIFO")) << s.err;
-  EXPECT_THROW(exbsp::read_mesh("/dev/zero.off"), input_error);  // no such file: still an input_error
+  EXPECT_THROW(exbsp::read_mesh("/dev/zero.off"),
+               input_error);  // no such file: still an input_error
 }
 
 // ---- 7. PLY headers are read in linear time ------------------------------------------------
 
 TEST(PlyHeader, two_hundred_thousand_property_and_element_lines_are_read_correctly) {
-  std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+      "z\n";
   ply += "element face 1\nproperty list uchar int vertex_indices\nelement extra 0\n";
   for (int i = 0; i < 200000; ++i) ply += "property float p" + std::to_string(i) + "\n";
-  for (int i = 0; i < 100000; ++i) ply += "element empty" + std::to_string(i) + " 0\nproperty int a\n";
+  for (int i = 0; i < 100000; ++i)
+    ply += "element empty" + std::to_string(i) + " 0\nproperty int a\n";
   const std::string body = "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-  const exbsp::triangle_soup soup = exbsp::read_mesh_data(ply + body, exbsp::mesh_format::ply, "big.ply");
+  const exbsp::triangle_soup soup =
+      exbsp::read_mesh_data(ply + body, exbsp::mesh_format::ply, "big.ply");
   EXPECT_EQ(soup.triangles.size(), 1u);
   EXPECT_EQ(soup.vertices.size(), 3u);
   // The duplicate checks still work at the end of such a header.
@@ -423,7 +451,8 @@ TEST(PlyHeader, two_hundred_thousand_property_and_element_lines_are_read_correct
 
 TEST_F(Hostile, a_transform_scaled_by_1e308_names_the_scene_file_and_key) {
   write_file(dir / "t.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n1 1 1\n3 0 1 2\n");
-  const std::string huge = "{\"file\": \"t.off\", \"transform\": [1e308,0,0,0, 0,1e308,0,0, 0,0,1e308,0, 0,0,0,1]}";
+  const std::string huge =
+      "{\"file\": \"t.off\", \"transform\": [1e308,0,0,0, 0,1e308,0,0, 0,0,1e308,0, 0,0,0,1]}";
   write_file(dir / "s.json", scene_with(huge));
   const result r = run("render s.json -o out.png");
   EXPECT_EQ(r.status, 2) << r.err;
@@ -433,8 +462,8 @@ TEST_F(Hostile, a_transform_scaled_by_1e308_names_the_scene_file_and_key) {
   EXPECT_FALSE(fs::exists(dir / "out.png"));
   // Without a transform, coordinates that large in the file itself name the file key.
   write_file(dir / "huge.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n1.7e308 1.7e308 1.7e308\n3 0 1 2\n");
-  const exbsp::scene::scene s = exbsp::scene::parse_scene_text(scene_with("{\"file\": \"huge.off\"}"),
-                                                               (dir / "h.json").string());
+  const exbsp::scene::scene s = exbsp::scene::parse_scene_text(
+      scene_with("{\"file\": \"huge.off\"}"), (dir / "h.json").string());
   try {
     exbsp::scene::load_geometry(s);
     FAIL() << "no error";
@@ -444,8 +473,9 @@ TEST_F(Hostile, a_transform_scaled_by_1e308_names_the_scene_file_and_key) {
 }
 
 TEST(Stl, ascii_stl_with_a_utf8_bom_is_read_as_ascii) {
-  std::string stl = bom + "solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n"
-                          "   vertex 0 1 0\n  endloop\n endfacet\nendsolid t\n";
+  std::string stl = bom +
+                    "solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n"
+                    "   vertex 0 1 0\n  endloop\n endfacet\nendsolid t\n";
   stl += std::string(200, ' ');  // longer than a binary header, as real files are
   const exbsp::triangle_soup soup = exbsp::read_mesh_data(stl, exbsp::mesh_format::stl, "bom.stl");
   EXPECT_EQ(soup.triangles.size(), 1u);
@@ -493,24 +523,30 @@ TEST(TextFiles, bom_and_cr_only_line_ends_are_accepted_by_every_ascii_reader) {
       {exbsp::mesh_format::off, triangle_off},
       {exbsp::mesh_format::obj, "# t\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
       {exbsp::mesh_format::ply,
-       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-       "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
+       "float z\n"
+       "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 "
+       "0 1 2\n"},
       {exbsp::mesh_format::stl,
-       "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+       "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 "
+       "0\nendloop\nendfacet\n"
        "endsolid t\n"}};
   for (const auto& [format, text] : inputs)
     for (const char* prefix : {"", "\xEF\xBB\xBF"})
       for (const char* eol : {"\n", "\r\n", "\r"}) {
-        SCOPED_TRACE(text.substr(0, 3) + " bom=" + std::to_string(*prefix != 0) + " eol=" + std::to_string(eol[0]));
-        const exbsp::triangle_soup soup = exbsp::read_mesh_data(recode(text, prefix, eol), format, "f");
+        SCOPED_TRACE(text.substr(0, 3) + " bom=" + std::to_string(*prefix != 0) +
+                     " eol=" + std::to_string(eol[0]));
+        const exbsp::triangle_soup soup =
+            exbsp::read_mesh_data(recode(text, prefix, eol), format, "f");
         EXPECT_EQ(soup.triangles.size(), 1u);
       }
 }
 
 TEST(TextFiles, line_numbers_stay_right_with_a_bom_and_cr_only_line_ends) {
   const std::string bad_off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 nan\n3 0 1 2\n";  // line 5
-  const std::string bad_stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
-                              "vertex 0 1 x\nendloop\nendfacet\nendsolid t\n";  // line 6
+  const std::string bad_stl =
+      "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+      "vertex 0 1 x\nendloop\nendfacet\nendsolid t\n";  // line 6
   for (const char* eol : {"\n", "\r\n", "\r"}) {
     try {
       exbsp::read_mesh_data(recode(bad_off, bom, eol), exbsp::mesh_format::off, "f.off");
@@ -538,12 +574,15 @@ TEST_F(Hostile, strict_makes_unknown_scene_keys_errors_and_the_warning_lists_exp
   write_file(dir / "s.json", scene_with("{\"file\": \"t.off\", \"colour\": [255, 0, 0]}"));
   const result warned = run("render s.json -o out.png");
   EXPECT_EQ(warned.status, 0) << warned.err;
-  EXPECT_TRUE(contains(warned.err, "s.json: /meshes/0/colour: unknown key ignored (expected one of: file, color, transform"))
+  EXPECT_TRUE(contains(
+      warned.err,
+      "s.json: /meshes/0/colour: unknown key ignored (expected one of: file, color, transform"))
       << warned.err;
   fs::remove(dir / "out.png");
   const result strict = run("render --strict s.json -o out.png");
   EXPECT_EQ(strict.status, 2) << strict.err;
-  EXPECT_TRUE(contains(strict.err, "exbsp: error: s.json: /meshes/0/colour: unknown key")) << strict.err;
+  EXPECT_TRUE(contains(strict.err, "exbsp: error: s.json: /meshes/0/colour: unknown key"))
+      << strict.err;
   EXPECT_FALSE(fs::exists(dir / "out.png"));
 }
 

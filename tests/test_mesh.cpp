@@ -54,8 +54,8 @@ const double box_y[2] = {-2.3, 0.6};
 const double box_z[2] = {0.25, 3.3};
 const int box_corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-const std::vector<std::vector<std::uint32_t>> box_faces = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                                           {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+const std::vector<std::vector<std::uint32_t>> box_faces = {
+    {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
 
 // Corner i of the box; `as_float` rounds each coordinate to float first (binary STL, float PLY).
 vec3d box_vertex(std::size_t i, bool as_float) {
@@ -92,7 +92,8 @@ void expect_box(const triangle_soup& s, bool as_float, bool faces_are_quads) {
 void expect_box_indices(const triangle_soup& s) {
   const auto expected = box_triangles();
   ASSERT_EQ(s.triangles.size(), expected.size());
-  for (std::size_t t = 0; t < expected.size(); ++t) EXPECT_EQ(s.triangles[t].v, expected[t]) << "triangle " << t;
+  for (std::size_t t = 0; t < expected.size(); ++t)
+    EXPECT_EQ(s.triangles[t].v, expected[t]) << "triangle " << t;
 }
 
 // read_mesh must throw input_error; returns it for further checks.
@@ -106,7 +107,8 @@ input_error expect_input_error(const std::string& path) {
   return input_error(path, 0, "none");
 }
 
-input_error expect_data_error(const std::string& data, mesh_format format, const std::string& name = "mem") {
+input_error expect_data_error(const std::string& data, mesh_format format,
+                              const std::string& name = "mem") {
   try {
     read_mesh_data(data, format, name);
   } catch (const input_error& e) {
@@ -177,7 +179,8 @@ TEST(OffReader, CoffWithCommentsVertexColoursAndFaceColours) {
 }
 
 TEST(OffReader, CountsOnTheHeaderLineAndNoEdgeCount) {
-  const triangle_soup s = read_mesh_data("OFF 3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", mesh_format::off, "m.off");
+  const triangle_soup s =
+      read_mesh_data("OFF 3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", mesh_format::off, "m.off");
   EXPECT_EQ(s.vertices.size(), 3u);
   EXPECT_EQ(s.triangles.size(), 1u);
 }
@@ -215,7 +218,8 @@ TEST(ObjReader, RelativeIndicesCountFromTheVerticesDefinedSoFar) {
 }
 
 TEST(ObjReader, WComponentVertexColoursAndLineContinuation) {
-  const std::string obj = "v 0 0 0 1\nv 1 0 0 0.5 0.2 0.3\nv 0 1 0 1 0.1 0.2 0.3\nf 1 \\\n 2 \\\n3\n";
+  const std::string obj =
+      "v 0 0 0 1\nv 1 0 0 0.5 0.2 0.3\nv 0 1 0 1 0.1 0.2 0.3\nf 1 \\\n 2 \\\n3\n";
   const triangle_soup s = read_mesh_data(obj, mesh_format::obj, "w.obj");
   ASSERT_EQ(s.triangles.size(), 1u);
   EXPECT_EQ(s.vertices[1], (vec3d{1, 0, 0}));  // w is ignored, not divided by
@@ -263,7 +267,8 @@ TEST(PlyReader, BinaryBigEndianIntegerCoordinatesAndUshortIndexLists) {
   const std::int32_t xs[3] = {-5, 7, 0};
   const std::uint32_t ys[3] = {0, 4000000000u, 1};
   for (int i = 0; i < 3; ++i)
-    ply += be_bytes(static_cast<std::uint32_t>(xs[i]), 4) + be_bytes(ys[i], 4) + be_bytes(0xFFFF, 2);
+    ply +=
+        be_bytes(static_cast<std::uint32_t>(xs[i]), 4) + be_bytes(ys[i], 4) + be_bytes(0xFFFF, 2);
   ply += be_bytes(3, 2) + be_bytes(0, 2) + be_bytes(1, 2) + be_bytes(2, 2);
   const triangle_soup s = read_mesh_data(ply, mesh_format::ply, "be.ply");
   ASSERT_EQ(s.vertices.size(), 3u);
@@ -274,7 +279,8 @@ TEST(PlyReader, BinaryBigEndianIntegerCoordinatesAndUshortIndexLists) {
 
 TEST(PlyReader, VertexOnlyFileGivesNoTriangles) {
   const std::string ply =
-      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float "
+      "z\n"
       "end_header\n1 2 3\n";
   const triangle_soup s = read_mesh_data(ply, mesh_format::ply, "points.ply");
   EXPECT_EQ(s.vertices.size(), 1u);
@@ -302,7 +308,8 @@ TEST(StlReader, AsciiKeywordsIgnoreCaseSeveralSolidsAndPolygonFacetsFan) {
   const std::string stl =
       "SOLID a name with spaces\nFACET NORMAL nan nan nan\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\n"
       "VERTEX 1 1 0\nVERTEX 0 1 0\nENDLOOP\nENDFACET\nENDSOLID a name with spaces\n"
-      "solid\nfacet normal 0 0 1 outer loop vertex 0 0 0 vertex 1 0 0 vertex 0 -0 1 endloop endfacet\n"
+      "solid\nfacet normal 0 0 1 outer loop vertex 0 0 0 vertex 1 0 0 vertex 0 -0 1 endloop "
+      "endfacet\n"
       "endsolid\n";
   const triangle_soup s = read_mesh_data(stl, mesh_format::stl, "multi.stl");
   ASSERT_EQ(s.triangles.size(), 3u);
@@ -336,14 +343,17 @@ TEST(LineEndings, CrlfFilesReadLikeLfFilesInEveryTextFormat) {
   const std::string obj = "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n";
   const std::string ply =
       "ply\r\nformat ascii 1.0\r\nelement vertex 3\r\nproperty float x\r\nproperty float y\r\n"
-      "property float z\r\nelement face 1\r\nproperty list uchar int vertex_indices\r\nend_header\r\n"
+      "property float z\r\nelement face 1\r\nproperty list uchar int "
+      "vertex_indices\r\nend_header\r\n"
       "0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n";
   const std::string stl =
-      "solid t\r\nfacet normal 0 0 1\r\nouter loop\r\nvertex 0 0 0\r\nvertex 1 0 0\r\nvertex 0 1 0\r\n"
+      "solid t\r\nfacet normal 0 0 1\r\nouter loop\r\nvertex 0 0 0\r\nvertex 1 0 0\r\nvertex 0 1 "
+      "0\r\n"
       "endloop\r\nendfacet\r\nendsolid t\r\n";
-  for (const triangle_soup& s :
-       {read_mesh_data(off, mesh_format::off, "c.off"), read_mesh_data(obj, mesh_format::obj, "c.obj"),
-        read_mesh_data(ply, mesh_format::ply, "c.ply"), read_mesh_data(stl, mesh_format::stl, "c.stl")}) {
+  for (const triangle_soup& s : {read_mesh_data(off, mesh_format::off, "c.off"),
+                                 read_mesh_data(obj, mesh_format::obj, "c.obj"),
+                                 read_mesh_data(ply, mesh_format::ply, "c.ply"),
+                                 read_mesh_data(stl, mesh_format::stl, "c.stl")}) {
     ASSERT_EQ(s.triangles.size(), 1u) << s.source;
     EXPECT_EQ(s.vertices[s.triangles[0].v[1]], (vec3d{1, 0, 0})) << s.source;
   }
@@ -356,8 +366,9 @@ TEST(LineEndings, CrlfFilesReadLikeLfFilesInEveryTextFormat) {
 
 TEST(FanTriangulation, PentagonTriangleHexagonKeepFaceIdsAndOrder) {
   const triangle_soup s = read_mesh(sample("fan.off"));
-  const std::vector<std::array<std::uint32_t, 3>> expected = {
-      {0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {5, 6, 7}, {8, 9, 10}, {8, 10, 11}, {8, 11, 12}, {8, 12, 13}};
+  const std::vector<std::array<std::uint32_t, 3>> expected = {{0, 1, 2},   {0, 2, 3},  {0, 3, 4},
+                                                              {5, 6, 7},   {8, 9, 10}, {8, 10, 11},
+                                                              {8, 11, 12}, {8, 12, 13}};
   const std::vector<std::uint32_t> faces = {0, 0, 0, 1, 2, 2, 2, 2};
   ASSERT_EQ(s.triangles.size(), expected.size());
   for (std::size_t t = 0; t < expected.size(); ++t) {
@@ -370,7 +381,8 @@ TEST(FanTriangulation, PentagonTriangleHexagonKeepFaceIdsAndOrder) {
 TEST(FanTriangulation, SameOrderInEveryPolygonFormat) {
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nf 1 2 3 4 5\n";
   const std::string ply =
-      "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+      "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float "
+      "z\n"
       "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
       "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n5 0 1 2 3 4\n";
   const std::string off = "OFF\n5 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n5 0 1 2 3 4\n";
@@ -399,7 +411,8 @@ TEST(NonManifold, SharedEdgeDuplicateFlippedAndDegenerateFacesLoadCompletely) {
 }
 
 TEST(NonManifold, RepeatedIndexInOneFaceIsKeptAsADegenerateTriangle) {
-  const triangle_soup s = read_mesh_data("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n", mesh_format::off, "d.off");
+  const triangle_soup s =
+      read_mesh_data("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n", mesh_format::off, "d.off");
   ASSERT_EQ(s.triangles.size(), 1u);
   EXPECT_EQ(s.triangles[0].v, (std::array<std::uint32_t, 3>{0, 0, 1}));
 }
@@ -435,7 +448,8 @@ TEST(ExactDecimal, CoordinatesAreTheNearestDoubleToTheText) {
 }
 
 TEST(ExactDecimal, PointOneIsNotItsFloatRounding) {
-  const triangle_soup s = read_mesh_data("v 0.1 0.2 0.3\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mesh_format::obj, "p.obj");
+  const triangle_soup s =
+      read_mesh_data("v 0.1 0.2 0.3\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mesh_format::obj, "p.obj");
   EXPECT_EQ(s.vertices[0][0], 0.1);
   EXPECT_NE(s.vertices[0][0], static_cast<double>(0.1f));
   EXPECT_EQ(s.vertices[0][1], 0.2);
@@ -455,7 +469,8 @@ TEST(ExactDecimal, SeventeenDigitTextOfRandomDoublesReadsBackBitForBit) {
   }
   for (std::size_t i = 0; i < values.size(); i += 3) {
     char line[128];
-    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", values[i], values[i + 1], values[i + 2]);
+    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", values[i], values[i + 1],
+                  values[i + 2]);
     off += line;
   }
   const triangle_soup s = read_mesh_data(off, mesh_format::off, "random.off");
@@ -469,19 +484,23 @@ TEST(ExactDecimal, SeventeenDigitTextOfRandomDoublesReadsBackBitForBit) {
 TEST(ExactDecimal, AllFormatsAgreeOnTheSameDecimalText) {
   const std::string x = "0.7071067811865476", y = "-1234.5678e-3", z = "3.0000000000000004";
   const triangle_soup off =
-      read_mesh_data("OFF\n3 1 0\n" + x + " " + y + " " + z + "\n1 0 0\n0 1 0\n3 0 1 2\n", mesh_format::off, "a.off");
-  const triangle_soup obj =
-      read_mesh_data("v " + x + " " + y + " " + z + "\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mesh_format::obj, "a.obj");
+      read_mesh_data("OFF\n3 1 0\n" + x + " " + y + " " + z + "\n1 0 0\n0 1 0\n3 0 1 2\n",
+                     mesh_format::off, "a.off");
+  const triangle_soup obj = read_mesh_data(
+      "v " + x + " " + y + " " + z + "\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", mesh_format::obj, "a.obj");
   const triangle_soup ply = read_mesh_data(
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+      "z\n"
       "element face 1\nproperty list uchar int vertex_indices\nend_header\n" +
           x + " " + y + " " + z + "\n1 0 0\n0 1 0\n3 0 1 2\n",
       mesh_format::ply, "a.ply");
-  const triangle_soup stl = read_mesh_data("solid\nfacet normal 0 0 0\nouter loop\nvertex " + x + " " + y + " " + z +
-                                               "\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n",
-                                           mesh_format::stl, "a.stl");
+  const triangle_soup stl =
+      read_mesh_data("solid\nfacet normal 0 0 0\nouter loop\nvertex " + x + " " + y + " " + z +
+                         "\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n",
+                     mesh_format::stl, "a.stl");
   const vec3d expected = {0.7071067811865476, -1.2345678, 3.0000000000000004};
-  for (const triangle_soup* s : {&off, &obj, &ply, &stl}) EXPECT_EQ(s->vertices[0], expected) << s->source;
+  for (const triangle_soup* s : {&off, &obj, &ply, &stl})
+    EXPECT_EQ(s->vertices[0], expected) << s->source;
 }
 
 // ---- errors outside the corpus ----
@@ -494,7 +513,8 @@ TEST(MeshErrors, MissingFileIsAnInputErrorWithLineZero) {
 }
 
 TEST(MeshErrors, DirectoryIsUnreadable) {
-  const std::string dir = (std::filesystem::temp_directory_path() / "exbsp_test_mesh_dir.off").string();
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / "exbsp_test_mesh_dir.off").string();
   std::filesystem::create_directories(dir);
   const input_error e = expect_input_error(dir);
   EXPECT_EQ(e.line(), 0u);
@@ -518,7 +538,8 @@ TEST(MeshErrors, ExtensionIsCaseInsensitive) {
 }
 
 TEST(MeshErrors, MessageIsFileColonLineColonWhat) {
-  const input_error e = expect_data_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 12 1\n", mesh_format::off, "part.off");
+  const input_error e = expect_data_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 12 1\n",
+                                          mesh_format::off, "part.off");
   EXPECT_STREQ(e.what(), "part.off:6: vertex index 12 out of range (3 vertices)");
   EXPECT_EQ(e.file(), "part.off");
 }
@@ -536,17 +557,23 @@ TEST(HugeDeclaredCounts, FailAtTheEndOfTheDataWithoutAllocating) {
   const auto start = std::chrono::steady_clock::now();
   const std::string tri = "0 0 0\n1 0 0\n0 1 0\n";
   EXPECT_EQ(expect_data_error("OFF\n4000000000 4000000000 0\n" + tri, mesh_format::off).line(), 5u);
-  EXPECT_EQ(expect_data_error("OFF\n3 4294967295 0\n" + tri + "3 0 1 2\n", mesh_format::off).line(), 6u);
-  EXPECT_EQ(expect_data_error("OFF\n3 1 0\n" + tri + "2000000000 0 1 2\n", mesh_format::off).line(), 6u);
+  EXPECT_EQ(expect_data_error("OFF\n3 4294967295 0\n" + tri + "3 0 1 2\n", mesh_format::off).line(),
+            6u);
+  EXPECT_EQ(expect_data_error("OFF\n3 1 0\n" + tri + "2000000000 0 1 2\n", mesh_format::off).line(),
+            6u);
   const std::string ply_head =
-      "ply\nformat binary_little_endian 1.0\nelement vertex 4294967295\nproperty float x\nproperty float y\n"
-      "property float z\nelement face 4294967295\nproperty list uint int vertex_indices\nend_header\n";
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4294967295\nproperty float x\nproperty "
+      "float y\n"
+      "property float z\nelement face 4294967295\nproperty list uint int "
+      "vertex_indices\nend_header\n";
   EXPECT_EQ(expect_data_error(ply_head + std::string(36, '\0'), mesh_format::ply).line(), 0u);
   const std::string ply_list =
-      "ply\nformat binary_little_endian 1.0\nelement face 1\nproperty list uint int vertex_indices\nend_header\n" +
+      "ply\nformat binary_little_endian 1.0\nelement face 1\nproperty list uint int "
+      "vertex_indices\nend_header\n" +
       le_bytes(0xFFFFFFFFu, 4) + le_bytes(0, 4);
   const input_error list_error = expect_data_error(ply_list, mesh_format::ply);
-  EXPECT_NE(std::string(list_error.what()).find("unexpected end of file"), std::string::npos) << list_error.what();
+  EXPECT_NE(std::string(list_error.what()).find("unexpected end of file"), std::string::npos)
+      << list_error.what();
   const std::string stl = std::string(80, 'x') + le_bytes(0xFFFFFFFFu, 4) + std::string(100, '\0');
   EXPECT_EQ(expect_data_error(stl, mesh_format::stl).line(), 0u);
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
@@ -577,9 +604,11 @@ std::vector<bad_case> read_manifest() {
     if (row.empty()) continue;
     const std::size_t tab1 = row.find('\t');
     const std::size_t tab2 = row.find('\t', tab1 + 1);
-    EXPECT_TRUE(tab1 != std::string::npos && tab2 != std::string::npos) << "bad manifest row: " << row;
+    EXPECT_TRUE(tab1 != std::string::npos && tab2 != std::string::npos)
+        << "bad manifest row: " << row;
     if (tab1 == std::string::npos || tab2 == std::string::npos) continue;
-    cases.push_back({row.substr(0, tab1), std::stoul(row.substr(tab1 + 1, tab2 - tab1 - 1)), row.substr(tab2 + 1)});
+    cases.push_back({row.substr(0, tab1), std::stoul(row.substr(tab1 + 1, tab2 - tab1 - 1)),
+                     row.substr(tab2 + 1)});
   }
   return cases;
 }
@@ -597,7 +626,8 @@ TEST(BadCorpus, EveryFileThrowsInputErrorWithTheExpectedLineAndMessage) {
       EXPECT_EQ(e.line(), c.line) << what;
       EXPECT_EQ(e.file(), path);
       EXPECT_NE(what.find(c.file), std::string::npos) << what;
-      EXPECT_NE(what.find(c.substring), std::string::npos) << "message: " << what << "\nwanted: " << c.substring;
+      EXPECT_NE(what.find(c.substring), std::string::npos)
+          << "message: " << what << "\nwanted: " << c.substring;
       if (c.line != 0) {
         EXPECT_EQ(what.rfind(path + ":" + std::to_string(c.line) + ": ", 0), 0u) << what;
       }
@@ -611,7 +641,8 @@ TEST(BadCorpus, ManifestListsEveryFileOnceAndHasAtLeastThirtyCases) {
   const std::vector<bad_case> cases = read_manifest();
   EXPECT_GE(cases.size(), 30u);
   std::set<std::string> listed;
-  for (const bad_case& c : cases) EXPECT_TRUE(listed.insert(c.file).second) << "listed twice: " << c.file;
+  for (const bad_case& c : cases)
+    EXPECT_TRUE(listed.insert(c.file).second) << "listed twice: " << c.file;
   std::set<std::string> present;
   for (const auto& entry : std::filesystem::directory_iterator(data_dir + "/bad")) {
     const std::string name = entry.path().filename().string();
@@ -642,7 +673,7 @@ struct double_traits : OpenMesh::DefaultTraits {
 using om_mesh_d = OpenMesh::PolyMesh_ArrayKernelT<double_traits>;
 
 class quiet_openmesh {  // OpenMesh logs warnings for skipped properties; keep the test log readable
-public:
+ public:
   quiet_openmesh() {
     omerr().disable();
     omlog().disable();
@@ -675,7 +706,8 @@ TEST(OpenMeshOracle, WellFormedSamplesAgreeInCountsAndCoordinatesToFloatPrecisio
       auto& f = our_faces[t.face];
       if (f.empty()) f.push_back(ours.vertices[t.v[0]]);
       f.push_back(ours.vertices[t.v[1]]);
-      if (&t == &ours.triangles.back() || (&t)[1].face != t.face) f.push_back(ours.vertices[t.v[2]]);
+      if (&t == &ours.triangles.back() || (&t)[1].face != t.face)
+        f.push_back(ours.vertices[t.v[2]]);
     }
     ASSERT_EQ(om.n_faces(), our_faces.size());
     for (const auto fh : om.faces()) {
@@ -716,7 +748,8 @@ TEST(OpenMeshOracle, OpenMeshReadsPointOneAsAFloatEvenIntoDoublePointsWeReadTheN
 }
 
 TEST(OpenMeshOracle, OpenMeshDropsAFaceWithABadIndexWeThrow) {
-  const std::string path = (std::filesystem::temp_directory_path() / "exbsp_test_mesh_bad_index.off").string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "exbsp_test_mesh_bad_index.off").string();
   {
     std::ofstream out(path);
     out << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 7\n";
@@ -727,7 +760,9 @@ TEST(OpenMeshOracle, OpenMeshDropsAFaceWithABadIndexWeThrow) {
   EXPECT_EQ(om.n_faces(), 1u);  // the second face is gone and read_mesh reports success
   const input_error e = expect_input_error(path);
   EXPECT_EQ(e.line(), 8u);
-  EXPECT_NE(std::string(e.what()).find("vertex index 7 out of range (4 vertices)"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("vertex index 7 out of range (4 vertices)"),
+            std::string::npos)
+      << e.what();
   std::filesystem::remove(path);
 }
 

@@ -65,7 +65,8 @@
 #if !EXBSP_HAVE_OSMESA
 
 TEST(OracleGL, OSMesaIsAvailable) {
-  FAIL() << "OSMesa (GL/osmesa.h, GL/gl.h, libOSMesa) was not found when configuring: install Debian's "
+  FAIL() << "OSMesa (GL/osmesa.h, GL/gl.h, libOSMesa) was not found when configuring: install "
+            "Debian's "
             "libosmesa6-dev (scripts/setup) and reconfigure; the Mesa z-buffer oracle cannot run";
 }
 
@@ -101,7 +102,7 @@ const std::string& temp_dir() {
 
 /// Removes the output directory at exit when every test passed (and output is not kept).
 class output_cleanup : public ::testing::Environment {
-public:
+ public:
   void TearDown() override {
     const ::testing::UnitTest* u = ::testing::UnitTest::GetInstance();
     if (u->Passed() && !keep_output()) {
@@ -112,7 +113,8 @@ public:
     }
   }
 };
-[[maybe_unused]] ::testing::Environment* const cleanup_env = ::testing::AddGlobalTestEnvironment(new output_cleanup);
+[[maybe_unused]] ::testing::Environment* const cleanup_env =
+    ::testing::AddGlobalTestEnvironment(new output_cleanup);
 
 // ---------------------------------------------------------------------------------------
 // Small vector algebra on std::array, independent of view/matrix.h (the oracle builds its own
@@ -136,10 +138,10 @@ std::array<double, 16> look_at_rows(const v3& eye, const v3& center, const v3& u
   const v3 f = unit(sub(center, eye));
   const v3 s = unit(cross(f, up));
   const v3 u = cross(s, f);
-  return {s[0], s[1], s[2], -dot(s, eye),  //
-          u[0], u[1], u[2], -dot(u, eye),  //
-          -f[0], -f[1], -f[2], dot(f, eye),  //
-          0, 0, 0, 1};
+  return {s[0],  s[1],  s[2],  -dot(s, eye),  //
+          u[0],  u[1],  u[2],  -dot(u, eye),  //
+          -f[0], -f[1], -f[2], dot(f, eye),   //
+          0,     0,     0,     1};
 }
 
 // ---------------------------------------------------------------------------------------
@@ -199,7 +201,8 @@ void load_gl_view(const scene::scene& s, bool mirror_y) {
       // Shear x' = x + shx (z - zp), y' = y + shy (z - zp) mapping the eye-space direction of
       // projection onto -z and fixing the view plane through look_at (z = zp).
       const v3 d = unit(from(p.direction));
-      const v3 dop = {dot({mv_rows[0], mv_rows[1], mv_rows[2]}, d), dot({mv_rows[4], mv_rows[5], mv_rows[6]}, d),
+      const v3 dop = {dot({mv_rows[0], mv_rows[1], mv_rows[2]}, d),
+                      dot({mv_rows[4], mv_rows[5], mv_rows[6]}, d),
                       dot({mv_rows[8], mv_rows[9], mv_rows[10]}, d)};
       const double zp = -std::sqrt(dot(sub(center, eye), sub(center, eye)));
       const double shx = -dop[0] / dop[2], shy = -dop[1] / dop[2];
@@ -237,16 +240,17 @@ struct oracle_options {
 
 /// Mesa's z-buffer image of a scene's world-space triangles. Throws std::runtime_error when
 /// OSMesa cannot render.
-view::image render_mesa(const scene::scene& s, const scene::scene_geometry& g, bool cull, const oracle_options& opt,
-                        tie_pass pass) {
+view::image render_mesa(const scene::scene& s, const scene::scene_geometry& g, bool cull,
+                        const oracle_options& opt, tie_pass pass) {
   const tied_meshes& tied = opt.tied;
   osmesa_context ctx(s.width, s.height);
   GLint depth_bits = 0, samples = 0;
   glGetIntegerv(GL_DEPTH_BITS, &depth_bits);
   glGetIntegerv(GL_SAMPLES, &samples);
   if (depth_bits < 24 || samples != 0)
-    throw std::runtime_error("OSMesa context has " + std::to_string(depth_bits) + " depth bits and " +
-                             std::to_string(samples) + " samples (want >= 24 and 0)");
+    throw std::runtime_error("OSMesa context has " + std::to_string(depth_bits) +
+                             " depth bits and " + std::to_string(samples) +
+                             " samples (want >= 24 and 0)");
 
   glViewport(0, 0, s.width, s.height);
   glDepthRange(0, 1);
@@ -261,9 +265,11 @@ view::image render_mesa(const scene::scene& s, const scene::scene_geometry& g, b
     for (const soup_triangle& t : g.soup.triangles) {
       const std::size_t m = scene::mesh_of_face(g, t.face);
       if (mesh == untied ? tied.count(m) > 0 : m != mesh) continue;
-      const view::rgb8 c = t.face < g.face_colors.size() ? g.face_colors[t.face] : view::rgb8{160, 160, 160};
+      const view::rgb8 c =
+          t.face < g.face_colors.size() ? g.face_colors[t.face] : view::rgb8{160, 160, 160};
       glColor3ub(c.r, c.g, c.b);
-      for (std::uint32_t v : t.v) glVertex3d(g.soup.vertices[v][0], g.soup.vertices[v][1], g.soup.vertices[v][2]);
+      for (std::uint32_t v : t.v)
+        glVertex3d(g.soup.vertices[v][0], g.soup.vertices[v][1], g.soup.vertices[v][2]);
     }
     glEnd();
   };
@@ -274,7 +280,8 @@ view::image render_mesa(const scene::scene& s, const scene::scene_geometry& g, b
   int rank = 0;
   for (std::size_t m : tied) {
     if (pass != tie_pass::none) {
-      const GLfloat steps = static_cast<GLfloat>(rank + 1) * (pass == tie_pass::towards ? -1.0f : 1.0f);
+      const GLfloat steps =
+          static_cast<GLfloat>(rank + 1) * (pass == tie_pass::towards ? -1.0f : 1.0f);
       glEnable(GL_POLYGON_OFFSET_FILL);
       glPolygonOffset(2.0f * steps, 64.0f * steps);
     }
@@ -284,7 +291,8 @@ view::image render_mesa(const scene::scene& s, const scene::scene_geometry& g, b
   }
   glFinish();
   const GLenum err = glGetError();
-  if (err != GL_NO_ERROR) throw std::runtime_error("OpenGL error " + std::to_string(err) + " while rendering");
+  if (err != GL_NO_ERROR)
+    throw std::runtime_error("OpenGL error " + std::to_string(err) + " while rendering");
   return ctx.picture(opt.mirror_y);
 }
 
@@ -304,10 +312,12 @@ using exbsp_test::colours_of;
 /// at least opt.required of all pixels and opt.required_drawn of the drawn pixels to be
 /// equal; returns the agreement over all pixels (0 when Mesa failed). `name` names the
 /// output subdirectory. Tied meshes: see the file comment.
-double expect_matches_mesa(const std::string& name, const scene::scene& s, const oracle_options& opt = {}) {
+double expect_matches_mesa(const std::string& name, const scene::scene& s,
+                           const oracle_options& opt = {}) {
   const tied_meshes& tied = opt.tied;
   const scene::scene_geometry g = scene::load_geometry(s);
-  const bool cull = std::find(s.effects.begin(), s.effects.end(), "backface_culling") != s.effects.end();
+  const bool cull =
+      std::find(s.effects.begin(), s.effects.end(), "backface_culling") != s.effects.end();
   for (const std::string& e : s.effects)
     if (e != "backface_culling") {
       ADD_FAILURE() << name << ": the oracle has no counterpart for effect " << e;
@@ -324,8 +334,8 @@ double expect_matches_mesa(const std::string& name, const scene::scene& s, const
     return 0;
   }
   if (mine.width() != mesa.width() || mine.height() != mesa.height()) {
-    ADD_FAILURE() << name << ": exbsp's image is " << mine.width() << "x" << mine.height() << ", Mesa's "
-                  << mesa.width() << "x" << mesa.height();
+    ADD_FAILURE() << name << ": exbsp's image is " << mine.width() << "x" << mine.height()
+                  << ", Mesa's " << mesa.width() << "x" << mesa.height();
     return 0;
   }
 
@@ -345,16 +355,20 @@ double expect_matches_mesa(const std::string& name, const scene::scene& s, const
       }
       // Mask: mismatches red, tied pixels light blue, the rest a faded copy of exbsp's image.
       const auto fade = [](std::uint8_t v) { return static_cast<std::uint8_t>(191 + v / 4); };
-      mask.set_at_row(r, k, !ok ? view::rgb8{255, 0, 0} : is_tied ? view::rgb8{150, 200, 255}
-                                                               : view::rgb8{fade(a.r), fade(a.g), fade(a.b)});
+      mask.set_at_row(r, k,
+                      !ok       ? view::rgb8{255, 0, 0}
+                      : is_tied ? view::rgb8{150, 200, 255}
+                                : view::rgb8{fade(a.r), fade(a.g), fade(a.b)});
     }
 
-  const bool pass = !opt.check || (cmp.agreement() >= opt.required && cmp.drawn_agreement() >= opt.required_drawn);
+  const bool pass = !opt.check || (cmp.agreement() >= opt.required &&
+                                   cmp.drawn_agreement() >= opt.required_drawn);
   const std::string dir = temp_dir() + "/" + name;
   std::ostringstream line;
-  line << std::fixed << std::setprecision(3) << "oracle_gl " << name << ": " << 100 * cmp.agreement() << "% of "
-       << cmp.pixels << " pixels equal (" << cmp.pixels - cmp.equal << " differ; " << 100 * cmp.drawn_agreement()
-       << "% of " << cmp.drawn << " drawn pixels";
+  line << std::fixed << std::setprecision(3) << "oracle_gl " << name << ": "
+       << 100 * cmp.agreement() << "% of " << cmp.pixels << " pixels equal ("
+       << cmp.pixels - cmp.equal << " differ; " << 100 * cmp.drawn_agreement() << "% of "
+       << cmp.drawn << " drawn pixels";
   if (!tied.empty()) line << ", " << cmp.tied << " z-fighting pixels accept either colour";
   line << ")";
   if (!pass || keep_output()) {
@@ -371,8 +385,8 @@ double expect_matches_mesa(const std::string& name, const scene::scene& s, const
   EXPECT_GT(colours_of(mesa).size(), 3u) << name;
   EXPECT_GT(cmp.drawn, cmp.pixels / 20) << name << ": less than 5% of the image is drawn";
   EXPECT_GE(cmp.agreement(), opt.required)
-      << name << ": only " << 100 * cmp.agreement() << "% of pixels equal Mesa's z-buffer image; mismatch mask: "
-      << dir << "/mask.png";
+      << name << ": only " << 100 * cmp.agreement()
+      << "% of pixels equal Mesa's z-buffer image; mismatch mask: " << dir << "/mask.png";
   EXPECT_GE(cmp.drawn_agreement(), opt.required_drawn)
       << name << ": only " << 100 * cmp.drawn_agreement()
       << "% of the drawn pixels equal Mesa's z-buffer image; mismatch mask: " << dir << "/mask.png";
@@ -385,7 +399,7 @@ double expect_matches_mesa(const std::string& name, const scene::scene& s, const
 /// One OFF file's worth of polygons.
 struct off_mesh {
   std::vector<v3> vertices;
-  std::vector<std::vector<std::uint32_t>> faces;
+  std::vector<std::vector<std::uint32_t> > faces;
 
   void add_polygon(const std::vector<v3>& poly) {
     std::vector<std::uint32_t> f;
@@ -410,14 +424,17 @@ struct off_mesh {
 
 /// The six outward-facing quads of the box centre + sum of +-half[k] axis[k] (axes need not be
 /// unit, but must be mutually orthogonal), indexed +a0, -a0, +a1, -a1, +a2, -a2.
-std::array<std::vector<v3>, 6> box_quads(const v3& centre, const std::array<v3, 3>& axes, const v3& half) {
+std::array<std::vector<v3>, 6> box_quads(const v3& centre, const std::array<v3, 3>& axes,
+                                         const v3& half) {
   std::array<std::vector<v3>, 6> quads;
   for (int k = 0; k < 3; ++k) {
     const v3 n = scale(half[k], axes[k]);
-    const v3 e1 = scale(half[(k + 1) % 3], axes[(k + 1) % 3]), e2 = scale(half[(k + 2) % 3], axes[(k + 2) % 3]);
+    const v3 e1 = scale(half[(k + 1) % 3], axes[(k + 1) % 3]),
+             e2 = scale(half[(k + 2) % 3], axes[(k + 2) % 3]);
     for (int side = 0; side < 2; ++side) {
       const v3 c = side == 0 ? add(centre, n) : sub(centre, n);
-      std::vector<v3> q = {sub(sub(c, e1), e2), add(sub(c, e2), e1), add(add(c, e1), e2), sub(add(c, e2), e1)};
+      std::vector<v3> q = {sub(sub(c, e1), e2), add(sub(c, e2), e1), add(add(c, e1), e2),
+                           sub(add(c, e2), e1)};
       const v3 outward = side == 0 ? n : scale(-1, n);
       if (dot(cross(sub(q[1], q[0]), sub(q[2], q[0])), outward) < 0) std::swap(q[1], q[3]);
       quads[2 * k + side] = std::move(q);
@@ -428,19 +445,21 @@ std::array<std::vector<v3>, 6> box_quads(const v3& centre, const std::array<v3, 
 
 /// Axis-aligned box [lo, hi].
 std::array<std::vector<v3>, 6> aabb_quads(const v3& lo, const v3& hi) {
-  return box_quads(scale(0.5, add(lo, hi)), {v3{1, 0, 0}, v3{0, 1, 0}, v3{0, 0, 1}}, scale(0.5, sub(hi, lo)));
+  return box_quads(scale(0.5, add(lo, hi)), {v3{1, 0, 0}, v3{0, 1, 0}, v3{0, 0, 1}},
+                   scale(0.5, sub(hi, lo)));
 }
 
 /// A base colour shaded for face direction k of box_quads (fixed "baked" shades).
 view::rgb8 shade(view::rgb8 base, int k) {
   static const double f[6] = {1.0, 0.62, 0.88, 0.55, 0.76, 0.48};
-  return {static_cast<std::uint8_t>(std::lround(base.r * f[k])), static_cast<std::uint8_t>(std::lround(base.g * f[k])),
+  return {static_cast<std::uint8_t>(std::lround(base.r * f[k])),
+          static_cast<std::uint8_t>(std::lround(base.g * f[k])),
           static_cast<std::uint8_t>(std::lround(base.b * f[k]))};
 }
 
 /// A scene under construction: meshes are written as OFF files next to the scene file.
 class scene_writer {
-public:
+ public:
   explicit scene_writer(std::string name) : name_(std::move(name)), dir_(temp_dir() + "/" + name_) {
     fs::create_directories(dir_ + "/meshes");
     doc_["meshes"] = json::array();
@@ -456,7 +475,8 @@ public:
     return index;
   }
   /// Adds the six faces of a box as six meshes in shades of `base`.
-  void add_box(const std::array<std::vector<v3>, 6>& quads, view::rgb8 base, const std::vector<double>& transform = {}) {
+  void add_box(const std::array<std::vector<v3>, 6>& quads, view::rgb8 base,
+               const std::vector<double>& transform = {}) {
     for (int k = 0; k < 6; ++k) {
       off_mesh m;
       m.add_polygon(quads[k]);
@@ -471,7 +491,7 @@ public:
     return scene::load_scene(path);
   }
 
-private:
+ private:
   std::string name_, dir_;
   json doc_;
 };
@@ -491,9 +511,10 @@ void set_view(json& doc, const json& view) {
 std::vector<double> trs(const v3& t, const v3& axis, double degrees, const v3& s) {
   const v3 a = unit(axis);
   const double c = std::cos(degrees * pi / 180), sn = std::sin(degrees * pi / 180), C = 1 - c;
-  const double R[3][3] = {{c + a[0] * a[0] * C, a[0] * a[1] * C - a[2] * sn, a[0] * a[2] * C + a[1] * sn},
-                          {a[1] * a[0] * C + a[2] * sn, c + a[1] * a[1] * C, a[1] * a[2] * C - a[0] * sn},
-                          {a[2] * a[0] * C - a[1] * sn, a[2] * a[1] * C + a[0] * sn, c + a[2] * a[2] * C}};
+  const double R[3][3] = {
+      {c + a[0] * a[0] * C, a[0] * a[1] * C - a[2] * sn, a[0] * a[2] * C + a[1] * sn},
+      {a[1] * a[0] * C + a[2] * sn, c + a[1] * a[1] * C, a[1] * a[2] * C - a[0] * sn},
+      {a[2] * a[0] * C - a[1] * sn, a[2] * a[1] * C + a[0] * sn, c + a[2] * a[2] * C}};
   std::vector<double> m(16, 0.0);
   for (int r = 0; r < 3; ++r) {
     for (int k = 0; k < 3; ++k) m[4 * r + k] = R[r][k] * s[k];
@@ -518,8 +539,9 @@ TEST(OracleGL, OSMesaCreatesA24BitDepthContextWithoutMultisampling) {
     glGetIntegerv(GL_SAMPLES, &samples);
     const GLubyte* renderer = glGetString(GL_RENDERER);
     const GLubyte* version = glGetString(GL_VERSION);
-    std::cout << "oracle_gl: OSMesa renderer \"" << (renderer ? reinterpret_cast<const char*>(renderer) : "?")
-              << "\", OpenGL " << (version ? reinterpret_cast<const char*>(version) : "?") << ", " << depth_bits
+    std::cout << "oracle_gl: OSMesa renderer \""
+              << (renderer ? reinterpret_cast<const char*>(renderer) : "?") << "\", OpenGL "
+              << (version ? reinterpret_cast<const char*>(version) : "?") << ", " << depth_bits
               << " depth bits, " << samples << " samples; output in " << temp_dir() << std::endl;
     EXPECT_GE(depth_bits, 24);
     EXPECT_EQ(samples, 0);
@@ -544,10 +566,13 @@ TEST(OracleGL, BuiltInDemoMatchesMesaZBuffer) { expect_matches_mesa("demo", scen
 
 class OracleGLExample : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(OracleGLExample, MatchesMesaZBuffer) { expect_matches_mesa(GetParam(), example(GetParam())); }
+TEST_P(OracleGLExample, MatchesMesaZBuffer) {
+  expect_matches_mesa(GetParam(), example(GetParam()));
+}
 
 INSTANTIATE_TEST_SUITE_P(ExampleScenes, OracleGLExample,
-                         ::testing::Values("perspective", "orthographic", "oblique", "frustum", "inside", "cyclic"),
+                         ::testing::Values("perspective", "orthographic", "oblique", "frustum",
+                                           "inside", "cyclic"),
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
 TEST(OracleGL, InsideRoomWithoutCullingMatchesMesaZBuffer) {
@@ -615,8 +640,13 @@ TEST(OracleGL, CoplanarTouchingFacesFromAboveWithEdgesThroughPixelCentresMatchMe
   scene_writer w = coplanar_touching_boxes("coplanar_touching_top", opt.tied);
   w.doc()["camera"] = {{"eye", {0.0, 0.0, 10.0}}, {"look_at", {0.0, 0.0, 0.0}}, {"up", {0, 1, 0}}};
   const double half_pixel = 0.5 / 128;
-  w.doc()["projection"] = {{"type", "orthographic"}, {"left", -4 - half_pixel}, {"right", 4 - half_pixel},
-                           {"bottom", -2 - half_pixel}, {"top", 2 - half_pixel}, {"near", 1}, {"far", 40}};
+  w.doc()["projection"] = {{"type", "orthographic"},
+                           {"left", -4 - half_pixel},
+                           {"right", 4 - half_pixel},
+                           {"bottom", -2 - half_pixel},
+                           {"top", 2 - half_pixel},
+                           {"near", 1},
+                           {"far", 40}};
   w.doc()["viewport"] = {{"width", 1024}, {"height", 512}};
   w.doc()["background"] = {242, 244, 248};
   const scene::scene s = w.load();
@@ -629,16 +659,18 @@ TEST(OracleGL, CoplanarTouchingFacesFromAboveWithEdgesThroughPixelCentresMatchMe
   // default). Other drivers (GALLIUM_DRIVER=softpipe) only have to pass the check above.
   if (mesa_renderer().rfind("llvmpipe", 0) == 0)
     EXPECT_EQ(std::max(as_is, mirrored), 1.0)
-        << "with every edge exactly on pixel centres, exbsp's top-left rule (DESIGN.md section 6) should equal "
+        << "with every edge exactly on pixel centres, exbsp's top-left rule (DESIGN.md section 6) "
+           "should equal "
            "llvmpipe's tie rule in one orientation";
   else
-    std::cout << "oracle_gl: renderer \"" << mesa_renderer() << "\" is not llvmpipe: its tie rule is not checked\n";
+    std::cout << "oracle_gl: renderer \"" << mesa_renderer()
+              << "\" is not llvmpipe: its tie rule is not checked\n";
 }
 
 /// n thin triangles around the origin, each tilted along its length so that it passes over
 /// the next one and under the previous one: a cycle no depth sort can order.
-void add_cyclic_triangles(scene_writer& w, int n, const v3& centre, double length, double half_width,
-                          const std::vector<view::rgb8>& colours) {
+void add_cyclic_triangles(scene_writer& w, int n, const v3& centre, double length,
+                          double half_width, const std::vector<view::rgb8>& colours) {
   for (int k = 0; k < n; ++k) {
     const double a = 2 * pi * k / n;
     const v3 ex = {std::cos(a), std::sin(a), 0}, ey = {-std::sin(a), std::cos(a), 0};
@@ -654,8 +686,10 @@ void add_cyclic_triangles(scene_writer& w, int n, const v3& centre, double lengt
 
 TEST(OracleGL, TrianglesInCyclicOverlapMatchMesaZBuffer) {
   scene_writer w("cyclic_triangles");
-  add_cyclic_triangles(w, 3, {-3.3, 0, 0}, 3.0, 0.6, {{240, 190, 60}, {235, 125, 45}, {150, 95, 200}});
-  add_cyclic_triangles(w, 4, {3.3, 0, 0}, 2.5, 0.6, {{70, 130, 220}, {90, 180, 90}, {210, 80, 60}, {40, 160, 160}});
+  add_cyclic_triangles(w, 3, {-3.3, 0, 0}, 3.0, 0.6,
+                       {{240, 190, 60}, {235, 125, 45}, {150, 95, 200}});
+  add_cyclic_triangles(w, 4, {3.3, 0, 0}, 2.5, 0.6,
+                       {{70, 130, 220}, {90, 180, 90}, {210, 80, 60}, {40, 160, 160}});
   set_view(w.doc(), perspective_view({0, -1.5, 9}, {0, 0, 0}, {0, 1, 0}, 45, 640, 480));
   expect_matches_mesa("cyclic_triangles", w.load());
 }
@@ -670,7 +704,8 @@ TEST(OracleGL, ThinSticksGridMatchesMesaZBuffer) {
   for (int i = 0; i < 9; ++i) {
     const double c = -2 + 0.5 * i;
     const auto qx = box_quads({0, c, 0}, {v3{1, 0, 0}, v3{0, 1, 0}, v3{0, 0, 1}}, {2.3, h, h});
-    const auto qy = box_quads({c, 0, 0}, {v3{0, 1, 0}, v3{0, 0, 1}, v3{1, 0, 0}}, {2.3, 0.7 * h, h});
+    const auto qy =
+        box_quads({c, 0, 0}, {v3{0, 1, 0}, v3{0, 0, 1}, v3{1, 0, 0}}, {2.3, 0.7 * h, h});
     for (int k = 0; k < 6; ++k) {
       xs[k].add_polygon(qx[k]);
       ys[k].add_polygon(qy[k]);

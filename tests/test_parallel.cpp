@@ -34,10 +34,12 @@ using exbsp::vec3d;
 /// (support/observable.h), for two eyes and a direction.
 std::string observable(const triangle_soup& soup, build_options o, unsigned threads) {
   o.threads = threads;
-  return exbsp_test::observable(exbsp::bsp::build(soup, o), {vec3d{-3, 40, 25}, vec3d{7.5, 7.5, 7.5}, vec3d{0.3, -1, 0.2}});
+  return exbsp_test::observable(exbsp::bsp::build(soup, o),
+                                {vec3d{-3, 40, 25}, vec3d{7.5, 7.5, 7.5}, vec3d{0.3, -1, 0.2}});
 }
 
-void expect_same_for_1_2_and_4_threads(const triangle_soup& soup, const build_options& o, const std::string& what) {
+void expect_same_for_1_2_and_4_threads(const triangle_soup& soup, const build_options& o,
+                                       const std::string& what) {
   const std::string one = observable(soup, o, 1);
   EXPECT_EQ(one, observable(soup, o, 2)) << what << ": 2 threads";
   EXPECT_EQ(one, observable(soup, o, 4)) << what << ": 4 threads";
@@ -126,7 +128,8 @@ TEST(ParallelBuild, the_fragment_limit_thrown_inside_a_parallel_region_reaches_t
     o.kernel = k;
     o.heuristic = "random";
     o.threads = 2;
-    o.max_fragments = 7000;  // past the first 16 nodes (built on one thread), half what the tree needs
+    o.max_fragments =
+        7000;  // past the first 16 nodes (built on one thread), half what the tree needs
     EXPECT_THROW(exbsp::bsp::build(soup, o), exbsp::limit_error) << exbsp::to_string(k);
   }
 }

@@ -46,7 +46,8 @@ RC_GTEST_PROP(ExactBspEpeck, lattice_soups_satisfy_every_invariant_for_every_heu
   rc_assert_invariants_for_every_heuristic<EK>(*grid_soup());
 }
 
-RC_GTEST_PROP(ExactBspGmpq, lattice_and_coplanar_soups_satisfy_every_invariant_for_every_heuristic, ()) {
+RC_GTEST_PROP(ExactBspGmpq, lattice_and_coplanar_soups_satisfy_every_invariant_for_every_heuristic,
+              ()) {
   // Gmpq has no filter: small soups, fewer rays; identity with Epeck is checked below.
   const soup_case c = *rc::gen::oneOf(grid_soup(6), coplanar_stack(), vertex_on_plane());
   rc_assert_invariants_for_every_heuristic<GK>(c, 40);
@@ -74,7 +75,8 @@ struct ref_tree {
 
 std::array<int, 3> ref_signs(const etri& plane, const etri& t) {
   std::array<int, 3> s{};
-  for (std::size_t k = 0; k < 3; ++k) s[k] = static_cast<int>(CGAL::orientation(plane[0], plane[1], plane[2], t[k]));
+  for (std::size_t k = 0; k < 3; ++k)
+    s[k] = static_cast<int>(CGAL::orientation(plane[0], plane[1], plane[2], t[k]));
   return s;
 }
 bool ref_straddles(const std::array<int, 3>& s) {
@@ -89,7 +91,8 @@ EP ref_cut(const etri& plane, const EP& p, const EP& q) {
 }
 
 /// DESIGN.md section 3, literally: classify, split in the stated piece order, keep list order.
-std::unique_ptr<ref_node> ref_build(std::vector<ref_fragment> list, bool min_split, ref_tree& t, std::size_t depth) {
+std::unique_ptr<ref_node> ref_build(std::vector<ref_fragment> list, bool min_split, ref_tree& t,
+                                    std::size_t depth) {
   if (list.empty()) return nullptr;
   ++t.nodes;
   t.depth = std::max(t.depth, depth);
@@ -127,7 +130,8 @@ std::unique_ptr<ref_node> ref_build(std::vector<ref_fragment> list, bool min_spl
           if (s[static_cast<std::size_t>(k)] != s[static_cast<std::size_t>((k + 1) % 3)] &&
               s[static_cast<std::size_t>(k)] != s[static_cast<std::size_t>((k + 2) % 3)])
             lone = k;
-        const auto ic = static_cast<std::size_t>(lone), ia = static_cast<std::size_t>((lone + 1) % 3),
+        const auto ic = static_cast<std::size_t>(lone),
+                   ia = static_cast<std::size_t>((lone + 1) % 3),
                    ib = static_cast<std::size_t>((lone + 2) % 3);
         const EP& a = f.v[ia];
         const EP& b = f.v[ib];
@@ -137,7 +141,8 @@ std::unique_ptr<ref_node> ref_build(std::vector<ref_fragment> list, bool min_spl
         put(b, B, A, s[ia]);
         put(A, B, c, s[ic]);
       } else {
-        const auto iz = static_cast<std::size_t>(zero), ia = static_cast<std::size_t>((zero + 1) % 3),
+        const auto iz = static_cast<std::size_t>(zero),
+                   ia = static_cast<std::size_t>((zero + 1) % 3),
                    ib = static_cast<std::size_t>((zero + 2) % 3);
         const EP X = ref_cut(plane, f.v[ia], f.v[ib]);
         put(f.v[iz], f.v[ia], X, s[ia]);
@@ -170,19 +175,23 @@ ref_tree reference_tree(const exbsp::triangle_soup& soup, bool min_split) {
 }
 
 /// "" when the tree's node `at` (and its subtree) equals the reference node, else where not.
-std::string compare_with_reference(const tree_view<EK>& v, std::int32_t at, const ref_node* ref, const std::string& path) {
-  if (!ref || at < 0) return (!ref && at < 0) ? "" : path + ": one tree has a node here, the other not";
+std::string compare_with_reference(const tree_view<EK>& v, std::int32_t at, const ref_node* ref,
+                                   const std::string& path) {
+  if (!ref || at < 0)
+    return (!ref && at < 0) ? "" : path + ": one tree has a node here, the other not";
   const auto& nd = v.nodes[static_cast<std::size_t>(at)];
   if (nd.plane_source != ref->plane_source)
-    return path + ": splitter source " + std::to_string(nd.plane_source) + ", contract says " + std::to_string(ref->plane_source);
+    return path + ": splitter source " + std::to_string(nd.plane_source) + ", contract says " +
+           std::to_string(ref->plane_source);
   if (nd.count != ref->coplanar.size())
-    return path + ": " + std::to_string(nd.count) + " coplanar fragments, contract says " + std::to_string(ref->coplanar.size());
+    return path + ": " + std::to_string(nd.count) + " coplanar fragments, contract says " +
+           std::to_string(ref->coplanar.size());
   for (std::size_t k = 0; k < nd.count; ++k) {
     const std::size_t i = nd.first + k;
     const ref_fragment& f = ref->coplanar[k];
     if (v.source[i] != f.source || v.face[i] != f.face || v.fragments[i] != f.v)
-      return path + ": coplanar fragment " + std::to_string(k) + " differs (source " + std::to_string(v.source[i]) +
-             " vs " + std::to_string(f.source) + ")";
+      return path + ": coplanar fragment " + std::to_string(k) + " differs (source " +
+             std::to_string(v.source[i]) + " vs " + std::to_string(f.source) + ")";
   }
   std::string d = compare_with_reference(v, nd.negative, ref->negative.get(), path + "-");
   if (d.empty()) d = compare_with_reference(v, nd.positive, ref->positive.get(), path + "+");
@@ -190,7 +199,8 @@ std::string compare_with_reference(const tree_view<EK>& v, std::int32_t at, cons
 }
 
 /// "" when the library's naive (or min-split) tree of `soup` is the reference model's.
-std::string difference_from_reference(const exbsp::triangle_soup& soup, bool min_split, unsigned threads = 0) {
+std::string difference_from_reference(const exbsp::triangle_soup& soup, bool min_split,
+                                      unsigned threads = 0) {
   exbsp::build_options o;
   o.heuristic = min_split ? "min-split" : "naive";
   o.threads = threads;
@@ -198,16 +208,18 @@ std::string difference_from_reference(const exbsp::triangle_soup& soup, bool min
   const ref_tree ref = reference_tree(soup, min_split);
   const tree_view<EK> v = view_of<EK>(tree, soup);
   const auto& s = tree.stats();
-  if (s.splits != ref.splits || s.fragments != ref.fragments || s.nodes != ref.nodes || s.depth != ref.depth ||
-      s.degenerate_input != ref.degenerate)
-    return o.heuristic + ": stats (splits, fragments, nodes, depth) = (" + std::to_string(s.splits) + ", " +
-           std::to_string(s.fragments) + ", " + std::to_string(s.nodes) + ", " + std::to_string(s.depth) +
-           "), contract says (" + std::to_string(ref.splits) + ", " + std::to_string(ref.fragments) + ", " +
+  if (s.splits != ref.splits || s.fragments != ref.fragments || s.nodes != ref.nodes ||
+      s.depth != ref.depth || s.degenerate_input != ref.degenerate)
+    return o.heuristic + ": stats (splits, fragments, nodes, depth) = (" +
+           std::to_string(s.splits) + ", " + std::to_string(s.fragments) + ", " +
+           std::to_string(s.nodes) + ", " + std::to_string(s.depth) + "), contract says (" +
+           std::to_string(ref.splits) + ", " + std::to_string(ref.fragments) + ", " +
            std::to_string(ref.nodes) + ", " + std::to_string(ref.depth) + ")";
   return compare_with_reference(v, v.nodes.empty() ? -1 : 0, ref.root.get(), o.heuristic + " root");
 }
 
-RC_GTEST_PROP(Contract, naive_and_min_split_trees_equal_the_reference_model_of_design_section_3, ()) {
+RC_GTEST_PROP(Contract, naive_and_min_split_trees_equal_the_reference_model_of_design_section_3,
+              ()) {
   const soup_case c = *any_small_soup();
   for (const bool min_split : {false, true}) {
     const std::string diff = difference_from_reference(c.soup(), min_split);
@@ -255,8 +267,9 @@ RC_GTEST_PROP(Kernels, epeck_and_gmpq_build_identical_trees_and_orders, ()) {
     for (std::size_t i = 0; i < te.nodes().size(); ++i) {
       const auto& a = te.nodes()[i];
       const auto& b = tg.nodes()[i];
-      RC_ASSERT(a.plane_source == b.plane_source && a.first == b.first && a.count == b.count && a.negative == b.negative &&
-                a.positive == b.positive && a.parent == b.parent && a.side_in_parent == b.side_in_parent);
+      RC_ASSERT(a.plane_source == b.plane_source && a.first == b.first && a.count == b.count &&
+                a.negative == b.negative && a.positive == b.positive && a.parent == b.parent &&
+                a.side_in_parent == b.side_in_parent);
     }
     for (std::size_t i = 0; i < te.fragments().size(); ++i) {
       const auto& a = te.fragments()[i];
@@ -264,7 +277,8 @@ RC_GTEST_PROP(Kernels, epeck_and_gmpq_build_identical_trees_and_orders, ()) {
       RC_ASSERT(a.source == b.source && a.face == b.face);
       for (std::size_t k = 0; k < 3; ++k)
         for (int d = 0; d < 3; ++d)
-          RC_ASSERT(mpq_equal(exbsp::kernel_traits<EK>::rational(a.v[k][d]), exbsp::kernel_traits<GK>::rational(b.v[k][d])) != 0);
+          RC_ASSERT(mpq_equal(exbsp::kernel_traits<EK>::rational(a.v[k][d]),
+                              exbsp::kernel_traits<GK>::rational(b.v[k][d])) != 0);
     }
     // Orders for the same viewpoints, each built in its own kernel from identical exact data.
     const auto ve = view_of<EK>(te, soup);
@@ -272,7 +286,8 @@ RC_GTEST_PROP(Kernels, epeck_and_gmpq_build_identical_trees_and_orders, ()) {
     const auto pe = standard_viewpoints(ve, seed);
     const auto pg = standard_viewpoints(vg, seed);
     RC_ASSERT(pe.size() == pg.size());
-    for (std::size_t i = 0; i < pe.size(); ++i) RC_ASSERT(tree_order<EK>(te, pe[i]) == tree_order<GK>(tg, pg[i]));
+    for (std::size_t i = 0; i < pe.size(); ++i)
+      RC_ASSERT(tree_order<EK>(te, pe[i]) == tree_order<GK>(tg, pg[i]));
   }
   // And through the public API: the exact strings are the same.
   exbsp::build_options a, b;
@@ -280,7 +295,8 @@ RC_GTEST_PROP(Kernels, epeck_and_gmpq_build_identical_trees_and_orders, ()) {
   b.kernel = exbsp::kernel_id::gmpq;
   const auto ta = exbsp::bsp::build(soup, a), tb = exbsp::bsp::build(soup, b);
   RC_ASSERT(ta.fragment_count() == tb.fragment_count());
-  for (std::size_t i = 0; i < ta.fragment_count(); ++i) RC_ASSERT(ta.fragment_exact(i) == tb.fragment_exact(i));
+  for (std::size_t i = 0; i < ta.fragment_count(); ++i)
+    RC_ASSERT(ta.fragment_exact(i) == tb.fragment_exact(i));
   RC_ASSERT(ta.order_for_direction({0.25, -1, 0.5}) == tb.order_for_direction({0.25, -1, 0.5}));
 }
 
@@ -289,21 +305,25 @@ RC_GTEST_PROP(Kernels, epeck_and_gmpq_build_identical_trees_and_orders, ()) {
 /// Everything but timings, as a comparable string (exact coordinates included).
 std::string fingerprint(const exbsp::bsp& t) {
   const auto& s = t.stats();
-  std::string out = std::to_string(s.input_triangles) + " " + std::to_string(s.degenerate_input) + " " +
-                    std::to_string(s.fragments) + " " + std::to_string(s.splits) + " " + std::to_string(s.nodes) + " " +
-                    std::to_string(s.depth) + " " + s.kernel + " " + s.heuristic + "\n";
+  std::string out = std::to_string(s.input_triangles) + " " + std::to_string(s.degenerate_input) +
+                    " " + std::to_string(s.fragments) + " " + std::to_string(s.splits) + " " +
+                    std::to_string(s.nodes) + " " + std::to_string(s.depth) + " " + s.kernel + " " +
+                    s.heuristic + "\n";
   for (std::size_t i = 0; i < t.fragment_count(); ++i) {
     out += std::to_string(t.fragment(i).face);
     for (const auto& p : t.fragment_exact(i))
       for (const auto& x : p) out += " " + x;
-    for (const auto& a : t.ancestors(i)) out += " " + std::to_string(a.plane_face) + (a.side > 0 ? "+" : "-");
+    for (const auto& a : t.ancestors(i))
+      out += " " + std::to_string(a.plane_face) + (a.side > 0 ? "+" : "-");
     out += "\n";
   }
   for (const auto i : t.order_from_eye({0.3, -7, 11})) out += std::to_string(i) + ",";
   return out;
 }
 
-RC_GTEST_PROP(Reproducibility, same_input_heuristic_and_seed_give_identical_trees_across_builds_and_thread_counts, ()) {
+RC_GTEST_PROP(Reproducibility,
+              same_input_heuristic_and_seed_give_identical_trees_across_builds_and_thread_counts,
+              ()) {
   const soup_case c = *any_small_soup();
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
   for (const std::string& h : heuristics()) {
@@ -313,7 +333,8 @@ RC_GTEST_PROP(Reproducibility, same_input_heuristic_and_seed_give_identical_tree
     o.threads = 1;
     const std::string first = fingerprint(exbsp::bsp::build(c.soup(), o));
     o.threads = 2;
-    const std::string second = fingerprint(exbsp::bsp::build(c.soup(), o));  // the same input given again
+    const std::string second =
+        fingerprint(exbsp::bsp::build(c.soup(), o));  // the same input given again
     RC_ASSERT(first == second);
     o.threads = 0;
     RC_ASSERT(first == fingerprint(exbsp::bsp::build(c.soup(), o)));
@@ -330,7 +351,8 @@ TEST(Reproducibility, large_trees_are_identical_for_1_2_and_3_threads) {
   }
   for (const soup_case& c : cases)
     for (const std::string& h : heuristics()) {
-      if (c.tris.size() > 100 && h != "sampled") continue;  // the others are slow on 1000 CAD triangles
+      if (c.tris.size() > 100 && h != "sampled")
+        continue;  // the others are slow on 1000 CAD triangles
       exbsp::build_options o;
       o.heuristic = h;
       o.seed = 3;
@@ -339,10 +361,12 @@ TEST(Reproducibility, large_trees_are_identical_for_1_2_and_3_threads) {
       const std::string one = fingerprint(exbsp::bsp::build(soup, o));
       for (unsigned threads : {2u, 3u}) {
         o.threads = threads;
-        EXPECT_EQ(one, fingerprint(exbsp::bsp::build(soup, o))) << c.kind << " / " << h << " / " << threads << " threads";
+        EXPECT_EQ(one, fingerprint(exbsp::bsp::build(soup, o)))
+            << c.kind << " / " << h << " / " << threads << " threads";
       }
     }
-  EXBSP_NEED_CORPUS(cases.size() == 2, "data/meshes/fandisk.off");  // after the random soup's checks
+  EXBSP_NEED_CORPUS(cases.size() == 2,
+                    "data/meshes/fandisk.off");  // after the random soup's checks
 }
 
 // --- Input order ------------------------------------------------------------------------------
@@ -361,7 +385,8 @@ EK::FT closed_hit(const etri& f, const EP& eye, const EP& q) {
 }
 
 /// The painted depth along a ray: t of the last drawn fragment the ray meets (none: -1).
-EK::FT painted_depth(const tree_view<EK>& v, const std::vector<std::uint32_t>& order, const EP& eye, const EP& q) {
+EK::FT painted_depth(const tree_view<EK>& v, const std::vector<std::uint32_t>& order, const EP& eye,
+                     const EP& q) {
   EK::FT depth = -1;
   for (std::uint32_t i : order) {
     const EK::FT t = closed_hit(v.fragments[i], eye, q);
@@ -394,7 +419,8 @@ RC_GTEST_PROP(InputOrder, permuted_input_paints_the_ray_cast_depth_along_every_s
   std::vector<EP> samples;
   for (int k = 0; k < 24; ++k) {
     const tri_d& t = c.tris[rng.below(c.tris.size())];
-    const int w0 = 1 + static_cast<int>(rng.below(16)), w1 = 1 + static_cast<int>(rng.below(16)), w2 = 1 + static_cast<int>(rng.below(16));
+    const int w0 = 1 + static_cast<int>(rng.below(16)), w1 = 1 + static_cast<int>(rng.below(16)),
+              w2 = 1 + static_cast<int>(rng.below(16));
     const EP a = exact_point<EK>(t[0]), b = exact_point<EK>(t[1]), d = exact_point<EK>(t[2]);
     samples.push_back(a + ((b - a) * EK::FT(w1) + (d - a) * EK::FT(w2)) / EK::FT(w0 + w1 + w2));
   }
@@ -442,7 +468,8 @@ RC_GTEST_PROP(Facade, bsp_build_matches_the_kernel_tree_stats_faces_ancestors_an
     RC_ASSERT(tree.fragment(i).face == direct.fragments()[i].face);
     // ancestors(): root first, the side of each ancestor's plane the fragment is on.
     std::vector<int> sides;
-    for (auto at = static_cast<std::int32_t>(direct.node_of_fragment(i)); direct.nodes()[static_cast<std::size_t>(at)].parent >= 0;
+    for (auto at = static_cast<std::int32_t>(direct.node_of_fragment(i));
+         direct.nodes()[static_cast<std::size_t>(at)].parent >= 0;
          at = direct.nodes()[static_cast<std::size_t>(at)].parent)
       sides.insert(sides.begin(), direct.nodes()[static_cast<std::size_t>(at)].side_in_parent);
     const auto anc = tree.ancestors(i);
@@ -522,7 +549,8 @@ RC_GTEST_PROP(Checker, ray_candidates_from_boxes_and_interval_signs_miss_no_cros
   // The order check prunes candidates (boxes widened by the rounding of the ray, interval
   // signs); every fragment as a candidate must give the same tally, for the tree's order and
   // for its reverse (then every pair is misordered), on the hardest generators.
-  const soup_case c = *rc::gen::oneOf(any_small_soup(), scale_disparity(), near_coplanar(), slivers());
+  const soup_case c =
+      *rc::gen::oneOf(any_small_soup(), scale_disparity(), near_coplanar(), slivers());
   const exbsp::triangle_soup soup = c.soup();
   exbsp::build_options o;
   o.heuristic = *rc::gen::elementOf(heuristics());
@@ -554,7 +582,8 @@ TEST(Checker, rejects_a_gap_an_overlap_of_equal_area_and_a_vertex_off_the_plane)
     // other keeps the normal sum and stays inside the source: only the disjointness test sees it.
     exbsp::build_options o;
     o.heuristic = "naive";
-    const soup_case halves = case_of("halves", {{{{-1, -1, -1}, {3, 3, -1}, {0, 0, 3}}}, {{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}});
+    const soup_case halves = case_of(
+        "halves", {{{{-1, -1, -1}, {3, 3, -1}, {0, 0, 3}}}, {{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}});
     const exbsp::triangle_soup soup = halves.soup();
     const exbsp::bsp_tree<EK> t(soup, o);
     auto v = view_of<EK>(t, soup);
@@ -621,7 +650,8 @@ TEST(Checker, rejects_a_wrong_side_in_parent_and_wrong_stats) {
 // exact on the input planes, traverses exactly as the contract says for every eye.
 
 template <class K>
-void assert_inexact_build_is_well_formed(const soup_case& c, const std::string& h, std::uint64_t seed) {
+void assert_inexact_build_is_well_formed(const soup_case& c, const std::string& h,
+                                         std::uint64_t seed) {
   const exbsp::triangle_soup soup = c.soup();
   exbsp::build_options o;
   o.heuristic = h;
@@ -633,7 +663,8 @@ void assert_inexact_build_is_well_formed(const soup_case& c, const std::string& 
     co.viewpoints = 3;
     co.heuristic = h;
     const check_report r = check_tree(t, soup, co);
-    if (r.count("structure") || r.count("stats")) RC_FAIL(exbsp::to_string(exbsp::kernel_traits<K>::id) + ": " + r.text());
+    if (r.count("structure") || r.count("stats"))
+      RC_FAIL(exbsp::to_string(exbsp::kernel_traits<K>::id) + ": " + r.text());
     if constexpr (std::is_same_v<K, exbsp::epick_kernel>) {
       // Eyes only: a direction's side test needs the plane's normal, which Epick rounds.
       check_options eyes = co;
@@ -649,7 +680,8 @@ void assert_inexact_build_is_well_formed(const soup_case& c, const std::string& 
   }
 }
 
-RC_GTEST_PROP(InexactKernels, keep_the_tree_structure_and_throw_only_exbsp_errors_on_every_generator, ()) {
+RC_GTEST_PROP(InexactKernels,
+              keep_the_tree_structure_and_throw_only_exbsp_errors_on_every_generator, ()) {
   const soup_case c = *rc::gen::oneOf(any_small_soup(), cyclic_sticks());
   const std::string h = *rc::gen::elementOf(heuristics());
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();

@@ -51,8 +51,8 @@ pixel_list span_pixels(vec2 a, vec2 b, vec2 c, int w, int h) {
 
 std::string describe(vec2 a, vec2 b, vec2 c, int w, int h) {
   char buf[320];
-  std::snprintf(buf, sizeof buf, "(%.17g, %.17g) (%.17g, %.17g) (%.17g, %.17g) in %dx%d", a.x, a.y, b.x, b.y, c.x,
-                c.y, w, h);
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g) (%.17g, %.17g) (%.17g, %.17g) in %dx%d", a.x, a.y,
+                b.x, b.y, c.x, c.y, w, h);
   return buf;
 }
 
@@ -77,9 +77,9 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 TEST(SpanRaster, ZeroAreaAndNonFiniteTrianglesCoverNothing) {
   for (const std::array<vec2, 3>& t : std::vector<std::array<vec2, 3>>{
-           {{{1, 1}, {1, 1}, {1, 1}}},            // a point
+           {{{1, 1}, {1, 1}, {1, 1}}},              // a point
            {{{0.5, 0.5}, {3.5, 3.5}, {7.5, 7.5}}},  // collinear through centres
-           {{{0, 0.5}, {8, 0.5}, {4, 0.5}}},       // horizontal line on centres
+           {{{0, 0.5}, {8, 0.5}, {4, 0.5}}},        // horizontal line on centres
            {{{nan, 1}, {3, 1}, {1, 4}}},
            {{{inf, 1}, {3, 1}, {1, 4}}},
            {{{1, -inf}, {3, 1}, {1, 4}}}}) {
@@ -91,10 +91,12 @@ TEST(SpanRaster, OutsideTheWindowAndOneByOneWindows) {
   EXPECT_EQ(expect_same({-5, -5}, {-1, -5}, {-3, -1}, 8, 8), 0u);
   EXPECT_EQ(expect_same({9, 9}, {20, 9}, {9, 20}, 8, 8), 0u);
   EXPECT_EQ(expect_same({-100, -100}, {100, -100}, {0, 100}, 1, 1), 1u);
-  EXPECT_EQ(expect_same({0.5, 0.5}, {1, 0.5}, {0.5, 1}, 1, 1), 0u);  // centre on a vertex and a bottom edge
-  EXPECT_EQ(expect_same({0.5, 0.5}, {0.5, 0}, {1, 0.5}, 1, 1), 1u);  // ... on a vertex, a top and a left edge
-  EXPECT_EQ(expect_same({0, 0}, {1, 1}, {0, 1}, 1, 1), 0u);          // centre on the diagonal: a right edge
-  EXPECT_EQ(expect_same({0, 0}, {1, 0}, {1, 1}, 1, 1), 1u);          // the other half: a left edge
+  EXPECT_EQ(expect_same({0.5, 0.5}, {1, 0.5}, {0.5, 1}, 1, 1),
+            0u);  // centre on a vertex and a bottom edge
+  EXPECT_EQ(expect_same({0.5, 0.5}, {0.5, 0}, {1, 0.5}, 1, 1),
+            1u);  // ... on a vertex, a top and a left edge
+  EXPECT_EQ(expect_same({0, 0}, {1, 1}, {0, 1}, 1, 1), 0u);  // centre on the diagonal: a right edge
+  EXPECT_EQ(expect_same({0, 0}, {1, 0}, {1, 1}, 1, 1), 1u);  // the other half: a left edge
 }
 
 TEST(SpanRaster, EdgesThroughPixelCentresFollowTheReference) {
@@ -122,7 +124,8 @@ TEST(SpanRaster, SharedEdgesPartitionTheirPixels) {
     std::vector<int> count(w * h, 0), ref_count(w * h, 0);
     for (const std::array<int, 3>& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
       for (const auto& [i, j] : span_pixels(q[t[0]], q[t[1]], q[t[2]], w, h)) ++count[j * w + i];
-      for (const auto& [i, j] : reference_pixels(q[t[0]], q[t[1]], q[t[2]], w, h)) ++ref_count[j * w + i];
+      for (const auto& [i, j] : reference_pixels(q[t[0]], q[t[1]], q[t[2]], w, h))
+        ++ref_count[j * w + i];
     }
     ASSERT_EQ(count, ref_count) << n;
   }
@@ -137,7 +140,9 @@ TEST(SpanRaster, RandomTrianglesOfEverySize) {
     // Scale from a tenth of a pixel to a million pixels, centred anywhere near the window.
     const double scale = std::pow(10.0, -1 + 7 * unit(rng));
     const vec2 centre{(unit(rng) * 1.4 - 0.2) * w, (unit(rng) * 1.4 - 0.2) * h};
-    auto p = [&] { return vec2{centre.x + (unit(rng) - 0.5) * scale, centre.y + (unit(rng) - 0.5) * scale}; };
+    auto p = [&] {
+      return vec2{centre.x + (unit(rng) - 0.5) * scale, centre.y + (unit(rng) - 0.5) * scale};
+    };
     painted += expect_same(p(), p(), p(), w, h);
     if (HasFailure()) return;
   }
@@ -150,8 +155,10 @@ TEST(SpanRaster, SliversAndNearlyCollinearTriangles) {
   std::size_t painted = 0;
   for (int n = 0; n < 20000; ++n) {
     const int w = 40, h = 30;
-    const vec2 a{unit(rng) * 60 - 10, unit(rng) * 50 - 10}, b{unit(rng) * 60 - 10, unit(rng) * 50 - 10};
-    const double t = unit(rng) * 1.2 - 0.1, off = std::pow(10.0, -15 * unit(rng)) * (unit(rng) < 0.5 ? -1 : 1);
+    const vec2 a{unit(rng) * 60 - 10, unit(rng) * 50 - 10},
+        b{unit(rng) * 60 - 10, unit(rng) * 50 - 10};
+    const double t = unit(rng) * 1.2 - 0.1,
+                 off = std::pow(10.0, -15 * unit(rng)) * (unit(rng) < 0.5 ? -1 : 1);
     const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
     if (len == 0) continue;
     const vec2 c{a.x + t * dx - off * dy / len, a.y + t * dy + off * dx / len};
@@ -180,8 +187,8 @@ TEST(SpanRaster, HugeCoordinatesAndSteepEdges) {
   std::size_t painted = 0;
   for (double m : big) {
     painted += expect_same({-m, -m}, {m, -1}, {3.5, m}, 32, 24);
-    painted += expect_same({-m, 0.5}, {m, 0.5}, {0.5, m}, 32, 24);      // horizontal edge on centres
-    painted += expect_same({0.5, -m}, {0.5, m}, {m, 3}, 32, 24);        // vertical edge on centres
+    painted += expect_same({-m, 0.5}, {m, 0.5}, {0.5, m}, 32, 24);     // horizontal edge on centres
+    painted += expect_same({0.5, -m}, {0.5, m}, {m, 3}, 32, 24);       // vertical edge on centres
     painted += expect_same({10.25, -m}, {10.75, m}, {-m, 3}, 32, 24);  // nearly vertical
     painted += expect_same({-m, 5.5}, {m, 5.5 + 1e-9}, {0, -m}, 32, 24);  // nearly horizontal
     painted += expect_same({1e-300, 0}, {m, 1e-300}, {0, m}, 32, 24);
@@ -225,7 +232,8 @@ image expect_same_walks(frame& f, int scale, const std::string& what) {
   for (unsigned threads : {1u, 2u, 3u, 7u, 0u}) {
     f.raster_threads = threads;
     const image fast = paint_frame(f, scale);
-    EXPECT_EQ(fast.data(), reference.data()) << what << " at scale " << scale << ", " << threads << " bands";
+    EXPECT_EQ(fast.data(), reference.data())
+        << what << " at scale " << scale << ", " << threads << " bands";
   }
   return reference;
 }
@@ -244,8 +252,10 @@ TEST(FrontToBack, RandomOverlappingPolygonsGiveTheReferenceImage) {
   std::uniform_int_distribution<int> byte(0, 255);
   for (int n = 0; n < 60; ++n) {
     frame f;
-    const int w = 20 + static_cast<int>(unit(rng) * 150), h = 10 + static_cast<int>(unit(rng) * 100);
-    f.view.vp = {static_cast<int>(unit(rng) * 10) - 5, static_cast<int>(unit(rng) * 10) - 5, w, h, 0, 1};
+    const int w = 20 + static_cast<int>(unit(rng) * 150),
+              h = 10 + static_cast<int>(unit(rng) * 100);
+    f.view.vp = {
+        static_cast<int>(unit(rng) * 10) - 5, static_cast<int>(unit(rng) * 10) - 5, w, h, 0, 1};
     f.background = {9, 9, 9};
     const std::size_t count = 1 + static_cast<std::size_t>(unit(rng) * 400);
     for (std::size_t k = 0; k < count; ++k) {
@@ -256,7 +266,8 @@ TEST(FrontToBack, RandomOverlappingPolygonsGiveTheReferenceImage) {
       // Sizes from a fraction of a pixel to twice the viewport; vertices on a 1/2 grid half
       // the time, so that edges run through pixel centres and neighbours share them.
       const double size = std::pow(10.0, -0.5 + 2.5 * unit(rng)), grid = unit(rng) < 0.5 ? 2 : 0;
-      const double cx = f.view.vp.x + (unit(rng) * 1.4 - 0.2) * w, cy = f.view.vp.y + (unit(rng) * 1.4 - 0.2) * h;
+      const double cx = f.view.vp.x + (unit(rng) * 1.4 - 0.2) * w,
+                   cy = f.view.vp.y + (unit(rng) * 1.4 - 0.2) * h;
       const int corners = unit(rng) < 0.7 ? 3 : 4;
       for (int c = 0; c < corners; ++c) {
         const double a = 2 * 3.141592653589793 * (c + 0.8 * unit(rng)) / corners;
@@ -300,12 +311,14 @@ TEST(FrontToBack, AFullyCoveringPolygonInFrontHidesEverythingBehind) {
 /// curves included), once per walk: byte-identical pictures.
 TEST(FrontToBack, EveryExampleSceneAndTheDemoGiveTheReferenceImage) {
   std::vector<std::string> paths{""};
-  for (const auto& e : std::filesystem::directory_iterator(std::string(EXBSP_SOURCE_DIR) + "/scenes"))
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::string(EXBSP_SOURCE_DIR) + "/scenes"))
     if (e.path().extension() == ".json") paths.push_back(e.path().string());
   std::sort(paths.begin(), paths.end());
   ASSERT_GE(paths.size(), 10u);
   for (const std::string& path : paths) {
-    const exbsp::scene::scene s = path.empty() ? exbsp::scene::demo_scene() : exbsp::scene::load_scene(path);
+    const exbsp::scene::scene s =
+        path.empty() ? exbsp::scene::demo_scene() : exbsp::scene::load_scene(path);
     exbsp::scene::scene_geometry g = exbsp::scene::load_geometry(s);
     frame f;
     f.view = exbsp::scene::make_view_setup(s);
@@ -352,14 +365,15 @@ std::vector<screen_polygon> reference_transform_clip(const frame& f, std::size_t
     poly.fragment = idx;
     poly.face = fr.face;
     poly.color = f.fragment_colors.empty() ? f.color_of(fr.face) : f.fragment_colors.at(idx);
-    for (const hpoint& c : out) poly.v.push_back(to_window(f.view.vp, c.x / c.w, c.y / c.w, c.z / c.w));
+    for (const hpoint& c : out)
+      poly.v.push_back(to_window(f.view.vp, c.x / c.w, c.y / c.w, c.z / c.w));
     polygons.push_back(poly);
   }
   return polygons;
 }
 
-void expect_bitwise_equal(const std::vector<screen_polygon>& a, const std::vector<screen_polygon>& b,
-                          const std::string& what) {
+void expect_bitwise_equal(const std::vector<screen_polygon>& a,
+                          const std::vector<screen_polygon>& b, const std::string& what) {
   ASSERT_EQ(a.size(), b.size()) << what;
   for (std::size_t i = 0; i < a.size(); ++i) {
     ASSERT_EQ(a[i].fragment, b[i].fragment) << what;
@@ -374,7 +388,8 @@ TEST(TransformClip, SharedPointsAndTrivialCasesGiveTheClippersDoubles) {
   // A scene whose near plane and sides cut through the mesh (inside.json), views from every
   // side, with and without the point index; polygons reused from the previous view.
   for (const char* name : {"inside", "perspective", "oblique", "orthographic"}) {
-    const exbsp::scene::scene s = exbsp::scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
+    const exbsp::scene::scene s =
+        exbsp::scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
     exbsp::scene::scene_geometry g = exbsp::scene::load_geometry(s);
     frame f;
     f.view = exbsp::scene::make_view_setup(s);
@@ -390,12 +405,14 @@ TEST(TransformClip, SharedPointsAndTrivialCasesGiveTheClippersDoubles) {
       std::size_t reference_clipped = 0;
       const std::vector<screen_polygon> reference = reference_transform_clip(f, reference_clipped);
       transform_clip_stage(f);
-      expect_bitwise_equal(f.polygons, reference, std::string(name) + " indexed, view " + std::to_string(view));
+      expect_bitwise_equal(f.polygons, reference,
+                           std::string(name) + " indexed, view " + std::to_string(view));
       EXPECT_EQ(f.fully_clipped, reference_clipped) << name;
       const auto index = std::move(f.fragment_points);
       f.fragment_points.clear();
       transform_clip_stage(f);
-      expect_bitwise_equal(f.polygons, reference, std::string(name) + " per corner, view " + std::to_string(view));
+      expect_bitwise_equal(f.polygons, reference,
+                           std::string(name) + " per corner, view " + std::to_string(view));
       f.fragment_points = index;
     }
   }

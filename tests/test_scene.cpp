@@ -42,7 +42,8 @@ std::string temp_dir() {
   static const std::string dir = [] {
     const std::string d = exbsp_test::make_temp_dir("test_scene").string();
     fs::create_directories(d + "/meshes");
-    std::ofstream(d + "/meshes/tri.off") << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n";
+    std::ofstream(d + "/meshes/tri.off")
+        << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n";
     return d;
   }();
   return dir;
@@ -106,12 +107,33 @@ TEST(SceneParse, EveryErrorNamesItsKey) {
       {"mesh file missing", [](json& d) { d["meshes"][0].erase("file"); }, "/meshes/0/file"},
       {"mesh file not a string", [](json& d) { d["meshes"][0]["file"] = 7; }, "/meshes/0/file"},
       {"color not an array", [](json& d) { d["meshes"][0]["color"] = "red"; }, "/meshes/0/color"},
-      {"color two numbers", [](json& d) { d["meshes"][0]["color"] = {1, 2}; }, "/meshes/0/color"},
-      {"color above 255", [](json& d) { d["meshes"][0]["color"] = {1, 256, 3}; }, "/meshes/0/color/1"},
-      {"color negative", [](json& d) { d["meshes"][0]["color"] = {-1, 2, 3}; }, "/meshes/0/color/0"},
-      {"color fraction", [](json& d) { d["meshes"][0]["color"] = {1, 2, 3.5}; }, "/meshes/0/color/2"},
-      {"color string", [](json& d) { d["meshes"][0]["color"] = {1, "2", 3}; }, "/meshes/0/color/1"},
-      {"transform 15 numbers", [](json& d) { d["meshes"][0]["transform"] = std::vector<double>(15, 0.0); },
+      {"color two numbers",
+       [](json& d) {
+         d["meshes"][0]["color"] = {1, 2};
+       },
+       "/meshes/0/color"},
+      {"color above 255",
+       [](json& d) {
+         d["meshes"][0]["color"] = {1, 256, 3};
+       },
+       "/meshes/0/color/1"},
+      {"color negative",
+       [](json& d) {
+         d["meshes"][0]["color"] = {-1, 2, 3};
+       },
+       "/meshes/0/color/0"},
+      {"color fraction",
+       [](json& d) {
+         d["meshes"][0]["color"] = {1, 2, 3.5};
+       },
+       "/meshes/0/color/2"},
+      {"color string",
+       [](json& d) {
+         d["meshes"][0]["color"] = {1, "2", 3};
+       },
+       "/meshes/0/color/1"},
+      {"transform 15 numbers",
+       [](json& d) { d["meshes"][0]["transform"] = std::vector<double>(15, 0.0); },
        "/meshes/0/transform"},
       {"transform not numbers",
        [](json& d) {
@@ -121,16 +143,42 @@ TEST(SceneParse, EveryErrorNamesItsKey) {
        },
        "/meshes/0/transform/5"},
       {"camera missing", [](json& d) { d.erase("camera"); }, "/camera"},
-      {"camera not an object", [](json& d) { d["camera"] = {1, 2, 3}; }, "/camera"},
+      {"camera not an object",
+       [](json& d) {
+         d["camera"] = {1, 2, 3};
+       },
+       "/camera"},
       {"eye missing", [](json& d) { d["camera"].erase("eye"); }, "/camera/eye"},
-      {"eye two numbers", [](json& d) { d["camera"]["eye"] = {1, 2}; }, "/camera/eye"},
-      {"eye string", [](json& d) { d["camera"]["eye"] = {1, "2", 3}; }, "/camera/eye/1"},
-      {"look_at equals eye", [](json& d) { d["camera"]["look_at"] = {0, 0, 5}; }, "/camera/look_at"},
-      {"up parallel to gaze", [](json& d) { d["camera"]["up"] = {0, 0, 2}; }, "/camera/up"},
-      {"up zero", [](json& d) { d["camera"]["up"] = {0, 0, 0}; }, "/camera/up"},
+      {"eye two numbers",
+       [](json& d) {
+         d["camera"]["eye"] = {1, 2};
+       },
+       "/camera/eye"},
+      {"eye string",
+       [](json& d) {
+         d["camera"]["eye"] = {1, "2", 3};
+       },
+       "/camera/eye/1"},
+      {"look_at equals eye",
+       [](json& d) {
+         d["camera"]["look_at"] = {0, 0, 5};
+       },
+       "/camera/look_at"},
+      {"up parallel to gaze",
+       [](json& d) {
+         d["camera"]["up"] = {0, 0, 2};
+       },
+       "/camera/up"},
+      {"up zero",
+       [](json& d) {
+         d["camera"]["up"] = {0, 0, 0};
+       },
+       "/camera/up"},
       {"projection missing", [](json& d) { d.erase("projection"); }, "/projection"},
-      {"projection type missing", [](json& d) { d["projection"].erase("type"); }, "/projection/type"},
-      {"projection type unknown", [](json& d) { d["projection"]["type"] = "fisheye"; }, "/projection/type"},
+      {"projection type missing", [](json& d) { d["projection"].erase("type"); },
+       "/projection/type"},
+      {"projection type unknown", [](json& d) { d["projection"]["type"] = "fisheye"; },
+       "/projection/type"},
       {"fovy missing", [](json& d) { d["projection"].erase("fovy_deg"); }, "/projection/fovy_deg"},
       {"fovy zero", [](json& d) { d["projection"]["fovy_deg"] = 0; }, "/projection/fovy_deg"},
       {"fovy 180", [](json& d) { d["projection"]["fovy_deg"] = 180; }, "/projection/fovy_deg"},
@@ -141,64 +189,125 @@ TEST(SceneParse, EveryErrorNamesItsKey) {
       {"near equals far", [](json& d) { d["projection"]["far"] = 1; }, "/projection/far"},
       {"near beyond far", [](json& d) { d["projection"]["far"] = 0.5; }, "/projection/far"},
       {"ortho left missing",
-       [](json& d) { d["projection"] = {{"type", "orthographic"}, {"right", 1}, {"bottom", -1}, {"top", 1}, {"near", 1}, {"far", 9}}; },
+       [](json& d) {
+         d["projection"] = {{"type", "orthographic"},
+                            {"right", 1},
+                            {"bottom", -1},
+                            {"top", 1},
+                            {"near", 1},
+                            {"far", 9}};
+       },
        "/projection/left"},
       {"ortho left equals right",
        [](json& d) {
-         d["projection"] = {{"type", "orthographic"}, {"left", 1}, {"right", 1}, {"bottom", -1}, {"top", 1}, {"near", 1}, {"far", 9}};
+         d["projection"] = {{"type", "orthographic"},
+                            {"left", 1},
+                            {"right", 1},
+                            {"bottom", -1},
+                            {"top", 1},
+                            {"near", 1},
+                            {"far", 9}};
        },
        "/projection/right"},
       {"frustum bottom above top",
        [](json& d) {
-         d["projection"] = {{"type", "frustum"}, {"left", -1}, {"right", 1}, {"bottom", 2}, {"top", 1}, {"near", 1}, {"far", 9}};
+         d["projection"] = {{"type", "frustum"}, {"left", -1}, {"right", 1}, {"bottom", 2},
+                            {"top", 1},          {"near", 1},  {"far", 9}};
        },
        "/projection/top"},
       {"frustum near zero",
        [](json& d) {
-         d["projection"] = {{"type", "frustum"}, {"left", -1}, {"right", 1}, {"bottom", -1}, {"top", 1}, {"near", 0}, {"far", 9}};
+         d["projection"] = {{"type", "frustum"}, {"left", -1}, {"right", 1}, {"bottom", -1},
+                            {"top", 1},          {"near", 0},  {"far", 9}};
        },
        "/projection/near"},
       {"oblique direction missing",
        [](json& d) {
-         d["projection"] = {{"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1}, {"top", 1}, {"near", 1}, {"far", 9}};
+         d["projection"] = {{"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1},
+                            {"top", 1},          {"near", 1},  {"far", 9}};
        },
        "/projection/direction"},
       {"oblique direction away from the scene",
        [](json& d) {
-         d["projection"] = {{"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1}, {"top", 1},
-                            {"near", 1}, {"far", 9}, {"direction", {0.5, 0, 1}}};
+         d["projection"] = {
+             {"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1},
+             {"top", 1},          {"near", 1},  {"far", 9},   {"direction", {0.5, 0, 1}}};
        },
        "/projection/direction"},
       {"oblique direction zero",
        [](json& d) {
-         d["projection"] = {{"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1}, {"top", 1},
-                            {"near", 1}, {"far", 9}, {"direction", {0, 0, 0}}};
+         d["projection"] = {
+             {"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1},
+             {"top", 1},          {"near", 1},  {"far", 9},   {"direction", {0, 0, 0}}};
        },
        "/projection/direction"},
       {"viewport missing", [](json& d) { d.erase("viewport"); }, "/viewport"},
       {"viewport width zero", [](json& d) { d["viewport"]["width"] = 0; }, "/viewport/width"},
-      {"viewport height huge", [](json& d) { d["viewport"]["height"] = 16385; }, "/viewport/height"},
-      {"viewport width fraction", [](json& d) { d["viewport"]["width"] = 64.5; }, "/viewport/width"},
-      {"viewport height missing", [](json& d) { d["viewport"].erase("height"); }, "/viewport/height"},
-      {"background out of range", [](json& d) { d["background"] = {0, 0, 300}; }, "/background/2"},
+      {"viewport height huge", [](json& d) { d["viewport"]["height"] = 16385; },
+       "/viewport/height"},
+      {"viewport width fraction", [](json& d) { d["viewport"]["width"] = 64.5; },
+       "/viewport/width"},
+      {"viewport height missing", [](json& d) { d["viewport"].erase("height"); },
+       "/viewport/height"},
+      {"background out of range",
+       [](json& d) {
+         d["background"] = {0, 0, 300};
+       },
+       "/background/2"},
       {"background wrong type", [](json& d) { d["background"] = "white"; }, "/background"},
       {"effects not an object", [](json& d) { d["effects"] = {"backface_culling"}; }, "/effects"},
-      {"effect unknown", [](json& d) { d["effects"] = {{"sparkle", true}}; }, "/effects/sparkle"},
-      {"effect lighting bad parameter", [](json& d) { d["effects"] = {{"lighting", {{"ambient", -1}}}}; },
+      {"effect unknown",
+       [](json& d) {
+         d["effects"] = {{"sparkle", true}};
+       },
+       "/effects/sparkle"},
+      {"effect lighting bad parameter",
+       [](json& d) {
+         d["effects"] = {{"lighting", {{"ambient", -1}}}};
+       },
        "/effects/lighting/ambient"},
-      {"effect fog unknown parameter", [](json& d) { d["effects"] = {{"fog", {{"far", 3}}}}; }, "/effects/fog/far"},
-      {"effect wrong type", [](json& d) { d["effects"] = {{"backface_culling", 3}}; }, "/effects/backface_culling"},
-      {"effect unknown parameter", [](json& d) { d["effects"] = {{"backface_culling", {{"mode", "front"}}}}; },
+      {"effect fog unknown parameter",
+       [](json& d) {
+         d["effects"] = {{"fog", {{"far", 3}}}};
+       },
+       "/effects/fog/far"},
+      {"effect wrong type",
+       [](json& d) {
+         d["effects"] = {{"backface_culling", 3}};
+       },
+       "/effects/backface_culling"},
+      {"effect unknown parameter",
+       [](json& d) {
+         d["effects"] = {{"backface_culling", {{"mode", "front"}}}};
+       },
        "/effects/backface_culling/mode"},
       {"curves not an array", [](json& d) { d["curves"] = 5; }, "/curves"},
       {"curve not an object", [](json& d) { d["curves"] = {3}; }, "/curves/0"},
-      {"curve bezier missing", [](json& d) { d["curves"] = {{{"color", {0, 0, 0}}}}; }, "/curves/0/bezier"},
-      {"curve bezier empty", [](json& d) { d["curves"] = {{{"bezier", json::array()}}}; }, "/curves/0/bezier"},
-      {"curve bezier not an array", [](json& d) { d["curves"] = {{{"bezier", "arc"}}}; }, "/curves/0/bezier"},
+      {"curve bezier missing",
+       [](json& d) {
+         d["curves"] = {{{"color", {0, 0, 0}}}};
+       },
+       "/curves/0/bezier"},
+      {"curve bezier empty",
+       [](json& d) {
+         d["curves"] = {{{"bezier", json::array()}}};
+       },
+       "/curves/0/bezier"},
+      {"curve bezier not an array",
+       [](json& d) {
+         d["curves"] = {{{"bezier", "arc"}}};
+       },
+       "/curves/0/bezier"},
       {"curve control point two numbers",
-       [](json& d) { d["curves"] = {{{"bezier", {{0, 0, 0}, {1, 1, 1}, {2, 2}}}}}; }, "/curves/0/bezier/2"},
+       [](json& d) {
+         d["curves"] = {{{"bezier", {{0, 0, 0}, {1, 1, 1}, {2, 2}}}}};
+       },
+       "/curves/0/bezier/2"},
       {"curve coordinate not a number",
-       [](json& d) { d["curves"] = {{{"bezier", {{0, 0, 0}, {1, 1, "z"}}}}}; }, "/curves/0/bezier/1/2"},
+       [](json& d) {
+         d["curves"] = {{{"bezier", {{0, 0, 0}, {1, 1, "z"}}}}};
+       },
+       "/curves/0/bezier/1/2"},
       {"curve coordinate infinite",
        [](json& d) {
          d["curves"] = {{{"bezier", {{0, 0, 0}, {1, 1, 1}}}}};
@@ -208,13 +317,15 @@ TEST(SceneParse, EveryErrorNamesItsKey) {
       {"curve with too many control points",
        [](json& d) {
          json pts = json::array();
-         for (std::size_t k = 0; k <= scene::max_curve_control_points; ++k) pts.push_back({k, 0, 0});
+         for (std::size_t k = 0; k <= scene::max_curve_control_points; ++k)
+           pts.push_back({k, 0, 0});
          d["curves"] = {{{"bezier", pts}}};
        },
        "/curves/0/bezier"},
       {"second curve colour out of range",
        [](json& d) {
-         d["curves"] = {{{"bezier", {{0, 0, 0}}}}, {{"bezier", {{0, 0, 0}, {1, 0, 0}}}, {"color", {0, 256, 0}}}};
+         d["curves"] = {{{"bezier", {{0, 0, 0}}}},
+                        {{"bezier", {{0, 0, 0}, {1, 0, 0}}}, {"color", {0, 256, 0}}}};
        },
        "/curves/1/color/1"},
       {"root not an object", [](json& d) { d = json::array(); }, ""},
@@ -236,7 +347,8 @@ TEST(SceneParse, EffectsSetToFalseAreNotAskedFor) {
   d["effects"] = {{"depth_of_field", false}, {"antialias", false}, {"fog", false}};
   EXPECT_TRUE(parse(d).effects.empty());
   // Every effect of the catalogue is implemented now.
-  for (const view::effect_description& e : view::effect_catalog()) EXPECT_TRUE(e.available) << e.name;
+  for (const view::effect_description& e : view::effect_catalog())
+    EXPECT_TRUE(e.available) << e.name;
 }
 
 TEST(SceneParse, EffectsAndCurves) {
@@ -250,7 +362,8 @@ TEST(SceneParse, EffectsAndCurves) {
   // Curves: empty or absent accepted; non-empty parsed (colour default black), no warning.
   d["curves"] = json::array();
   EXPECT_TRUE(parse(d).curves.empty());
-  d["curves"] = json::parse(R"([{"bezier": [[0,0,0],[1,1,0],[2,0,0]], "color": [10,20,30]}, {"bezier": [[1,2,3]]}])");
+  d["curves"] = json::parse(
+      R"([{"bezier": [[0,0,0],[1,1,0],[2,0,0]], "color": [10,20,30]}, {"bezier": [[1,2,3]]}])");
   std::ostringstream warnings;
   const scene::scene s = parse(d, &warnings);
   ASSERT_EQ(s.curves.size(), 2u);
@@ -285,7 +398,13 @@ TEST(SceneParse, SyntaxErrorsAndMissingFiles) {
 
 TEST(SceneParse, ObliqueAndOrthographicViews) {
   json d = valid_scene();
-  d["projection"] = {{"type", "orthographic"}, {"left", -2}, {"right", 2}, {"bottom", -1.5}, {"top", 1.5}, {"near", 1}, {"far", 9}};
+  d["projection"] = {{"type", "orthographic"},
+                     {"left", -2},
+                     {"right", 2},
+                     {"bottom", -1.5},
+                     {"top", 1.5},
+                     {"near", 1},
+                     {"far", 9}};
   view::view_setup v = scene::make_view_setup(parse(d));
   EXPECT_TRUE(v.is_parallel());
   EXPECT_DOUBLE_EQ(v.direction.z, -1);  // the gaze
@@ -359,7 +478,8 @@ double signed_volume(const triangle_soup& s) {
   for (const soup_triangle& t : s.triangles) {
     const vec3d &a = s.vertices[t.v[0]], &b = s.vertices[t.v[1]], &c = s.vertices[t.v[2]];
     volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-               a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+               a[2] * (b[0] * c[1] - b[1] * c[0])) /
+              6;
   }
   return volume;
 }
@@ -389,7 +509,8 @@ TEST(Render, BuiltInDemoScene) {
   EXPECT_EQ(img.height(), 600);
   EXPECT_GT(colours_of(img).size(), 10u);
   const std::string s = log.str();
-  for (const char* stage : {"stage build:", "stage order:", "stage transform+clip:", "stage raster:", "stage write:"})
+  for (const char* stage :
+       {"stage build:", "stage order:", "stage transform+clip:", "stage raster:", "stage write:"})
     EXPECT_NE(s.find(stage), std::string::npos) << stage;
   EXPECT_EQ(s.find("backface_culling"), std::string::npos);
   // The cyclic planks force at least one split.
@@ -431,7 +552,8 @@ TEST(Render, ErrorsLeaveNoPartialOutput) {
   const std::string missing_out = temp_dir() + "/never.svg";
   json m = valid_scene();
   m["meshes"][0]["file"] = "meshes/absent.off";
-  EXPECT_THROW(render_command({write_text("missing_mesh.json", m.dump()), missing_out, false}, log), scene_error);
+  EXPECT_THROW(render_command({write_text("missing_mesh.json", m.dump()), missing_out, false}, log),
+               scene_error);
   EXPECT_FALSE(fs::exists(missing_out));
   for (const auto& e : fs::directory_iterator(temp_dir()))
     EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
@@ -453,7 +575,8 @@ TEST(Render, BackfaceCullingRunsOnlyWhenAskedFor) {
 /// per visible region, view/vector_drawing.h).
 std::vector<std::uint32_t> render_example(const std::string& name, view::image& png) {
   const std::string scene_path = std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json";
-  const std::string png_path = temp_dir() + "/" + name + ".png", svg_path = temp_dir() + "/" + name + ".svg";
+  const std::string png_path = temp_dir() + "/" + name + ".png",
+                    svg_path = temp_dir() + "/" + name + ".svg";
   std::ostringstream log;
   render_command({scene_path, png_path, false}, log);
   render_command({scene_path, svg_path, false}, log);
@@ -473,7 +596,8 @@ std::vector<std::uint32_t> render_example(const std::string& name, view::image& 
 }
 
 TEST(Render, ExampleScenesRenderToPngAndSvg) {
-  for (const char* name : {"perspective", "orthographic", "oblique", "frustum", "inside", "cyclic"}) {
+  for (const char* name :
+       {"perspective", "orthographic", "oblique", "frustum", "inside", "cyclic"}) {
     view::image png;
     const std::vector<std::uint32_t> frags = render_example(name, png);
     EXPECT_GT(frags.size(), 0u) << name;
@@ -482,7 +606,8 @@ TEST(Render, ExampleScenesRenderToPngAndSvg) {
     // Visible regions: each face at most once.
     EXPECT_EQ(std::set<std::uint32_t>(frags.begin(), frags.end()).size(), frags.size()) << name;
     // The painter's SVG: its paths are exactly the visible fragments in back-to-front order.
-    const scene::scene s = scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
+    const scene::scene s =
+        scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
     scene::scene_geometry g = scene::load_geometry(s);
     view::frame f;
     f.view = scene::make_view_setup(s);
@@ -493,8 +618,10 @@ TEST(Render, ExampleScenesRenderToPngAndSvg) {
     std::vector<std::uint32_t> expected, painted;
     for (const view::screen_polygon& p : f.polygons) expected.push_back(p.fragment);
     const std::string fragment_key = "data-fragment=\"";
-    for (std::size_t at = f.svg.find(fragment_key); at != std::string::npos; at = f.svg.find(fragment_key, at + 1))
-      painted.push_back(static_cast<std::uint32_t>(std::stoul(f.svg.substr(at + fragment_key.size()))));
+    for (std::size_t at = f.svg.find(fragment_key); at != std::string::npos;
+         at = f.svg.find(fragment_key, at + 1))
+      painted.push_back(
+          static_cast<std::uint32_t>(std::stoul(f.svg.substr(at + fragment_key.size()))));
     EXPECT_EQ(painted, expected) << name;
     EXPECT_EQ(f.polygons.size() + f.fully_clipped + f.culled, f.fragments.size()) << name;
     if (std::string(name) == "inside") {
@@ -510,12 +637,13 @@ TEST(Render, ExampleScenesRenderToPngAndSvg) {
 using exbsp_test::zbuffer_render;
 
 TEST(Render, ExampleScenesMatchAZBufferOracle) {
-  for (const char* name : {"demo", "perspective", "orthographic", "oblique", "frustum", "inside", "cyclic", "groups",
-                           "camera_look", "camera_polar", "camera_pilot", "phigs_perspective", "phigs_oblique",
-                           "viewport", "trackball"}) {
-    const scene::scene s = std::string(name) == "demo"
-                               ? scene::demo_scene()
-                               : scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
+  for (const char* name : {"demo", "perspective", "orthographic", "oblique", "frustum", "inside",
+                           "cyclic", "groups", "camera_look", "camera_polar", "camera_pilot",
+                           "phigs_perspective", "phigs_oblique", "viewport", "trackball"}) {
+    const scene::scene s =
+        std::string(name) == "demo"
+            ? scene::demo_scene()
+            : scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
     scene::scene_geometry g = scene::load_geometry(s);
     view::frame f;
     f.view = scene::make_view_setup(s);
@@ -523,14 +651,17 @@ TEST(Render, ExampleScenesMatchAZBufferOracle) {
     f.soup = std::move(g.soup);
     f.face_colors = std::move(g.face_colors);
     view::standard_pipeline(s.effects, view::output_kind::png).run(f, nullptr);
-    const bool cull = std::find(s.effects.begin(), s.effects.end(), "backface_culling") != s.effects.end();
+    const bool cull =
+        std::find(s.effects.begin(), s.effects.end(), "backface_culling") != s.effects.end();
     const view::image oracle = zbuffer_render(f, cull);
     int differ = 0;
     for (int r = 0; r < oracle.height(); ++r)
-      for (int c = 0; c < oracle.width(); ++c) differ += oracle.at_row(r, c) != f.picture.at_row(r, c);
+      for (int c = 0; c < oracle.width(); ++c)
+        differ += oracle.at_row(r, c) != f.picture.at_row(r, c);
     // Pixels may differ only where depths tie: along the intersection lines of interpenetrating
     // parts and on T-junctions of split fragments.
-    std::cout << name << ": " << differ << " of " << oracle.width() * oracle.height() << " pixels differ\n";
+    std::cout << name << ": " << differ << " of " << oracle.width() * oracle.height()
+              << " pixels differ\n";
     EXPECT_LE(differ, oracle.width() * oracle.height() / 10000) << name;
   }
 }
@@ -541,7 +672,8 @@ TEST(Render, CommandLineExitCodes) {
   d["camera"]["up"] = {0, 0, 1};
   const std::string bad = write_text("cli_bad.json", d.dump());
   const std::string err = temp_dir() + "/cli_err.txt";
-  const int rc = std::system((cli + " render " + bad + " -o " + temp_dir() + "/cli.png 2> " + err).c_str());
+  const int rc =
+      std::system((cli + " render " + bad + " -o " + temp_dir() + "/cli.png 2> " + err).c_str());
   ASSERT_TRUE(WIFEXITED(rc));
   EXPECT_EQ(WEXITSTATUS(rc), 2);
   std::ifstream in(err);
@@ -556,14 +688,18 @@ TEST(Render, CommandLineExitCodes) {
 
 TEST(Render, EffectScenesRunTheirEffectStages) {
   const std::vector<std::pair<std::string, std::string>> scenes = {
-      {"effects_lighting", "lighting"}, {"effects_fog", "fog"}, {"effects_dof", "depth_of_field"},
-      {"effects_antialias", "antialias"}, {"curves", "curves"}};
+      {"effects_lighting", "lighting"},
+      {"effects_fog", "fog"},
+      {"effects_dof", "depth_of_field"},
+      {"effects_antialias", "antialias"},
+      {"curves", "curves"}};
   for (const auto& [name, stage] : scenes) {
     const std::string scene_path = std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json";
     const std::string png = temp_dir() + "/" + name + ".png";
     std::ostringstream log;
     render_command({scene_path, png, true}, log);
-    EXPECT_NE(log.str().find("stage " + stage + ":"), std::string::npos) << name << "\n" << log.str();
+    EXPECT_NE(log.str().find("stage " + stage + ":"), std::string::npos) << name << "\n"
+                                                                         << log.str();
     EXPECT_EQ(log.str().find("warning"), std::string::npos) << log.str();
     const view::image img = view::read_png(png);
     EXPECT_EQ(img.width(), 400) << name;
@@ -573,7 +709,8 @@ TEST(Render, EffectScenesRunTheirEffectStages) {
     render_command({scene_path, temp_dir() + "/" + name + ".svg", true}, svg_log);
     const bool png_only = stage == "antialias" || stage == "depth_of_field";
     EXPECT_EQ(svg_log.str().find("stage " + stage + ":") == std::string::npos, png_only) << name;
-    EXPECT_EQ(svg_log.str().find("applies to PNG output only") != std::string::npos, png_only) << name;
+    EXPECT_EQ(svg_log.str().find("applies to PNG output only") != std::string::npos, png_only)
+        << name;
   }
 }
 
@@ -618,7 +755,8 @@ TEST(Orbit, WritesNFramesFromOneBuild) {
   const std::string text = log.str();
   auto count = [&](const std::string& what) {
     std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+      ++n;
     return n;
   };
   EXPECT_EQ(count("stage build:"), 1u) << text;
@@ -644,13 +782,15 @@ TEST(Orbit, CommandLine) {
   const std::string dir = temp_dir() + "/orbit_cli";
   fs::create_directories(dir);
   const std::string scene_path = std::string(EXBSP_SOURCE_DIR) + "/scenes/effects_antialias.json";
-  const int rc = std::system((cli + " render " + scene_path + " --orbit-drag 200,150:260,150 --frames 3 -o " + dir +
-                              "/o.svg 2> " + dir + "/err.txt")
-                                 .c_str());
+  const int rc =
+      std::system((cli + " render " + scene_path + " --orbit-drag 200,150:260,150 --frames 3 -o " +
+                   dir + "/o.svg 2> " + dir + "/err.txt")
+                      .c_str());
   ASSERT_TRUE(WIFEXITED(rc));
   EXPECT_EQ(WEXITSTATUS(rc), 0);
   for (int k = 0; k < 3; ++k) EXPECT_TRUE(fs::exists(frame_path(dir + "/o.svg", k))) << k;
-  const int bad = std::system((cli + " render --orbit-drag 1,2:x -o " + dir + "/p.png 2> " + dir + "/err2.txt").c_str());
+  const int bad = std::system(
+      (cli + " render --orbit-drag 1,2:x -o " + dir + "/p.png 2> " + dir + "/err2.txt").c_str());
   ASSERT_TRUE(WIFEXITED(bad));
   EXPECT_EQ(WEXITSTATUS(bad), 2);
   std::ifstream in(dir + "/err2.txt");

@@ -68,14 +68,17 @@ q3 area2(const std::vector<q3>& pts, const exbsp::section_triangle& t) {
   return cross(sub(b, a), sub(c, a));
 }
 
-q3 plane_normal(const section_plane& p) { return {mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])}; }
+q3 plane_normal(const section_plane& p) {
+  return {mpq_class(p[0]), mpq_class(p[1]), mpq_class(p[2])};
+}
 
 mpq_class plane_value(const section_plane& p, const q3& x) {
   return mpq_class(p[0]) * x[0] + mpq_class(p[1]) * x[1] + mpq_class(p[2]) * x[2] + mpq_class(p[3]);
 }
 
 /// Directed edge balance of a triangle list (point indices): (u,v) uses minus (v,u) uses.
-std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_balance(const std::vector<exbsp::section_triangle>& tris) {
+std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_balance(
+    const std::vector<exbsp::section_triangle>& tris) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> net;
   for (const auto& t : tris)
     for (int k = 0; k < 3; ++k) {
@@ -83,7 +86,8 @@ std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_balance(const std::v
       if (a < b) ++net[{a, b}];
       if (b < a) --net[{b, a}];
     }
-  for (auto it = net.begin(); it != net.end();) it = it->second == 0 ? net.erase(it) : std::next(it);
+  for (auto it = net.begin(); it != net.end();)
+    it = it->second == 0 ? net.erase(it) : std::next(it);
   return net;
 }
 
@@ -128,7 +132,8 @@ void expect_closed_section(const section_result& r) {
       if (b < a) --loop_net[{b, a}];
     }
   }
-  for (auto it = loop_net.begin(); it != loop_net.end();) it = it->second == 0 ? loop_net.erase(it) : std::next(it);
+  for (auto it = loop_net.begin(); it != loop_net.end();)
+    it = it->second == 0 ? loop_net.erase(it) : std::next(it);
   auto cap_net = edge_balance(r.cap);
   for (auto& e : cap_net) e.second = -e.second;
   EXPECT_EQ(loop_net, cap_net);
@@ -160,17 +165,21 @@ void expect_tiling(const triangle_soup& soup, const section_plane& p) {
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 3; ++k) v[i][k] = mpq_class(soup.vertices[t.v[i]][k]);
     const q3 x = cross(sub(v[1], v[0]), sub(v[2], v[0]));
-    const bool in_plane = plane_value(p, v[0]) == 0 && plane_value(p, v[1]) == 0 && plane_value(p, v[2]) == 0;
+    const bool in_plane =
+        plane_value(p, v[0]) == 0 && plane_value(p, v[1]) == 0 && plane_value(p, v[2]) == 0;
     for (int k = 0; k < 3; ++k) expected[t.face][k] += in_plane ? 2 * x[k] : x[k];
   }
-  for (std::uint32_t f = 0; f < soup.face_count; ++f) EXPECT_EQ(sum[f], expected[f]) << "face " << f;
+  for (std::uint32_t f = 0; f < soup.face_count; ++f)
+    EXPECT_EQ(sum[f], expected[f]) << "face " << f;
 }
 
 /// Outward-oriented box [lo, hi] (12 triangles); `inward` reverses it (a cavity).
 void add_box(triangle_soup& s, const vec3d& lo, const vec3d& hi, bool inward = false) {
   const auto base = static_cast<std::uint32_t>(s.vertices.size());
-  for (int i = 0; i < 8; ++i) s.vertices.push_back({i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]});
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int i = 0; i < 8; ++i)
+    s.vertices.push_back({i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]});
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& q : quads) {
     std::vector<std::uint32_t> idx{base + q[0], base + q[1], base + q[2], base + q[3]};
     if (inward) std::reverse(idx.begin(), idx.end());
@@ -215,7 +224,8 @@ TEST(Section, plane_through_three_vertices) {
   ASSERT_EQ(r.outline.size(), 1u);
   // The three corners and where the face diagonals cross the plane (collinear points).
   EXPECT_EQ(r.outline[0].p.size(), 6u);
-  EXPECT_EQ(cap_area2_along_n(r), -3);  // triangle of area sqrt(3)/2; (2 area n̂)·n = 2 * sqrt3/2 * sqrt3
+  EXPECT_EQ(cap_area2_along_n(r),
+            -3);  // triangle of area sqrt(3)/2; (2 area n̂)·n = 2 * sqrt3/2 * sqrt3
   expect_tiling(unit_cube(), p);
   expect_closed_section(exbsp::section(unit_cube(), {-1, -1, -1, 1}));
 }
@@ -230,7 +240,8 @@ TEST(Section, diagonal_plane_along_two_edges) {
 }
 
 TEST(Section, plane_containing_a_face_keeps_the_whole_solid_on_its_side) {
-  const section_result r = exbsp::section(unit_cube(), {0, 0, 1, 0});  // z >= 0: bottom face in the plane
+  const section_result r =
+      exbsp::section(unit_cube(), {0, 0, 1, 0});  // z >= 0: bottom face in the plane
   expect_closed_section(r);
   EXPECT_EQ(r.kept.size(), 12u);
   EXPECT_TRUE(r.cap.empty());
@@ -249,8 +260,9 @@ TEST(Section, plane_containing_a_face_with_the_solid_removed_keeps_a_double_side
 }
 
 TEST(Section, tangent_planes_cut_nothing) {
-  for (const section_plane& p : {section_plane{1, 1, 0, -2}, section_plane{-1, -1, 0, 2},  // along edge x=y=1
-                                 section_plane{1, 1, 1, -3}, section_plane{-1, -1, -1, 3}}) {  // at vertex (1,1,1)
+  for (const section_plane& p :
+       {section_plane{1, 1, 0, -2}, section_plane{-1, -1, 0, 2},      // along edge x=y=1
+        section_plane{1, 1, 1, -3}, section_plane{-1, -1, -1, 3}}) {  // at vertex (1,1,1)
     const section_result r = exbsp::section(unit_cube(), p);
     expect_closed_section(r);
     EXPECT_TRUE(r.outline.empty());
@@ -264,8 +276,8 @@ TEST(Section, plane_through_a_non_manifold_vertex) {
   triangle_soup s;
   add_box(s, {0, 0, 0}, {1, 1, 1});
   add_box(s, {1, 1, 1}, {2, 2, 2});  // shares the vertex (1,1,1)
-  for (const section_plane& p : {section_plane{1, 1, 1, -3}, section_plane{0, 0, 1, -1}, section_plane{0, 0, -1, 1},
-                                 section_plane{1, -1, 0, 0}}) {
+  for (const section_plane& p : {section_plane{1, 1, 1, -3}, section_plane{0, 0, 1, -1},
+                                 section_plane{0, 0, -1, 1}, section_plane{1, -1, 0, 0}}) {
     SCOPED_TRACE(testing::Message() << p[0] << "," << p[1] << "," << p[2] << "," << p[3]);
     const section_result r = exbsp::section(s, p);
     expect_closed_section(r);
@@ -286,7 +298,8 @@ TEST(Section, one_ulp_off_a_face) {
   expect_closed_section(r);
   EXPECT_EQ(cap_area2_along_n(r), -2);
   for (const auto& t : r.cap)
-    for (std::uint32_t i : t.p) EXPECT_EQ(r.points[i].exact[2], "9007199254740991/9007199254740992");
+    for (std::uint32_t i : t.p)
+      EXPECT_EQ(r.points[i].exact[2], "9007199254740991/9007199254740992");
   expect_tiling(unit_cube(), p);
   // A plane tilted by 2^-60 through the top edge x = 0: the top face straddles it.
   const section_plane tilt{std::ldexp(1.0, -60), 0, 1, -1};
@@ -300,9 +313,11 @@ TEST(Section, collinear_sliver_closing_a_t_junction) {
   // A cube whose top face has an extra vertex m in the middle of its edge a-b (y = 0); the
   // wall below still uses a-b, and the collinear triangle (a, m, b) closes the T-junction.
   triangle_soup s;
-  s.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {0.5, 0, 1}};
-  const std::vector<std::vector<std::uint32_t>> faces{{0, 2, 3, 1}, {8, 5, 7, 6, 4}, {0, 1, 5, 4}, {2, 6, 7, 3},
-                                                      {0, 4, 6, 2}, {1, 3, 7, 5}, {4, 5, 8}};
+  s.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},  {0, 0, 1},
+                {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {0.5, 0, 1}};
+  const std::vector<std::vector<std::uint32_t>> faces{{0, 2, 3, 1}, {8, 5, 7, 6, 4}, {0, 1, 5, 4},
+                                                      {2, 6, 7, 3}, {0, 4, 6, 2},    {1, 3, 7, 5},
+                                                      {4, 5, 8}};
   for (const auto& f : faces) s.add_polygon(f, s.face_count++);
   for (const section_plane& p : {section_plane{1, 0, 0, -0.25}, section_plane{1, 0, 0, -0.5},
                                  section_plane{1, 0.5, -1, 0.5}, section_plane{-1, 0, 0, 0.75}}) {
@@ -346,7 +361,8 @@ TEST(Section, touching_solids_with_t_junctions_are_refined_to_stay_closed) {
   triangle_soup s;
   add_box(s, {0, 0, 0}, {1, 1, 1});
   add_box(s, {1, 0.25, 0}, {2, 0.75, 1});  // shares part of the face x = 1, not its vertices
-  for (const section_plane& p : {section_plane{0, 0, 1, -0.5}, section_plane{0.125, 0.25, 1, -0.75}}) {
+  for (const section_plane& p :
+       {section_plane{0, 0, 1, -0.5}, section_plane{0.125, 0.25, 1, -0.75}}) {
     const section_result r = exbsp::section(s, p);
     expect_closed_section(r);
     EXPECT_GT(r.stats.split_constraints, 0u);
@@ -359,7 +375,7 @@ TEST(Section, overlapping_solids_cover_the_overlap_twice) {
   add_box(s, {1, 1, 1}, {3, 3, 3});  // a second closed solid through the first
   const section_result r = exbsp::section(s, {0, 0, 1, -1.5});
   expect_closed_section(r);
-  EXPECT_GT(r.stats.cap_steiner_points, 0u);  // the loops cross at (2,1) and (1,2)
+  EXPECT_GT(r.stats.cap_steiner_points, 0u);      // the loops cross at (2,1) and (1,2)
   EXPECT_EQ(cap_area2_along_n(r), -2 * (4 + 4));  // two squares of area 4, the overlap twice
 }
 
@@ -368,9 +384,9 @@ TEST(Section, many_small_integer_planes_hit_vertices_edges_and_faces_and_stay_cl
   // most pass through vertices, along edges or contain faces. Fixed seed.
   triangle_soup s;
   add_box(s, {0, 0, 0}, {4, 4, 4});
-  add_box(s, {1, 1, 1}, {3, 3, 3}, true);     // cavity
-  add_box(s, {4, 1, 0}, {5, 3, 2});           // touching the outer box along part of a face
-  add_box(s, {-1, -1, -1}, {0, 0, 0});        // touching at the vertex (0,0,0)
+  add_box(s, {1, 1, 1}, {3, 3, 3}, true);  // cavity
+  add_box(s, {4, 1, 0}, {5, 3, 2});        // touching the outer box along part of a face
+  add_box(s, {-1, -1, -1}, {0, 0, 0});     // touching at the vertex (0,0,0)
   std::uint64_t state = 12;
   auto next = [&state](int lo, int hi) {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
@@ -378,7 +394,8 @@ TEST(Section, many_small_integer_planes_hit_vertices_edges_and_faces_and_stay_cl
   };
   int cut = 0;
   for (int trial = 0; trial < 150; ++trial) {
-    const section_plane p{double(next(-2, 2)), double(next(-2, 2)), double(next(-2, 2)), next(-12, 12) / 2.0};
+    const section_plane p{double(next(-2, 2)), double(next(-2, 2)), double(next(-2, 2)),
+                          next(-12, 12) / 2.0};
     if (p[0] == 0 && p[1] == 0 && p[2] == 0) continue;
     SCOPED_TRACE(testing::Message() << p[0] << "," << p[1] << "," << p[2] << "," << p[3]);
     const section_result r = exbsp::section(s, p);
@@ -412,9 +429,11 @@ TEST(Section, pieces_follow_the_section_3_split_convention) {
   triangle_soup s;
   s.add_triangle({0, 0, 0}, {1, 0, 1}, {0, 1, 0.25});  // no vertex on the plane
   s.add_triangle({0, 0, 0.5}, {1, 0, 1}, {0, 1, 0});   // one vertex on the plane
-  s.add_triangle({0.3, 0, 1}, {1, 0, 0}, {0, 1, 0.7}); // c alone on the negative side... and others
+  s.add_triangle({0.3, 0, 1}, {1, 0, 0},
+                 {0, 1, 0.7});  // c alone on the negative side... and others
   const section_result r = exbsp::section(s, {0, 0, 1, -0.5});
-  const exbsp::clip::exact_plane<K> plane{K::Point_3(0, 0, 0.5), K::Point_3(1, 0, 0.5), K::Point_3(0, 1, 0.5)};
+  const exbsp::clip::exact_plane<K> plane{K::Point_3(0, 0, 0.5), K::Point_3(1, 0, 0.5),
+                                          K::Point_3(0, 1, 0.5)};
   std::vector<std::array<std::array<std::string, 3>, 3>> expected, got;
   auto text = [](const K::FT& x) {
     std::ostringstream o;
@@ -450,7 +469,8 @@ TEST(Section, bad_planes_are_usage_errors) {
   EXPECT_THROW(exbsp::section(unit_cube(), {0, 0, 0, 1}), exbsp::usage_error);
   EXPECT_THROW(exbsp::section(unit_cube(), {NAN, 0, 1, 1}), exbsp::usage_error);
   EXPECT_THROW(exbsp::section(unit_cube(), {0, 0, 1, INFINITY}), exbsp::usage_error);
-  EXPECT_THROW(exbsp::clip_soup(unit_cube(), {{0, 0, 1, 0}, {0, 0, 0, 0}}, true), exbsp::usage_error);
+  EXPECT_THROW(exbsp::clip_soup(unit_cube(), {{0, 0, 1, 0}, {0, 0, 0, 0}}, true),
+               exbsp::usage_error);
 }
 
 // --- several planes (scenes) ---------------------------------------------------------------
@@ -463,7 +483,8 @@ TEST(Section, clip_soup_with_caps_stays_closed_and_cuts_earlier_caps) {
   const triangle_soup c = exbsp::clip_soup(s, planes, true);
   EXPECT_EQ(c.face_count, s.face_count + 3);
   // Rounded to doubles, but every point here is a dyadic rational with few bits: exact.
-  const section_result r = exbsp::section(c, {0, 0, 1, 100});  // keeps everything: re-reads c exactly
+  const section_result r =
+      exbsp::section(c, {0, 0, 1, 100});  // keeps everything: re-reads c exactly
   expect_closed_section(r);
   std::set<std::uint32_t> cap_faces;
   for (const auto& t : c.triangles)
@@ -512,8 +533,9 @@ TEST_P(Corpus, slanted_and_axis_cuts_through_the_middle_are_exact_and_closed) {
       EXPECT_GT(r.stats.split, 0u);
       EXPECT_FALSE(r.outline.empty());
     }
-    if (&p == &planes[0]) std::printf("[ info     ] %s: %s, %zu triangles, section %.3f s\n", GetParam(),
-                                      r.closed ? "closed" : "open", s.triangles.size(), r.stats.seconds);
+    if (&p == &planes[0])
+      std::printf("[ info     ] %s: %s, %zu triangles, section %.3f s\n", GetParam(),
+                  r.closed ? "closed" : "open", s.triangles.size(), r.stats.seconds);
     if (r.closed) {
       expect_closed_section(r);
       EXPECT_LT(cap_area2_along_n(r), 0);
@@ -525,8 +547,9 @@ TEST_P(Corpus, slanted_and_axis_cuts_through_the_middle_are_exact_and_closed) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, Corpus,
-                         testing::Values("fandisk.off", "cube.off", "sphere.off", "joint.off", "elephant.off",
-                                         "cheese.off", "mech-holes-shark.off", "3torus.off", "blobby_3cc.off"),
+                         testing::Values("fandisk.off", "cube.off", "sphere.off", "joint.off",
+                                         "elephant.off", "cheese.off", "mech-holes-shark.off",
+                                         "3torus.off", "blobby_3cc.off"),
                          [](const testing::TestParamInfo<const char*>& i) {
                            std::string n = i.param;
                            for (char& ch : n)
@@ -540,11 +563,12 @@ using run_result = exbsp_test::cli_result;
 const auto& slurp = exbsp_test::read_file;
 
 class SectionCli : public exbsp_test::cli_fixture {
-protected:
+ protected:
   void SetUp() override {
     cli_fixture::SetUp();
-    write("cube.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
-                      "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n");
+    write("cube.off",
+          "OFF\n8 6 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
+          "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n");
   }
 };
 
@@ -598,15 +622,19 @@ TEST_F(SectionCli, off_output_is_a_closed_mesh_and_svg_draws_the_loop) {
 
 TEST_F(SectionCli, bad_input_exits_2_names_the_option_and_writes_nothing) {
   const std::size_t before = file_count();
-  for (const char* args : {"section cube.off --plane 0,0,1 -o a.json", "section cube.off --plane 0,0,0,1 -o a.json",
-                           "section cube.off --plane 0,0,1,nan -o a.json", "section cube.off --plane 0,0,1,x -o a.json",
-                           "section cube.off --plane 0,0,1,1,2 -o a.json", "section cube.off -o a.json",
-                           "section cube.off --plane 0,0,1,0 -o a.txt"}) {
+  for (const char* args :
+       {"section cube.off --plane 0,0,1 -o a.json", "section cube.off --plane 0,0,0,1 -o a.json",
+        "section cube.off --plane 0,0,1,nan -o a.json",
+        "section cube.off --plane 0,0,1,x -o a.json",
+        "section cube.off --plane 0,0,1,1,2 -o a.json", "section cube.off -o a.json",
+        "section cube.off --plane 0,0,1,0 -o a.txt"}) {
     SCOPED_TRACE(args);
     const run_result r = run(args);
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err.rfind("exbsp: error: ", 0), 0u) << r.err;
-    EXPECT_TRUE(r.err.find("--plane") != std::string::npos || r.err.find("--output") != std::string::npos) << r.err;
+    EXPECT_TRUE(r.err.find("--plane") != std::string::npos ||
+                r.err.find("--output") != std::string::npos)
+        << r.err;
     EXPECT_EQ(file_count(), before);
   }
   std::ofstream(dir / "bad.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n";
@@ -626,7 +654,7 @@ void write_box_off(const fs::path& path, const vec3d& lo, const vec3d& hi) {
 }
 
 class SectionScene : public SectionCli {
-protected:
+ protected:
   /// A scene of a grey cube [0,1]^3 and a blue slab crossing it, seen from above in glOrtho,
   /// with `extra` spliced in (clip planes, caps).
   std::string scene_text(const std::string& extra) {
@@ -646,16 +674,21 @@ protected:
 };
 
 TEST_F(SectionScene, bad_clip_planes_and_caps_name_their_key) {
-  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, -1, 0.5]], "caps": {"color": [255, 0, 0]})"), "(no error)");
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, -1, 0.5]], "caps": {"color": [255, 0, 0]})"),
+            "(no error)");
   EXPECT_EQ(error_key(R"(, "clip_planes": 3)"), "/clip_planes");
-  EXPECT_EQ(error_key(R"(, "clip_planes": [[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0]])"),
-            "/clip_planes");
+  EXPECT_EQ(
+      error_key(
+          R"(, "clip_planes": [[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0],[0,0,1,0]])"),
+      "/clip_planes");
   EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0], [0, 0, 1]])"), "/clip_planes/1");
   EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0], [0, 0, 1, "x"]])"), "/clip_planes/1/3");
   EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 0, 1]])"), "/clip_planes/0");
-  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 1e999]])"), "");  // a JSON syntax error: a scene_error without a key
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 1e999]])"),
+            "");  // a JSON syntax error: a scene_error without a key
   EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0]], "caps": 1)"), "/caps");
-  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0]], "caps": {"color": [256, 0, 0]})"), "/caps/color/0");
+  EXPECT_EQ(error_key(R"(, "clip_planes": [[0, 0, 1, 0]], "caps": {"color": [256, 0, 0]})"),
+            "/caps/color/0");
 }
 
 TEST_F(SectionScene, bad_scene_exits_2_naming_the_key_and_writes_nothing) {
@@ -668,14 +701,17 @@ TEST_F(SectionScene, bad_scene_exits_2_naming_the_key_and_writes_nothing) {
 
 TEST_F(SectionScene, geometry_is_cut_with_caps_in_their_colour_and_stays_closed) {
   const auto s = exbsp::scene::parse_scene_text(
-      scene_text(R"(, "clip_planes": [[0, 0, -1, 0.5], [1, 0, 0, -0.25]], "caps": {"color": [255, 0, 0]})"),
+      scene_text(
+          R"(, "clip_planes": [[0, 0, -1, 0.5], [1, 0, 0, -0.25]], "caps": {"color": [255, 0, 0]})"),
       (dir / "s.json").string());
   const exbsp::scene::scene_geometry g = exbsp::scene::load_geometry(s);
   // box: 12 triangle faces + 2 caps; slab: 12 + 2 (the slab is cut by x >= 0.25 too).
   ASSERT_EQ(g.soup.face_count, 28u);
   EXPECT_EQ(g.face_offsets, (std::vector<std::uint32_t>{0, 14, 28}));
-  for (std::uint32_t f : {12u, 13u, 26u, 27u}) EXPECT_EQ(g.face_colors[f], (exbsp::view::rgb8{255, 0, 0})) << f;
-  for (std::uint32_t f : {0u, 11u}) EXPECT_EQ(g.face_colors[f], (exbsp::view::rgb8{100, 100, 100})) << f;
+  for (std::uint32_t f : {12u, 13u, 26u, 27u})
+    EXPECT_EQ(g.face_colors[f], (exbsp::view::rgb8{255, 0, 0})) << f;
+  for (std::uint32_t f : {0u, 11u})
+    EXPECT_EQ(g.face_colors[f], (exbsp::view::rgb8{100, 100, 100})) << f;
   EXPECT_EQ(g.face_colors[14], (exbsp::view::rgb8{0, 0, 255}));
   for (const auto& t : g.soup.triangles)
     for (std::uint32_t v : t.v) {
@@ -687,15 +723,16 @@ TEST_F(SectionScene, geometry_is_cut_with_caps_in_their_colour_and_stays_closed)
 }
 
 TEST_F(SectionScene, cut_part_renders_in_one_bsp_with_an_uncut_intersecting_part) {
-  std::ofstream(dir / "s.json") << scene_text(R"(, "clip_planes": [[0, 0, -1, 0.5]], "caps": {"color": [255, 0, 0]})");
+  std::ofstream(dir / "s.json") << scene_text(
+      R"(, "clip_planes": [[0, 0, -1, 0.5]], "caps": {"color": [255, 0, 0]})");
   std::ostringstream log;
   exbsp::render_command({(dir / "s.json").string(), (dir / "s.png").string(), false}, log);
   const exbsp::view::image img = exbsp::view::read_png((dir / "s.png").string());
   // Pixel (i, j) sees world (x, y) = (i/100 - 0.5, j/100 - 0.5) from above.
   const exbsp::view::rgb8 cap{255, 0, 0}, slab{0, 0, 255}, white{255, 255, 255};
-  EXPECT_EQ(img.pixel(100, 100), cap);   // the cap hides the slab inside the box
+  EXPECT_EQ(img.pixel(100, 100), cap);  // the cap hides the slab inside the box
   EXPECT_EQ(img.pixel(75, 75), cap);
-  EXPECT_EQ(img.pixel(25, 100), slab);   // the slab outside the box, uncut
+  EXPECT_EQ(img.pixel(25, 100), slab);  // the slab outside the box, uncut
   EXPECT_EQ(img.pixel(175, 100), slab);
   EXPECT_EQ(img.pixel(180, 180), white);
   // Without caps the open box shows its inside: the slab through it and the floor.

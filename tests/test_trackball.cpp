@@ -308,7 +308,8 @@ vec3d eye_coordinates(const exbsp::orbit_view& c, const vec3d& w) {
 }
 
 RC_GTEST_PROP(OrbitCamera, SceneAppearsRotatedAboutTheLookAtPoint, ()) {
-  exbsp::orbit_view camera{random_nonzero_vector(), random_nonzero_vector(), random_nonzero_vector()};
+  exbsp::orbit_view camera{random_nonzero_vector(), random_nonzero_vector(),
+                           random_nonzero_vector()};
   const vec3d view = sub(camera.look_at, camera.eye);
   RC_PRE(norm(view) > 0.1);
   RC_PRE(norm(cross(unit(view), unit(camera.up))) > 0.1);

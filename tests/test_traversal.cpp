@@ -29,13 +29,17 @@ struct recorder final : exbsp::bsp_visitor {
     int value;  ///< eye side (enter) or cell side (cell)
   };
   std::vector<event> events;
-  std::vector<std::uint32_t> order;  ///< fragments in visit order (a node's list last to first when reversed)
+  std::vector<std::uint32_t>
+      order;  ///< fragments in visit order (a node's list last to first when reversed)
   bool reversed = false;
-  void enter(const bsp_node& n, int eye_side) override { events.push_back({'e', n.index, eye_side}); }
+  void enter(const bsp_node& n, int eye_side) override {
+    events.push_back({'e', n.index, eye_side});
+  }
   void fragments(const bsp_node& n) override {
     events.push_back({'f', n.index, 0});
     for (std::uint32_t k = 0; k < n.fragment_count; ++k)
-      order.push_back(reversed ? n.first_fragment + n.fragment_count - 1 - k : n.first_fragment + k);
+      order.push_back(reversed ? n.first_fragment + n.fragment_count - 1 - k
+                               : n.first_fragment + k);
   }
   void cell(const bsp_node& n, int side) override { events.push_back({'c', n.index, side}); }
 };
@@ -48,7 +52,8 @@ exbsp::triangle_soup grid_soup(std::size_t n, std::uint32_t seed) {
   exbsp::triangle_soup s;
   for (std::size_t i = 0; i < n; ++i) {
     const auto base = static_cast<std::uint32_t>(s.vertices.size());
-    for (int k = 0; k < 3; ++k) s.vertices.push_back({coord(rng) * 0.5, coord(rng) * 0.5, coord(rng) * 0.25});
+    for (int k = 0; k < 3; ++k)
+      s.vertices.push_back({coord(rng) * 0.5, coord(rng) * 0.5, coord(rng) * 0.25});
     s.add_polygon({base, base + 1, base + 2}, static_cast<std::uint32_t>(i));
   }
   return s;
@@ -171,7 +176,8 @@ TEST(Traversal, NodesAgreeWithAncestorsAndTheExactInput) {
       } else {
         EXPECT_EQ(k, 0u);
       }
-      for (std::uint32_t i = n.first_fragment; i < n.first_fragment + n.fragment_count; ++i, ++listed) {
+      for (std::uint32_t i = n.first_fragment; i < n.first_fragment + n.fragment_count;
+           ++i, ++listed) {
         // The path to the node is ancestors(i).
         std::vector<bsp::ancestor> path;
         for (bsp_node at = n; at.parent >= 0;) {
@@ -190,7 +196,8 @@ TEST(Traversal, NodesAgreeWithAncestorsAndTheExactInput) {
         const exbsp::exact_triangle exact = tree.fragment_exact(i);
         const exbsp::fragment_d d = tree.fragment(i);
         for (int c = 0; c < 3; ++c) {
-          if (!std::all_of(exact[c].begin(), exact[c].end(), is_double)) continue;  // rounded: no exact claim
+          if (!std::all_of(exact[c].begin(), exact[c].end(), is_double))
+            continue;  // rounded: no exact claim
           EXPECT_EQ(exbsp::side_of_plane(n, d.v[c]), 0);
           for (bsp_node at = n; at.parent >= 0;) {
             const bsp_node p = tree.node(static_cast<std::size_t>(at.parent));
@@ -206,14 +213,17 @@ TEST(Traversal, NodesAgreeWithAncestorsAndTheExactInput) {
 
 TEST(Traversal, WalkGivesTheOrderForEyesOnPlanesAndEveryKernel) {
   const exbsp::triangle_soup soup = grid_soup(40, 3);
-  for (exbsp::kernel_id k : {exbsp::kernel_id::exact, exbsp::kernel_id::epeck, exbsp::kernel_id::double_}) {
+  for (exbsp::kernel_id k :
+       {exbsp::kernel_id::exact, exbsp::kernel_id::epeck, exbsp::kernel_id::double_}) {
     exbsp::build_options o;
     o.kernel = k;
     const bsp tree = bsp::build(soup, o);
     // Input vertices lie exactly on node planes (s = 0 there); the others are generic.
-    std::vector<vec3d> eyes{soup.vertices[0], soup.vertices[5], soup.vertices[17], {0.3, -7, 11}, {-2.2, 3.1, -0.4}};
+    std::vector<vec3d> eyes{
+        soup.vertices[0], soup.vertices[5], soup.vertices[17], {0.3, -7, 11}, {-2.2, 3.1, -0.4}};
     for (const vec3d& eye : eyes) expect_walk_matches_order(tree, eye, false);
-    for (const vec3d& d : {vec3d{0, 0, -1}, vec3d{1, 0, 0}, vec3d{0.3, -0.2, 0.9}}) expect_walk_matches_order(tree, d, true);
+    for (const vec3d& d : {vec3d{0, 0, -1}, vec3d{1, 0, 0}, vec3d{0.3, -0.2, 0.9}})
+      expect_walk_matches_order(tree, d, true);
   }
 }
 

@@ -28,8 +28,8 @@ using exbsp::kernel_id;
 using exbsp_test::soup_case;
 using exbsp_test::tri_d;
 
-const std::vector<kernel_id> all_kernels{kernel_id::exact, kernel_id::epeck, kernel_id::gmpq, kernel_id::epick,
-                                         kernel_id::double_};
+const std::vector<kernel_id> all_kernels{kernel_id::exact, kernel_id::epeck, kernel_id::gmpq,
+                                         kernel_id::epick, kernel_id::double_};
 
 bsp build(const exbsp::triangle_soup& soup, kernel_id k, const std::string& heuristic = "sampled",
           std::uint64_t seed = 0) {
@@ -65,7 +65,8 @@ void expect_same_tree(const bsp& a, const bsp& b, const std::string& what) {
   for (std::size_t i = 0; i < fa.size(); ++i) {
     EXPECT_EQ(fa[i].face, fb[i].face) << "fragment " << i;
     for (int k = 0; k < 3; ++k)
-      for (int j = 0; j < 3; ++j) EXPECT_TRUE(same_bits(fa[i].v[k][j], fb[i].v[k][j])) << "fragment " << i;
+      for (int j = 0; j < 3; ++j)
+        EXPECT_TRUE(same_bits(fa[i].v[k][j], fb[i].v[k][j])) << "fragment " << i;
     if (exbsp::is_exact(a.kernel())) {
       EXPECT_EQ(a.fragment_exact(i), b.fragment_exact(i)) << "fragment " << i;
     }
@@ -76,7 +77,8 @@ void expect_same_tree(const bsp& a, const bsp& b, const std::string& what) {
       EXPECT_EQ(aa[k].side, ab[k].side);
     }
   }
-  for (const exbsp::vec3d& e : {exbsp::vec3d{3, 4, 5}, exbsp::vec3d{-2, 0.5, 1}, exbsp::vec3d{0, 0, 0}}) {
+  for (const exbsp::vec3d& e :
+       {exbsp::vec3d{3, 4, 5}, exbsp::vec3d{-2, 0.5, 1}, exbsp::vec3d{0, 0, 0}}) {
     EXPECT_EQ(a.order_from_eye(e), b.order_from_eye(e));
     EXPECT_EQ(a.order_from_eye(e, false), b.order_from_eye(e, false));
     EXPECT_EQ(a.order_for_direction(e == exbsp::vec3d{0, 0, 0} ? exbsp::vec3d{0, 0, 1} : e),
@@ -101,7 +103,8 @@ std::uint32_t crc32_of(const std::string& bytes, std::size_t n) {
 /// Recomputes the trailing CRC-32, as a forger would (tests the checks behind the checksum).
 void fix_crc(std::string& bytes) {
   const std::uint32_t c = crc32_of(bytes, bytes.size() - 4);
-  for (int i = 0; i < 4; ++i) bytes[bytes.size() - 4 + i] = static_cast<char>((c >> (8 * i)) & 0xff);
+  for (int i = 0; i < 4; ++i)
+    bytes[bytes.size() - 4 + i] = static_cast<char>((c >> (8 * i)) & 0xff);
 }
 
 void put_u32(std::string& bytes, std::size_t at, std::uint32_t v) {
@@ -112,7 +115,8 @@ void put_u64(std::string& bytes, std::size_t at, std::uint64_t v) {
 }
 std::uint64_t get_u64(const std::string& bytes, std::size_t at) {
   std::uint64_t v = 0;
-  for (int i = 0; i < 8; ++i) v |= std::uint64_t{static_cast<unsigned char>(bytes[at + i])} << (8 * i);
+  for (int i = 0; i < 8; ++i)
+    v |= std::uint64_t{static_cast<unsigned char>(bytes[at + i])} << (8 * i);
   return v;
 }
 
@@ -223,8 +227,8 @@ TEST(TreeFile, the_sampled_parameters_and_the_seed_are_kept) {
 
 RC_GTEST_PROP(TreeFile, generated_soups_round_trip_for_every_kernel, ()) {
   const soup_case c = *rc::gen::oneOf(exbsp_test::any_small_soup(), exbsp_test::cyclic_sticks());
-  const kernel_id k = *rc::gen::element(kernel_id::exact, kernel_id::epeck, kernel_id::gmpq, kernel_id::epick,
-                                        kernel_id::double_);
+  const kernel_id k = *rc::gen::element(kernel_id::exact, kernel_id::epeck, kernel_id::gmpq,
+                                        kernel_id::epick, kernel_id::double_);
   const std::string h = *rc::gen::elementOf(exbsp::heuristic_names());
   const bsp tree = build(c.soup(), k, h, *rc::gen::inRange<std::uint64_t>(0, 1000));
   const std::string bytes = tree.serialize();
@@ -281,7 +285,8 @@ TEST(TreeFile, every_single_bit_flip_is_caught_by_the_checksum_or_the_header_che
     for (int bit = 0; bit < 8; ++bit) {
       std::string bad = bytes;
       bad[i] = static_cast<char>(bad[i] ^ (1 << bit));
-      EXPECT_THROW((void)bsp::deserialize(bad, "flip.exbsp"), exbsp::input_error) << "byte " << i << " bit " << bit;
+      EXPECT_THROW((void)bsp::deserialize(bad, "flip.exbsp"), exbsp::input_error)
+          << "byte " << i << " bit " << bit;
     }
 }
 
@@ -338,11 +343,14 @@ TEST(TreeFile, forged_huge_counts_are_rejected_before_any_allocation) {
   const std::string bytes = build(crossing_soup(), kernel_id::exact).serialize();
   const exact_layout l = layout_of(bytes);
   ASSERT_EQ(get_u64(bytes, l.nodes), build(crossing_soup(), kernel_id::exact).stats().nodes);
-  const std::pair<std::size_t, const char*> fields[] = {
-      {l.vertices, "soup.vertices"}, {l.triangles, "soup.triangles"}, {l.points, "points"},
-      {l.fragments, "fragments"},    {l.nodes, "nodes"}};
+  const std::pair<std::size_t, const char*> fields[] = {{l.vertices, "soup.vertices"},
+                                                        {l.triangles, "soup.triangles"},
+                                                        {l.points, "points"},
+                                                        {l.fragments, "fragments"},
+                                                        {l.nodes, "nodes"}};
   for (const auto& [at, name] : fields)
-    for (std::uint64_t n : {std::uint64_t{1} << 62, ~std::uint64_t{0}, std::uint64_t{0xffffffff}, std::uint64_t{100000}}) {
+    for (std::uint64_t n : {std::uint64_t{1} << 62, ~std::uint64_t{0}, std::uint64_t{0xffffffff},
+                            std::uint64_t{100000}}) {
       std::string b = bytes;
       put_u64(b, at, n);
       fix_crc(b);
@@ -368,8 +376,10 @@ TEST(TreeFile, forged_structure_is_rejected_naming_the_field) {
   };
   const std::size_t vertices = get_u64(bytes, l.vertices);
   // Point V (the first constructed one): p, q, plane.
-  expect_rejected(forged(l.first_point, static_cast<std::uint32_t>(vertices)), "is not an earlier point", "self");
-  expect_rejected(forged(l.first_point + 4, 0xffffffffu), "is not an earlier point", "endpoint range");
+  expect_rejected(forged(l.first_point, static_cast<std::uint32_t>(vertices)),
+                  "is not an earlier point", "self");
+  expect_rejected(forged(l.first_point + 4, 0xffffffffu), "is not an earlier point",
+                  "endpoint range");
   expect_rejected(forged(l.first_point + 8, 5), "degenerate triangle", "a degenerate plane");
   expect_rejected(forged(l.first_point + 8, 999), "out of range", "plane range");
   {
@@ -384,12 +394,16 @@ TEST(TreeFile, forged_structure_is_rejected_naming_the_field) {
   // Node 0 (plane, count, negative, positive) and the nodes' tree structure.
   expect_rejected(forged(l.first_node + 4, 0), "fragment count 0", "an empty node");
   expect_rejected(forged(l.first_node + 4, 1000), "fragment count", "too many fragments");
-  expect_rejected(forged(l.first_node + 8, 0), "neither -1 nor a later node", "the root as its own child");
-  expect_rejected(forged(l.first_node + 12, 0x7fffffff), "neither -1 nor a later node", "child out of range");
+  expect_rejected(forged(l.first_node + 8, 0), "neither -1 nor a later node",
+                  "the root as its own child");
+  expect_rejected(forged(l.first_node + 12, 0x7fffffff), "neither -1 nor a later node",
+                  "child out of range");
   {
     std::string b = bytes;  // both children the same node
-    const std::int32_t negative = static_cast<std::int32_t>(get_u64(b, l.first_node + 8) & 0xffffffffu);
-    const std::int32_t positive = static_cast<std::int32_t>(get_u64(b, l.first_node + 12) & 0xffffffffu);
+    const std::int32_t negative =
+        static_cast<std::int32_t>(get_u64(b, l.first_node + 8) & 0xffffffffu);
+    const std::int32_t positive =
+        static_cast<std::int32_t>(get_u64(b, l.first_node + 12) & 0xffffffffu);
     put_u32(b, l.first_node + 8, static_cast<std::uint32_t>(negative >= 0 ? negative : positive));
     put_u32(b, l.first_node + 12, static_cast<std::uint32_t>(negative >= 0 ? negative : positive));
     fix_crc(b);
@@ -457,8 +471,8 @@ TEST_F(TreeFileCli, build_save_then_order_and_build_of_the_tree_match_the_mesh) 
   r = run("build t.exbsp --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto loaded = nlohmann::json::parse(r.out);
-  for (const char* key : {"input_triangles", "degenerate_input", "fragments", "splits", "nodes", "depth",
-                          "build_seconds", "kernel", "heuristic", "seed"})
+  for (const char* key : {"input_triangles", "degenerate_input", "fragments", "splits", "nodes",
+                          "depth", "build_seconds", "kernel", "heuristic", "seed"})
     EXPECT_EQ(built[key], loaded[key]) << key;
   EXPECT_TRUE(loaded.contains("load_seconds"));
   for (const char* view : {"--eye 3,4,5", "--eye 0,0,0", "--direction 1,-2,0.5"}) {
@@ -468,10 +482,12 @@ TEST_F(TreeFileCli, build_save_then_order_and_build_of_the_tree_match_the_mesh) 
     EXPECT_EQ(a.out, b.out) << view << ": byte-identical order";
   }
   // Options that repeat the saved tree's are accepted; others cannot change it.
-  EXPECT_EQ(run("order t.exbsp --kernel exact --heuristic min-split --seed 3 --eye 1,1,1").status, 0);
+  EXPECT_EQ(run("order t.exbsp --kernel exact --heuristic min-split --seed 3 --eye 1,1,1").status,
+            0);
   r = run("order t.exbsp --kernel epeck --eye 1,1,1");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("t.exbsp is a saved tree built with --kernel exact"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("t.exbsp is a saved tree built with --kernel exact"), std::string::npos)
+      << r.err;
   r = run("build t.exbsp --seed 4");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--seed"), std::string::npos) << r.err;

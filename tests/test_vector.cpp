@@ -61,19 +61,18 @@ const fs::path& temp_path() {
   return dir;
 }
 
-std::string temp_dir() {
-  return temp_path().string();
-}
+std::string temp_dir() { return temp_path().string(); }
 
 /// Removes temp_dir() at exit when every test passed (unless EXBSP_KEEP_TEST_OUTPUT is set);
 /// otherwise says where the documents and screenshots are.
 class output_cleanup : public ::testing::Environment {
-public:
+ public:
   void TearDown() override {
     const char* keep = std::getenv("EXBSP_KEEP_TEST_OUTPUT");
     const fs::path d = temp_path();
     if (!fs::exists(d)) return;
-    if (::testing::UnitTest::GetInstance()->Passed() && !(keep && *keep && std::string(keep) != "0")) {
+    if (::testing::UnitTest::GetInstance()->Passed() &&
+        !(keep && *keep && std::string(keep) != "0")) {
       std::error_code ec;
       fs::remove_all(d, ec);
     } else {
@@ -81,14 +80,16 @@ public:
     }
   }
 };
-[[maybe_unused]] ::testing::Environment* const cleanup_env = ::testing::AddGlobalTestEnvironment(new output_cleanup);
+[[maybe_unused]] ::testing::Environment* const cleanup_env =
+    ::testing::AddGlobalTestEnvironment(new output_cleanup);
 
 // ---- frames -------------------------------------------------------------------------------
 
 /// A frame of a scene (or the demo when `name` is empty) ready for the per-view stages, with
 /// the effects that vector output cannot reproduce pixel for pixel removed.
 frame scene_frame(const std::string& name, scene::scene& s) {
-  s = name.empty() ? scene::demo_scene() : scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
+  s = name.empty() ? scene::demo_scene()
+                   : scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
   s.effects.erase(std::remove_if(s.effects.begin(), s.effects.end(),
                                  [](const std::string& e) {
                                    return e == "antialias" || e == "depth_of_field" || e == "fog";
@@ -152,8 +153,10 @@ sampled sample_regions(const vector_drawing& d) {
         y0 = std::min(y0, q.y);
         y1 = std::max(y1, q.y);
       }
-    for (long long j = std::max(0LL, y0 / 100 - 1); j <= std::min<long long>(d.height - 1, y1 / 100 + 1); ++j)
-      for (long long i = std::max(0LL, x0 / 100 - 1); i <= std::min<long long>(d.width - 1, x1 / 100 + 1); ++i)
+    for (long long j = std::max(0LL, y0 / 100 - 1);
+         j <= std::min<long long>(d.height - 1, y1 / 100 + 1); ++j)
+      for (long long i = std::max(0LL, x0 / 100 - 1);
+           i <= std::min<long long>(d.width - 1, x1 / 100 + 1); ++i)
         if (winding(p.rings, 100.0 * i + 50, 100.0 * j + 50) != 0) {
           out.picture.set_pixel(static_cast<int>(i), static_cast<int>(j), p.color);
           int& c = count[static_cast<std::size_t>(j * d.width + i)];
@@ -177,10 +180,11 @@ double equal_fraction(const image& a, const image& b) {
 /// `tolerance` levels in a channel: seams. (Anti-aliased renderers blend a region's edge over
 /// its underlay of the same colour with 8-bit arithmetic, which may round c to c - 1; a seam
 /// lets the background through, tens of levels.)
-std::size_t interior_differences(const image& reference, const image& shot, std::size_t* interior = nullptr,
-                                 int tolerance = 2) {
+std::size_t interior_differences(const image& reference, const image& shot,
+                                 std::size_t* interior = nullptr, int tolerance = 2) {
   auto near = [&](rgb8 a, rgb8 b) {
-    return std::abs(a.r - b.r) <= tolerance && std::abs(a.g - b.g) <= tolerance && std::abs(a.b - b.b) <= tolerance;
+    return std::abs(a.r - b.r) <= tolerance && std::abs(a.g - b.g) <= tolerance &&
+           std::abs(a.b - b.b) <= tolerance;
   };
   std::size_t bad = 0, inner = 0;
   for (int j = 2; j + 2 < reference.height(); ++j)
@@ -221,9 +225,11 @@ std::vector<const vector_path*> regions_of(const vector_drawing& d) {
 
 TEST(VisibleRegions, AFaceSeenEdgeOnHasNoRegion) {
   triangle_soup s;
-  add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});          // faces the eye
-  add_quad(s, {-0.5, 0, -1}, {0.5, 0, -1}, {0.5, 0, 1}, {-0.5, 0, 1});  // in the plane y = 0 through the eye
-  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
+  add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});  // faces the eye
+  add_quad(s, {-0.5, 0, -1}, {0.5, 0, -1}, {0.5, 0, 1},
+           {-0.5, 0, 1});  // in the plane y = 0 through the eye
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
+                              {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
   run(f, {}, output_kind::svg);
   const vector_drawing d = visible_drawing(f);
   const auto r = regions_of(d);
@@ -239,7 +245,8 @@ TEST(VisibleRegions, CoplanarOverlappingFacesOfTwoMeshesTileTheirUnion) {
   triangle_soup s;
   add_quad(s, {-1, -1, 0}, {0.5, -1, 0}, {0.5, 1, 0}, {-1, 1, 0});
   add_quad(s, {-0.5, -0.5, 0}, {1, -0.5, 0}, {1, 0.5, 0}, {-0.5, 0.5, 0});
-  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0.3, 0.2, 5}, {0, 0, 0}, {0, 1, 0}}, 160, 120);
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
+                              {{0.3, 0.2, 5}, {0, 0, 0}, {0, 1, 0}}, 160, 120);
   f.mesh_face_offsets = {0, 1, 2};  // one face per mesh
   run(f, {}, output_kind::png);
   const image png = f.picture;
@@ -258,7 +265,8 @@ TEST(VisibleRegions, AFaceExactlyBehindAnotherOfTheSameOutlineIsHidden) {
   add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
   // Behind it, the same outline as seen from the eye (scaled about the eye at (0, 0, 5)).
   add_quad(s, {-2, -2, -5}, {2, -2, -5}, {2, 2, -5}, {-2, 2, -5});
-  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
+                              {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
   run(f, {}, output_kind::svg);
   const vector_drawing d = visible_drawing(f);  // regions_of points into it
   const auto r = regions_of(d);
@@ -277,7 +285,8 @@ TEST(VisibleRegions, TJunctionsLeaveNoCrackForTheFaceBehind) {
                               {{0.1, 0.05, 4}, {0, 0, 0}, {0, 1, 0}}, 400, 300);
   run(f, {}, output_kind::svg);
   const vector_drawing d = visible_drawing(f);
-  for (const vector_path* p : regions_of(d)) EXPECT_NE(p->face, 3u) << "the face behind shows through";
+  for (const vector_path* p : regions_of(d))
+    EXPECT_NE(p->face, 3u) << "the face behind shows through";
   EXPECT_EQ(regions_of(d).size(), 3u);
   EXPECT_EQ(sample_regions(d).max_overlap, 1);
 }
@@ -287,7 +296,8 @@ TEST(VisibleRegions, OneRegionPerFaceWithItsHole) {
   triangle_soup s;
   add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
   add_quad(s, {-0.2, -0.2, 1}, {0.2, -0.2, 1}, {0.2, 0.2, 1}, {-0.2, 0.2, 1});
-  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
+                              {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
   run(f, {}, output_kind::svg);
   const vector_drawing d = visible_drawing(f);  // regions_of points into it
   const auto r = regions_of(d);
@@ -303,7 +313,8 @@ TEST(VisibleRegions, CoordinatesAreHundredthsOfAPixel) {
   run(f, s.effects, output_kind::svg);
   const std::string& svg = f.svg;
   // Every number in a path's d attribute has at most two decimals.
-  for (std::size_t at = svg.find(" d=\""); at != std::string::npos; at = svg.find(" d=\"", at + 1)) {
+  for (std::size_t at = svg.find(" d=\""); at != std::string::npos;
+       at = svg.find(" d=\"", at + 1)) {
     const std::size_t end = svg.find('"', at + 4);
     std::size_t decimals = 0;
     bool in_fraction = false;
@@ -339,7 +350,8 @@ TEST(VisibleRegions, EveryFaceAtMostOnceAndGroupedPerMesh) {
   EXPECT_GT(last_mesh, 0u);
   EXPECT_EQ(std::count(f.svg.begin(), f.svg.end(), '\n') > 0, true);
   std::size_t groups = 0;
-  for (std::size_t at = f.svg.find("<g id=\"mesh-"); at != std::string::npos; at = f.svg.find("<g id=\"mesh-", at + 1))
+  for (std::size_t at = f.svg.find("<g id=\"mesh-"); at != std::string::npos;
+       at = f.svg.find("<g id=\"mesh-", at + 1))
     ++groups;
   std::set<std::uint32_t> meshes;
   for (const vector_path* p : regions_of(d)) meshes.insert(p->mesh);
@@ -367,11 +379,13 @@ TEST(Edges, ACubeShowsNineVisibleEdgesAndThreeHidden) {
   // A unit cube seen from a generic corner direction: 9 visible edges (silhouette hexagon and
   // the three at the near corner), 3 hidden ones (at the far corner).
   triangle_soup s;
-  const vec3d p[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  const int q[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+  const vec3d p[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                      {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const int q[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                       {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
   for (const auto& f4 : q) add_quad(s, p[f4[0]], p[f4[1]], p[f4[2]], p[f4[3]]);
-  frame f = perspective_frame(std::move(s), std::vector<rgb8>(6, {180, 180, 180}), {{4, 3.1, 2.3}, {0.5, 0.5, 0.5}, {0, 0, 1}},
-                              200, 150);
+  frame f = perspective_frame(std::move(s), std::vector<rgb8>(6, {180, 180, 180}),
+                              {{4, 3.1, 2.3}, {0.5, 0.5, 0.5}, {0, 0, 1}}, 200, 150);
   f.vector.edges = vector_options::edges_kind::visible_hidden;
   run(f, {}, output_kind::svg);
   const vector_drawing d = visible_drawing(f);
@@ -393,7 +407,8 @@ TEST(Edges, CreaseAngleDecidesWhichEdgesAreDrawn) {
   const double t = std::tan(20 * M_PI / 180);
   add_quad(s, {-1, -1, 0}, {0, -1, 0}, {0, 1, 0}, {-1, 1, 0});
   add_quad(s, {0, -1, 0}, {1, -1, -t}, {1, 1, -t}, {0, 1, 0});
-  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}}, {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 160, 120);
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
+                              {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 160, 120);
   f.vector.edges = vector_options::edges_kind::visible;
   run(f, {}, output_kind::svg);
   f.vector.crease_deg = 30;
@@ -412,7 +427,8 @@ TEST(Pdf, IsAPdfWithOnePageOfTheViewportSize) {
   run(f, s.effects, output_kind::pdf);
   ASSERT_GT(f.pdf.size(), 100u);
   EXPECT_EQ(f.pdf.compare(0, 5, "%PDF-"), 0);
-  EXPECT_NE(f.pdf.find("/MediaBox [ 0 0 " + std::to_string(s.width) + " " + std::to_string(s.height) + " ]"),
+  EXPECT_NE(f.pdf.find("/MediaBox [ 0 0 " + std::to_string(s.width) + " " +
+                       std::to_string(s.height) + " ]"),
             std::string::npos);
   f.vector.mode = vector_options::mode_kind::painter;
   run(f, s.effects, output_kind::pdf);
@@ -429,7 +445,8 @@ TEST(Pdf, APlacedViewportGetsAPageOfTheImageSize) {
             std::string::npos);
   run(f, s.effects, output_kind::svg);
   EXPECT_EQ(f.svg.find("<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
-                       std::to_string(f.view.image_width) + "\" height=\"" + std::to_string(f.view.image_height) + "\""),
+                       std::to_string(f.view.image_width) + "\" height=\"" +
+                       std::to_string(f.view.image_height) + "\""),
             f.svg.find("<svg"));
   EXPECT_NE(f.svg.find("<svg x=\"" + std::to_string(f.view.place_x) + "\""), std::string::npos);
   f.vector.mode = vector_options::mode_kind::painter;  // the painter's stack is placed the same way
@@ -437,13 +454,15 @@ TEST(Pdf, APlacedViewportGetsAPageOfTheImageSize) {
   EXPECT_NE(f.svg.find("<svg x=\"" + std::to_string(f.view.place_x) + "\""), std::string::npos);
   EXPECT_NE(f.svg.find("data-fragment"), std::string::npos);
   run(f, s.effects, output_kind::pdf);
-  EXPECT_NE(f.pdf.find("/MediaBox [ 0 0 " + std::to_string(f.view.image_width) + " "), std::string::npos);
+  EXPECT_NE(f.pdf.find("/MediaBox [ 0 0 " + std::to_string(f.view.image_width) + " "),
+            std::string::npos);
 }
 
 // ---- scene options and the command ------------------------------------------------------
 
 TEST(Options, BadSvgOptionsNameTheirKey) {
-  const std::string base = R"({"meshes": [], "camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0], "up": [0, 1, 0]},
+  const std::string base =
+      R"({"meshes": [], "camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0], "up": [0, 1, 0]},
     "projection": {"type": "perspective", "fovy_deg": 40, "near": 1, "far": 100},
     "viewport": {"width": 64, "height": 48}, "svg": )";
   auto key_of = [&](const std::string& svg) {
@@ -459,7 +478,8 @@ TEST(Options, BadSvgOptionsNameTheirKey) {
   EXPECT_NE(key_of(R"({"crease_deg": 0})").find("/svg/crease_deg"), std::string::npos);
   EXPECT_NE(key_of(R"({"crease_deg": "30"})").find("/svg/crease_deg"), std::string::npos);
   EXPECT_NE(key_of(R"({"colour": 1})").find("/svg/colour"), std::string::npos);
-  const scene::scene s = scene::parse_scene_text(base + R"({"mode": "painter", "edges": "visible+hidden", "crease_deg": 45})" + "}", "s.json");
+  const scene::scene s = scene::parse_scene_text(
+      base + R"({"mode": "painter", "edges": "visible+hidden", "crease_deg": 45})" + "}", "s.json");
   EXPECT_EQ(s.vector.mode, vector_options::mode_kind::painter);
   EXPECT_EQ(s.vector.edges, vector_options::edges_kind::visible_hidden);
   EXPECT_EQ(s.vector.crease_deg, 45);
@@ -495,17 +515,19 @@ bool run_quiet(const std::string& command, const std::string& log) {
 }
 
 /// Headless Chromium screenshot of an HTML page at width x height.
-bool chromium_screenshot(const std::string& chromium, const std::string& html, int width, int height,
-                         const std::string& png) {
+bool chromium_screenshot(const std::string& chromium, const std::string& html, int width,
+                         int height, const std::string& png) {
   const std::string profile = html + ".profile";
   fs::remove_all(profile);
   fs::create_directories(profile);
-  const std::string cmd = chromium +
-                          " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
-                          " --disable-background-networking --disable-component-update --disable-sync"
-                          " --hide-scrollbars --force-device-scale-factor=1 --force-color-profile=srgb"
-                          " --user-data-dir=" + profile + " --screenshot=" + png + " --window-size=" +
-                          std::to_string(width) + "," + std::to_string(height) + " file://" + html;
+  const std::string cmd =
+      chromium +
+      " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
+      " --disable-background-networking --disable-component-update --disable-sync"
+      " --hide-scrollbars --force-device-scale-factor=1 --force-color-profile=srgb"
+      " --user-data-dir=" +
+      profile + " --screenshot=" + png + " --window-size=" + std::to_string(width) + "," +
+      std::to_string(height) + " file://" + html;
   fs::remove(png);
   const bool ok = run_quiet(cmd, html + ".log") && fs::exists(png);
   fs::remove_all(profile);
@@ -517,14 +539,19 @@ void write_text(const std::string& path, const std::string& text) {
   out << text;
 }
 
-const char* page_style = "<style>html,body{margin:0;padding:0;overflow:hidden}img,svg{display:block}</style>";
+const char* page_style =
+    "<style>html,body{margin:0;padding:0;overflow:hidden}img,svg{display:block}</style>";
 
 /// Pixel agreement of a rasterized drawing with a reference image.
 struct agreement {
   std::size_t pixels = 0, equal = 0;       ///< pixels compared, equal ones
   std::size_t drawn = 0, drawn_equal = 0;  ///< of those, pixels not background in either image
-  double all() const { return pixels ? static_cast<double>(equal) / static_cast<double>(pixels) : 0; }
-  double of_drawn() const { return drawn ? static_cast<double>(drawn_equal) / static_cast<double>(drawn) : 1; }
+  double all() const {
+    return pixels ? static_cast<double>(equal) / static_cast<double>(pixels) : 0;
+  }
+  double of_drawn() const {
+    return drawn ? static_cast<double>(drawn_equal) / static_cast<double>(drawn) : 1;
+  }
 };
 
 /// True when `img` has colour c at (row, col) or one of its 8 neighbours.
@@ -538,11 +565,13 @@ bool near_colour(const image& img, int row, int col, rgb8 c) {
 /// Compares `shot` with `reference` pixel by pixel, leaving out the pixels where `skip` is set
 /// (row-major, when given). A pixel of one of `curve_colours` in either image counts as equal
 /// when the other image has that colour within one pixel (file comment).
-agreement compare(const image& shot, const image& reference, rgb8 background, const std::vector<rgb8>& curve_colours,
-                  const std::vector<bool>* skip = nullptr) {
+agreement compare(const image& shot, const image& reference, rgb8 background,
+                  const std::vector<rgb8>& curve_colours, const std::vector<bool>* skip = nullptr) {
   agreement a;
   if (shot.width() != reference.width() || shot.height() != reference.height()) return a;
-  auto is_curve = [&](rgb8 c) { return std::find(curve_colours.begin(), curve_colours.end(), c) != curve_colours.end(); };
+  auto is_curve = [&](rgb8 c) {
+    return std::find(curve_colours.begin(), curve_colours.end(), c) != curve_colours.end();
+  };
   for (int r = 0; r < shot.height(); ++r)
     for (int k = 0; k < shot.width(); ++k) {
       if (skip && (*skip)[static_cast<std::size_t>(r) * shot.width() + k]) continue;
@@ -606,8 +635,9 @@ image mesa_image(const frame& f, bool cull, bool lit) {
     fragment_d tri{t.face, {}};
     for (int c = 0; c < 3; ++c) tri.v[c] = f.soup.vertices[t.v[c]];
     z.triangles.push_back(tri.v);
-    z.colors.push_back(lit ? lambert_color(f.color_of(t.face), shading_normal(tri, f.view, light.two_sided), light)
-                           : f.color_of(t.face));
+    z.colors.push_back(
+        lit ? lambert_color(f.color_of(t.face), shading_normal(tri, f.view, light.two_sided), light)
+            : f.color_of(t.face));
   }
   z.cull_back = cull;
   z.mirror_y = true;
@@ -616,15 +646,19 @@ image mesa_image(const frame& f, bool cull, bool lit) {
 #endif
 
 TEST(Browser, SvgInChromiumAndPdfInPopplerMatchThePngAndMesasZBuffer) {
-  const std::string chromium = find_program("EXBSP_CHROMIUM", {"/usr/bin/chromium", "/usr/bin/chromium-browser"});
+  const std::string chromium =
+      find_program("EXBSP_CHROMIUM", {"/usr/bin/chromium", "/usr/bin/chromium-browser"});
   const std::string pdftoppm = find_program("EXBSP_PDFTOPPM", {"/usr/bin/pdftoppm"});
   const std::string pdftocairo = find_program("EXBSP_PDFTOCAIRO", {"/usr/bin/pdftocairo"});
   if (chromium.empty() || pdftoppm.empty() || pdftocairo.empty())
-    GTEST_SKIP() << "SKIPPED: headless Chromium (" << (chromium.empty() ? "missing" : chromium) << ") and pdftoppm ("
-                 << (pdftoppm.empty() ? "missing" : pdftoppm) << ", pdftocairo"
-                 << ") are needed to rasterize the SVG and PDF; run scripts/setup (apt-get install chromium poppler-utils)";
+    GTEST_SKIP() << "SKIPPED: headless Chromium (" << (chromium.empty() ? "missing" : chromium)
+                 << ") and pdftoppm (" << (pdftoppm.empty() ? "missing" : pdftoppm)
+                 << ", pdftocairo"
+                 << ") are needed to rasterize the SVG and PDF; run scripts/setup (apt-get install "
+                    "chromium poppler-utils)";
 #if !EXBSP_HAVE_OSMESA
-  FAIL() << "OSMesa (GL/osmesa.h, GL/gl.h, libOSMesa) was not found when configuring: install Debian's "
+  FAIL() << "OSMesa (GL/osmesa.h, GL/gl.h, libOSMesa) was not found when configuring: install "
+            "Debian's "
             "libosmesa6-dev (scripts/setup) and reconfigure; the z-buffer comparison cannot run";
 #else
   const std::string dir = temp_dir();
@@ -633,7 +667,8 @@ TEST(Browser, SvgInChromiumAndPdfInPopplerMatchThePngAndMesasZBuffer) {
     scene::scene s;
     frame f = scene_frame(name, s);
     const bool placed = f.view.needs_placement();
-    const bool cull = std::find(s.effects.begin(), s.effects.end(), "backface_culling") != s.effects.end();
+    const bool cull =
+        std::find(s.effects.begin(), s.effects.end(), "backface_culling") != s.effects.end();
     std::vector<rgb8> curve_colours;
     for (const curve_spec& c : s.curves) curve_colours.push_back(c.color);
     run(f, s.effects, output_kind::png);
@@ -641,7 +676,8 @@ TEST(Browser, SvgInChromiumAndPdfInPopplerMatchThePngAndMesasZBuffer) {
     const image png = f.picture;
     image mesa;
     try {
-      mesa = mesa_image(f, cull, std::find(s.effects.begin(), s.effects.end(), "lighting") != s.effects.end());
+      mesa = mesa_image(
+          f, cull, std::find(s.effects.begin(), s.effects.end(), "lighting") != s.effects.end());
     } catch (const std::exception& e) {
       FAIL() << label(name) << ": Mesa's z-buffer: " << e.what();
     }
@@ -665,14 +701,17 @@ TEST(Browser, SvgInChromiumAndPdfInPopplerMatchThePngAndMesasZBuffer) {
 
     // Aliased: the SVG inlined with crispEdges; the PDF without anti-aliasing.
     const std::string inline_svg = f.svg.substr(f.svg.find("<svg"));
-    write_text(base + "_crisp.html", std::string("<!DOCTYPE html><html><head>") + page_style +
-                                         "<style>svg *{shape-rendering:crispEdges}</style></head><body>" + inline_svg +
-                                         "</body></html>");
-    ASSERT_TRUE(chromium_screenshot(chromium, base + "_crisp.html", w, h, base + "_crisp.png")) << label(name);
+    write_text(base + "_crisp.html",
+               std::string("<!DOCTYPE html><html><head>") + page_style +
+                   "<style>svg *{shape-rendering:crispEdges}</style></head><body>" + inline_svg +
+                   "</body></html>");
+    ASSERT_TRUE(chromium_screenshot(chromium, base + "_crisp.html", w, h, base + "_crisp.png"))
+        << label(name);
     // (pdftocairo, poppler's cairo back end, samples pixel centres without anti-aliasing;
     // pdftoppm's aliased mode paints every pixel a path touches, thin slivers included.)
-    ASSERT_TRUE(run_quiet(pdftocairo + " -png -r 72 -singlefile -antialias none " + base + ".pdf " + base + "_pdf",
-                          base + "_pdf.log"))
+    ASSERT_TRUE(run_quiet(
+        pdftocairo + " -png -r 72 -singlefile -antialias none " + base + ".pdf " + base + "_pdf",
+        base + "_pdf.log"))
         << label(name);
     const image svg_shot = read_png(base + "_crisp.png"), pdf_shot = read_png(base + "_pdf.png");
     const agreement svg_png = compare(svg_shot, png, s.background, curve_colours);
@@ -680,32 +719,41 @@ TEST(Browser, SvgInChromiumAndPdfInPopplerMatchThePngAndMesasZBuffer) {
     const agreement svg_mesa = compare(svg_shot, mesa, s.background, {}, skip);
     const agreement pdf_mesa = compare(pdf_shot, mesa, s.background, {}, skip);
     const agreement png_mesa = compare(png, mesa, s.background, {}, skip);
-    std::cout << "vector " << label(name) << (placed ? " (placed)" : "") << ": equal to the PNG: SVG "
-              << percent(svg_png.all()) << ", PDF " << percent(pdf_png.all()) << "; to Mesa's z-buffer: SVG "
-              << percent(svg_mesa.all()) << " (drawn " << percent(svg_mesa.of_drawn()) << "), PDF "
-              << percent(pdf_mesa.all()) << " (drawn " << percent(pdf_mesa.of_drawn()) << "), PNG "
-              << percent(png_mesa.all()) << " (drawn " << percent(png_mesa.of_drawn()) << ")"
+    std::cout << "vector " << label(name) << (placed ? " (placed)" : "")
+              << ": equal to the PNG: SVG " << percent(svg_png.all()) << ", PDF "
+              << percent(pdf_png.all()) << "; to Mesa's z-buffer: SVG " << percent(svg_mesa.all())
+              << " (drawn " << percent(svg_mesa.of_drawn()) << "), PDF " << percent(pdf_mesa.all())
+              << " (drawn " << percent(pdf_mesa.of_drawn()) << "), PNG " << percent(png_mesa.all())
+              << " (drawn " << percent(png_mesa.of_drawn()) << ")"
               << (skip ? "; pixels next to curves left out" : "") << "\n";
     EXPECT_GE(svg_png.all(), 0.995) << label(name) << ": Chromium, crispEdges, against the PNG";
-    EXPECT_GE(pdf_png.all(), 0.995) << label(name) << ": pdftocairo, no anti-aliasing, against the PNG";
-    EXPECT_GE(svg_mesa.all(), 0.995) << label(name) << ": Chromium, crispEdges, against Mesa's z-buffer";
-    EXPECT_GE(pdf_mesa.all(), 0.995) << label(name) << ": pdftocairo, no anti-aliasing, against Mesa's z-buffer";
+    EXPECT_GE(pdf_png.all(), 0.995)
+        << label(name) << ": pdftocairo, no anti-aliasing, against the PNG";
+    EXPECT_GE(svg_mesa.all(), 0.995)
+        << label(name) << ": Chromium, crispEdges, against Mesa's z-buffer";
+    EXPECT_GE(pdf_mesa.all(), 0.995)
+        << label(name) << ": pdftocairo, no anti-aliasing, against Mesa's z-buffer";
     // and not only thanks to the background (as test_oracle_gl requires of the PNG)
-    EXPECT_GE(svg_mesa.of_drawn(), 0.995) << label(name) << ": Chromium, drawn pixels, against Mesa's z-buffer";
-    EXPECT_GE(pdf_mesa.of_drawn(), 0.995) << label(name) << ": pdftocairo, drawn pixels, against Mesa's z-buffer";
+    EXPECT_GE(svg_mesa.of_drawn(), 0.995)
+        << label(name) << ": Chromium, drawn pixels, against Mesa's z-buffer";
+    EXPECT_GE(pdf_mesa.of_drawn(), 0.995)
+        << label(name) << ": pdftocairo, drawn pixels, against Mesa's z-buffer";
 
     // Anti-aliased as shipped: no seam inside a flat face.
-    write_text(base + ".html", std::string("<!DOCTYPE html><html><head>") + page_style + "</head><body><img src=\"" +
-                                   base + ".svg\" width=\"" + std::to_string(w) + "\" height=\"" + std::to_string(h) +
+    write_text(base + ".html", std::string("<!DOCTYPE html><html><head>") + page_style +
+                                   "</head><body><img src=\"" + base + ".svg\" width=\"" +
+                                   std::to_string(w) + "\" height=\"" + std::to_string(h) +
                                    "\"></body></html>");
-    ASSERT_TRUE(chromium_screenshot(chromium, base + ".html", w, h, base + "_aa.png")) << label(name);
+    ASSERT_TRUE(chromium_screenshot(chromium, base + ".html", w, h, base + "_aa.png"))
+        << label(name);
     // Allowed: one interior pixel in 10,000, the anti-aliased tips of true slivers narrower than
     // a pixel that the PNG's centre sampling misses (a seam is a line: hundreds of pixels).
     std::size_t interior = 0;
     const std::size_t seams = interior_differences(png, read_png(base + "_aa.png"), &interior);
     EXPECT_GT(interior, 0u);
     EXPECT_LE(seams * 10000, interior) << label(name) << ": Chromium seams: " << seams;
-    ASSERT_TRUE(run_quiet(pdftoppm + " -r 72 -png -singlefile " + base + ".pdf " + base + "_pdf_aa", base + "_pdf.log"))
+    ASSERT_TRUE(run_quiet(pdftoppm + " -r 72 -png -singlefile " + base + ".pdf " + base + "_pdf_aa",
+                          base + "_pdf.log"))
         << label(name);
     const std::size_t pdf_seams = interior_differences(png, read_png(base + "_pdf_aa.png"));
     EXPECT_LE(pdf_seams * 10000, interior) << label(name) << ": pdftoppm seams: " << pdf_seams;

@@ -72,7 +72,8 @@ struct coverage {
   std::vector<int> count;
   coverage(int w, int h) : width(w), height(h), count(static_cast<std::size_t>(w) * h, 0) {}
   void add(const vec2& a, const vec2& b, const vec2& c) {
-    for_each_covered_pixel(a, b, c, width, height, [&](int i, int j) { ++count[static_cast<std::size_t>(j) * width + i]; });
+    for_each_covered_pixel(a, b, c, width, height,
+                           [&](int i, int j) { ++count[static_cast<std::size_t>(j) * width + i]; });
   }
   int at(int i, int j) const { return count[static_cast<std::size_t>(j) * width + i]; }
   int total() const {
@@ -84,10 +85,14 @@ struct coverage {
 
 vec2 centre(int i, int j) { return {i + 0.5, j + 0.5}; }
 
-int orient(const vec2& a, const vec2& b, const vec2& c) { return orient2d(a.x, a.y, b.x, b.y, c.x, c.y); }
+int orient(const vec2& a, const vec2& b, const vec2& c) {
+  return orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
+}
 
 /// Uniform integer in [lo, hi] independent of RapidCheck's size.
-int uniform_int(int lo, int hi) { return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(lo, hi + 1)); }
+int uniform_int(int lo, int hi) {
+  return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(lo, hi + 1));
+}
 
 /// A coordinate on the half-pixel grid in [0, n]: often exactly on pixel centres.
 double half_grid(int n) { return uniform_int(0, 2 * n) / 2.0; }
@@ -151,11 +156,16 @@ TEST(Transforms, AgreeWithGlm) {
   for (int k = 0; k < 200; ++k) {
     const double angle = u(rng) * 36;
     const vector3 axis{u(rng), u(rng), u(rng)};
-    const glm::dmat4 g = glm::rotate(glm::dmat4(1.0), angle * pi / 180, glm::dvec3(axis.x, axis.y, axis.z));
+    const glm::dmat4 g =
+        glm::rotate(glm::dmat4(1.0), angle * pi / 180, glm::dvec3(axis.x, axis.y, axis.z));
     EXPECT_LT(relative_difference(rotate(angle, axis), from_glm(g)), 1e-12);
     const vector3 t{u(rng), u(rng), u(rng)};
-    EXPECT_LT(relative_difference(translate(t), from_glm(glm::translate(glm::dmat4(1.0), glm::dvec3(t.x, t.y, t.z)))), 1e-15);
-    EXPECT_LT(relative_difference(scale(t.x, t.y, t.z), from_glm(glm::scale(glm::dmat4(1.0), glm::dvec3(t.x, t.y, t.z)))), 1e-15);
+    EXPECT_LT(relative_difference(translate(t), from_glm(glm::translate(
+                                                    glm::dmat4(1.0), glm::dvec3(t.x, t.y, t.z)))),
+              1e-15);
+    EXPECT_LT(relative_difference(scale(t.x, t.y, t.z),
+                                  from_glm(glm::scale(glm::dmat4(1.0), glm::dvec3(t.x, t.y, t.z)))),
+              1e-15);
   }
 }
 
@@ -229,7 +239,8 @@ TEST(LookAt, AgreesWithGlmOnRandomCameras) {
     const point3 eye{u(rng), u(rng), u(rng)}, target{u(rng), u(rng), u(rng)};
     const vector3 up{u(rng), u(rng), u(rng)};
     const glm::dmat4 g =
-        glm::lookAt(glm::dvec3(eye.x, eye.y, eye.z), glm::dvec3(target.x, target.y, target.z), glm::dvec3(up.x, up.y, up.z));
+        glm::lookAt(glm::dvec3(eye.x, eye.y, eye.z), glm::dvec3(target.x, target.y, target.z),
+                    glm::dvec3(up.x, up.y, up.z));
     EXPECT_LT(relative_difference(look_at(eye, target, up), from_glm(g)), 1e-12);
   }
 }
@@ -260,7 +271,9 @@ TEST(Perspective, MapsNearAndFarToMinusOneAndOne) {
 
 TEST(Perspective, EqualsTheSymmetricFrustum) {
   const double n = 0.5, f = 30, aspect = 4.0 / 3, top = n * std::tan(40 * pi / 360);
-  EXPECT_LT(relative_difference(perspective(40, aspect, n, f), frustum(-top * aspect, top * aspect, -top, top, n, f)), 1e-14);
+  EXPECT_LT(relative_difference(perspective(40, aspect, n, f),
+                                frustum(-top * aspect, top * aspect, -top, top, n, f)),
+            1e-14);
 }
 
 TEST(Perspective, BadParametersThrow) {
@@ -275,9 +288,9 @@ TEST(Perspective, BadParametersThrow) {
 
 TEST(Frustum, ClosedForm) {
   const mat4 m = frustum(-1, 3, -2, 2, 2, 6);
-  EXPECT_DOUBLE_EQ(m(0, 0), 1.0);   // 2n/(r-l)
-  EXPECT_DOUBLE_EQ(m(0, 2), 0.5);   // (r+l)/(r-l)
-  EXPECT_DOUBLE_EQ(m(1, 1), 1.0);   // 2n/(t-b)
+  EXPECT_DOUBLE_EQ(m(0, 0), 1.0);  // 2n/(r-l)
+  EXPECT_DOUBLE_EQ(m(0, 2), 0.5);  // (r+l)/(r-l)
+  EXPECT_DOUBLE_EQ(m(1, 1), 1.0);  // 2n/(t-b)
   EXPECT_DOUBLE_EQ(m(1, 2), 0.0);
   EXPECT_DOUBLE_EQ(m(2, 2), -2.0);  // -(f+n)/(f-n)
   EXPECT_DOUBLE_EQ(m(2, 3), -6.0);  // -2fn/(f-n)
@@ -312,10 +325,14 @@ TEST(Projections, AgreeWithGlmOnRandomInput) {
     double l = u(rng), r = u(rng), b = u(rng), t = u(rng);
     if (l == r || b == t) continue;
     const double n = pos(rng), f = n + pos(rng) * 10;
-    EXPECT_LT(relative_difference(ortho(l, r, b, t, n, f), from_glm(glm::ortho(l, r, b, t, n, f))), 1e-12);
-    EXPECT_LT(relative_difference(frustum(l, r, b, t, n, f), from_glm(glm::frustum(l, r, b, t, n, f))), 1e-12);
+    EXPECT_LT(relative_difference(ortho(l, r, b, t, n, f), from_glm(glm::ortho(l, r, b, t, n, f))),
+              1e-12);
+    EXPECT_LT(
+        relative_difference(frustum(l, r, b, t, n, f), from_glm(glm::frustum(l, r, b, t, n, f))),
+        1e-12);
     const double fovy = fov(rng), aspect = asp(rng);
-    EXPECT_LT(relative_difference(perspective(fovy, aspect, n, f), from_glm(glm::perspective(fovy * pi / 180, aspect, n, f))),
+    EXPECT_LT(relative_difference(perspective(fovy, aspect, n, f),
+                                  from_glm(glm::perspective(fovy * pi / 180, aspect, n, f))),
               1e-12);
   }
 }
@@ -346,7 +363,9 @@ TEST(Oblique, ProjectsAlongTheDirectionOfProjection) {
   EXPECT_NEAR(c.x, d.x, 1e-15);
   EXPECT_NEAR(c.y, d.y, 1e-15);
   // The view-plane normal as direction of projection gives orthographic.
-  EXPECT_LT(relative_difference(oblique(-4, 4, -3, 3, 1, 20, {0, 0, -2}, -5), ortho(-4, 4, -3, 3, 1, 20)), 1e-15);
+  EXPECT_LT(
+      relative_difference(oblique(-4, 4, -3, 3, 1, 20, {0, 0, -2}, -5), ortho(-4, 4, -3, 3, 1, 20)),
+      1e-15);
   EXPECT_THROW(oblique_shear({0, 0, 1}), usage_error);
   EXPECT_THROW(oblique_shear({1, 0, 0}), usage_error);
 }
@@ -356,7 +375,8 @@ TEST(Oblique, ProjectsAlongTheDirectionOfProjection) {
 
 TEST(Viewport, NdcCornersMapToTheWindowCornersLikeOpenGl) {
   const viewport vp{0, 0, 640, 480, 0, 1};
-  const window_point lo = to_window(vp, -1, -1, -1), hi = to_window(vp, 1, 1, 1), mid = to_window(vp, 0, 0, 0);
+  const window_point lo = to_window(vp, -1, -1, -1), hi = to_window(vp, 1, 1, 1),
+                     mid = to_window(vp, 0, 0, 0);
   EXPECT_EQ(lo.x, 0);
   EXPECT_EQ(lo.y, 0);
   EXPECT_EQ(lo.z, 0);
@@ -416,8 +436,8 @@ TEST(ClipStage, SharedEdgesGetIdenticalVertices) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-3, 3);
   for (int k = 0; k < 300; ++k) {
-    const hpoint a{u(rng), u(rng), u(rng), 1}, b{u(rng), u(rng), u(rng), 1}, c{u(rng), u(rng), u(rng), 1},
-        d{u(rng), u(rng), u(rng), 1};
+    const hpoint a{u(rng), u(rng), u(rng), 1}, b{u(rng), u(rng), u(rng), 1},
+        c{u(rng), u(rng), u(rng), 1}, d{u(rng), u(rng), u(rng), 1};
     std::vector<hpoint> t1{a, b, c}, t2{b, a, d}, o1, o2;  // share edge ab, opposite directions
     clip_to_view_volume(t1, o1);
     clip_to_view_volume(t2, o2);
@@ -425,7 +445,8 @@ TEST(ClipStage, SharedEdgesGetIdenticalVertices) {
     // the new vertices created on the edge: both results must contain the same ones).
     auto on_ab = [&](const hpoint& p) {
       const double dx = b.x - a.x, dy = b.y - a.y, dz = b.z - a.z;
-      const double t = ((p.x - a.x) * dx + (p.y - a.y) * dy + (p.z - a.z) * dz) / (dx * dx + dy * dy + dz * dz);
+      const double t =
+          ((p.x - a.x) * dx + (p.y - a.y) * dy + (p.z - a.z) * dz) / (dx * dx + dy * dy + dz * dz);
       if (t < -1e-12 || t > 1 + 1e-12) return false;
       return std::fabs(a.x + t * dx - p.x) < 1e-9 && std::fabs(a.y + t * dy - p.y) < 1e-9 &&
              std::fabs(a.z + t * dz - p.z) < 1e-9;
@@ -514,7 +535,8 @@ RC_GTEST_PROP(TopLeftRule, QuadSplitEitherWayPaintsEachInteriorPixelOnce, ()) {
   std::array<vec2, 4> q;
   for (auto& p : q) p = {half_grid(n), half_grid(n)};
   // Order the points counter-clockwise around their centroid; keep strictly convex quads.
-  const double cx = (q[0].x + q[1].x + q[2].x + q[3].x) / 4, cy = (q[0].y + q[1].y + q[2].y + q[3].y) / 4;
+  const double cx = (q[0].x + q[1].x + q[2].x + q[3].x) / 4,
+               cy = (q[0].y + q[1].y + q[2].y + q[3].y) / 4;
   std::sort(q.begin(), q.end(), [&](const vec2& a, const vec2& b) {
     return std::atan2(a.y - cy, a.x - cx) < std::atan2(b.y - cy, b.x - cx);
   });
@@ -565,13 +587,20 @@ RC_GTEST_PROP(TopLeftRule, SharedEdgeIsPaintedExactlyOnce, ()) {
   const vec2 c{half_grid(n), half_grid(n)}, d{half_grid(n), half_grid(n)};
   RC_PRE(orient(a, b, c) * orient(a, b, d) < 0);
   coverage cov(n, n);
-  if (*rc::gen::arbitrary<bool>()) cov.add(a, b, c); else cov.add(b, a, c);
-  if (*rc::gen::arbitrary<bool>()) cov.add(b, a, d); else cov.add(a, b, d);
+  if (*rc::gen::arbitrary<bool>())
+    cov.add(a, b, c);
+  else
+    cov.add(b, a, c);
+  if (*rc::gen::arbitrary<bool>())
+    cov.add(b, a, d);
+  else
+    cov.add(a, b, d);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       RC_ASSERT(cov.at(i, j) <= 1);
       const vec2 p = centre(i, j);
-      const bool on_open_edge = orient(a, b, p) == 0 && (p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y) > 0 &&
+      const bool on_open_edge = orient(a, b, p) == 0 &&
+                                (p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y) > 0 &&
                                 (p.x - b.x) * (a.x - b.x) + (p.y - b.y) * (a.y - b.y) > 0;
       // Strictly inside the union near the edge: the other edges must not pass through p.
       if (on_open_edge && orient(a, c, p) != 0 && orient(b, c, p) != 0 && orient(a, d, p) != 0 &&
@@ -595,7 +624,8 @@ RC_GTEST_PROP(TopLeftRule, FanAroundAVertexPaintsEachPixelOnce, ()) {
   std::vector<vec2> outer;
   for (double ang : angles) {
     const double r = uniform_int(6, 14) / 2.0;
-    outer.push_back({std::round(2 * (v.x + r * std::cos(ang))) / 2, std::round(2 * (v.y + r * std::sin(ang))) / 2});
+    outer.push_back({std::round(2 * (v.x + r * std::cos(ang))) / 2,
+                     std::round(2 * (v.y + r * std::sin(ang))) / 2});
   }
   for (int t = 0; t < k; ++t) RC_PRE(orient(v, outer[t], outer[(t + 1) % k]) > 0);
   coverage cov(n, n);
@@ -637,7 +667,8 @@ triangle_soup cyclic_planks() {
     std::vector<std::uint32_t> quad;
     for (auto [t, w] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
       quad.push_back(static_cast<std::uint32_t>(s.vertices.size()));
-      s.vertices.push_back({cx + 2.1 * t * ux + 0.3 * w * nx, cy + 2.1 * t * uy + 0.3 * w * ny, 0.25 * 2.1 * t});
+      s.vertices.push_back(
+          {cx + 2.1 * t * ux + 0.3 * w * nx, cy + 2.1 * t * uy + 0.3 * w * ny, 0.25 * 2.1 * t});
     }
     s.add_polygon(quad, static_cast<std::uint32_t>(i));
   }
@@ -683,7 +714,8 @@ TEST(Painter, CyclicOverlapMatchesAZBufferOracle) {
   frame g = cyclic_frame(300, 300);
   g.fragments.clear();
   for (const soup_triangle& t : g.soup.triangles)
-    g.fragments.push_back({t.face, {g.soup.vertices[t.v[0]], g.soup.vertices[t.v[1]], g.soup.vertices[t.v[2]]}});
+    g.fragments.push_back(
+        {t.face, {g.soup.vertices[t.v[0]], g.soup.vertices[t.v[1]], g.soup.vertices[t.v[2]]}});
   g.order.clear();
   for (std::uint32_t k = 0; k < g.fragments.size(); ++k) g.order.push_back(k);
   auto eye_distance = [&](std::uint32_t k) {
@@ -691,7 +723,8 @@ TEST(Painter, CyclicOverlapMatchesAZBufferOracle) {
     for (const vec3d& v : g.fragments[k].v) c = c + (1.0 / 3) * vector3{v[0], v[1], v[2]};
     return length(c - g.view.cam.eye);
   };
-  std::sort(g.order.begin(), g.order.end(), [&](auto a, auto b) { return eye_distance(a) > eye_distance(b); });
+  std::sort(g.order.begin(), g.order.end(),
+            [&](auto a, auto b) { return eye_distance(a) > eye_distance(b); });
   transform_clip_stage(g);
   raster_stage(g);
   EXPECT_GT(mismatches(g.picture, oracle), 100);
@@ -704,7 +737,8 @@ TEST(Painter, OrderFollowsTheBspForParallelViews) {
   f.view.direction = gaze_direction(f.view.cam);
   build_stage(f);
   order_stage(f);
-  EXPECT_EQ(f.order, f.tree->order_for_direction({f.view.direction.x, f.view.direction.y, f.view.direction.z}));
+  EXPECT_EQ(f.order, f.tree->order_for_direction(
+                         {f.view.direction.x, f.view.direction.y, f.view.direction.z}));
   transform_clip_stage(f);
   raster_stage(f);
   EXPECT_LE(mismatches(f.picture, zbuffer_render(f)), 3);
@@ -715,9 +749,10 @@ TEST(Painter, OrderFollowsTheBspForParallelViews) {
 
 triangle_soup unit_cube() {
   triangle_soup s;
-  for (int k = 0; k < 8; ++k) s.vertices.push_back({k & 1 ? 1.0 : -1.0, k & 2 ? 1.0 : -1.0, k & 4 ? 1.0 : -1.0});
+  for (int k = 0; k < 8; ++k)
+    s.vertices.push_back({k & 1 ? 1.0 : -1.0, k & 2 ? 1.0 : -1.0, k & 4 ? 1.0 : -1.0});
   const std::vector<std::vector<std::uint32_t>> faces{{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                                                       {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+                                                      {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (std::uint32_t f = 0; f < faces.size(); ++f) s.add_polygon(faces[f], f);
   return s;
 }
@@ -769,7 +804,9 @@ TEST(Png, RoundTripThroughLibpng) {
   std::mt19937 rng(3);
   for (int r = 0; r < 23; ++r)
     for (int c = 0; c < 37; ++c)
-      img.set_at_row(r, c, {static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng())});
+      img.set_at_row(r, c,
+                     {static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+                      static_cast<std::uint8_t>(rng())});
   img.set_pixel(0, 22, {1, 2, 3});  // window (0, 22) = top-left = PNG row 0
   const std::string path = temp_dir() + "/round_trip.png";
   write_png(img, path);
@@ -816,7 +853,8 @@ TEST(Svg, OnePathPerVisibleFragmentInBackToFrontOrder) {
   f.view.vp = {0, 0, 320, 240, 0, 1};
   // Move the camera so that some fragments are fully clipped (outside the view).
   f.view.projection = perspective(20, 320.0 / 240, 1, 30);
-  f.vector.mode = vector_options::mode_kind::painter;  // the painter's stack (the default is visible regions)
+  f.vector.mode =
+      vector_options::mode_kind::painter;  // the painter's stack (the default is visible regions)
   pipeline p = standard_pipeline({}, output_kind::svg);
   p.run(f, nullptr);
   ASSERT_FALSE(f.polygons.empty());
@@ -834,7 +872,8 @@ TEST(Svg, OnePathPerVisibleFragmentInBackToFrontOrder) {
   };
   std::vector<std::uint32_t> fragments;
   std::vector<std::string> ds;
-  for (std::size_t at = svg.find("<path data-face=\""); at != std::string::npos; at = svg.find("<path data-face=\"", at + 1)) {
+  for (std::size_t at = svg.find("<path data-face=\""); at != std::string::npos;
+       at = svg.find("<path data-face=\"", at + 1)) {
     const std::string tag = svg.substr(at, svg.find("/>", at) + 2 - at);
     const std::string fill = attribute(tag, "fill");
     ASSERT_EQ(fill.size(), 7u) << tag;
@@ -882,17 +921,19 @@ TEST(Pipeline, OnlyTheRequestedStagesRun) {
             (std::vector<std::string>{"build", "order", "transform+clip", "raster"}));
   EXPECT_EQ(standard_pipeline({}, output_kind::svg).names(),
             (std::vector<std::string>{"build", "order", "transform+clip", "svg"}));
-  EXPECT_EQ(standard_pipeline({"backface_culling"}, output_kind::png).names(),
-            (std::vector<std::string>{"build", "order", "backface_culling", "transform+clip", "raster"}));
+  EXPECT_EQ(
+      standard_pipeline({"backface_culling"}, output_kind::png).names(),
+      (std::vector<std::string>{"build", "order", "backface_culling", "transform+clip", "raster"}));
   EXPECT_THROW(standard_pipeline({"sparkle"}, output_kind::png), usage_error);
   ASSERT_NE(find_effect("antialias"), nullptr);
   EXPECT_TRUE(find_effect("antialias")->available);
   // Each effect at its hook; antialias replaces raster; PNG-only effects have no SVG stage.
-  EXPECT_EQ(standard_pipeline({"depth_of_field", "fog", "antialias", "lighting", "backface_culling"}, output_kind::png,
-                              true)
-                .names(),
-            (std::vector<std::string>{"build", "order", "backface_culling", "lighting", "transform+clip", "curves", "fog",
-                                      "antialias", "depth_of_field"}));
+  EXPECT_EQ(
+      standard_pipeline({"depth_of_field", "fog", "antialias", "lighting", "backface_culling"},
+                        output_kind::png, true)
+          .names(),
+      (std::vector<std::string>{"build", "order", "backface_culling", "lighting", "transform+clip",
+                                "curves", "fog", "antialias", "depth_of_field"}));
   EXPECT_EQ(standard_pipeline({"depth_of_field", "fog", "antialias"}, output_kind::svg).names(),
             (std::vector<std::string>{"build", "order", "transform+clip", "fog", "svg"}));
 }
@@ -900,11 +941,13 @@ TEST(Pipeline, OnlyTheRequestedStagesRun) {
 TEST(Pipeline, VerboseLogNamesEveryStage) {
   frame f = cyclic_frame(50, 50);
   pipeline p = standard_pipeline({}, output_kind::png);
-  p.insert_after("order", "probe", [](frame& fr) { return std::to_string(fr.order.size()) + " seen"; });
+  p.insert_after("order", "probe",
+                 [](frame& fr) { return std::to_string(fr.order.size()) + " seen"; });
   std::ostringstream log;
   p.run(f, &log);
   const std::string s = log.str();
-  for (const char* name : {"stage build:", "stage order:", "stage probe:", "stage transform+clip:", "stage raster:"})
+  for (const char* name :
+       {"stage build:", "stage order:", "stage probe:", "stage transform+clip:", "stage raster:"})
     EXPECT_NE(s.find(name), std::string::npos) << name;
   EXPECT_LT(s.find("stage order:"), s.find("stage probe:"));
   EXPECT_THROW(p.insert_after("nothing", "x", [](frame&) { return std::string(); }), usage_error);

@@ -42,15 +42,20 @@ constexpr double pi = 3.14159265358979323846;
 mat4 from_glm(const glm::dmat4& g) { return exbsp_test::from_column_major(g); }
 using exbsp_test::relative_difference;
 glm::dvec3 g3(double x, double y, double z) { return glm::dvec3(x, y, z); }
-glm::dmat4 grot(double deg, double x, double y, double z) { return glm::rotate(glm::dmat4(1.0), deg * pi / 180, g3(x, y, z)); }
-glm::dmat4 gtr(double x, double y, double z) { return glm::translate(glm::dmat4(1.0), g3(x, y, z)); }
+glm::dmat4 grot(double deg, double x, double y, double z) {
+  return glm::rotate(glm::dmat4(1.0), deg * pi / 180, g3(x, y, z));
+}
+glm::dmat4 gtr(double x, double y, double z) {
+  return glm::translate(glm::dmat4(1.0), g3(x, y, z));
+}
 
 std::string dir() {
   static const std::string d = [] {
     const std::string tmpl = exbsp_test::make_temp_dir("test_viewing").string();
     fs::create_directories(tmpl + "/meshes");
     std::ofstream(tmpl + "/meshes/tri.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-    std::ofstream(tmpl + "/meshes/quad.off") << "OFF\n4 1 0\n-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n4 0 1 2 3\n";
+    std::ofstream(tmpl + "/meshes/quad.off")
+        << "OFF\n4 1 0\n-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n4 0 1 2 3\n";
     return tmpl;
   }();
   return d;
@@ -67,7 +72,9 @@ json base_scene() {
 
 scene::scene parse(const json& doc) { return scene::parse_scene(doc, dir() + "/scene.json"); }
 
-std::string error_key(const json& doc) { return exbsp_test::error_key([&] { parse(doc); }); }
+std::string error_key(const json& doc) {
+  return exbsp_test::error_key([&] { parse(doc); });
+}
 
 // --- transforms and groups ---------------------------------------------------------------------
 
@@ -78,8 +85,8 @@ TEST(Transforms, ListPostMultipliesLikeOpenGL) {
           {"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 5,6,7,1], "order": "column-major"},
           {"matrix": [1,0,0,-1, 0,1,0,0, 0,0,1,0, 0,0,0,1], "order": "row-major"}])");
   const scene::scene s = parse(d);
-  const glm::dmat4 g = gtr(1, 2, 3) * grot(30, 1, 1, 0) * glm::scale(glm::dmat4(1.0), g3(2, 3, 4)) * gtr(5, 6, 7) *
-                       gtr(-1, 0, 0);
+  const glm::dmat4 g = gtr(1, 2, 3) * grot(30, 1, 1, 0) * glm::scale(glm::dmat4(1.0), g3(2, 3, 4)) *
+                       gtr(5, 6, 7) * gtr(-1, 0, 0);
   EXPECT_LT(relative_difference(s.meshes[0].transform, from_glm(g)), 1e-14);
 }
 
@@ -107,13 +114,16 @@ TEST(Groups, NestLikePushAndPopMatrix) {
   EXPECT_EQ(s.meshes[4].key, "/groups/1/meshes/0");
   EXPECT_EQ(s.meshes[0].transform.m, mat4::identity().m);
   EXPECT_EQ(s.meshes[1].transform.m, view::translate({10, 0, 0}).m);
-  const mat4 nested = view::translate({10, 0, 0}) * view::rotate(90, {0, 0, 1}) * view::scale(2, 2, 2);
+  const mat4 nested =
+      view::translate({10, 0, 0}) * view::rotate(90, {0, 0, 1}) * view::scale(2, 2, 2);
   EXPECT_LT(relative_difference(s.meshes[2].transform, nested), 1e-15);
-  EXPECT_EQ(s.meshes[3].transform.m, view::translate({10, 0, 0}).m);  // the sibling's rotation was popped
-  EXPECT_EQ(s.meshes[4].transform.m, mat4::identity().m);             // and the first group's translation
+  EXPECT_EQ(s.meshes[3].transform.m,
+            view::translate({10, 0, 0}).m);                // the sibling's rotation was popped
+  EXPECT_EQ(s.meshes[4].transform.m, mat4::identity().m);  // and the first group's translation
   const scene::scene_geometry g = scene::load_geometry(s);
   EXPECT_EQ(g.face_offsets, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
-  // Vertex 1 of the nested mesh, (1, 0, 0), scaled by 2, turned by 90 degrees, moved by 10: (10, 2, 0).
+  // Vertex 1 of the nested mesh, (1, 0, 0), scaled by 2, turned by 90 degrees, moved by 10: (10, 2,
+  // 0).
   EXPECT_NEAR(g.soup.vertices[7][0], 10, 1e-15);
   EXPECT_NEAR(g.soup.vertices[7][1], 2, 1e-15);
 }
@@ -138,7 +148,8 @@ TEST(Groups, NestingIsBoundedWithoutRecursion) {
   EXPECT_EQ(parse(nested(scene::max_group_depth)).meshes.size(), 2u);
   const std::string key = error_key(nested(scene::max_group_depth + 1));
   std::string expected;
-  for (std::size_t k = 0; k <= scene::max_group_depth; ++k) expected += (k ? "/groups/0" : "/groups/0");
+  for (std::size_t k = 0; k <= scene::max_group_depth; ++k)
+    expected += (k ? "/groups/0" : "/groups/0");
   EXPECT_EQ(key, expected);
   // Far deeper documents fail at the same bound (the parser never recurses per level). 400, not
   // thousands: this test builds its document with nlohmann's recursive copies, which would
@@ -154,7 +165,8 @@ TEST(Transforms, BadInputNamesTheKey) {
   const bad cases[] = {
       {R"({"transforms": 5})", "/meshes/0/transforms"},
       {R"({"transforms": [{"spin": [1, 2, 3]}]})", "/meshes/0/transforms/0"},
-      {R"({"transforms": [{"translate": [1, 2, 3], "scale": [1, 1, 1]}]})", "/meshes/0/transforms/0"},
+      {R"({"transforms": [{"translate": [1, 2, 3], "scale": [1, 1, 1]}]})",
+       "/meshes/0/transforms/0"},
       {R"({"transforms": [{"translate": [1, 2]}]})", "/meshes/0/transforms/0/translate"},
       {R"({"transforms": [{"rotate": [30, 0, 0, 0]}]})", "/meshes/0/transforms/0/rotate"},
       {R"({"transforms": [{"rotate": [30, 0, "z", 1]}]})", "/meshes/0/transforms/0/rotate/2"},
@@ -163,8 +175,10 @@ TEST(Transforms, BadInputNamesTheKey) {
       {R"({"transforms": [{"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1], "order": "gl"}]})",
        "/meshes/0/transforms/0/order"},
       {R"({"transforms": [{"matrix": [1, 2, 3]], "order": "row-major"}]})", ""},
-      {R"({"transforms": [{"translate": [1, 2, 3], "order": "row-major"}]})", "/meshes/0/transforms/0/order"},
-      {R"({"transform": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1], "transforms": []})", "/meshes/0/transforms"},
+      {R"({"transforms": [{"translate": [1, 2, 3], "order": "row-major"}]})",
+       "/meshes/0/transforms/0/order"},
+      {R"({"transform": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1], "transforms": []})",
+       "/meshes/0/transforms"},
   };
   for (const bad& c : cases) {
     json d = base_scene();
@@ -220,7 +234,8 @@ TEST(Cameras, PolarViewAsDesignWritesIt) {
   d["camera"] = json::parse(
       R"({"polar": {"distance": 7, "twist_deg": 10, "elevation_deg": -65, "azimuth_deg": 30, "look_at": [1, 2, 0.5]}})");
   const scene::scene s = parse(d);
-  const glm::dmat4 g = gtr(0, 0, -7) * grot(-10, 0, 0, 1) * grot(-65, 1, 0, 0) * grot(30, 0, 0, 1) * gtr(-1, -2, -0.5);
+  const glm::dmat4 g = gtr(0, 0, -7) * grot(-10, 0, 0, 1) * grot(-65, 1, 0, 0) * grot(30, 0, 0, 1) *
+                       gtr(-1, -2, -0.5);
   const mat4 mv = scene::make_view_setup(s).model_view;
   EXPECT_LT(relative_difference(mv, from_glm(g)), 1e-14);
   // The equivalent gluLookAt camera (it orders the BSP): at distance 7 from look_at, same matrix.
@@ -228,7 +243,8 @@ TEST(Cameras, PolarViewAsDesignWritesIt) {
   EXPECT_LT(relative_difference(view::look_at(s.camera), mv), 1e-12);
   d["camera"]["polar"].erase("look_at");  // defaults to the origin
   EXPECT_LT(relative_difference(scene::make_view_setup(parse(d)).model_view,
-                     from_glm(gtr(0, 0, -7) * grot(-10, 0, 0, 1) * grot(-65, 1, 0, 0) * grot(30, 0, 0, 1))),
+                                from_glm(gtr(0, 0, -7) * grot(-10, 0, 0, 1) * grot(-65, 1, 0, 0) *
+                                         grot(30, 0, 0, 1))),
             1e-14);
   d["camera"]["polar"]["distance"] = 0;
   EXPECT_EQ(error_key(d), "/camera/polar/distance");
@@ -239,7 +255,8 @@ TEST(Cameras, PolarViewAsDesignWritesIt) {
 
 TEST(Cameras, PilotViewAsDesignWritesIt) {
   json d = base_scene();
-  d["camera"] = json::parse(R"({"pilot": {"position": [-3, -4, 2], "roll_deg": 5, "pitch_deg": -80, "heading_deg": 40}})");
+  d["camera"] = json::parse(
+      R"({"pilot": {"position": [-3, -4, 2], "roll_deg": 5, "pitch_deg": -80, "heading_deg": 40}})");
   const scene::scene s = parse(d);
   const glm::dmat4 g = grot(5, 0, 1, 0) * grot(-80, 1, 0, 0) * grot(40, 0, 0, 1) * gtr(3, 4, -2);
   EXPECT_LT(relative_difference(scene::make_view_setup(s).model_view, from_glm(g)), 1e-14);
@@ -274,8 +291,8 @@ view::phigs_view sample_phigs(bool perspective) {
 }
 
 /// NDC of a VRC point (u, v, n) through the whole PHIGS transform.
-view::point3 ndc_of_vrc(const view::phigs_matrices& m, const view::camera_basis& b, const view::point3& vrp, double u,
-                        double v, double n) {
+view::point3 ndc_of_vrc(const view::phigs_matrices& m, const view::camera_basis& b,
+                        const view::point3& vrp, double u, double v, double n) {
   const view::point3 world = vrp + (u * b.u + v * b.v + n * b.w);
   return view::transform_point(m.projection * m.model_view, world);
 }
@@ -286,8 +303,9 @@ TEST(Phigs, OrientationIsGluLookAtAndMappingIsAnOffAxisFrustum) {
   const glm::dmat4 orient = glm::lookAt(g3(1, 2, 0.5), g3(1 - 0.3, 2 + 1, 0.5 - 0.8), g3(0, 0, 1));
   EXPECT_LT(relative_difference(m.orientation, from_glm(orient)), 1e-14);
   const double near_d = 9 - 2, far_d = 9 + 6, k = near_d / 9;
-  const glm::dmat4 map = glm::frustum((-3 - 1.5) * k, (4 - 1.5) * k, (-2 + 0.5) * k, (2.5 + 0.5) * k, near_d, far_d) *
-                         gtr(-1.5, 0.5, -9);
+  const glm::dmat4 map =
+      glm::frustum((-3 - 1.5) * k, (4 - 1.5) * k, (-2 + 0.5) * k, (2.5 + 0.5) * k, near_d, far_d) *
+      gtr(-1.5, 0.5, -9);
   EXPECT_LT(relative_difference(m.mapping, from_glm(map)), 1e-14);
   EXPECT_LT(relative_difference(m.projection * m.model_view, m.mapping * m.orientation), 1e-14);
   // Defining properties: the window's corners on the view plane go to the NDC square's
@@ -309,9 +327,11 @@ TEST(Phigs, ParallelWithOffCentrePrpIsOblique) {
   const view::phigs_matrices m = view::phigs_view_matrices(p);
   EXPECT_TRUE(m.oblique);
   // Points along the direction of projection land on the same NDC x, y.
-  const view::vector3 dop_vrc{(p.umin + p.umax) / 2 - p.prp.x, (p.vmin + p.vmax) / 2 - p.prp.y, -p.prp.z};
+  const view::vector3 dop_vrc{(p.umin + p.umax) / 2 - p.prp.x, (p.vmin + p.vmax) / 2 - p.prp.y,
+                              -p.prp.z};
   const view::point3 a = ndc_of_vrc(m, m.basis, p.vrp, 0.5, 0.25, 0);
-  const view::point3 b = ndc_of_vrc(m, m.basis, p.vrp, 0.5 + 0.3 * dop_vrc.x, 0.25 + 0.3 * dop_vrc.y, 0.3 * dop_vrc.z);
+  const view::point3 b =
+      ndc_of_vrc(m, m.basis, p.vrp, 0.5 + 0.3 * dop_vrc.x, 0.25 + 0.3 * dop_vrc.y, 0.3 * dop_vrc.z);
   EXPECT_NEAR(a.x, b.x, 1e-12);
   EXPECT_NEAR(a.y, b.y, 1e-12);
   EXPECT_NEAR(ndc_of_vrc(m, m.basis, p.vrp, -3, -2, 0).x, -1, 1e-12);
@@ -322,13 +342,15 @@ TEST(Phigs, ParallelWithOffCentrePrpIsOblique) {
   p.prp = {0.5, 0.25, 3};
   const view::phigs_matrices o = view::phigs_view_matrices(p);
   EXPECT_FALSE(o.oblique);
-  EXPECT_LT(relative_difference(o.mapping, from_glm(glm::ortho(-3.0, 4.0, -2.0, 2.5, -2.0, 6.0))), 1e-14);
+  EXPECT_LT(relative_difference(o.mapping, from_glm(glm::ortho(-3.0, 4.0, -2.0, 2.5, -2.0, 6.0))),
+            1e-14);
 }
 
 TEST(Phigs, SceneFormAndBadInput) {
   json d = base_scene();
   d.erase("projection");
-  d["camera"] = json::parse(R"({"phigs": {"vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0], "prp": [0, 0, 10],
+  d["camera"] = json::parse(
+      R"({"phigs": {"vrp": [0, 0, 0], "vpn": [0, 0, 1], "vup": [0, 1, 0], "prp": [0, 0, 10],
       "window": [-2, 2, -1.5, 1.5], "front": 5, "back": -5, "projection": "perspective"}})");
   const scene::scene s = parse(d);
   EXPECT_EQ(s.form, scene::camera_form::phigs);
@@ -368,10 +390,13 @@ TEST(Phigs, SceneFormAndBadInput) {
 
 TEST(Viewport, OrthoAcceptsAnyDistinctNearAndFar) {
   json d = base_scene();
-  d["projection"] = json::parse(R"({"type": "orthographic", "left": -2, "right": 2, "bottom": -1, "top": 1.5,
+  d["projection"] =
+      json::parse(R"({"type": "orthographic", "left": -2, "right": 2, "bottom": -1, "top": 1.5,
                                     "near": -3, "far": 4})");
   const view::view_setup v = scene::make_view_setup(parse(d));
-  EXPECT_LT(relative_difference(v.projection, from_glm(glm::ortho(-2.0, 2.0, -1.0, 1.5, -3.0, 4.0))), 1e-15);
+  EXPECT_LT(
+      relative_difference(v.projection, from_glm(glm::ortho(-2.0, 2.0, -1.0, 1.5, -3.0, 4.0))),
+      1e-15);
   d["projection"]["far"] = -3;
   EXPECT_EQ(error_key(d), "/projection/far");
   d["projection"]["far"] = -5;  // far < near: glOrtho mirrors depth, still a view volume
@@ -381,10 +406,12 @@ TEST(Viewport, OrthoAcceptsAnyDistinctNearAndFar) {
 TEST(Viewport, Ortho2dIsGluOrtho2DAndNeedsNoCamera) {
   json d = base_scene();
   d.erase("camera");
-  d["projection"] = json::parse(R"({"type": "ortho2d", "left": -4, "right": 4, "bottom": -3, "top": 3})");
+  d["projection"] =
+      json::parse(R"({"type": "ortho2d", "left": -4, "right": 4, "bottom": -3, "top": 3})");
   const scene::scene s = parse(d);
   const view::view_setup v = scene::make_view_setup(s);
-  EXPECT_LT(relative_difference(v.projection, from_glm(glm::ortho(-4.0, 4.0, -3.0, 3.0))), 1e-15);  // 4 arguments: gluOrtho2D
+  EXPECT_LT(relative_difference(v.projection, from_glm(glm::ortho(-4.0, 4.0, -3.0, 3.0))),
+            1e-15);  // 4 arguments: gluOrtho2D
   EXPECT_EQ(v.model_view.m, mat4::identity().m);
   d["projection"].erase("top");
   EXPECT_EQ(error_key(d), "/projection/top");
@@ -396,7 +423,8 @@ TEST(Viewport, Ortho2dIsGluOrtho2DAndNeedsNoCamera) {
 TEST(Viewport, FitLetterboxesTheWindowAndStretchDoesNot) {
   json d = base_scene();
   d["viewport"] = {{"width", 100}, {"height", 100}};
-  d["projection"] = json::parse(R"({"type": "orthographic", "left": -2, "right": 2, "bottom": -1, "top": 1,
+  d["projection"] =
+      json::parse(R"({"type": "orthographic", "left": -2, "right": 2, "bottom": -1, "top": 1,
                                     "near": 1, "far": 9})");
   view::view_setup v = scene::make_view_setup(parse(d));
   EXPECT_EQ(v.vp.width, 100);
@@ -417,7 +445,8 @@ TEST(Viewport, OffsetInsideALargerImage) {
   d["meshes"][0]["file"] = "meshes/quad.off";
   d["meshes"][0]["color"] = {200, 40, 40};
   d["camera"] = json::parse(R"({"eye": [0, 0, 5], "look_at": [0, 0, 0], "up": [0, 1, 0]})");
-  d["projection"] = json::parse(R"({"type": "orthographic", "left": -2, "right": 2, "bottom": -2, "top": 2,
+  d["projection"] =
+      json::parse(R"({"type": "orthographic", "left": -2, "right": 2, "bottom": -2, "top": 2,
                                     "near": 1, "far": 9})");
   d["viewport"] = {{"width", 40}, {"height", 40}, {"x", 10}, {"y", 5}};
   d["image"] = {{"width", 60}, {"height", 50}};
@@ -515,7 +544,8 @@ TEST(Lines, SceneLinesAreDrawnInBspOrderByEitherClipper) {
   int blue_over_quad = 0, green_over_quad = 0, green_outside = 0;
   for (int j = 0; j < img.height(); ++j)
     for (int i = 0; i < img.width(); ++i) {
-      const bool over_quad = std::fabs(i + 0.5 - 32) < 11 && std::fabs(j + 0.5 - 24) < 11;  // inside the quad (half-size 13 px)
+      const bool over_quad = std::fabs(i + 0.5 - 32) < 11 &&
+                             std::fabs(j + 0.5 - 24) < 11;  // inside the quad (half-size 13 px)
       const view::rgb8 c = img.pixel(i, j);
       blue_over_quad += over_quad && c == view::rgb8{0, 0, 255};
       green_over_quad += over_quad && c == view::rgb8{0, 160, 0};
@@ -534,7 +564,8 @@ TEST(Lines, SceneLinesAreDrawnInBspOrderByEitherClipper) {
   EXPECT_EQ(error_key(e), "/lines/1/points/1");
 }
 
-// --- bounding-box reject ---------------------------------------------------------------------------
+// --- bounding-box reject
+// ---------------------------------------------------------------------------
 
 TEST(Reject, MeshOutsideTheViewVolumeIsDroppedBeforeTheBuildAndSaidSo) {
   json d = base_scene();
@@ -555,13 +586,15 @@ TEST(Reject, MeshOutsideTheViewVolumeIsDroppedBeforeTheBuildAndSaidSo) {
   only["meshes"] = json::array({d["meshes"][0]});
   std::ofstream(dir() + "/reject_only.json") << only.dump();
   render_command({dir() + "/reject_only.json", dir() + "/reject_only.png", false}, log);
-  const view::image a = view::read_png(dir() + "/reject.png"), b = view::read_png(dir() + "/reject_only.png");
+  const view::image a = view::read_png(dir() + "/reject.png"),
+                    b = view::read_png(dir() + "/reject_only.png");
   ASSERT_EQ(a.width(), b.width());
   for (int j = 0; j < a.height(); ++j)
     for (int i = 0; i < a.width(); ++i) ASSERT_EQ(a.pixel(i, j), b.pixel(i, j));
 }
 
-// --- trackball ------------------------------------------------------------------------------------
+// --- trackball
+// ------------------------------------------------------------------------------------
 
 TEST(Trackball, VirtualTrackballTurnsByTheArcItself) {
   const vec3d p{0.6, 0, 0.8}, q{0, 0.6, 0.8};
@@ -578,8 +611,9 @@ TEST(Trackball, VirtualTrackballTurnsByTheArcItself) {
   EXPECT_NEAR(h[0], -1, 1e-15);
   EXPECT_THROW(virtual_trackball_rotation({0, 0, 0}, q), usage_error);
   const arcball ball(100, 100, screen_y::down, trackball_kind::virtual_);
-  EXPECT_NEAR(std::fabs(dot(ball.drag({50, 50}, {70, 50}), virtual_trackball_rotation(ball.sphere_point({50, 50}),
-                                                                                      ball.sphere_point({70, 50})))),
+  EXPECT_NEAR(std::fabs(dot(ball.drag({50, 50}, {70, 50}),
+                            virtual_trackball_rotation(ball.sphere_point({50, 50}),
+                                                       ball.sphere_point({70, 50})))),
               1, 1e-15);
 }
 
@@ -593,7 +627,8 @@ TEST(Trackball, SelectablePerSceneAndByFlag) {
   const auto arc = orbit_cameras(s, {{32, 24}, {44, 24}}, 0);
   const view::point3 look = s.camera.look_at;
   auto angle = [&](const view::camera& c) {
-    const view::vector3 a = view::normalized(s.camera.eye - look), b = view::normalized(c.eye - look);
+    const view::vector3 a = view::normalized(s.camera.eye - look),
+                        b = view::normalized(c.eye - look);
     return std::acos(std::min(1.0, view::dot(a, b)));
   };
   EXPECT_NEAR(angle(arc.back().first), 2 * angle(virt.back().first), 1e-9);
@@ -601,11 +636,13 @@ TEST(Trackball, SelectablePerSceneAndByFlag) {
   EXPECT_EQ(error_key(d), "/trackball");
 }
 
-// --- the command line: bad input exits 2, names the key, writes nothing ------------------------------
+// --- the command line: bad input exits 2, names the key, writes nothing
+// ------------------------------
 
 int run(const std::string& args, std::string& err) {
   const std::string e = dir() + "/.err";
-  const int raw = std::system(("'" + std::string(EXBSP_CLI) + "' " + args + " 2>'" + e + "' >/dev/null").c_str());
+  const int raw = std::system(
+      ("'" + std::string(EXBSP_CLI) + "' " + args + " 2>'" + e + "' >/dev/null").c_str());
   std::ifstream in(e);
   std::stringstream s;
   s << in.rdbuf();
@@ -620,15 +657,27 @@ TEST(CommandLine, BadNewKeysExit2NamingTheKeyWithNoOutput) {
     const char* key;
   };
   const bad cases[] = {
-      {"rotate axis", [](json& d) { d["meshes"][0]["transforms"] = json::parse(R"([{"rotate": [9, 0, 0, 0]}])"); },
+      {"rotate axis",
+       [](json& d) { d["meshes"][0]["transforms"] = json::parse(R"([{"rotate": [9, 0, 0, 0]}])"); },
        "/meshes/0/transforms/0/rotate"},
-      {"polar distance", [](json& d) { d["camera"] = json::parse(R"({"polar": {"distance": -1, "twist_deg": 0,
-           "elevation_deg": 0, "azimuth_deg": 0}})"); }, "/camera/polar/distance"},
-      {"phigs vup", [](json& d) {
+      {"polar distance",
+       [](json& d) {
+         d["camera"] = json::parse(R"({"polar": {"distance": -1, "twist_deg": 0,
+           "elevation_deg": 0, "azimuth_deg": 0}})");
+       },
+       "/camera/polar/distance"},
+      {"phigs vup",
+       [](json& d) {
          d.erase("projection");
-         d["camera"] = json::parse(R"({"phigs": {"vrp": [0,0,0], "vpn": [0,0,1], "vup": [0,0,-3], "prp": [0,0,9],
-           "window": [-1,1,-1,1], "front": 1, "back": -1, "projection": "parallel"}})"); }, "/camera/phigs/vup"},
-      {"line clipper", [](json& d) { d["lines"] = json::parse(R"([{"points": [[0,0,0],[1,1,1]], "clipper": 3}])"); },
+         d["camera"] = json::parse(
+             R"({"phigs": {"vrp": [0,0,0], "vpn": [0,0,1], "vup": [0,0,-3], "prp": [0,0,9],
+           "window": [-1,1,-1,1], "front": 1, "back": -1, "projection": "parallel"}})");
+       },
+       "/camera/phigs/vup"},
+      {"line clipper",
+       [](json& d) {
+         d["lines"] = json::parse(R"([{"points": [[0,0,0],[1,1,1]], "clipper": 3}])");
+       },
        "/lines/0/clipper"},
       {"viewport y", [](json& d) { d["viewport"]["y"] = 1; }, "/viewport/y"},
       {"trackball", [](json& d) { d["trackball"] = true; }, "/trackball"},
@@ -640,7 +689,8 @@ TEST(CommandLine, BadNewKeysExit2NamingTheKeyWithNoOutput) {
     std::ofstream(path) << d.dump();
     std::string err;
     EXPECT_EQ(run("render '" + path + "' -o '" + out + "'", err), 2) << c.name;
-    EXPECT_NE(err.find(std::string("bad.json: ") + c.key + ":"), std::string::npos) << c.name << ": " << err;
+    EXPECT_NE(err.find(std::string("bad.json: ") + c.key + ":"), std::string::npos)
+        << c.name << ": " << err;
     EXPECT_FALSE(fs::exists(out)) << c.name;
   }
   std::string err;

@@ -14,8 +14,8 @@ int main() {
   exbsp::build_options options;
   options.heuristic = "naive";
   const exbsp::bsp tree = exbsp::bsp::build(soup, options);
-  std::printf("%zu fragments, %zu splits, kernel %s\n", tree.stats().fragments,
-              tree.stats().splits, tree.stats().kernel.c_str());
+  std::printf("%zu fragments, %zu splits, kernel %s\n", tree.stats().fragments, tree.stats().splits,
+              tree.stats().kernel.c_str());
   bool exact_agrees = true;
   for (std::uint32_t i : tree.order_from_eye({1, 1, 10})) {
     const exbsp::exact_triangle e = tree.fragment_exact(i);

@@ -41,14 +41,16 @@ exbsp::view::view_setup fitted_view(const exbsp::triangle_soup& soup, int width,
   exbsp::view::view_setup view;
   view.cam = {centre + distance * towards_eye, centre, {0, 0, 1}};
   view.model_view = exbsp::view::look_at(view.cam);
-  view.projection = exbsp::view::perspective(40, double(width) / height, distance - radius, distance + radius);
+  view.projection =
+      exbsp::view::perspective(40, double(width) / height, distance - radius, distance + radius);
   view.vp = {0, 0, width, height};
   return view;
 }
 
 // A colour per face: light blue, shaded by the angle between the face's normal (its first
 // triangle's) and the direction to the eye (a headlight), both sides lit alike.
-std::vector<exbsp::view::rgb8> headlight_colors(const exbsp::triangle_soup& soup, const exbsp::view::camera& cam) {
+std::vector<exbsp::view::rgb8> headlight_colors(const exbsp::triangle_soup& soup,
+                                                const exbsp::view::camera& cam) {
   const exbsp::view::vector3 light = exbsp::view::normalized(cam.eye - cam.look_at);
   std::vector<exbsp::view::rgb8> colors(soup.face_count, {200, 200, 200});
   std::vector<bool> done(soup.face_count, false);
@@ -60,7 +62,8 @@ std::vector<exbsp::view::rgb8> headlight_colors(const exbsp::triangle_soup& soup
     const double len = exbsp::view::length(n);
     if (!(len > 0)) continue;  // degenerate: try the face's next triangle
     const double shade = 0.25 + 0.75 * std::abs(exbsp::view::dot(n, light)) / len;
-    colors[t.face] = {static_cast<std::uint8_t>(120 * shade), static_cast<std::uint8_t>(170 * shade),
+    colors[t.face] = {static_cast<std::uint8_t>(120 * shade),
+                      static_cast<std::uint8_t>(170 * shade),
                       static_cast<std::uint8_t>(250 * shade)};
     done[t.face] = true;
   }
@@ -77,7 +80,8 @@ int main(int argc, char** argv) {
   exbsp::install_gmp_memory_functions();
   try {
     poly_mesh mesh;
-    if (!OpenMesh::IO::read_mesh(mesh, argv[1])) throw exbsp::input_error(argv[1], 0, "OpenMesh cannot read it");
+    if (!OpenMesh::IO::read_mesh(mesh, argv[1]))
+      throw exbsp::input_error(argv[1], 0, "OpenMesh cannot read it");
     exbsp::view::frame f;
     f.soup = exbsp::openmesh::soup_from_mesh(mesh, argv[1]);
     f.view = fitted_view(f.soup, 320, 240);
@@ -87,20 +91,24 @@ int main(int argc, char** argv) {
     exbsp::view::write_png(f.picture, argv[2]);
 
     const exbsp::build_stats& s = f.tree->stats();
-    std::printf("exbsp %s: %s: %zu faces, %zu triangles (%zu degenerate), %zu fragments, %zu splits, "
-                "%zu nodes, depth %zu, kernel %s\n",
-                exbsp::version_string, argv[1], std::size_t(mesh.n_faces()), s.input_triangles,
-                s.degenerate_input, s.fragments, s.splits, s.nodes, s.depth, s.kernel.c_str());
+    std::printf(
+        "exbsp %s: %s: %zu faces, %zu triangles (%zu degenerate), %zu fragments, %zu splits, "
+        "%zu nodes, depth %zu, kernel %s\n",
+        exbsp::version_string, argv[1], std::size_t(mesh.n_faces()), s.input_triangles,
+        s.degenerate_input, s.fragments, s.splits, s.nodes, s.depth, s.kernel.c_str());
     std::size_t painted = 0;
     for (int j = 0; j < f.picture.height(); ++j)
       for (int i = 0; i < f.picture.width(); ++i) painted += f.picture.pixel(i, j) != f.background;
-    std::printf("%s: %dx%d, %zu pixels painted\n", argv[2], f.picture.width(), f.picture.height(), painted);
+    std::printf("%s: %dx%d, %zu pixels painted\n", argv[2], f.picture.width(), f.picture.height(),
+                painted);
 
     if (argc > 3) {  // the back-to-front fragments as an OpenMesh mesh
       tri_mesh out;
       exbsp::openmesh::append_fragments(out, f.fragments, f.order);
-      if (!OpenMesh::IO::write_mesh(out, argv[3])) throw exbsp::output_error(argv[3], "OpenMesh cannot write it");
-      std::printf("%s: %zu faces, %zu vertices\n", argv[3], std::size_t(out.n_faces()), std::size_t(out.n_vertices()));
+      if (!OpenMesh::IO::write_mesh(out, argv[3]))
+        throw exbsp::output_error(argv[3], "OpenMesh cannot write it");
+      std::printf("%s: %zu faces, %zu vertices\n", argv[3], std::size_t(out.n_faces()),
+                  std::size_t(out.n_vertices()));
     }
     return painted > 0 && s.fragments > 0 ? 0 : 1;
   } catch (const exbsp::error& e) {

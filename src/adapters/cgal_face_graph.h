@@ -41,7 +41,8 @@ namespace exbsp::cgal {
 /// `source` names the mesh in messages. Throws input_error (source, line 0) for a non-finite
 /// coordinate or a face with fewer than 3 vertices.
 template <class FaceGraph>
-triangle_soup soup_from_face_graph(const FaceGraph& g, const std::string& source = "CGAL face graph") {
+triangle_soup soup_from_face_graph(const FaceGraph& g,
+                                   const std::string& source = "CGAL face graph") {
   triangle_soup soup;
   soup.source = source;
   const auto index = CGAL::get_initialized_vertex_index_map(g);
@@ -53,7 +54,8 @@ triangle_soup soup_from_face_graph(const FaceGraph& g, const std::string& source
     soup.vertices[i] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     for (double x : soup.vertices[i])
       if (!std::isfinite(x))
-        throw input_error(source, 0, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+        throw input_error(source, 0,
+                          "vertex " + std::to_string(i) + " has a non-finite coordinate");
   }
   std::uint32_t face = 0;
   std::vector<std::uint32_t> corners;

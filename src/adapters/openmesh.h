@@ -48,7 +48,8 @@ triangle_soup soup_from_mesh(const Mesh& mesh, const std::string& source = "Open
     const vec3d v{static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2])};
     for (double x : v)
       if (!std::isfinite(x))
-        throw input_error(source, 0, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+        throw input_error(source, 0,
+                          "vertex " + std::to_string(i) + " has a non-finite coordinate");
     soup.vertices.push_back(v);
   }
   soup.face_count = static_cast<std::uint32_t>(mesh.n_faces());
@@ -57,7 +58,8 @@ triangle_soup soup_from_mesh(const Mesh& mesh, const std::string& source = "Open
     corners.clear();
     for (const auto v : mesh.fv_range(f)) corners.push_back(static_cast<std::uint32_t>(v.idx()));
     if (corners.size() < 3)
-      throw input_error(source, 0, "face " + std::to_string(f.idx()) + " has fewer than 3 vertices");
+      throw input_error(source, 0,
+                        "face " + std::to_string(f.idx()) + " has fewer than 3 vertices");
     soup.add_polygon(corners, static_cast<std::uint32_t>(f.idx()));
   }
   return soup;
@@ -80,8 +82,8 @@ OpenMesh::FPropHandleT<std::uint32_t> append_triangles(Mesh& mesh, const triangl
   using scalar = typename Mesh::Point::value_type;
   const auto ids = face_id_handle(mesh);
   const auto make_vertex = [&](const vec3d& p) {
-    return mesh.add_vertex(typename Mesh::Point(static_cast<scalar>(p[0]), static_cast<scalar>(p[1]),
-                                                static_cast<scalar>(p[2])));
+    return mesh.add_vertex(typename Mesh::Point(
+        static_cast<scalar>(p[0]), static_cast<scalar>(p[1]), static_cast<scalar>(p[2])));
   };
   // OpenMesh's add_face refuses (with a message on omerr) a face at a vertex that is not on
   // the boundary or along a halfedge that already has a face: both are tested first.
@@ -104,8 +106,9 @@ OpenMesh::FPropHandleT<std::uint32_t> append_triangles(Mesh& mesh, const triangl
 /// (e.g. bsp::order_from_eye; empty: storage order). Throws usage_error for an index out of
 /// range.
 template <class Mesh>
-OpenMesh::FPropHandleT<std::uint32_t> append_fragments(Mesh& mesh, const std::vector<fragment_d>& fragments,
-                                                       const std::vector<std::uint32_t>& order = {}) {
+OpenMesh::FPropHandleT<std::uint32_t> append_fragments(
+    Mesh& mesh, const std::vector<fragment_d>& fragments,
+    const std::vector<std::uint32_t>& order = {}) {
   return append_triangles(mesh, fragment_triangles(fragments, order));
 }
 

@@ -57,7 +57,8 @@ inline triangle_list section_triangles(const section_result& r) {
 /// mesh refuses with shared vertices, or whose corners coincide, gets three vertices of its
 /// own (add_face must accept those). So every triangle becomes a face, in order.
 template <class Vertex, class MakeVertex, class AddFace>
-void add_triangles_sharing_vertices(const triangle_list& list, MakeVertex&& make_vertex, AddFace&& add_face) {
+void add_triangles_sharing_vertices(const triangle_list& list, MakeVertex&& make_vertex,
+                                    AddFace&& add_face) {
   if (list.faces.size() != list.corners.size())
     throw usage_error("add_triangles_sharing_vertices: one face id per triangle expected");
   std::map<vec3d, Vertex> shared;
@@ -69,9 +70,12 @@ void add_triangles_sharing_vertices(const triangle_list& list, MakeVertex&& make
   for (std::size_t i = 0; i < list.corners.size(); ++i) {
     const auto& t = list.corners[i];
     const bool distinct = t[0] != t[1] && t[1] != t[2] && t[2] != t[0];
-    if (distinct && add_face(std::array<Vertex, 3>{vertex_at(t[0]), vertex_at(t[1]), vertex_at(t[2])}, list.faces[i]))
+    if (distinct &&
+        add_face(std::array<Vertex, 3>{vertex_at(t[0]), vertex_at(t[1]), vertex_at(t[2])},
+                 list.faces[i]))
       continue;
-    if (!add_face(std::array<Vertex, 3>{make_vertex(t[0]), make_vertex(t[1]), make_vertex(t[2])}, list.faces[i]))
+    if (!add_face(std::array<Vertex, 3>{make_vertex(t[0]), make_vertex(t[1]), make_vertex(t[2])},
+                  list.faces[i]))
       throw usage_error("add_triangles_sharing_vertices: the mesh refused an isolated triangle");
   }
 }

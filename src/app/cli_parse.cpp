@@ -38,28 +38,33 @@ bool parse_numbers(const std::string& text, char sep, double* out, int count) {
 vec3d parse_triple(const std::string& text, const std::string& option) {
   vec3d v{};
   if (!parse_numbers(text, ',', v.data(), 3))
-    throw usage_error(option + " expects three finite numbers X,Y,Z separated by commas, got '" + text + "'");
+    throw usage_error(option + " expects three finite numbers X,Y,Z separated by commas, got '" +
+                      text + "'");
   return v;
 }
 
 section_plane parse_plane(const std::string& text, const std::string& option) {
   section_plane p{};
   if (!parse_numbers(text, ',', p.data(), 4))
-    throw usage_error(option + " expects four finite numbers A,B,C,D (the plane A*x+B*y+C*z+D = 0), got '" + text +
-                      "'");
+    throw usage_error(option +
+                      " expects four finite numbers A,B,C,D (the plane A*x+B*y+C*z+D = 0), got '" +
+                      text + "'");
   check_section_plane(p, option);
   return p;
 }
 
-std::vector<std::array<double, 2>> parse_drag_path(const std::string& text, const std::string& option) {
+std::vector<std::array<double, 2>> parse_drag_path(const std::string& text,
+                                                   const std::string& option) {
   std::vector<std::array<double, 2>> path;
   std::size_t start = 0;
   while (true) {
     const std::size_t colon = text.find(':', start);
-    const std::string point = text.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
+    const std::string point =
+        text.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
     std::array<double, 2> pt{};
     if (!parse_numbers(point, ',', pt.data(), 2))
-      throw usage_error(option + " expects screen points X0,Y0:X1,Y1:... (finite numbers), got '" + text + "'");
+      throw usage_error(option + " expects screen points X0,Y0:X1,Y1:... (finite numbers), got '" +
+                        text + "'");
     path.push_back(pt);
     if (colon == std::string::npos) break;
     start = colon + 1;
@@ -77,18 +82,27 @@ std::array<int, 2> parse_size(const std::string& text, const std::string& option
     const auto r = std::from_chars(b, e, size[k]);
     ok = r.ec == std::errc() && r.ptr == e && b != e && size[k] >= 1 && size[k] <= 16384;
   }
-  if (!ok) throw usage_error(option + " expects WIDTHxHEIGHT in pixels, each 1..16384 (e.g. 800x600), got '" + text + "'");
+  if (!ok)
+    throw usage_error(option +
+                      " expects WIDTHxHEIGHT in pixels, each 1..16384 (e.g. 800x600), got '" +
+                      text + "'");
   return size;
 }
 
-triangle_soup read_mesh_input(const std::string& path, const std::string& format, std::istream& in) {
+triangle_soup read_mesh_input(const std::string& path, const std::string& format,
+                              std::istream& in) {
   mesh_format f{};
   if (!format.empty()) {
-    if (format == "off") f = mesh_format::off;
-    else if (format == "obj") f = mesh_format::obj;
-    else if (format == "ply") f = mesh_format::ply;
-    else if (format == "stl") f = mesh_format::stl;
-    else throw usage_error("--format: expected off, obj, ply or stl, got '" + format + "'");
+    if (format == "off")
+      f = mesh_format::off;
+    else if (format == "obj")
+      f = mesh_format::obj;
+    else if (format == "ply")
+      f = mesh_format::ply;
+    else if (format == "stl")
+      f = mesh_format::stl;
+    else
+      throw usage_error("--format: expected off, obj, ply or stl, got '" + format + "'");
   }
   if (path == "-") {
     if (format.empty())
@@ -175,8 +189,9 @@ std::string misspelling(const CLI::App& app, const std::vector<std::string>& arg
       return message;
     }
     if (!looks_like_option(arg)) continue;
-    const std::string m = command ? unknown_option(*command, arg, " for '" + command->get_name() + "'")
-                                  : unknown_option(app, arg, "");
+    const std::string m = command
+                              ? unknown_option(*command, arg, " for '" + command->get_name() + "'")
+                              : unknown_option(app, arg, "");
     if (!m.empty()) return m;
   }
   return "";

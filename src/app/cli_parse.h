@@ -24,7 +24,8 @@ vec3d parse_triple(const std::string& text, const std::string& option);
 section_plane parse_plane(const std::string& text, const std::string& option = "--plane");
 
 /// "X0,Y0:X1,Y1:..." (at least one point, finite numbers).
-std::vector<std::array<double, 2>> parse_drag_path(const std::string& text, const std::string& option = "--orbit-drag");
+std::vector<std::array<double, 2>> parse_drag_path(const std::string& text,
+                                                   const std::string& option = "--orbit-drag");
 
 /// "WxH" (e.g. 800x600), each in 1..16384.
 std::array<int, 2> parse_size(const std::string& text, const std::string& option = "--size");

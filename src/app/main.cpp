@@ -76,15 +76,18 @@ std::uint64_t available_memory_bytes() {
 std::size_t default_fragment_budget(exbsp::kernel_id kernel) {
   const std::uint64_t bytes = available_memory_bytes();
   if (bytes == 0) return 0;
-  return static_cast<std::size_t>(std::max<std::uint64_t>(bytes / 2 / bytes_per_fragment(kernel), 10000));
+  return static_cast<std::size_t>(
+      std::max<std::uint64_t>(bytes / 2 / bytes_per_fragment(kernel), 10000));
 }
 
 /// The --max-fragments help text, shared by build, order and render.
 std::string max_fragments_help() {
-  return "stop with exit status 3 when the tree would need more fragments (0: no limit; default: half the "
-         "available memory at " + std::to_string(bytes_per_fragment(exbsp::kernel_id::exact)) +
-         " bytes per fragment for exact, double and epick, " + std::to_string(bytes_per_fragment(exbsp::kernel_id::epeck)) +
-         " for epeck and gmpq)";
+  return "stop with exit status 3 when the tree would need more fragments (0: no limit; default: "
+         "half the "
+         "available memory at " +
+         std::to_string(bytes_per_fragment(exbsp::kernel_id::exact)) +
+         " bytes per fragment for exact, double and epick, " +
+         std::to_string(bytes_per_fragment(exbsp::kernel_id::epeck)) + " for epeck and gmpq)";
 }
 
 /// The most threads --threads accepts: 4 per hardware thread, at most 1024 (libgomp crashes
@@ -104,11 +107,12 @@ void sanitize_omp_num_threads() {
   const std::string first = text.substr(0, text.find(','));
   unsigned long value = 0;
   const auto r = std::from_chars(first.data(), first.data() + first.size(), value);
-  const bool ok = r.ec == std::errc() && r.ptr == first.data() + first.size() && value >= 1 && value <= max_threads();
+  const bool ok = r.ec == std::errc() && r.ptr == first.data() + first.size() && value >= 1 &&
+                  value <= max_threads();
   if (ok) return;
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  std::cerr << "exbsp: warning: OMP_NUM_THREADS='" << text.substr(0, 40) << "' ignored (expected 1.."
-            << max_threads() << "); using " << hw << " threads\n";
+  std::cerr << "exbsp: warning: OMP_NUM_THREADS='" << text.substr(0, 40)
+            << "' ignored (expected 1.." << max_threads() << "); using " << hw << " threads\n";
   omp_set_num_threads(static_cast<int>(hw));
 }
 
@@ -117,8 +121,7 @@ void sanitize_omp_num_threads() {
 /// memory is plentiful, and later parallel regions of the same size reuse them.
 void start_thread_pool() {
 #pragma omp parallel
-  {
-  }
+  {}
 }
 
 struct build_cli {
@@ -129,40 +132,45 @@ struct build_cli {
   std::uint64_t seed = 0;
   std::optional<std::size_t> max_fragments;  ///< absent: default_fragment_budget(kernel)
   unsigned threads = 0;
-  std::string save;                  ///< build --save: write the tree here
+  std::string save;                   ///< build --save: write the tree here
   const CLI::App* command = nullptr;  ///< to tell options given on the command line from defaults
 };
 
 /// Rejects an empty output name (`-o ""`): it would silently mean the default output.
 const CLI::Validator non_empty_path(
-    [](const std::string& s) { return s.empty() ? std::string("empty file name") : std::string(); }, "FILE");
+    [](const std::string& s) { return s.empty() ? std::string("empty file name") : std::string(); },
+    "FILE");
 
 /// Rejects a negative integer for an unsigned option: CLI11 would wrap "-1" to 2^64 - 1.
 const CLI::Validator not_negative(
     [](const std::string& s) {
       const std::size_t i = s.find_first_not_of(" \t");
-      return i != std::string::npos && s[i] == '-' ? "must not be negative, got " + s : std::string();
+      return i != std::string::npos && s[i] == '-' ? "must not be negative, got " + s
+                                                   : std::string();
     },
     "");
 
 void add_format_option(CLI::App* cmd, std::string& format) {
-  cmd->add_option("--format", format,
-                  "mesh format: off, obj, ply or stl (needed for '-', standard input; otherwise the "
-                  "file's extension decides)")
+  cmd->add_option(
+         "--format", format,
+         "mesh format: off, obj, ply or stl (needed for '-', standard input; otherwise the "
+         "file's extension decides)")
       ->check(CLI::IsMember({"off", "obj", "ply", "stl"}));
 }
 
 void add_build_options(CLI::App* cmd, build_cli& o) {
   o.command = cmd;
   cmd->add_option("MESH", o.mesh,
-                  "mesh file: .off, .obj, .ply or .stl ('-': standard input, with --format), or a saved tree "
+                  "mesh file: .off, .obj, .ply or .stl ('-': standard input, with --format), or a "
+                  "saved tree "
                   "(.exbsp, from build --save)")
       ->required();
   add_format_option(cmd, o.format);
-  cmd->add_option("--kernel", o.kernel,
-                  "number type: exact (exbsp's own exact points, default), epeck (CGAL lazy exact), "
-                  "gmpq (plain exact rationals), epick (exact predicates, rounded splits), "
-                  "double (plain double)")
+  cmd->add_option(
+         "--kernel", o.kernel,
+         "number type: exact (exbsp's own exact points, default), epeck (CGAL lazy exact), "
+         "gmpq (plain exact rationals), epick (exact predicates, rounded splits), "
+         "double (plain double)")
       ->check(CLI::IsMember({"exact", "epeck", "gmpq", "epick", "double"}))
       ->capture_default_str();
   cmd->add_option("--heuristic", o.heuristic,
@@ -186,9 +194,11 @@ struct progress_line {
   bool shown = false;
   void operator()(const exbsp::build_progress& p) {
     if (!tty || p.seconds < 1.0) return;
-    const double share = p.fragments_total ? 100.0 * static_cast<double>(p.fragments_placed) / p.fragments_total : 0;
-    std::fprintf(stderr, "\r\033[Kexbsp: building: %3.0f%% (%zu of %zu fragments placed), %zu nodes, %.1f s", share,
-                 p.fragments_placed, p.fragments_total, p.nodes, p.seconds);
+    const double share =
+        p.fragments_total ? 100.0 * static_cast<double>(p.fragments_placed) / p.fragments_total : 0;
+    std::fprintf(
+        stderr, "\r\033[Kexbsp: building: %3.0f%% (%zu of %zu fragments placed), %zu nodes, %.1f s",
+        share, p.fragments_placed, p.fragments_total, p.nodes, p.seconds);
     std::fflush(stderr);
     shown = true;
   }
@@ -204,12 +214,15 @@ struct progress_line {
 exbsp::bsp load_tree(const build_cli& o, double* load_seconds) {
   const auto start = std::chrono::steady_clock::now();
   exbsp::bsp tree = exbsp::bsp::load(o.mesh);
-  if (load_seconds) *load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (load_seconds)
+    *load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const exbsp::build_stats& s = tree.stats();
-  const auto conflict = [&](const char* option, const std::string& given, const std::string& saved) {
+  const auto conflict = [&](const char* option, const std::string& given,
+                            const std::string& saved) {
     if (o.command && o.command->count(option) && given != saved)
-      throw exbsp::usage_error(o.mesh + " is a saved tree built with " + option + " " + saved + "; " + option + " " +
-                               given + " cannot change it (build from the mesh instead)");
+      throw exbsp::usage_error(o.mesh + " is a saved tree built with " + option + " " + saved +
+                               "; " + option + " " + given +
+                               " cannot change it (build from the mesh instead)");
   };
   conflict("--kernel", o.kernel, s.kernel);
   conflict("--heuristic", o.heuristic, s.heuristic);
@@ -219,13 +232,15 @@ exbsp::bsp load_tree(const build_cli& o, double* load_seconds) {
 
 exbsp::bsp build_tree(const build_cli& o, progress_line& progress, double* load_seconds = nullptr) {
   // A saved tree by its extension or magic; never standard input or a mesh given --format.
-  if (o.format.empty() && o.mesh != "-" && exbsp::bsp::is_saved_tree(o.mesh)) return load_tree(o, load_seconds);
+  if (o.format.empty() && o.mesh != "-" && exbsp::bsp::is_saved_tree(o.mesh))
+    return load_tree(o, load_seconds);
   const exbsp::triangle_soup soup = exbsp::cli::read_mesh_input(o.mesh, o.format, std::cin);
   exbsp::build_options options;
   options.kernel = exbsp::parse_kernel(o.kernel);
   options.heuristic = o.heuristic;
   options.seed = o.seed;
-  options.max_fragments = o.max_fragments ? *o.max_fragments : default_fragment_budget(options.kernel);
+  options.max_fragments =
+      o.max_fragments ? *o.max_fragments : default_fragment_budget(options.kernel);
   options.threads = o.threads;
   options.progress = [&progress](const exbsp::build_progress& p) { progress(p); };
   try {
@@ -239,11 +254,16 @@ exbsp::bsp build_tree(const build_cli& o, progress_line& progress, double* load_
 }
 
 nlohmann::json stats_json(const exbsp::build_stats& s) {
-  return {{"input_triangles", s.input_triangles}, {"degenerate_input", s.degenerate_input},
-          {"fragments", s.fragments},             {"splits", s.splits},
-          {"nodes", s.nodes},                     {"depth", s.depth},
-          {"build_seconds", s.build_seconds},     {"peak_rss_bytes", s.peak_rss_bytes},
-          {"kernel", s.kernel},                   {"heuristic", s.heuristic}};
+  return {{"input_triangles", s.input_triangles},
+          {"degenerate_input", s.degenerate_input},
+          {"fragments", s.fragments},
+          {"splits", s.splits},
+          {"nodes", s.nodes},
+          {"depth", s.depth},
+          {"build_seconds", s.build_seconds},
+          {"peak_rss_bytes", s.peak_rss_bytes},
+          {"kernel", s.kernel},
+          {"heuristic", s.heuristic}};
 }
 
 int run_build(const build_cli& o, bool json) {
@@ -256,14 +276,16 @@ int run_build(const build_cli& o, bool json) {
     nlohmann::json j = stats_json(s);
     j["mesh"] = o.mesh == "-" ? "<stdin>" : o.mesh;
     j["seed"] = s.seed;
-    if (load_seconds >= 0) j["load_seconds"] = load_seconds;  // a saved tree: build_seconds is its build's
+    if (load_seconds >= 0)
+      j["load_seconds"] = load_seconds;  // a saved tree: build_seconds is its build's
     std::cout << j.dump() << "\n";
   } else {
     if (load_seconds >= 0) std::cout << "saved tree loaded in " << load_seconds << " s; ";
-    std::cout << (o.mesh == "-" ? "<stdin>" : o.mesh) << ": " << s.input_triangles << " input triangles (" << s.degenerate_input
-              << " degenerate, skipped) -> " << s.fragments << " fragments, " << s.splits
-              << " splits, " << s.nodes << " nodes, depth " << s.depth << "; " << s.kernel << ", "
-              << s.heuristic << ", " << s.build_seconds << " s\n";
+    std::cout << (o.mesh == "-" ? "<stdin>" : o.mesh) << ": " << s.input_triangles
+              << " input triangles (" << s.degenerate_input << " degenerate, skipped) -> "
+              << s.fragments << " fragments, " << s.splits << " splits, " << s.nodes
+              << " nodes, depth " << s.depth << "; " << s.kernel << ", " << s.heuristic << ", "
+              << s.build_seconds << " s\n";
   }
   return 0;
 }
@@ -271,7 +293,8 @@ int run_build(const build_cli& o, bool json) {
 int run_order(const build_cli& o, const std::string& eye, const std::string& direction,
               const std::string& out_path) {
   const bool use_eye = !eye.empty();
-  const vec3d where = use_eye ? exbsp::cli::parse_triple(eye, "--eye") : exbsp::cli::parse_triple(direction, "--direction");
+  const vec3d where = use_eye ? exbsp::cli::parse_triple(eye, "--eye")
+                              : exbsp::cli::parse_triple(direction, "--direction");
   progress_line progress;
   const exbsp::bsp tree = build_tree(o, progress);
   const auto order = use_eye ? tree.order_from_eye(where) : tree.order_for_direction(where);
@@ -293,12 +316,15 @@ int run_section(const std::string& mesh, const std::string& format, const std::s
   };
   const bool off = ends_with(".off"), svg = ends_with(".svg");
   if (!out_path.empty() && out_path != "-" && !off && !svg && !ends_with(".json"))
-    throw exbsp::usage_error("-o/--output: section writes .json, .off or .svg, not '" + out_path + "'");
+    throw exbsp::usage_error("-o/--output: section writes .json, .off or .svg, not '" + out_path +
+                             "'");
   const exbsp::triangle_soup soup = exbsp::cli::read_mesh_input(mesh, format, std::cin);
   exbsp::section_options options;
   options.exact_text = !off && !svg;
   const exbsp::section_result r = exbsp::section(soup, plane, options);
-  const std::string text = off ? exbsp::section_off(r) : svg ? exbsp::section_svg(r) : exbsp::section_json(r);
+  const std::string text = off   ? exbsp::section_off(r)
+                           : svg ? exbsp::section_svg(r)
+                                 : exbsp::section_json(r);
   if (out_path.empty())
     std::cout << text;
   else
@@ -308,7 +334,7 @@ int run_section(const std::string& mesh, const std::string& format, const std::s
 
 /// `exbsp render` options.
 struct render_cli {
-  std::string input;               ///< scene (.json), mesh, '-' or empty (the demo)
+  std::string input;  ///< scene (.json), mesh, '-' or empty (the demo)
   std::string output = "exbsp.png";
   std::string format, view = "iso", size = "800x600", edges = "visible";
   std::string orbit_drag, trackball, kernel;
@@ -321,7 +347,8 @@ bool is_scene_path(const std::string& path) {
   const std::string ext = ".json";
   if (path.size() < ext.size()) return false;
   std::string tail = path.substr(path.size() - ext.size());
-  std::transform(tail.begin(), tail.end(), tail.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(tail.begin(), tail.end(), tail.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return tail == ext;
 }
 
@@ -334,13 +361,15 @@ int run_render(const render_cli& r) {
   request.frames = r.frames;
   request.trackball = r.trackball;
   request.kernel = r.kernel;
-  request.max_fragments = r.max_fragments ? *r.max_fragments
-                                          : default_fragment_budget(r.kernel.empty() ? exbsp::build_options{}.kernel
-                                                                                     : exbsp::parse_kernel(r.kernel));
+  request.max_fragments =
+      r.max_fragments ? *r.max_fragments
+                      : default_fragment_budget(r.kernel.empty() ? exbsp::build_options{}.kernel
+                                                                 : exbsp::parse_kernel(r.kernel));
   const bool mesh_input = !r.input.empty() && !is_scene_path(r.input);
   if (!mesh_input && !r.format.empty())
-    throw exbsp::usage_error("--format applies to a mesh input, not to " +
-                             (r.input.empty() ? std::string("the demo scene") : "the scene " + r.input));
+    throw exbsp::usage_error(
+        "--format applies to a mesh input, not to " +
+        (r.input.empty() ? std::string("the demo scene") : "the scene " + r.input));
   if (mesh_input) {
     exbsp::scene::mesh_view_options options;
     const auto size = exbsp::cli::parse_size(r.size);
@@ -349,7 +378,8 @@ int run_render(const render_cli& r) {
     options.view = r.view;
     options.edges = r.edges;
     const std::string name = r.input == "-" ? "<stdin>" : r.input;
-    auto soup = std::make_shared<const exbsp::triangle_soup>(exbsp::cli::read_mesh_input(r.input, r.format, std::cin));
+    auto soup = std::make_shared<const exbsp::triangle_soup>(
+        exbsp::cli::read_mesh_input(r.input, r.format, std::cin));
     request.preloaded = exbsp::scene::mesh_scene(std::move(soup), name, options);
   }
   progress_line progress;
@@ -365,11 +395,19 @@ int run_render(const render_cli& r) {
   progress.finish();
   if (!r.quiet) {
     char times[96];
-    std::snprintf(times, sizeof times, "build %.2f s, total %.2f s", summary.build_seconds, summary.total_seconds);
-    const auto shown = [](const std::string& path) { return path == "-" ? std::string("standard output") : path; };
-    std::cerr << "exbsp: wrote " << (summary.outputs.size() == 1 ? shown(summary.outputs[0]) : std::to_string(summary.frames) + " frames (" + summary.outputs.front() + " ... " + summary.outputs.back() + ")")
+    std::snprintf(times, sizeof times, "build %.2f s, total %.2f s", summary.build_seconds,
+                  summary.total_seconds);
+    const auto shown = [](const std::string& path) {
+      return path == "-" ? std::string("standard output") : path;
+    };
+    std::cerr << "exbsp: wrote "
+              << (summary.outputs.size() == 1
+                      ? shown(summary.outputs[0])
+                      : std::to_string(summary.frames) + " frames (" + summary.outputs.front() +
+                            " ... " + summary.outputs.back() + ")")
               << ": " << summary.triangles << " triangles -> " << summary.fragments << " fragments"
-              << (summary.kernel.empty() ? std::string() : " (" + summary.kernel + ")") << ", " << times << "\n";
+              << (summary.kernel.empty() ? std::string() : " (" + summary.kernel + ")") << ", "
+              << times << "\n";
   }
   return 0;
 }
@@ -383,7 +421,8 @@ int main(int argc, char** argv) {
   start_thread_pool();
   CLI::App app{
       "exbsp: exact-predicate BSP trees of triangle meshes, back-to-front orders and rendering.\n"
-      "Classification and splitting are exact (exbsp's own exact kernel by default), so trees and orders are\n"
+      "Classification and splitting are exact (exbsp's own exact kernel by default), so trees and "
+      "orders are\n"
       "the same on every machine."};
   app.require_subcommand(0, 1);
   app.set_version_flag("--version", std::string("exbsp ") + exbsp::version_string,
@@ -393,7 +432,9 @@ int main(int argc, char** argv) {
   bool json = false;
   auto* build = app.add_subcommand("build", "build the BSP tree of MESH and print its statistics");
   add_build_options(build, build_opts);
-  build->add_option("--save", build_opts.save, "write the tree to a saved-tree file T.exbsp, for order and build")
+  build
+      ->add_option("--save", build_opts.save,
+                   "write the tree to a saved-tree file T.exbsp, for order and build")
       ->check(non_empty_path);
   build->add_flag("--json", json,
                   "print one JSON object: input_triangles, degenerate_input, fragments, splits, "
@@ -412,73 +453,101 @@ int main(int argc, char** argv) {
       ->check(non_empty_path);
 
   render_cli r;
-  auto* render = app.add_subcommand(
-      "render", "render SCENE.json, a mesh with a view fitted to it, or the built-in demo scene to PNG, SVG or PDF");
-  render->add_option("INPUT", r.input,
-                     "scene file (.json), or a mesh (.off, .obj, .ply, .stl; '-': standard input with --format) "
-                     "drawn lit with a view fitted to its bounding box; omit for the built-in demo");
-  render->add_option("-o,--output", r.output, "output .png, .svg or .pdf ('-': PNG on standard output)")
+  auto* render = app.add_subcommand("render",
+                                    "render SCENE.json, a mesh with a view fitted to it, or the "
+                                    "built-in demo scene to PNG, SVG or PDF");
+  render->add_option(
+      "INPUT", r.input,
+      "scene file (.json), or a mesh (.off, .obj, .ply, .stl; '-': standard input with --format) "
+      "drawn lit with a view fitted to its bounding box; omit for the built-in demo");
+  render
+      ->add_option("-o,--output", r.output,
+                   "output .png, .svg or .pdf ('-': PNG on standard output)")
       ->check(non_empty_path)
       ->capture_default_str();
   add_format_option(render, r.format);
-  render->add_option("--view", r.view, "a mesh's fitted view: iso, front, back, left, right, top or bottom")
+  render
+      ->add_option("--view", r.view,
+                   "a mesh's fitted view: iso, front, back, left, right, top or bottom")
       ->check(CLI::IsMember(exbsp::scene::mesh_view_names()))
       ->capture_default_str();
-  render->add_option("--size", r.size, "a mesh's image size WIDTHxHEIGHT in pixels")->capture_default_str();
-  render->add_option("--edges", r.edges, "a mesh's edges in SVG/PDF output: none, visible or visible+hidden")
+  render->add_option("--size", r.size, "a mesh's image size WIDTHxHEIGHT in pixels")
+      ->capture_default_str();
+  render
+      ->add_option("--edges", r.edges,
+                   "a mesh's edges in SVG/PDF output: none, visible or visible+hidden")
       ->check(CLI::IsMember({"none", "visible", "visible+hidden"}))
       ->capture_default_str();
-  render->add_option("--kernel", r.kernel,
-                     "BSP kernel (default exact); epeck, gmpq; epick and double only to see what rounding does")
+  render
+      ->add_option("--kernel", r.kernel,
+                   "BSP kernel (default exact); epeck, gmpq; epick and double only to see what "
+                   "rounding does")
       ->check(CLI::IsMember({"exact", "epeck", "gmpq", "epick", "double"}));
   render->add_option("--max-fragments", r.max_fragments, max_fragments_help())->check(not_negative);
   render->add_flag("--strict", r.strict, "unknown scene keys are errors (exit 2), not warnings");
-  render->add_flag("-v,--verbose", r.verbose, "print the pipeline stages that ran and their timings");
+  render->add_flag("-v,--verbose", r.verbose,
+                   "print the pipeline stages that ran and their timings");
   render->add_flag("-q,--quiet", r.quiet, "no progress line and no summary line");
   render->add_option("--orbit-drag", r.orbit_drag,
                      "trackball orbit: screen pixel path X0,Y0:X1,Y1:... (y down) dragged over an "
                      "arcball; writes OUT_0000.png, OUT_0001.png, ... from one BSP build");
-  render->add_option("--trackball", r.trackball,
-                     "orbit rotation: arcball (Shoemake, twice the arc; default) or virtual (the classic "
-                     "virtual trackball: the point under the cursor follows it); overrides the scene's \"trackball\"")
+  render
+      ->add_option(
+          "--trackball", r.trackball,
+          "orbit rotation: arcball (Shoemake, twice the arc; default) or virtual (the classic "
+          "virtual trackball: the point under the cursor follows it); overrides the scene's "
+          "\"trackball\"")
       ->check(CLI::IsMember({"arcball", "virtual"}));
-  render->add_option("--frames", r.frames,
-                     "number of orbit frames (the drag path resampled evenly; default: one per point)")
+  render
+      ->add_option(
+          "--frames", r.frames,
+          "number of orbit frames (the drag path resampled evenly; default: one per point)")
       ->check(not_negative);
 
   std::string section_mesh, section_format, section_plane_text, section_out;
   auto* section = app.add_subcommand(
-      "section", "cut MESH exactly by a plane: kept part, outline loops and (closed meshes) the cap");
-  section->add_option("MESH", section_mesh, "mesh file: .off, .obj, .ply or .stl ('-': standard input, with --format)")
+      "section",
+      "cut MESH exactly by a plane: kept part, outline loops and (closed meshes) the cap");
+  section
+      ->add_option("MESH", section_mesh,
+                   "mesh file: .off, .obj, .ply or .stl ('-': standard input, with --format)")
       ->required();
   add_format_option(section, section_format);
-  section->add_option("--plane", section_plane_text,
-                      "A,B,C,D: the plane A*x+B*y+C*z+D = 0; the side where it is >= 0 is kept")
+  section
+      ->add_option("--plane", section_plane_text,
+                   "A,B,C,D: the plane A*x+B*y+C*z+D = 0; the side where it is >= 0 is kept")
       ->required();
-  section->add_option("-o,--output", section_out,
-                      "OUT.json (kept, outline, cap with exact rationals; default: standard output), "
-                      "OUT.off (kept and cap as one mesh) or OUT.svg (the outline in the cut plane)")
+  section
+      ->add_option("-o,--output", section_out,
+                   "OUT.json (kept, outline, cap with exact rationals; default: standard output), "
+                   "OUT.off (kept and cap as one mesh) or OUT.svg (the outline in the cut plane)")
       ->check(non_empty_path);
 
   std::string clip_in, clip_out, clip_algorithm;
   bool clip_verbose = false;
-  auto* clip = app.add_subcommand(
-      "clip", "clip the segments and polygons of INPUT.json against its region (rect, box, convex, halfspaces)");
-  clip->add_option("INPUT", clip_in, "clip input (JSON): {\"region\": ..., \"segments\": ..., \"polygons\": ...}")
+  auto* clip = app.add_subcommand("clip",
+                                  "clip the segments and polygons of INPUT.json against its region "
+                                  "(rect, box, convex, halfspaces)");
+  clip->add_option("INPUT", clip_in,
+                   "clip input (JSON): {\"region\": ..., \"segments\": ..., \"polygons\": ...}")
       ->required();
-  clip->add_option("--algorithm", clip_algorithm,
-                   "segment clipper: cohen-sutherland (default) or liang-barsky (rect or box regions); "
-                   "polygons are always clipped by sutherland-hodgman (any convex region)")
+  clip->add_option(
+          "--algorithm", clip_algorithm,
+          "segment clipper: cohen-sutherland (default) or liang-barsky (rect or box regions); "
+          "polygons are always clipped by sutherland-hodgman (any convex region)")
       ->check(CLI::IsMember({"cohen-sutherland", "liang-barsky", "sutherland-hodgman"}));
-  clip->add_option("-o,--output", clip_out, "output .json or .svg (default: JSON on standard output)")
+  clip->add_option("-o,--output", clip_out,
+                   "output .json or .svg (default: JSON on standard output)")
       ->check(non_empty_path);
-  clip->add_flag("-v,--verbose", clip_verbose, "print each segment endpoint's Cohen-Sutherland outcode");
+  clip->add_flag("-v,--verbose", clip_verbose,
+                 "print each segment endpoint's Cohen-Sutherland outcode");
 
   {
     std::vector<std::string> args(argv + 1, argv + argc);
     const std::string typo = exbsp::cli::misspelling(app, args);
     if (!typo.empty()) {
-      std::cerr << "exbsp: error: " << typo << "\n" << "run 'exbsp --help' for usage\n";
+      std::cerr << "exbsp: error: " << typo << "\n"
+                << "run 'exbsp --help' for usage\n";
       return 2;
     }
   }
@@ -491,7 +560,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "exbsp: error: " << e.what() << "\n" << "run 'exbsp --help' for usage\n";
+    std::cerr << "exbsp: error: " << e.what() << "\n"
+              << "run 'exbsp --help' for usage\n";
     return 2;
   }
 
@@ -509,7 +579,8 @@ int main(int argc, char** argv) {
     }
     if (*section) return run_section(section_mesh, section_format, section_plane_text, section_out);
     if (*clip) {
-      exbsp::scene::clip_command(clip_in, clip_out, clip_algorithm, clip_verbose, std::cout, std::cerr);
+      exbsp::scene::clip_command(clip_in, clip_out, clip_algorithm, clip_verbose, std::cout,
+                                 std::cerr);
       return 0;
     }
     if (*render) {
@@ -518,7 +589,8 @@ int main(int argc, char** argv) {
   } catch (const exbsp::limit_error& e) {
     std::cerr << "exbsp: error: " << e.what() << "\n";
     if (*build || *order || *render)
-      std::cerr << "exbsp: the limit is --max-fragments (default: from the available memory); raise it with "
+      std::cerr << "exbsp: the limit is --max-fragments (default: from the available memory); "
+                   "raise it with "
                    "--max-fragments N, or 0 for no limit\n";
     return 3;
   } catch (const exbsp::error& e) {  // input, scene, usage and output errors

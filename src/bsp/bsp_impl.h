@@ -12,7 +12,7 @@ class writer;
 }
 
 class bsp_impl {
-public:
+ public:
   virtual ~bsp_impl() = default;
   virtual const build_stats& stats() const = 0;
   virtual kernel_id kernel() const = 0;
@@ -22,19 +22,21 @@ public:
   /// Throws usage_error for an index out of range or an inexact kernel.
   virtual void visit_exact(std::size_t i, const exact_visitor& visit) const = 0;
   virtual std::vector<std::uint32_t> order_from_eye(const vec3d& eye, bool back_to_front) const = 0;
-  virtual std::vector<std::uint32_t> order_for_direction(const vec3d& d, bool back_to_front) const = 0;
+  virtual std::vector<std::uint32_t> order_for_direction(const vec3d& d,
+                                                         bool back_to_front) const = 0;
   virtual std::vector<bsp::ancestor> ancestors(std::size_t i) const = 0;
   /// Writes the body of a saved tree (tree_file.h): the common part, then the kernel's own.
   virtual void write_tree(tree_file::writer& out) const = 0;
   virtual std::size_t node_count() const = 0;
   virtual bsp_node node(std::size_t k) const = 0;
   /// The traversal for an eye point (direction = false) or a direction of projection.
-  virtual void traverse(const vec3d& at, bool direction, bsp_visitor& visitor, bool back_to_front) const = 0;
+  virtual void traverse(const vec3d& at, bool direction, bsp_visitor& visitor,
+                        bool back_to_front) const = 0;
 };
 
 /// The library's access to a bsp's implementation (bsp is its friend).
 class bsp_access {
-public:
+ public:
   static const bsp_impl& impl(const bsp& tree) { return *tree.impl_; }
 };
 

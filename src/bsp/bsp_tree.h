@@ -27,7 +27,7 @@ namespace exbsp {
 /// The tree for geometry G; bsp_tree<K> is the tree for CGAL kernel K (geometry_cgal.h).
 template <class G>
 class basic_bsp_tree {
-public:
+ public:
   /// A stored triangle: G's representation, with .source (input triangle index) and .face.
   using fragment = typename G::fragment;
 
@@ -67,11 +67,14 @@ public:
   /// points and vectors, e.g. an eye exactly at a split point).
   template <class Eye>
   std::vector<std::uint32_t> order_from_eye(const Eye& eye, bool back_to_front = true) const {
-    return traverse([&](std::uint32_t plane) { return geom_.side_of_eye(plane, eye); }, back_to_front);
+    return traverse([&](std::uint32_t plane) { return geom_.side_of_eye(plane, eye); },
+                    back_to_front);
   }
   template <class Direction>
-  std::vector<std::uint32_t> order_for_direction(const Direction& d, bool back_to_front = true) const {
-    return traverse([&](std::uint32_t plane) { return geom_.side_of_direction(plane, d); }, back_to_front);
+  std::vector<std::uint32_t> order_for_direction(const Direction& d,
+                                                 bool back_to_front = true) const {
+    return traverse([&](std::uint32_t plane) { return geom_.side_of_direction(plane, d); },
+                    back_to_front);
   }
 
   /// The traversal of bsp/traversal.h, iterative: enter(node, s) when a node is reached,
@@ -110,7 +113,7 @@ public:
     }
   }
 
-private:
+ private:
   /// Refs to fragments: a pool_ index, or local_ref | index into a subtree's own pieces.
   static constexpr std::uint32_t local_ref = 0x80000000u;
   struct work {
@@ -118,7 +121,7 @@ private:
     std::int32_t parent;              ///< parent node (index in the subtree being grown), -1: none
     std::int32_t side;
     std::uint32_t depth;
-    std::uint64_t key;                ///< path key: root 1, children mix64(2 key + (side > 0))
+    std::uint64_t key;  ///< path key: root 1, children mix64(2 key + (side > 0))
   };
   /// Nodes, fragment refs and pieces of one independently grown subtree.
   struct subtree {
@@ -149,19 +152,23 @@ private:
     std::vector<std::uint32_t> out;
     out.reserve(fragments_.size());
     const auto none = [](std::int32_t, int) {};
-    walk(side_of, true, none, [&](std::int32_t k) {
-      for (std::uint32_t i = 0; i < nodes_[k].count; ++i) out.push_back(nodes_[k].first + i);
-    }, none);
+    walk(
+        side_of, true, none,
+        [&](std::int32_t k) {
+          for (std::uint32_t i = 0; i < nodes_[k].count; ++i) out.push_back(nodes_[k].first + i);
+        },
+        none);
     if (!back_to_front) std::reverse(out.begin(), out.end());
     return out;
   }
 
   /// The list position of the splitter (heuristics.h).
   std::size_t choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part,
-                              const build_context& ctx, std::uint64_t node_key, std::uint32_t depth) const;
+                              const build_context& ctx, std::uint64_t node_key,
+                              std::uint32_t depth) const;
 
   G geom_;
-  std::vector<fragment> pool_;  ///< build time only: every fragment made, by index
+  std::vector<fragment> pool_;                 ///< build time only: every fragment made, by index
   std::vector<std::uint32_t> node_fragments_;  ///< build time only: pool indices, node by node
   std::vector<fragment> fragments_;
   std::vector<node> nodes_;

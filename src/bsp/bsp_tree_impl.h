@@ -37,7 +37,8 @@ classification basic_bsp_tree<G>::classify(std::uint32_t plane, const fragment& 
 /// Shared state of one build: options and the counters updated by all threads.
 template <class G>
 struct basic_bsp_tree<G>::build_context {
-  build_context(const build_options& o, detail::heuristic_id h, std::chrono::steady_clock::time_point t)
+  build_context(const build_options& o, detail::heuristic_id h,
+                std::chrono::steady_clock::time_point t)
       : options(o), heuristic(h), start(t) {}
   const build_options& options;
   detail::heuristic_id heuristic;
@@ -53,8 +54,9 @@ struct basic_bsp_tree<G>::build_context {
     const std::unique_lock<std::mutex> lock(progress_mutex, std::try_to_lock);
     if (!lock.owns_lock() || progress_threw) return;
     try {
-      options.progress({placed_now, total_fragments.load(std::memory_order_relaxed), nodes_now,
-                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+      options.progress(
+          {placed_now, total_fragments.load(std::memory_order_relaxed), nodes_now,
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
     } catch (...) {
       progress_threw = true;
       throw;
@@ -70,7 +72,8 @@ struct basic_bsp_tree<G>::build_context {
 };
 
 template <class G>
-basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options& options) : geom_(soup) {
+basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options& options)
+    : geom_(soup) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   const detail::heuristic_id heuristic = detail::heuristic_for(options);
@@ -82,7 +85,8 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   for (std::size_t i = 0; i < soup.vertices.size(); ++i)
     for (double x : soup.vertices[i])
       if (!std::isfinite(x))
-        throw usage_error("bsp build: vertex " + std::to_string(i) + " has a non-finite coordinate");
+        throw usage_error("bsp build: vertex " + std::to_string(i) +
+                          " has a non-finite coordinate");
 
   // Input triangles; the exactly degenerate (collinear) ones are skipped and counted.
   // Fragments live in pool_ (split parents stay there, dead, until the build ends); work
@@ -128,7 +132,8 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
     for (std::uint32_t& ref : w.list) ref = remap(ref, top_base);
   append_subtree(top);
 
-  std::vector<work> frontier(std::make_move_iterator(queue.begin()), std::make_move_iterator(queue.end()));
+  std::vector<work> frontier(std::make_move_iterator(queue.begin()),
+                             std::make_move_iterator(queue.end()));
   queue.clear();
   std::vector<subtree> parts(frontier.size());
   detail::parallel_failure failure;
@@ -145,7 +150,8 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
       while (!stack.empty() && !failure.failed()) {
         work w = std::move(stack.back());
         stack.pop_back();
-        grow_node(std::move(w), part, ctx, [&](work&& child) { stack.push_back(std::move(child)); });
+        grow_node(std::move(w), part, ctx,
+                  [&](work&& child) { stack.push_back(std::move(child)); });
       }
     });
   }
@@ -168,7 +174,8 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
     constexpr std::uint32_t dead = ~0u;
     const std::size_t live = node_fragments_.size();
     std::vector<std::uint32_t> target(pool_.size(), dead);
-    for (std::size_t k = 0; k < live; ++k) target[node_fragments_[k]] = static_cast<std::uint32_t>(k);
+    for (std::size_t k = 0; k < live; ++k)
+      target[node_fragments_[k]] = static_cast<std::uint32_t>(k);
     std::vector<std::uint32_t>().swap(node_fragments_);
     for (std::size_t i = 0; i < pool_.size(); ++i)
       while (target[i] != dead && target[i] != i) {
@@ -185,14 +192,16 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   stats_.build_seconds = std::chrono::duration<double>(clock::now() - start).count();
   stats_.peak_rss_bytes = peak_rss_bytes();
   if (options.progress)
-    options.progress({fragments_.size(), ctx.total_fragments.load(), nodes_.size(), stats_.build_seconds});
+    options.progress(
+        {fragments_.size(), ctx.total_fragments.load(), nodes_.size(), stats_.build_seconds});
 }
 
 template <class G>
 void basic_bsp_tree<G>::append_subtree(subtree& part) {
   const auto node_base = static_cast<std::int32_t>(nodes_.size());
   const auto fragment_base = static_cast<std::uint32_t>(node_fragments_.size());
-  node_fragments_.insert(node_fragments_.end(), part.node_fragments.begin(), part.node_fragments.end());
+  node_fragments_.insert(node_fragments_.end(), part.node_fragments.begin(),
+                         part.node_fragments.end());
   for (node nd : part.nodes) {
     nd.first += fragment_base;
     if (nd.negative >= 0) nd.negative += node_base;
@@ -203,7 +212,8 @@ void basic_bsp_tree<G>::append_subtree(subtree& part) {
       nd.parent = part.root_parent;
       nd.side_in_parent = part.root_side;
       node& parent = nodes_[part.root_parent];
-      (part.root_side > 0 ? parent.positive : parent.negative) = static_cast<std::int32_t>(nodes_.size());
+      (part.root_side > 0 ? parent.positive : parent.negative) =
+          static_cast<std::int32_t>(nodes_.size());
     }
     stats_.depth = std::max<std::size_t>(stats_.depth, nd.depth);
     nodes_.push_back(nd);
@@ -214,7 +224,8 @@ void basic_bsp_tree<G>::append_subtree(subtree& part) {
 
 template <class G>
 template <class PushChild>
-void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx, PushChild&& push_child) {
+void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
+                                  PushChild&& push_child) {
   const auto fragment_at = [&](std::uint32_t ref) -> const fragment& { return resolve(part, ref); };
   const build_options& options = ctx.options;
   const std::size_t splitter = choose_splitter(w.list, part, ctx, w.key, w.depth);
@@ -227,7 +238,8 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx, P
   nd.parent = w.parent;
   nd.side_in_parent = w.side;
   nd.depth = w.depth;
-  if (w.parent >= 0) (w.side > 0 ? part.nodes[w.parent].positive : part.nodes[w.parent].negative) = id;
+  if (w.parent >= 0)
+    (w.side > 0 ? part.nodes[w.parent].positive : part.nodes[w.parent].negative) = id;
 
   // Side tests first (in parallel for very long lists: they dominate degenerate trees), then
   // the sequential, order-keeping distribution with the exact splits.
@@ -235,7 +247,8 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx, P
   std::vector<std::array<std::int8_t, 3>> signs(n);
   const long long nn = static_cast<long long>(n);
   detail::parallel_failure failure;
-#pragma omp parallel for schedule(static) if (n > 65536) num_threads(detail::threads_for(options.threads))
+#pragma omp parallel for schedule(static) if (n > 65536) \
+    num_threads(detail::threads_for(options.threads))
   for (long long jj = 0; jj < nn; ++jj) {
     failure.run([&] {
       const auto j = static_cast<std::size_t>(jj);
@@ -257,9 +270,15 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx, P
     const std::uint32_t ref = w.list[j];
     const std::array<int, 3> s{signs[j][0], signs[j][1], signs[j][2]};
     switch (classify_signs(s)) {
-      case classification::coplanar: part.node_fragments.push_back(ref); break;
-      case classification::positive: positive.push_back(ref); break;
-      case classification::negative: negative.push_back(ref); break;
+      case classification::coplanar:
+        part.node_fragments.push_back(ref);
+        break;
+      case classification::positive:
+        positive.push_back(ref);
+        break;
+      case classification::negative:
+        negative.push_back(ref);
+        break;
       case classification::straddling: {
         const split_pattern pattern = make_split_pattern(s);
         std::array<fragment, 3> pieces;
@@ -281,8 +300,10 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx, P
   const std::uint32_t depth = w.depth;
   w.list.clear();
   w.list.shrink_to_fit();
-  if (!positive.empty()) push_child({std::move(positive), id, +1, depth + 1, detail::mix64(key * 2 + 1)});
-  if (!negative.empty()) push_child({std::move(negative), id, -1, depth + 1, detail::mix64(key * 2)});
+  if (!positive.empty())
+    push_child({std::move(positive), id, +1, depth + 1, detail::mix64(key * 2 + 1)});
+  if (!negative.empty())
+    push_child({std::move(negative), id, -1, depth + 1, detail::mix64(key * 2)});
 
   const std::size_t placed = ctx.placed.fetch_add(nd.count, std::memory_order_relaxed) + nd.count;
   const std::size_t nodes = ctx.nodes.fetch_add(1, std::memory_order_relaxed) + 1;
@@ -290,23 +311,28 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx, P
 }
 
 template <class G>
-std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part,
-                                               const build_context& ctx, std::uint64_t node_key,
-                                               std::uint32_t depth) const {
+std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>& list,
+                                               const subtree& part, const build_context& ctx,
+                                               std::uint64_t node_key, std::uint32_t depth) const {
   const std::size_t n = list.size();
   if (n <= 1) return 0;
   // cls(i, j): list[j] against list[i]'s plane; the same source is coplanar by construction.
   const auto cls = [&](std::size_t i, std::size_t j) {
     const fragment& candidate = resolve(part, list[i]);
     const fragment& other = resolve(part, list[j]);
-    return other.source == candidate.source ? classification::coplanar : classify(candidate.source, other);
+    return other.source == candidate.source ? classification::coplanar
+                                            : classify(candidate.source, other);
   };
   const build_options& o = ctx.options;
   switch (ctx.heuristic) {
-    case detail::heuristic_naive: return 0;
-    case detail::heuristic_min_split: return detail::choose_min_split(n, cls, o.threads);
-    case detail::heuristic_sampled: return detail::choose_sampled(n, cls, o, node_key);
-    case detail::heuristic_random: return detail::choose_random(n, o.seed, node_key);
+    case detail::heuristic_naive:
+      return 0;
+    case detail::heuristic_min_split:
+      return detail::choose_min_split(n, cls, o.threads);
+    case detail::heuristic_sampled:
+      return detail::choose_sampled(n, cls, o, node_key);
+    case detail::heuristic_random:
+      return detail::choose_random(n, o.seed, node_key);
     case detail::heuristic_custom: {
       const auto ids = [&](std::size_t i) {
         const fragment& f = resolve(part, list[i]);
@@ -329,21 +355,30 @@ std::size_t basic_bsp_tree<G>::node_of_fragment(std::size_t i) const {
 }
 
 template <class G>
-std::vector<std::uint32_t> basic_bsp_tree<G>::order_from_eye(const vec3d& eye, bool back_to_front) const {
-  return traverse([&](std::uint32_t plane) { return geom_.side_of_eye(plane, eye); }, back_to_front);
+std::vector<std::uint32_t> basic_bsp_tree<G>::order_from_eye(const vec3d& eye,
+                                                             bool back_to_front) const {
+  return traverse([&](std::uint32_t plane) { return geom_.side_of_eye(plane, eye); },
+                  back_to_front);
 }
 
 template <class G>
-std::vector<std::uint32_t> basic_bsp_tree<G>::order_for_direction(const vec3d& d, bool back_to_front) const {
-  return traverse([&](std::uint32_t plane) { return geom_.side_of_direction(plane, d); }, back_to_front);
+std::vector<std::uint32_t> basic_bsp_tree<G>::order_for_direction(const vec3d& d,
+                                                                  bool back_to_front) const {
+  return traverse([&](std::uint32_t plane) { return geom_.side_of_direction(plane, d); },
+                  back_to_front);
 }
 
 /// The kernel-specific implementation behind exbsp::bsp.
 template <class G>
 class bsp_kernel_impl final : public bsp_impl {
-public:
+ public:
   bsp_kernel_impl(const triangle_soup& soup, const build_options& options)
-      : input_{{}, 0, options.sampled_candidates, options.sampled_samples, options.sampled_split_weight, soup},
+      : input_{{},
+               0,
+               options.sampled_candidates,
+               options.sampled_samples,
+               options.sampled_split_weight,
+               soup},
         tree_(soup, options) {
     init_planes(soup);
   }
@@ -367,7 +402,8 @@ public:
   std::vector<std::uint32_t> order_from_eye(const vec3d& e, bool back_to_front) const override {
     return tree_.order_from_eye(e, back_to_front);
   }
-  std::vector<std::uint32_t> order_for_direction(const vec3d& d, bool back_to_front) const override {
+  std::vector<std::uint32_t> order_for_direction(const vec3d& d,
+                                                 bool back_to_front) const override {
     return tree_.order_for_direction(d, back_to_front);
   }
   std::vector<bsp::ancestor> ancestors(std::size_t i) const override {
@@ -390,21 +426,30 @@ public:
   bsp_node node(std::size_t k) const override {
     if (k >= tree_.nodes().size()) throw usage_error("node: index out of range");
     const auto& nd = tree_.nodes()[k];
-    return {static_cast<std::uint32_t>(k), nd.plane_source, planes_[k], nd.first, nd.count,
-            nd.negative, nd.positive, nd.parent, nd.side_in_parent};
+    return {static_cast<std::uint32_t>(k),
+            nd.plane_source,
+            planes_[k],
+            nd.first,
+            nd.count,
+            nd.negative,
+            nd.positive,
+            nd.parent,
+            nd.side_in_parent};
   }
-  void traverse(const vec3d& at, bool direction, bsp_visitor& visitor, bool back_to_front) const override {
+  void traverse(const vec3d& at, bool direction, bsp_visitor& visitor,
+                bool back_to_front) const override {
     const auto& geom = tree_.geometry();
     const auto side_of = [&](std::uint32_t plane) {
       return direction ? geom.side_of_direction(plane, at) : geom.side_of_eye(plane, at);
     };
-    tree_.walk(side_of, back_to_front,
-               [&](std::int32_t k, int s) { visitor.enter(node(static_cast<std::size_t>(k)), s); },
-               [&](std::int32_t k) { visitor.fragments(node(static_cast<std::size_t>(k))); },
-               [&](std::int32_t k, int side) { visitor.cell(node(static_cast<std::size_t>(k)), side); });
+    tree_.walk(
+        side_of, back_to_front,
+        [&](std::int32_t k, int s) { visitor.enter(node(static_cast<std::size_t>(k)), s); },
+        [&](std::int32_t k) { visitor.fragments(node(static_cast<std::size_t>(k))); },
+        [&](std::int32_t k, int side) { visitor.cell(node(static_cast<std::size_t>(k)), side); });
   }
 
-private:
+ private:
   void init_planes(const triangle_soup& soup) {
     planes_.reserve(tree_.nodes().size());
     for (const auto& nd : tree_.nodes()) {
@@ -422,13 +467,14 @@ private:
 
 /// Explicit instantiation of the tree for one geometry G, with the factory make_bsp_<NAME>.
 /// Used once per kernel translation unit.
-#define EXBSP_INSTANTIATE_BSP(G, NAME)                                                          \
-  namespace exbsp {                                                                             \
-  template class basic_bsp_tree<G>;                                                                   \
+#define EXBSP_INSTANTIATE_BSP(G, NAME)                                                           \
+  namespace exbsp {                                                                              \
+  template class basic_bsp_tree<G>;                                                              \
   std::unique_ptr<bsp_impl> make_bsp_##NAME(const triangle_soup& soup, const build_options& o) { \
-    return std::make_unique<bsp_kernel_impl<G>>(soup, o);                                       \
-  }                                                                                             \
-  std::unique_ptr<bsp_impl> tree_file::load_##NAME(tree_file::reader& in, tree_file::common_part&& c) { \
-    return std::make_unique<bsp_kernel_impl<G>>(in, std::move(c));                              \
-  }                                                                                             \
+    return std::make_unique<bsp_kernel_impl<G>>(soup, o);                                        \
+  }                                                                                              \
+  std::unique_ptr<bsp_impl> tree_file::load_##NAME(tree_file::reader& in,                        \
+                                                   tree_file::common_part&& c) {                 \
+    return std::make_unique<bsp_kernel_impl<G>>(in, std::move(c));                               \
+  }                                                                                              \
   }

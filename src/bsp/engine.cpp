@@ -13,22 +13,30 @@ namespace exbsp {
 
 std::string to_string(kernel_id k) {
   switch (k) {
-    case kernel_id::exact: return "exact";
-    case kernel_id::epeck: return "epeck";
-    case kernel_id::epick: return "epick";
-    case kernel_id::double_: return "double";
-    case kernel_id::gmpq: return "gmpq";
+    case kernel_id::exact:
+      return "exact";
+    case kernel_id::epeck:
+      return "epeck";
+    case kernel_id::epick:
+      return "epick";
+    case kernel_id::double_:
+      return "double";
+    case kernel_id::gmpq:
+      return "gmpq";
   }
   return "unknown";
 }
 
 kernel_id parse_kernel(const std::string& name) {
-  for (kernel_id k : {kernel_id::exact, kernel_id::epeck, kernel_id::epick, kernel_id::double_, kernel_id::gmpq})
+  for (kernel_id k :
+       {kernel_id::exact, kernel_id::epeck, kernel_id::epick, kernel_id::double_, kernel_id::gmpq})
     if (to_string(k) == name) return k;
   throw usage_error("unknown kernel '" + name + "' (expected exact, epeck, gmpq, epick or double)");
 }
 
-bool is_exact(kernel_id k) { return k == kernel_id::exact || k == kernel_id::epeck || k == kernel_id::gmpq; }
+bool is_exact(kernel_id k) {
+  return k == kernel_id::exact || k == kernel_id::epeck || k == kernel_id::gmpq;
+}
 
 const std::vector<std::string>& heuristic_names() {
   static const std::vector<std::string> names{"naive", "min-split", "sampled", "random"};
@@ -42,29 +50,37 @@ heuristic_id heuristic_for(const build_options& options) {
   const auto& names = heuristic_names();
   const std::string& name = options.heuristic;
   if (name == "custom") {
-    if (!options.score) throw usage_error("heuristic 'custom' needs a score callback (build_options::score)");
+    if (!options.score)
+      throw usage_error("heuristic 'custom' needs a score callback (build_options::score)");
     return heuristic_custom;
   }
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == name) {
       if (options.score)
-        throw usage_error("a score callback is set but the heuristic is '" + name + "': use heuristic 'custom'");
+        throw usage_error("a score callback is set but the heuristic is '" + name +
+                          "': use heuristic 'custom'");
       return static_cast<heuristic_id>(i);
     }
   std::string list;
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-  throw usage_error("unknown heuristic '" + name + "' (expected one of: " + list + ", or custom with a score callback)");
+  throw usage_error("unknown heuristic '" + name + "' (expected one of: " + list +
+                    ", or custom with a score callback)");
 }
 }  // namespace detail
 
 bsp bsp::build(const triangle_soup& soup, const build_options& options) {
   detail::heuristic_for(options);  // fail fast on a bad name
   switch (options.kernel) {
-    case kernel_id::exact: return bsp(make_bsp_exact(soup, options));
-    case kernel_id::epeck: return bsp(make_bsp_epeck(soup, options));
-    case kernel_id::epick: return bsp(make_bsp_epick(soup, options));
-    case kernel_id::double_: return bsp(make_bsp_double(soup, options));
-    case kernel_id::gmpq: return bsp(make_bsp_gmpq(soup, options));
+    case kernel_id::exact:
+      return bsp(make_bsp_exact(soup, options));
+    case kernel_id::epeck:
+      return bsp(make_bsp_epeck(soup, options));
+    case kernel_id::epick:
+      return bsp(make_bsp_epick(soup, options));
+    case kernel_id::double_:
+      return bsp(make_bsp_double(soup, options));
+    case kernel_id::gmpq:
+      return bsp(make_bsp_gmpq(soup, options));
   }
   throw usage_error("unknown kernel");
 }
@@ -98,7 +114,8 @@ void require_eye(const vec3d& eye, const char* function) {
 
 void require_direction(const vec3d& d, const char* function) {
   for (double x : d)
-    if (!std::isfinite(x)) throw usage_error(std::string(function) + ": the direction must be finite");
+    if (!std::isfinite(x))
+      throw usage_error(std::string(function) + ": the direction must be finite");
   if (d[0] == 0 && d[1] == 0 && d[2] == 0)
     throw usage_error(std::string(function) + ": the direction must not be zero");
 }

@@ -25,11 +25,11 @@ namespace exbsp {
 
 /// The number type behind classification and splitting.
 enum class kernel_id {
-  exact,   ///< exbsp's own exact points (filter, structural signs, GMP on demand). Default.
-  epeck,   ///< CGAL Epeck: lazy exact (filtered intervals, GMP rationals on demand).
-  epick,   ///< CGAL Epick: exact predicates, rounded (double) constructions.
-  double_, ///< Simple_cartesian<double>: plain double, no filter, no epsilon.
-  gmpq     ///< Simple_cartesian<CGAL::Gmpq>: exact rationals, no filter.
+  exact,    ///< exbsp's own exact points (filter, structural signs, GMP on demand). Default.
+  epeck,    ///< CGAL Epeck: lazy exact (filtered intervals, GMP rationals on demand).
+  epick,    ///< CGAL Epick: exact predicates, rounded (double) constructions.
+  double_,  ///< Simple_cartesian<double>: plain double, no filter, no epsilon.
+  gmpq      ///< Simple_cartesian<CGAL::Gmpq>: exact rationals, no filter.
 };
 
 /// "exact", "epeck", "epick", "double", "gmpq".
@@ -81,9 +81,9 @@ enum class candidate_set {
 struct build_options {
   kernel_id kernel = kernel_id::exact;
   std::string heuristic = default_heuristic();
-  std::uint64_t seed = 0;          ///< for randomised heuristics; same seed, same tree
-  std::size_t max_fragments = 0;   ///< 0: no limit; otherwise throw limit_error beyond it
-  unsigned threads = 0;            ///< worker threads for candidate evaluation (0: all cores)
+  std::uint64_t seed = 0;         ///< for randomised heuristics; same seed, same tree
+  std::size_t max_fragments = 0;  ///< 0: no limit; otherwise throw limit_error beyond it
+  unsigned threads = 0;           ///< worker threads for candidate evaluation (0: all cores)
   /// The sampled heuristic: up to `sampled_candidates` seeded candidates per node, each scored
   /// on an evenly spaced sample of at most `sampled_samples` fragments by
   /// sampled_split_weight * splits + |positive - negative|; lowest score wins.
@@ -112,16 +112,17 @@ struct build_options {
 
 /// Statistics of a build (names follow `exbsp build --json`).
 struct build_stats {
-  std::size_t input_triangles = 0;   ///< triangles after fan triangulation, degenerate ones included
+  std::size_t input_triangles = 0;  ///< triangles after fan triangulation, degenerate ones included
   std::size_t degenerate_input = 0;  ///< exactly collinear triangles skipped (no plane)
   std::size_t fragments = 0;         ///< triangles stored in the tree
   std::size_t splits = 0;            ///< split events (one per straddling triangle split)
   std::size_t nodes = 0;
-  std::size_t depth = 0;             ///< nodes on the longest root-to-leaf path (root alone: 1)
+  std::size_t depth = 0;  ///< nodes on the longest root-to-leaf path (root alone: 1)
   double build_seconds = 0;
-  std::size_t peak_rss_bytes = 0;    ///< process peak resident set after the build (Linux), 0 if unknown
+  std::size_t peak_rss_bytes =
+      0;  ///< process peak resident set after the build (Linux), 0 if unknown
   std::string kernel, heuristic;
-  std::uint64_t seed = 0;            ///< build_options::seed of the build
+  std::uint64_t seed = 0;  ///< build_options::seed of the build
 };
 
 /// A fragment converted to doubles (each coordinate correctly rounded from its exact value).
@@ -138,7 +139,7 @@ class bsp_access;  // private: the library's own access to the implementation (b
 
 /// A built BSP tree. Movable, not copyable. Thread-safe for concurrent const use.
 class bsp {
-public:
+ public:
   /// Builds the tree of `soup`. Throws usage_error for an unknown heuristic (or "custom"
   /// without options.score, or options.score with another heuristic), limit_error when
   /// options.max_fragments is exceeded, and whatever options.score or options.progress throw
@@ -178,10 +179,11 @@ public:
   std::size_t node_count() const;
   bsp_node node(std::size_t k) const;
   /// Walks the tree for an eye point (a direction of projection d) calling `visitor` in the
-  /// order of traversal.h; the fragments it visits are exactly order_from_eye(eye) (order_for_direction(d)).
-  /// Same errors as order_from_eye (order_for_direction).
+  /// order of traversal.h; the fragments it visits are exactly order_from_eye(eye)
+  /// (order_for_direction(d)). Same errors as order_from_eye (order_for_direction).
   void traverse_from_eye(const vec3d& eye, bsp_visitor& visitor, bool back_to_front = true) const;
-  void traverse_for_direction(const vec3d& d, bsp_visitor& visitor, bool back_to_front = true) const;
+  void traverse_for_direction(const vec3d& d, bsp_visitor& visitor,
+                              bool back_to_front = true) const;
 
   // For checks (tests): the tree's structure seen from one fragment. Walking the tree is
   // traverse_from_eye's job; this is the independent path the tests compare against.
@@ -189,7 +191,10 @@ public:
   /// For fragment i, each ancestor node's plane (plane_face = index of the input triangle in
   /// soup.triangles whose plane it is) and the side (+1 / -1) of it that fragment i lies on,
   /// root first. Empty for fragments at the root.
-  struct ancestor { std::uint32_t plane_face; int side; };
+  struct ancestor {
+    std::uint32_t plane_face;
+    int side;
+  };
   std::vector<ancestor> ancestors(std::size_t i) const;
 
   /// Saved trees (docs/tree-file.md): a versioned, checksummed binary file holding the input
@@ -208,7 +213,7 @@ public:
   /// True when `path` ends in .exbsp (any case) or is a readable file starting with the magic.
   static bool is_saved_tree(const std::string& path);
 
-private:
+ private:
   friend class bsp_access;
   explicit bsp(std::unique_ptr<bsp_impl> impl);
   std::unique_ptr<bsp_impl> impl_;

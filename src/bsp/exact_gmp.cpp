@@ -7,7 +7,8 @@ namespace exbsp {
 
 exact_triangle_mpq fragment_exact_mpq(const bsp& tree, std::size_t i) {
   exact_triangle_mpq out;
-  bsp_access::impl(tree).visit_exact(i, [&](int k, int axis, mpq_srcptr q) { mpq_set(out[k][axis].get_mpq_t(), q); });
+  bsp_access::impl(tree).visit_exact(
+      i, [&](int k, int axis, mpq_srcptr q) { mpq_set(out[k][axis].get_mpq_t(), q); });
   return out;
 }
 

@@ -9,7 +9,8 @@ namespace exbsp {
 
 std::string rational_to_string(mpq_srcptr q) {
   // mpq_get_str writes "p/q" or "p" for canonical values.
-  const std::size_t size = mpz_sizeinbase(mpq_numref(q), 10) + mpz_sizeinbase(mpq_denref(q), 10) + 3;
+  const std::size_t size =
+      mpz_sizeinbase(mpq_numref(q), 10) + mpz_sizeinbase(mpq_denref(q), 10) + 3;
   std::string out(size, '\0');
   mpq_get_str(&out[0], 10, q);
   out.resize(std::char_traits<char>::length(out.c_str()));

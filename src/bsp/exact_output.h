@@ -20,7 +20,8 @@ std::string rational_to_string(mpq_srcptr q);
 template <class VisitExact>
 std::array<std::array<std::string, 3>, 3> exact_text(VisitExact&& visit_exact) {
   std::array<std::array<std::string, 3>, 3> out;
-  visit_exact(exact_visitor([&](int k, int axis, mpq_srcptr q) { out[k][axis] = rational_to_string(q); }));
+  visit_exact(
+      exact_visitor([&](int k, int axis, mpq_srcptr q) { out[k][axis] = rational_to_string(q); }));
   return out;
 }
 

@@ -67,7 +67,8 @@ inline fast_plane make_fast_plane(const vec3d& a, const vec3d& b, const vec3d& c
 /// of the double point `point` (radius 0: x is exactly `point`): writes the double value v
 /// and a bound such that |f(x) - v| <= bound. Returns false when the magnitudes leave the
 /// range where the bound holds (the caller must then compute exactly).
-inline bool fast_eval(const fast_plane_core& p, const vec3d& point, double radius, double& v, double& bound) {
+inline bool fast_eval(const fast_plane_core& p, const vec3d& point, double radius, double& v,
+                      double& bound) {
   constexpr double u = 1.1102230246251565e-16;
   if (!p.valid) return false;
   // The plane's magnitudes were checked once (make_fast_plane). Here a difference q_k is exact
@@ -76,7 +77,8 @@ inline bool fast_eval(const fast_plane_core& p, const vec3d& point, double radiu
   // which is refused below.
   const double q0 = point[0] - p.a[0], q1 = point[1] - p.a[1], q2 = point[2] - p.a[2];
   v = p.n[0] * q0 + p.n[1] * q1 + p.n[2] * q2;
-  const double b = p.coef[0] * std::fabs(q0) + p.coef[1] * std::fabs(q1) + p.coef[2] * std::fabs(q2);
+  const double b =
+      p.coef[0] * std::fabs(q0) + p.coef[1] * std::fabs(q1) + p.coef[2] * std::fabs(q2);
   // A point known only to within `radius` moves f by at most |n| . (radius, radius, radius).
   bound = (b + radius * p.spread) * (1 + 8 * u) + 1e-290;  // products stay normal
   // Finite v means no sum or product overflowed; NaN fails both comparisons.

@@ -26,8 +26,10 @@ namespace detail {
 /// The point where [p,q] meets the plane through `a` with normal n (n = (b-a)x(c-a)),
 /// computed from p: p + fp / (fp - fq) (q - p).
 template <class K>
-typename K::Point_3 intersect_with_normal(const typename K::Point_3& a, const typename K::Vector_3& n,
-                                          const typename K::Point_3& p, const typename K::Point_3& q) {
+typename K::Point_3 intersect_with_normal(const typename K::Point_3& a,
+                                          const typename K::Vector_3& n,
+                                          const typename K::Point_3& p,
+                                          const typename K::Point_3& q) {
   if constexpr (kernel_traits<K>::direct_intersection) {
     return kernel_traits<K>::intersection(a, n, p, q);
   } else {
@@ -56,7 +58,8 @@ struct split_pieces {
 /// Precondition: classify_signs(s) == straddling (throws usage_error otherwise).
 template <class K>
 split_pieces<K> split_triangle(const std::array<typename K::Point_3, 3>& plane,
-                               const std::array<typename K::Point_3, 3>& t, const std::array<int, 3>& s) {
+                               const std::array<typename K::Point_3, 3>& t,
+                               const std::array<int, 3>& s) {
   if (classify_signs(s) != classification::straddling)
     throw usage_error("split_triangle: the triangle does not straddle the plane");
   const split_pattern pat = make_split_pattern(s);
@@ -75,7 +78,7 @@ split_pieces<K> split_triangle(const std::array<typename K::Point_3, 3>& plane,
 
 template <class K>
 class cgal_geometry {
-public:
+ public:
   using point = typename K::Point_3;
   using vector = typename K::Vector_3;
   using triangle = std::array<point, 3>;
@@ -86,9 +89,9 @@ public:
   /// the index of its source input triangle and its face id.
   struct fragment {
     triangle v;
-    std::array<vec3d, 3> d;     ///< double approximations of the vertices flagged in double_mask
-    std::array<double, 3> r;    ///< vertex k lies within r[k] (max norm) of d[k]; 0: exactly d[k]
-    std::uint8_t double_mask;   ///< bit k: d[k], r[k] are valid
+    std::array<vec3d, 3> d;    ///< double approximations of the vertices flagged in double_mask
+    std::array<double, 3> r;   ///< vertex k lies within r[k] (max norm) of d[k]; 0: exactly d[k]
+    std::uint8_t double_mask;  ///< bit k: d[k], r[k] are valid
     std::uint32_t source;
     std::uint32_t face;
   };
@@ -137,8 +140,8 @@ public:
   }
 
   /// Writes the pieces of f (straddling `plane` with signs s, pattern pat) to out[0..pieces).
-  void split(std::uint32_t plane, const fragment& f, const split_pattern& pat, std::array<fragment, 3>& out,
-             scratch& sc) const {
+  void split(std::uint32_t plane, const fragment& f, const split_pattern& pat,
+             std::array<fragment, 3>& out, scratch& sc) const {
     const triangle& pl = sources_[plane];
     if (sc.plane != plane || !sc.normal) {
       vector n = CGAL::cross_product(pl[1] - pl[0], pl[2] - pl[0]);
@@ -210,7 +213,8 @@ public:
     } else {
       (void)f;
       (void)visit;
-      throw usage_error("exact coordinates need an exact kernel (exact, epeck or gmpq), not " + to_string(id));
+      throw usage_error("exact coordinates need an exact kernel (exact, epeck or gmpq), not " +
+                        to_string(id));
     }
   }
   std::size_t points_memory() const { return 0; }
@@ -220,10 +224,10 @@ public:
   /// read_fragments reads them back into a geometry made from the same soup, in which
   /// `usable[i]` says whether add_source accepted triangle i; throws input_error through `in`.
   void write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments) const;
-  void read_fragments(tree_file::reader& in, const triangle_soup& soup, const std::vector<char>& usable,
-                      std::vector<fragment>& fragments) const;
+  void read_fragments(tree_file::reader& in, const triangle_soup& soup,
+                      const std::vector<char>& usable, std::vector<fragment>& fragments) const;
 
-private:
+ private:
   std::vector<triangle> sources_;
   std::vector<fast_plane> fast_;
 };

@@ -172,7 +172,9 @@ int exact_geometry::point_sign_slow(std::uint32_t plane, std::uint32_t x, int& b
     const auto& s = sources_[plane];
     if (x == s[0] || x == s[1] || x == s[2]) return 0;
     using E = CGAL::Epick;
-    const auto P = [&](std::uint32_t id) { return E::Point_3(at(id).c[0], at(id).c[1], at(id).c[2]); };
+    const auto P = [&](std::uint32_t id) {
+      return E::Point_3(at(id).c[0], at(id).c[1], at(id).c[2]);
+    };
     return static_cast<int>(E().orientation_3_object()(P(s[0]), P(s[1]), P(s[2]), P(x)));
   }
   if (pt.plane == plane) {
@@ -235,7 +237,8 @@ void exact_geometry::approximate(std::uint32_t id) {
   }
 }
 
-std::uint32_t exact_geometry::construct(std::uint32_t plane, std::uint32_t p, std::uint32_t q, scratch& sc) {
+std::uint32_t exact_geometry::construct(std::uint32_t plane, std::uint32_t p, std::uint32_t q,
+                                        scratch& sc) {
   if (sc.plane != plane) {
     sc.made.clear();
     sc.plane = plane;
@@ -256,9 +259,11 @@ std::uint32_t exact_geometry::construct(std::uint32_t plane, std::uint32_t p, st
 void exact_geometry::split(std::uint32_t plane, const fragment& f, const split_pattern& pat,
                            std::array<fragment, 3>& out, scratch& sc) {
   std::array<std::uint32_t, 5> ids{f.v[0], f.v[1], f.v[2], none, none};
-  for (int j = 0; j < pat.new_points; ++j) ids[3 + j] = construct(plane, f.v[pat.from[j]], f.v[pat.to[j]], sc);
+  for (int j = 0; j < pat.new_points; ++j)
+    ids[3 + j] = construct(plane, f.v[pat.from[j]], f.v[pat.to[j]], sc);
   for (int i = 0; i < pat.pieces; ++i)
-    out[i] = {{ids[pat.corner[i][0]], ids[pat.corner[i][1]], ids[pat.corner[i][2]]}, f.source, f.face};
+    out[i] = {
+        {ids[pat.corner[i][0]], ids[pat.corner[i][1]], ids[pat.corner[i][2]]}, f.source, f.face};
 }
 
 int exact_geometry::side_of_eye(std::uint32_t plane, const vec3d& eye) const {
@@ -285,7 +290,8 @@ int exact_geometry::side_of_direction(std::uint32_t plane, const vec3d& d) const
     }
   }
   const exact_plane& pl = plane_of(plane);
-  return -sign_of(pl.n[0] * mpq_class(d[0]) + pl.n[1] * mpq_class(d[1]) + pl.n[2] * mpq_class(d[2]));
+  return -sign_of(pl.n[0] * mpq_class(d[0]) + pl.n[1] * mpq_class(d[1]) +
+                  pl.n[2] * mpq_class(d[2]));
 }
 
 void exact_geometry::prepare_output(const std::vector<fragment>& fragments) const {

@@ -34,10 +34,10 @@ namespace exbsp {
 namespace tree_file {
 class writer;
 class reader;
-}
+}  // namespace tree_file
 
 class exact_geometry {
-public:
+ public:
   static constexpr kernel_id id = kernel_id::exact;
   static constexpr bool exact = true;
   static constexpr std::uint32_t none = ~0u;
@@ -67,8 +67,8 @@ public:
     int budget = 32;
     return point_sign(plane, f.v[k], budget);
   }
-  void split(std::uint32_t plane, const fragment& f, const split_pattern& pat, std::array<fragment, 3>& out,
-             scratch& sc);
+  void split(std::uint32_t plane, const fragment& f, const split_pattern& pat,
+             std::array<fragment, 3>& out, scratch& sc);
 
   int side_of_eye(std::uint32_t plane, const vec3d& eye) const;
   int side_of_direction(std::uint32_t plane, const vec3d& d) const;
@@ -89,8 +89,8 @@ public:
   /// crosses its plane strictly (so every exact value is well defined), and restores each
   /// point's certified approximation. Throws input_error through `in`.
   void write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments) const;
-  void read_fragments(tree_file::reader& in, const triangle_soup& soup, const std::vector<char>& usable,
-                      std::vector<fragment>& fragments);
+  void read_fragments(tree_file::reader& in, const triangle_soup& soup,
+                      const std::vector<char>& usable, std::vector<fragment>& fragments);
   /// Bytes held by the point table (for the memory benchmark).
   std::size_t points_memory() const;
 
@@ -100,7 +100,7 @@ public:
   };
   const counters& stats() const { return counters_; }
 
-private:
+ private:
   struct exact_value;
   struct exact_plane;
   struct point {
@@ -113,7 +113,9 @@ private:
   static constexpr std::uint32_t chunk_size = 1u << chunk_bits;
   static constexpr std::uint32_t block = 512;
 
-  const point& at(std::uint32_t id) const { return chunks_[id >> chunk_bits][id & (chunk_size - 1)]; }
+  const point& at(std::uint32_t id) const {
+    return chunks_[id >> chunk_bits][id & (chunk_size - 1)];
+  }
   point& at(std::uint32_t id) { return chunks_[id >> chunk_bits][id & (chunk_size - 1)]; }
   std::uint32_t allocate(scratch& sc);
   void claim_block(scratch& sc);
@@ -147,7 +149,8 @@ private:
   std::uint32_t claimed_ = 0;  ///< ids below this are claimed (guarded by claim_mutex_)
   std::uint32_t inputs_ = 0;
   mutable std::once_flag output_once_;
-  mutable std::vector<vec3d> rounded_;  ///< correctly rounded doubles per point, after prepare_output
+  mutable std::vector<vec3d>
+      rounded_;  ///< correctly rounded doubles per point, after prepare_output
   mutable counters counters_;
 };
 

@@ -11,7 +11,8 @@
 
 namespace exbsp {
 
-void exact_geometry::write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments) const {
+void exact_geometry::write_fragments(tree_file::writer& out,
+                                     const std::vector<fragment>& fragments) const {
   // The constructed points in use: the fragments' vertices and, transitively, the endpoints of
   // their segments. Endpoints have smaller ids (a point is made after them), so one pass
   // downwards closes the set. Unused slots of claimed blocks are left out.
@@ -43,16 +44,21 @@ void exact_geometry::write_fragments(tree_file::writer& out, const std::vector<f
   }
 }
 
-void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& soup, const std::vector<char>& usable,
+void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& soup,
+                                    const std::vector<char>& usable,
                                     std::vector<fragment>& fragments) {
   using tree_file::indexed;
   const std::uint32_t triangles = static_cast<std::uint32_t>(soup.triangles.size());
-  const auto check_plane = [&](std::size_t at, const std::string& field, std::uint32_t plane, const char* what) {
+  const auto check_plane = [&](std::size_t at, const std::string& field, std::uint32_t plane,
+                               const char* what) {
     if (plane >= triangles)
-      in.fail_at(at, field, std::string(what) + " " + std::to_string(plane) + " out of range (" +
-                                std::to_string(triangles) + " triangles)");
+      in.fail_at(at, field,
+                 std::string(what) + " " + std::to_string(plane) + " out of range (" +
+                     std::to_string(triangles) + " triangles)");
     if (!usable[plane])
-      in.fail_at(at, field, std::string(what) + " " + std::to_string(plane) + " is a degenerate triangle (no plane)");
+      in.fail_at(
+          at, field,
+          std::string(what) + " " + std::to_string(plane) + " is a degenerate triangle (no plane)");
   };
 
   // Constructed points, each checked and approximated after its endpoints.
@@ -67,7 +73,8 @@ void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& 
     const std::uint32_t p = in.u32("points"), q = in.u32("points"), plane = in.u32("points");
     const std::string field = indexed("points", id);
     if (p >= id || q >= id)
-      in.fail_at(where, field, "endpoint " + std::to_string(std::max(p, q)) + " is not an earlier point");
+      in.fail_at(where, field,
+                 "endpoint " + std::to_string(std::max(p, q)) + " is not an earlier point");
     check_plane(where, field, plane, "plane");
     point& x = at(id);
     x.p = p;
@@ -95,8 +102,9 @@ void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& 
     f.source = in.u32("fragments");
     for (std::uint32_t id : f.v)
       if (id >= total)
-        in.fail_at(at, indexed("fragments", i),
-                   "point " + std::to_string(id) + " out of range (" + std::to_string(total) + " points)");
+        in.fail_at(
+            at, indexed("fragments", i),
+            "point " + std::to_string(id) + " out of range (" + std::to_string(total) + " points)");
     check_plane(at, indexed("fragments", i), f.source, "source triangle");
     f.face = soup.triangles[f.source].face;
   }

@@ -14,10 +14,14 @@ namespace exbsp {
 
 inline mpq_srcptr mpq_of(const mpq_class& q) { return q.get_mpq_t(); }
 template <class Number>
-mpq_srcptr mpq_of(const Number& q) { return q.backend().data(); }
+mpq_srcptr mpq_of(const Number& q) {
+  return q.backend().data();
+}
 inline mpq_ptr mutable_mpq_of(mpq_class& q) { return q.get_mpq_t(); }
 template <class Number>
-mpq_ptr mutable_mpq_of(Number& q) { return q.backend().data(); }
+mpq_ptr mutable_mpq_of(Number& q) {
+  return q.backend().data();
+}
 
 using epeck_kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 
@@ -48,8 +52,10 @@ struct kernel_traits<epeck_kernel> : kernel_traits_defaults<epeck_kernel> {
   /// wrapped as a one-level lazy point: the same exact point as p + fp/(fp - fq) (q - p)
   /// without a dozen lazy nodes evaluated (and their intervals refreshed) one by one.
   static constexpr bool direct_intersection = true;
-  static epeck_kernel::Point_3 intersection(const epeck_kernel::Point_3& a, const epeck_kernel::Vector_3& n,
-                                            const epeck_kernel::Point_3& p, const epeck_kernel::Point_3& q) {
+  static epeck_kernel::Point_3 intersection(const epeck_kernel::Point_3& a,
+                                            const epeck_kernel::Vector_3& n,
+                                            const epeck_kernel::Point_3& p,
+                                            const epeck_kernel::Point_3& q) {
     using EK = epeck_kernel::Exact_kernel;
     using ET = EK::FT;
     const EK::Point_3& ea = CGAL::exact(a);

@@ -27,7 +27,9 @@ struct kernel_traits_defaults {
   /// Whether intersection() replaces the generic formula.
   static constexpr bool direct_intersection = false;
   template <class... A>
-  static typename K::Point_3 intersection(const A&...) { return {}; }
+  static typename K::Point_3 intersection(const A&...) {
+    return {};
+  }
   static mpq_srcptr rational(const typename K::FT&) { return nullptr; }
   /// The FT of a rational (exact kernels; saved trees).
   static typename K::FT from_rational(mpq_srcptr) { return {}; }

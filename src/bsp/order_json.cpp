@@ -5,14 +5,15 @@
 
 namespace exbsp {
 
-std::string order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const vec3d& where, bool use_eye) {
+std::string order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const vec3d& where,
+                       bool use_eye) {
   const bool exact = is_exact(tree.kernel());
   std::string out;
   out.reserve(order.size() * (exact ? 400 : 200) + 64);
   out += use_eye ? "{\"eye\": " : "{\"direction\": ";
   json_text::append_point(out, where);
-  out += ",\n \"kernel\": \"" + to_string(tree.kernel()) + "\", \"heuristic\": \"" + tree.stats().heuristic +
-         "\",\n \"fragments\": [";
+  out += ",\n \"kernel\": \"" + to_string(tree.kernel()) + "\", \"heuristic\": \"" +
+         tree.stats().heuristic + "\",\n \"fragments\": [";
   for (std::size_t n = 0; n < order.size(); ++n) {
     const fragment_d f = tree.fragment(order[n]);
     out += n ? ",\n  {\"face\": " : "\n  {\"face\": ";

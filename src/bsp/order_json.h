@@ -12,6 +12,7 @@ namespace exbsp {
 
 /// The order document of `tree` for the fragment indices `order` (back to front), seen from
 /// the eye point `where` (use_eye) or along the direction of projection `where`.
-std::string order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const vec3d& where, bool use_eye);
+std::string order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const vec3d& where,
+                       bool use_eye);
 
 }  // namespace exbsp

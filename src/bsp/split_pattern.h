@@ -31,9 +31,9 @@ struct split_pattern {
   int new_points = 0;                  ///< 1 (a vertex on the plane) or 2
   std::array<std::uint8_t, 2> from{};  ///< new point j lies on [t[from[j]], t[to[j]]]
   std::array<std::uint8_t, 2> to{};
-  int pieces = 0;                      ///< 2 or 3
+  int pieces = 0;                                       ///< 2 or 3
   std::array<std::array<std::uint8_t, 3>, 3> corner{};  ///< corner codes per piece
-  std::array<int, 3> side{};           ///< +1 / -1 per piece
+  std::array<int, 3> side{};                            ///< +1 / -1 per piece
 };
 
 /// The pattern for a straddling triangle with vertex signs s.

@@ -30,7 +30,7 @@ struct bsp_node {
   std::uint32_t first_fragment = 0, fragment_count = 0;
   std::int32_t negative = -1, positive = -1;  ///< child node ids; -1: an empty cell on that side
   std::int32_t parent = -1;                   ///< -1 for the root
-  int side_in_parent = 0;                     ///< the side (+1 / -1) of the parent it lies on; root: 0
+  int side_in_parent = 0;  ///< the side (+1 / -1) of the parent it lies on; root: 0
 };
 
 /// Exact sign (+1, 0, -1) of h_N(p) = orientation(N.plane, p) for any finite double point p,
@@ -43,7 +43,7 @@ double plane_value(const bsp_node& n, const vec3d& p);
 
 /// The callbacks of a traversal (order above); each default does nothing.
 class bsp_visitor {
-public:
+ public:
   virtual ~bsp_visitor() = default;
   /// Node n is reached, before its sides and fragments; eye_side = s (+1, 0 or -1).
   virtual void enter(const bsp_node& n, int eye_side) { (void)n, (void)eye_side; }

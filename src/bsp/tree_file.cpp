@@ -24,15 +24,21 @@ namespace tree_file {
 namespace {
 
 /// The file's kernel codes: stable numbers, independent of kernel_id's order.
-constexpr std::uint32_t code_exact = 1, code_epeck = 2, code_gmpq = 3, code_epick = 4, code_double = 5;
+constexpr std::uint32_t code_exact = 1, code_epeck = 2, code_gmpq = 3, code_epick = 4,
+                        code_double = 5;
 
 std::uint32_t kernel_code(kernel_id k) {
   switch (k) {
-    case kernel_id::exact: return code_exact;
-    case kernel_id::epeck: return code_epeck;
-    case kernel_id::gmpq: return code_gmpq;
-    case kernel_id::epick: return code_epick;
-    case kernel_id::double_: return code_double;
+    case kernel_id::exact:
+      return code_exact;
+    case kernel_id::epeck:
+      return code_epeck;
+    case kernel_id::gmpq:
+      return code_gmpq;
+    case kernel_id::epick:
+      return code_epick;
+    case kernel_id::double_:
+      return code_double;
   }
   throw usage_error("save: unknown kernel");
 }
@@ -46,13 +52,15 @@ std::uint32_t crc32_of(std::string_view bytes) {
 
 std::uint32_t read_u32_at(std::string_view bytes, std::size_t at) {
   std::uint32_t v = 0;
-  for (int i = 0; i < 4; ++i) v |= std::uint32_t{static_cast<unsigned char>(bytes[at + i])} << (8 * i);
+  for (int i = 0; i < 4; ++i)
+    v |= std::uint32_t{static_cast<unsigned char>(bytes[at + i])} << (8 * i);
   return v;
 }
 
 std::uint64_t read_u64_at(std::string_view bytes, std::size_t at) {
   std::uint64_t v = 0;
-  for (int i = 0; i < 8; ++i) v |= std::uint64_t{static_cast<unsigned char>(bytes[at + i])} << (8 * i);
+  for (int i = 0; i < 8; ++i)
+    v |= std::uint64_t{static_cast<unsigned char>(bytes[at + i])} << (8 * i);
   return v;
 }
 
@@ -70,7 +78,9 @@ const std::pair<std::size_t build_stats::*, const char*> stats_counts[] = {
 bool plain_name(const std::string& s) {
   if (s.empty()) return false;
   for (char c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.' && c != '+') return false;
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.' &&
+        c != '+')
+      return false;
   return true;
 }
 
@@ -87,22 +97,26 @@ common_part read_common(reader& in) {
   const std::size_t heuristic_at = in.offset();
   s.heuristic = in.text("stats.heuristic", 64);
   if (!plain_name(s.heuristic))
-    in.fail_at(heuristic_at, "stats.heuristic", "not a heuristic name (letters, digits, '-', '_', '.', '+')");
+    in.fail_at(heuristic_at, "stats.heuristic",
+               "not a heuristic name (letters, digits, '-', '_', '.', '+')");
   c.sampled_candidates = in.u32("options.sampled_candidates");
   c.sampled_samples = in.u32("options.sampled_samples");
   c.sampled_split_weight = in.u32("options.sampled_split_weight");
 
   triangle_soup& soup = c.soup;
   soup.face_count = in.u32("soup.face_count");
-  const std::size_t vertices = in.count("soup.vertices", 24, std::numeric_limits<std::uint32_t>::max());
+  const std::size_t vertices =
+      in.count("soup.vertices", 24, std::numeric_limits<std::uint32_t>::max());
   soup.vertices.resize(vertices);
   for (std::size_t i = 0; i < vertices; ++i) {
     const std::size_t at = in.offset();
     for (int k = 0; k < 3; ++k) soup.vertices[i][k] = in.f64("soup.vertices");
     for (int k = 0; k < 3; ++k)
-      if (!std::isfinite(soup.vertices[i][k])) in.fail_at(at, indexed("soup.vertices", i), "a coordinate is not finite");
+      if (!std::isfinite(soup.vertices[i][k]))
+        in.fail_at(at, indexed("soup.vertices", i), "a coordinate is not finite");
   }
-  const std::size_t triangles = in.count("soup.triangles", 16, std::numeric_limits<std::uint32_t>::max());
+  const std::size_t triangles =
+      in.count("soup.triangles", 16, std::numeric_limits<std::uint32_t>::max());
   soup.triangles.resize(triangles);
   for (std::size_t i = 0; i < triangles; ++i) {
     const std::size_t at = in.offset();
@@ -112,7 +126,8 @@ common_part read_common(reader& in) {
     for (int k = 0; k < 3; ++k)
       if (t.v[k] >= vertices)
         in.fail_at(at, indexed("soup.triangles", i),
-                   "vertex " + std::to_string(t.v[k]) + " out of range (" + std::to_string(vertices) + " vertices)");
+                   "vertex " + std::to_string(t.v[k]) + " out of range (" +
+                       std::to_string(vertices) + " vertices)");
   }
   return c;
 }
@@ -132,9 +147,11 @@ void writer::text(const std::string& s) {
 
 std::uint64_t reader::get(const char* field, int n) {
   if (remaining() < static_cast<std::size_t>(n))
-    fail(field, "the data ends here (" + std::to_string(n) + " bytes needed, " + std::to_string(remaining()) + " left)");
+    fail(field, "the data ends here (" + std::to_string(n) + " bytes needed, " +
+                    std::to_string(remaining()) + " left)");
   std::uint64_t v = 0;
-  for (int i = 0; i < n; ++i) v |= std::uint64_t{static_cast<unsigned char>(data_[pos_ + i])} << (8 * i);
+  for (int i = 0; i < n; ++i)
+    v |= std::uint64_t{static_cast<unsigned char>(data_[pos_ + i])} << (8 * i);
   pos_ += static_cast<std::size_t>(n);
   return v;
 }
@@ -150,7 +167,9 @@ std::string reader::text(const char* field, std::size_t max_length) {
   const std::size_t at = offset();
   const std::uint32_t n = u32(field);
   if (n > max_length || n > remaining())
-    fail_at(at, field, "length " + std::to_string(n) + " exceeds " + std::to_string(std::min(max_length, remaining())));
+    fail_at(at, field,
+            "length " + std::to_string(n) + " exceeds " +
+                std::to_string(std::min(max_length, remaining())));
   return std::string(bytes(field, n));
 }
 
@@ -164,11 +183,12 @@ std::string_view reader::bytes(const char* field, std::size_t n) {
 std::size_t reader::count(const char* field, std::size_t element_bytes, std::uint64_t max) {
   const std::size_t at = offset();
   const std::uint64_t n = u64(field);
-  if (n > max) fail_at(at, field, "count " + std::to_string(n) + " exceeds the limit " + std::to_string(max));
+  if (n > max)
+    fail_at(at, field, "count " + std::to_string(n) + " exceeds the limit " + std::to_string(max));
   if (n > remaining() / element_bytes)
     fail_at(at, field,
-            "count " + std::to_string(n) + " needs at least " + std::to_string(element_bytes) + " bytes each, only " +
-                std::to_string(remaining()) + " bytes are left");
+            "count " + std::to_string(n) + " needs at least " + std::to_string(element_bytes) +
+                " bytes each, only " + std::to_string(remaining()) + " bytes are left");
   return static_cast<std::size_t>(n);
 }
 
@@ -176,7 +196,9 @@ void reader::fail_at(std::size_t offset, const std::string& field, const std::st
   throw input_error(name_, 0, "byte " + std::to_string(offset) + ": " + field + ": " + what);
 }
 
-std::string indexed(const char* field, std::size_t i) { return std::string(field) + "[" + std::to_string(i) + "]"; }
+std::string indexed(const char* field, std::size_t i) {
+  return std::string(field) + "[" + std::to_string(i) + "]";
+}
 
 void write_common(writer& out, const build_stats& s, const common_part& common) {
   for (const auto& [field, name] : stats_counts) out.u64(s.*field);
@@ -236,13 +258,15 @@ void write_rational(writer& out, mpq_srcptr q) {
 void read_rational(reader& in, const char* field, mpq_ptr out) {
   const std::size_t at = in.offset();
   const bool negative = read_magnitude(in, field, mpq_numref(out));
-  if (read_magnitude(in, field, mpq_denref(out))) in.fail_at(at, field, "not canonical: a negative denominator");
+  if (read_magnitude(in, field, mpq_denref(out)))
+    in.fail_at(at, field, "not canonical: a negative denominator");
   if (mpz_sgn(mpq_denref(out)) == 0) in.fail_at(at, field, "a zero denominator");
   if (negative) mpz_neg(mpq_numref(out), mpq_numref(out));
   mpz_t g;
   mpz_init(g);
   mpz_gcd(g, mpq_numref(out), mpq_denref(out));
-  const bool reduced = mpz_cmp_ui(g, 1) == 0 || (mpz_sgn(mpq_numref(out)) == 0 && mpz_cmp_ui(mpq_denref(out), 1) == 0);
+  const bool reduced = mpz_cmp_ui(g, 1) == 0 ||
+                       (mpz_sgn(mpq_numref(out)) == 0 && mpz_cmp_ui(mpq_denref(out), 1) == 0);
   mpz_clear(g);
   if (!reduced) {
     mpz_set_ui(mpq_numref(out), 0);  // leave a valid value behind
@@ -273,7 +297,9 @@ bsp bsp::deserialize(std::string_view bytes, const std::string& name) {
   const auto fail = [&](const std::string& what) { throw input_error(name, 0, what); };
   if (bytes.size() < magic_size || std::memcmp(bytes.data(), magic, magic_size) != 0) {
     if (bytes.size() >= 5 && std::memcmp(bytes.data(), magic, 5) == 0)
-      fail("byte 5: magic: the signature after \"EXBSP\" is damaged (was the file transferred in text mode?)");
+      fail(
+          "byte 5: magic: the signature after \"EXBSP\" is damaged (was the file transferred in "
+          "text mode?)");
     fail("not an exbsp saved tree (byte 0: no \"EXBSP\" signature)");
   }
   if (bytes.size() < header_size + trailer_size)
@@ -281,24 +307,26 @@ bsp bsp::deserialize(std::string_view bytes, const std::string& name) {
          std::to_string(header_size + trailer_size));
   const std::uint32_t version = read_u32_at(bytes, 8);
   if (version != format_version)
-    fail("byte 8: version: format version " + std::to_string(version) + " is not supported (this exbsp reads version " +
-         std::to_string(format_version) + ")");
+    fail("byte 8: version: format version " + std::to_string(version) +
+         " is not supported (this exbsp reads version " + std::to_string(format_version) + ")");
   const std::uint32_t code = read_u32_at(bytes, 12);
-  if (code < code_exact || code > code_double) fail("byte 12: kernel: unknown kernel code " + std::to_string(code));
+  if (code < code_exact || code > code_double)
+    fail("byte 12: kernel: unknown kernel code " + std::to_string(code));
   const std::uint64_t body = read_u64_at(bytes, 16);
   const std::uint64_t actual = bytes.size() - header_size - trailer_size;
   if (body > actual)
     fail("truncated: the header announces " + std::to_string(body + header_size + trailer_size) +
          " bytes, the file has " + std::to_string(bytes.size()));
   if (body < actual)
-    fail("byte " + std::to_string(body + header_size + trailer_size) + ": " + std::to_string(actual - body) +
-         " bytes of trailing data after the checksum");
+    fail("byte " + std::to_string(body + header_size + trailer_size) + ": " +
+         std::to_string(actual - body) + " bytes of trailing data after the checksum");
   const std::size_t crc_at = bytes.size() - trailer_size;
   const std::uint32_t stored = read_u32_at(bytes, crc_at);
   const std::uint32_t computed = crc32_of(bytes.substr(0, crc_at));
   if (stored != computed) {
     char text[160];
-    std::snprintf(text, sizeof text, "byte %zu: checksum: CRC-32 is %08x, the data gives %08x: the file is corrupted",
+    std::snprintf(text, sizeof text,
+                  "byte %zu: checksum: CRC-32 is %08x, the data gives %08x: the file is corrupted",
                   crc_at, static_cast<unsigned>(stored), static_cast<unsigned>(computed));
     fail(text);
   }
@@ -306,12 +334,23 @@ bsp bsp::deserialize(std::string_view bytes, const std::string& name) {
   common_part common = read_common(in);
   std::unique_ptr<bsp_impl> impl;
   switch (code) {
-    case code_exact: impl = load_exact(in, std::move(common)); break;
-    case code_epeck: impl = load_epeck(in, std::move(common)); break;
-    case code_gmpq: impl = load_gmpq(in, std::move(common)); break;
-    case code_epick: impl = load_epick(in, std::move(common)); break;
-    case code_double: impl = load_double(in, std::move(common)); break;
-    default: break;  // checked above
+    case code_exact:
+      impl = load_exact(in, std::move(common));
+      break;
+    case code_epeck:
+      impl = load_epeck(in, std::move(common));
+      break;
+    case code_gmpq:
+      impl = load_gmpq(in, std::move(common));
+      break;
+    case code_epick:
+      impl = load_epick(in, std::move(common));
+      break;
+    case code_double:
+      impl = load_double(in, std::move(common));
+      break;
+    default:
+      break;  // checked above
   }
   if (in.remaining()) in.fail("end", std::to_string(in.remaining()) + " bytes after the last node");
   return bsp(std::move(impl));
@@ -325,7 +364,8 @@ bool bsp::is_saved_tree(const std::string& path) {
   constexpr std::string_view extension = ".exbsp";
   if (path.size() >= extension.size()) {
     std::string tail = path.substr(path.size() - extension.size());
-    std::transform(tail.begin(), tail.end(), tail.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(tail.begin(), tail.end(), tail.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     if (tail == extension) return true;
   }
   std::error_code error;

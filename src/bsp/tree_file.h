@@ -34,7 +34,7 @@ inline constexpr std::size_t trailer_size = 4;
 
 /// Appends little-endian fixed-width fields to a byte string.
 class writer {
-public:
+ public:
   void u8(std::uint8_t v) { out_.push_back(static_cast<char>(v)); }
   void u32(std::uint32_t v) { put(v, 4); }
   void i32(std::int32_t v) { put(static_cast<std::uint32_t>(v), 4); }
@@ -46,7 +46,7 @@ public:
   void bytes(const void* data, std::size_t n) { out_.append(static_cast<const char*>(data), n); }
   std::string& data() { return out_; }
 
-private:
+ private:
   void put(std::uint64_t v, int n) {
     for (int i = 0; i < n; ++i) out_.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
   }
@@ -56,13 +56,15 @@ private:
 /// Reads fields from a tree file's bytes. Every read checks the remaining size; every problem
 /// throws input_error "NAME: byte OFFSET: FIELD: what" (OFFSET from the start of the file).
 class reader {
-public:
+ public:
   reader(std::string_view data, std::string name, std::size_t base_offset = 0)
       : data_(data), name_(std::move(name)), base_(base_offset) {}
 
   std::uint8_t u8(const char* field) { return static_cast<std::uint8_t>(get(field, 1)); }
   std::uint32_t u32(const char* field) { return static_cast<std::uint32_t>(get(field, 4)); }
-  std::int32_t i32(const char* field) { return static_cast<std::int32_t>(static_cast<std::uint32_t>(get(field, 4))); }
+  std::int32_t i32(const char* field) {
+    return static_cast<std::int32_t>(static_cast<std::uint32_t>(get(field, 4)));
+  }
   std::uint64_t u64(const char* field) { return get(field, 8); }
   double f64(const char* field);
   /// A u32-length string of at most max_length bytes.
@@ -78,11 +80,14 @@ public:
   std::size_t remaining() const { return data_.size() - pos_; }
   const std::string& name() const { return name_; }
   /// Throws input_error at the current offset.
-  [[noreturn]] void fail(const std::string& field, const std::string& what) const { fail_at(offset(), field, what); }
+  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+    fail_at(offset(), field, what);
+  }
   /// Throws input_error at `offset` (from the start of the file).
-  [[noreturn]] void fail_at(std::size_t offset, const std::string& field, const std::string& what) const;
+  [[noreturn]] void fail_at(std::size_t offset, const std::string& field,
+                            const std::string& what) const;
 
-private:
+ private:
   std::uint64_t get(const char* field, int n);
   std::string_view data_;
   std::string name_;

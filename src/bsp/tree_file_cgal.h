@@ -16,7 +16,8 @@
 namespace exbsp {
 
 template <class K>
-void cgal_geometry<K>::write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments) const {
+void cgal_geometry<K>::write_fragments(tree_file::writer& out,
+                                       const std::vector<fragment>& fragments) const {
   out.u64(fragments.size());
   for (const fragment& f : fragments) {
     out.u32(f.source);
@@ -31,11 +32,13 @@ void cgal_geometry<K>::write_fragments(tree_file::writer& out, const std::vector
 }
 
 template <class K>
-void cgal_geometry<K>::read_fragments(tree_file::reader& in, const triangle_soup& soup, const std::vector<char>& usable,
+void cgal_geometry<K>::read_fragments(tree_file::reader& in, const triangle_soup& soup,
+                                      const std::vector<char>& usable,
                                       std::vector<fragment>& fragments) const {
   // Smallest record: the source and nine coordinates of 8 bytes (a double, or a rational's
   // two length words).
-  const std::size_t count = in.count("fragments", 4 + 9 * 8, std::numeric_limits<std::uint32_t>::max());
+  const std::size_t count =
+      in.count("fragments", 4 + 9 * 8, std::numeric_limits<std::uint32_t>::max());
   fragments.resize(count);
   mpq_t q;
   mpq_init(q);
@@ -45,8 +48,9 @@ void cgal_geometry<K>::read_fragments(tree_file::reader& in, const triangle_soup
       fragment& f = fragments[i];
       f.source = in.u32("fragments");
       if (f.source >= soup.triangles.size() || !usable[f.source])
-        in.fail_at(at, tree_file::indexed("fragments", i),
-                   "source " + std::to_string(f.source) + " is not a non-degenerate input triangle");
+        in.fail_at(
+            at, tree_file::indexed("fragments", i),
+            "source " + std::to_string(f.source) + " is not a non-degenerate input triangle");
       f.face = soup.triangles[f.source].face;
       f.double_mask = 0;  // the build-time filter data is not saved; side tests take K's predicate
       f.d = {};

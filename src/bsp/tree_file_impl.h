@@ -54,7 +54,8 @@ basic_bsp_tree<G>::basic_bsp_tree(const tree_file::common_part& common, tree_fil
 
   const std::size_t count = in.count("nodes", 16, fragment_count);
   if ((count == 0) != (fragment_count == 0))
-    in.fail("nodes", std::to_string(count) + " nodes for " + std::to_string(fragment_count) + " fragments");
+    in.fail("nodes",
+            std::to_string(count) + " nodes for " + std::to_string(fragment_count) + " fragments");
   nodes_.resize(count);  // parent -1, depth 1 until set
   std::size_t first = 0;
   for (std::size_t i = 0; i < count; ++i) {
@@ -66,37 +67,46 @@ basic_bsp_tree<G>::basic_bsp_tree(const tree_file::common_part& common, tree_fil
     nd.negative = in.i32("nodes");
     nd.positive = in.i32("nodes");
     if (nd.plane_source >= soup.triangles.size() || !usable[nd.plane_source])
-      in.fail_at(at, field, "plane " + std::to_string(nd.plane_source) + " is not a non-degenerate input triangle");
+      in.fail_at(
+          at, field,
+          "plane " + std::to_string(nd.plane_source) + " is not a non-degenerate input triangle");
     if (nd.count == 0 || nd.count > fragment_count - first)
-      in.fail_at(at, field, "fragment count " + std::to_string(nd.count) + " (" +
-                                std::to_string(fragment_count - first) + " fragments left)");
+      in.fail_at(at, field,
+                 "fragment count " + std::to_string(nd.count) + " (" +
+                     std::to_string(fragment_count - first) + " fragments left)");
     nd.first = static_cast<std::uint32_t>(first);
     first += nd.count;
     bool has_splitter = false;
-    for (std::size_t k = nd.first; k < first && !has_splitter; ++k) has_splitter = fragments_[k].source == nd.plane_source;
+    for (std::size_t k = nd.first; k < first && !has_splitter; ++k)
+      has_splitter = fragments_[k].source == nd.plane_source;
     if (!has_splitter)
-      in.fail_at(at, field, "no fragment of the node lies in triangle " + std::to_string(nd.plane_source));
+      in.fail_at(at, field,
+                 "no fragment of the node lies in triangle " + std::to_string(nd.plane_source));
     if (i > 0 && nd.parent < 0) in.fail_at(at, field, "not a child of an earlier node");
     nd.depth = nd.parent < 0 ? 1 : nodes_[nd.parent].depth + 1;
-    for (const auto& [child, side] : {std::pair<std::int32_t, int>{nd.negative, -1}, {nd.positive, +1}}) {
+    for (const auto& [child, side] :
+         {std::pair<std::int32_t, int>{nd.negative, -1}, {nd.positive, +1}}) {
       if (child == -1) continue;
       if (child <= static_cast<std::int64_t>(i) || static_cast<std::size_t>(child) >= count)
         in.fail_at(at, field, "child " + std::to_string(child) + " is neither -1 nor a later node");
       node& c = nodes_[child];
-      if (c.parent >= 0) in.fail_at(at, field, "node " + std::to_string(child) + " has two parents");
+      if (c.parent >= 0)
+        in.fail_at(at, field, "node " + std::to_string(child) + " has two parents");
       c.parent = static_cast<std::int32_t>(i);
       c.side_in_parent = side;
     }
   }
   if (first != fragment_count)
-    in.fail("nodes", "the nodes hold " + std::to_string(first) + " of " + std::to_string(fragment_count) + " fragments");
+    in.fail("nodes", "the nodes hold " + std::to_string(first) + " of " +
+                         std::to_string(fragment_count) + " fragments");
   std::size_t depth = 0;
   for (const node& nd : nodes_) depth = std::max<std::size_t>(depth, nd.depth);
 
   // The stats must describe this tree.
   const auto check = [&](const char* field, std::size_t stored, std::size_t actual) {
     if (stored != actual)
-      in.fail_at(common.stats_offset, field, std::to_string(stored) + " but the tree has " + std::to_string(actual));
+      in.fail_at(common.stats_offset, field,
+                 std::to_string(stored) + " but the tree has " + std::to_string(actual));
   };
   check("stats.input_triangles", common.stats.input_triangles, soup.triangles.size());
   check("stats.degenerate_input", common.stats.degenerate_input, degenerate);
@@ -105,10 +115,11 @@ basic_bsp_tree<G>::basic_bsp_tree(const tree_file::common_part& common, tree_fil
   check("stats.depth", common.stats.depth, depth);
   // Each split replaces one fragment by two or three.
   const std::size_t inputs = soup.triangles.size() - degenerate, splits = common.stats.splits;
-  if (fragment_count < inputs || splits > fragment_count - inputs || 2 * splits < fragment_count - inputs)
+  if (fragment_count < inputs || splits > fragment_count - inputs ||
+      2 * splits < fragment_count - inputs)
     in.fail_at(common.stats_offset, "stats.splits",
-               std::to_string(splits) + " splits cannot turn " + std::to_string(inputs) + " triangles into " +
-                   std::to_string(fragment_count) + " fragments");
+               std::to_string(splits) + " splits cannot turn " + std::to_string(inputs) +
+                   " triangles into " + std::to_string(fragment_count) + " fragments");
   stats_.depth = depth;
 }
 

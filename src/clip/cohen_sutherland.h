@@ -23,8 +23,16 @@ namespace exbsp::clip {
 
 /// Outcode bits (see the notation above). left/right/bottom/top name the 2D bits.
 enum outcode_bit : unsigned {
-  x_below = 1u, x_above = 2u, y_below = 4u, y_above = 8u, z_below = 16u, z_above = 32u,
-  left = x_below, right = x_above, bottom = y_below, top = y_above
+  x_below = 1u,
+  x_above = 2u,
+  y_below = 4u,
+  y_above = 8u,
+  z_below = 16u,
+  z_above = 32u,
+  left = x_below,
+  right = x_above,
+  bottom = y_below,
+  top = y_above
 };
 
 /// 4-bit outcode of p against the window. No checks: NaN compares as inside.

@@ -29,9 +29,12 @@ std::vector<half_plane2> convex_polygon_half_planes(const std::vector<vec2>& pol
     if (pts.empty() || pts.back() != q) pts.push_back(q);
   }
   while (pts.size() > 1 && pts.back() == pts.front()) pts.pop_back();
-  if (pts.size() < 3) throw usage_error(std::string(function) + ": a convex polygon needs at least 3 distinct vertices");
+  if (pts.size() < 3)
+    throw usage_error(std::string(function) +
+                      ": a convex polygon needs at least 3 distinct vertices");
   const CGAL::Orientation o = CGAL::orientation_2(pts.begin(), pts.end(), kernel());
-  if (o == CGAL::COLLINEAR) throw usage_error(std::string(function) + ": the polygon has zero area");
+  if (o == CGAL::COLLINEAR)
+    throw usage_error(std::string(function) + ": the polygon has zero area");
   if (!CGAL::is_convex_2(pts.begin(), pts.end(), kernel()))
     throw usage_error(std::string(function) + ": the polygon is not convex");
   // is_convex_2 accepts polygons that wind around more than once; the turning total rules them out.
@@ -43,7 +46,8 @@ std::vector<half_plane2> convex_polygon_half_planes(const std::vector<vec2>& pol
     const double ux = b.x() - a.x(), uy = b.y() - a.y(), vx = c.x() - b.x(), vy = c.y() - b.y();
     turning += std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
   }
-  if (std::fabs(turning) > 2 * M_PI + 1e-6) throw usage_error(std::string(function) + ": the polygon winds more than once");
+  if (std::fabs(turning) > 2 * M_PI + 1e-6)
+    throw usage_error(std::string(function) + ": the polygon winds more than once");
   const double sign = o == CGAL::COUNTERCLOCKWISE ? 1.0 : -1.0;
   std::vector<half_plane2> out;
   for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -63,7 +67,8 @@ std::vector<half_space3> convex_hull_half_spaces(const std::vector<vec3>& points
     detail::require_finite(p, function, "point");
     pts.emplace_back(p[0], p[1], p[2]);
   }
-  if (pts.size() < 4) throw usage_error(std::string(function) + ": a polyhedron needs at least 4 points");
+  if (pts.size() < 4)
+    throw usage_error(std::string(function) + ": a polyhedron needs at least 4 points");
   // The hull is 3D iff some four points are not coplanar.
   bool solid = false;
   {
@@ -74,27 +79,32 @@ std::vector<half_space3> convex_hull_half_spaces(const std::vector<vec3>& points
     for (std::size_t k = j + 1; k < pts.size() && !solid; ++k)
       solid = CGAL::orientation(pts[0], pts[i], pts[j], pts[k]) != CGAL::COPLANAR;
   }
-  if (!solid) throw usage_error(std::string(function) + ": the points do not span a solid (all coplanar)");
+  if (!solid)
+    throw usage_error(std::string(function) + ": the points do not span a solid (all coplanar)");
   CGAL::Surface_mesh<kernel::Point_3> hull;
   CGAL::convex_hull_3(pts.begin(), pts.end(), hull);
   std::vector<half_space3> out;
   for (const auto f : hull.faces()) {
     std::vector<kernel::Point_3> v;
-    for (const auto vd : CGAL::vertices_around_face(hull.halfedge(f), hull)) v.push_back(hull.point(vd));
+    for (const auto vd : CGAL::vertices_around_face(hull.halfedge(f), hull))
+      v.push_back(hull.point(vd));
     // Faces are counter-clockwise seen from outside: (b - a) x (c - a) points out.
     const kernel::Vector_3 n = -CGAL::cross_product(v[1] - v[0], v[2] - v[0]);
-    out.push_back({{n.x(), n.y(), n.z()}, -(n.x() * v[0].x() + n.y() * v[0].y() + n.z() * v[0].z())});
+    out.push_back(
+        {{n.x(), n.y(), n.z()}, -(n.x() * v[0].x() + n.y() * v[0].y() + n.z() * v[0].z())});
   }
   return out;
 }
 
-std::vector<half_space3> convex_polyhedron_half_spaces(const std::vector<std::vector<vec3>>& faces) {
+std::vector<half_space3> convex_polyhedron_half_spaces(
+    const std::vector<std::vector<vec3>>& faces) {
   const char* function = "convex_polyhedron_half_spaces";
   vec3 centroid{0, 0, 0};
   std::size_t count = 0;
   double size = 0;
   for (const auto& face : faces) {
-    if (face.size() < 3) throw usage_error(std::string(function) + ": a face needs at least 3 vertices");
+    if (face.size() < 3)
+      throw usage_error(std::string(function) + ": a face needs at least 3 vertices");
     for (const vec3& p : face) {
       detail::require_finite(p, function, "face vertex");
       for (int k = 0; k < 3; ++k) {
@@ -104,7 +114,8 @@ std::vector<half_space3> convex_polyhedron_half_spaces(const std::vector<std::ve
       ++count;
     }
   }
-  if (faces.size() < 4) throw usage_error(std::string(function) + ": a polyhedron needs at least 4 faces");
+  if (faces.size() < 4)
+    throw usage_error(std::string(function) + ": a polyhedron needs at least 4 faces");
   for (double& c : centroid) c /= static_cast<double>(count);
   std::vector<half_space3> out;
   for (std::size_t fi = 0; fi < faces.size(); ++fi) {
@@ -117,17 +128,20 @@ std::vector<half_space3> convex_polyhedron_half_spaces(const std::vector<std::ve
       n[1] += (a[2] - b[2]) * (a[0] + b[0]);
       n[2] += (a[0] - b[0]) * (a[1] + b[1]);
     }
-    if (n == vec3{0, 0, 0}) throw usage_error(std::string(function) + ": face " + std::to_string(fi) + " has zero area");
+    if (n == vec3{0, 0, 0})
+      throw usage_error(std::string(function) + ": face " + std::to_string(fi) + " has zero area");
     half_space3 h{n, -(n[0] * face[0][0] + n[1] * face[0][1] + n[2] * face[0][2])};
     if (h.value(centroid) < 0) h = {{-n[0], -n[1], -n[2]}, -h.d};
     out.push_back(h);
   }
   for (std::size_t fi = 0; fi < out.size(); ++fi) {
-    const double scale = std::sqrt(out[fi].n[0] * out[fi].n[0] + out[fi].n[1] * out[fi].n[1] + out[fi].n[2] * out[fi].n[2]);
+    const double scale = std::sqrt(out[fi].n[0] * out[fi].n[0] + out[fi].n[1] * out[fi].n[1] +
+                                   out[fi].n[2] * out[fi].n[2]);
     for (const auto& face : faces)
       for (const vec3& p : face)
         if (out[fi].value(p) < -1e-9 * scale * std::max(size, 1.0))
-          throw usage_error(std::string(function) + ": the polyhedron is not convex (a vertex lies outside face " +
+          throw usage_error(std::string(function) +
+                            ": the polyhedron is not convex (a vertex lies outside face " +
                             std::to_string(fi) + ")");
   }
   return out;

@@ -83,7 +83,8 @@ exact_split<K> split_triangle(const exact_triangle<K>& t, const exact_plane<K>& 
 /// orientation (empty when t is entirely on the negative side).
 /// Throws usage_error when the plane's points are collinear.
 template <class K>
-std::vector<exact_triangle<K>> clip_triangle(const exact_triangle<K>& t, const exact_plane<K>& plane);
+std::vector<exact_triangle<K>> clip_triangle(const exact_triangle<K>& t,
+                                             const exact_plane<K>& plane);
 
 /// The part of t in the convex region = intersection of the closed positive sides of all
 /// planes, as triangles with t's orientation; planes are applied in order. No planes: {t}.
@@ -122,13 +123,19 @@ typename K::Point_3 crossing_unchecked(const exact_plane<K>& plane, const typena
 
 template <class K>
 exact_split<K> split_unchecked(const exact_triangle<K>& t, const exact_plane<K>& plane) {
-  const std::array<int, 3> s{side_of(plane, t.v[0]), side_of(plane, t.v[1]), side_of(plane, t.v[2])};
+  const std::array<int, 3> s{side_of(plane, t.v[0]), side_of(plane, t.v[1]),
+                             side_of(plane, t.v[2])};
   exact_split<K> out;
   switch (exbsp::classify_signs(s)) {
     case triangle_plane_side::coplanar:
-    case triangle_plane_side::positive: out.positive.push_back(t); return out;
-    case triangle_plane_side::negative: out.negative.push_back(t); return out;
-    case triangle_plane_side::straddling: break;
+    case triangle_plane_side::positive:
+      out.positive.push_back(t);
+      return out;
+    case triangle_plane_side::negative:
+      out.negative.push_back(t);
+      return out;
+    case triangle_plane_side::straddling:
+      break;
   }
   const exbsp::split_pattern pattern = exbsp::make_split_pattern(s);
   std::array<typename K::Point_3, 5> corner{t.v[0], t.v[1], t.v[2], {}, {}};
@@ -147,8 +154,8 @@ exact_split<K> split_unchecked(const exact_triangle<K>& t, const exact_plane<K>&
 template <class K>
 triangle_plane_side classify_triangle(const exact_triangle<K>& t, const exact_plane<K>& plane) {
   detail::require_plane(plane, "classify_triangle");
-  return exbsp::classify_signs(
-      {detail::side_of(plane, t.v[0]), detail::side_of(plane, t.v[1]), detail::side_of(plane, t.v[2])});
+  return exbsp::classify_signs({detail::side_of(plane, t.v[0]), detail::side_of(plane, t.v[1]),
+                                detail::side_of(plane, t.v[2])});
 }
 
 template <class K>
@@ -157,7 +164,8 @@ typename K::Point_3 plane_segment_intersection(const exact_plane<K>& plane,
                                                const typename K::Point_3& q) {
   detail::require_plane(plane, "plane_segment_intersection");
   if (detail::side_of(plane, p) * detail::side_of(plane, q) >= 0)
-    throw usage_error("plane_segment_intersection: the endpoints are not strictly on opposite sides");
+    throw usage_error(
+        "plane_segment_intersection: the endpoints are not strictly on opposite sides");
   return detail::crossing_unchecked(plane, p, q);
 }
 
@@ -168,7 +176,8 @@ exact_split<K> split_triangle(const exact_triangle<K>& t, const exact_plane<K>& 
 }
 
 template <class K>
-std::vector<exact_triangle<K>> clip_triangle(const exact_triangle<K>& t, const exact_plane<K>& plane) {
+std::vector<exact_triangle<K>> clip_triangle(const exact_triangle<K>& t,
+                                             const exact_plane<K>& plane) {
   detail::require_plane(plane, "clip_triangle");
   return detail::split_unchecked(t, plane).positive;
 }
@@ -192,14 +201,15 @@ std::vector<exact_triangle<K>> clip_triangle(const exact_triangle<K>& t,
 
 // Compiled once in exact_triangle_clip.cpp for the two exact kernels.
 #define EXBSP_CLIP_EXACT_TEMPLATES(PREFIX, K)                                                     \
-  PREFIX template triangle_plane_side classify_triangle<K>(const exact_triangle<K>&,             \
-                                                            const exact_plane<K>&);               \
-  PREFIX template K::Point_3 plane_segment_intersection<K>(const exact_plane<K>&,                \
+  PREFIX template triangle_plane_side classify_triangle<K>(const exact_triangle<K>&,              \
+                                                           const exact_plane<K>&);                \
+  PREFIX template K::Point_3 plane_segment_intersection<K>(const exact_plane<K>&,                 \
                                                            const K::Point_3&, const K::Point_3&); \
-  PREFIX template exact_split<K> split_triangle<K>(const exact_triangle<K>&, const exact_plane<K>&); \
-  PREFIX template std::vector<exact_triangle<K>> clip_triangle<K>(const exact_triangle<K>&,      \
-                                                                  const exact_plane<K>&);        \
-  PREFIX template std::vector<exact_triangle<K>> clip_triangle<K>(                               \
+  PREFIX template exact_split<K> split_triangle<K>(const exact_triangle<K>&,                      \
+                                                   const exact_plane<K>&);                        \
+  PREFIX template std::vector<exact_triangle<K>> clip_triangle<K>(const exact_triangle<K>&,       \
+                                                                  const exact_plane<K>&);         \
+  PREFIX template std::vector<exact_triangle<K>> clip_triangle<K>(                                \
       const exact_triangle<K>&, const std::vector<exact_plane<K>>&);
 
 EXBSP_CLIP_EXACT_TEMPLATES(extern, epeck)

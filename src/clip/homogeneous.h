@@ -34,7 +34,9 @@ struct homogeneous_polygon {
   std::size_t size() const { return positions.size(); }
   bool empty() const { return positions.empty(); }
   /// Pointer to the attribute_count attributes of vertex i (i < size()).
-  const double* attributes_of(std::size_t i) const { return attributes.data() + i * attribute_count; }
+  const double* attributes_of(std::size_t i) const {
+    return attributes.data() + i * attribute_count;
+  }
 };
 
 /// 6-bit outcode of p against the six clip planes (bits as in the notation above).
@@ -54,8 +56,9 @@ bool homogeneous_trivially_rejected(const std::array<vec4, 3>& triangle);
 
 /// Clips a convex polygon against the view volume. Trivially accepted input is returned
 /// unchanged (bit-for-bit); trivially rejected input, input with fewer than 3 vertices and
-/// results with fewer than 3 vertices are returned empty (attribute_count kept). Throws usage_error when attributes.size() !=
-/// positions.size() * attribute_count or a coordinate/attribute is NaN or infinite.
+/// results with fewer than 3 vertices are returned empty (attribute_count kept). Throws usage_error
+/// when attributes.size() != positions.size() * attribute_count or a coordinate/attribute is NaN or
+/// infinite.
 homogeneous_polygon homogeneous_clip(const homogeneous_polygon& polygon);
 
 /// Clips triangle (p[0], p[1], p[2]) with attributes.size() / 3 attributes per vertex

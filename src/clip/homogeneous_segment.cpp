@@ -14,12 +14,18 @@ namespace {
 /// d_k(p) for the six planes, in the order of homogeneous_segment.h.
 double plane_distance(int k, const vec4& p) {
   switch (k) {
-    case 0: return p[3] + p[0];
-    case 1: return p[3] - p[0];
-    case 2: return p[3] + p[1];
-    case 3: return p[3] - p[1];
-    case 4: return p[3] + p[2];
-    default: return p[3] - p[2];
+    case 0:
+      return p[3] + p[0];
+    case 1:
+      return p[3] - p[0];
+    case 2:
+      return p[3] + p[1];
+    case 3:
+      return p[3] - p[1];
+    case 4:
+      return p[3] + p[2];
+    default:
+      return p[3] - p[2];
   }
 }
 
@@ -30,15 +36,18 @@ void snap_to_plane(int k, vec4& p) {
 }
 
 vec4 lerp(const vec4& a, const vec4& b, double t) {
-  return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2]), a[3] + t * (b[3] - a[3])};
+  return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2]),
+          a[3] + t * (b[3] - a[3])};
 }
 
-bool finite(const vec4& p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) && std::isfinite(p[3]); }
+bool finite(const vec4& p) {
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) && std::isfinite(p[3]);
+}
 
 }  // namespace
 
-bool homogeneous_liang_barsky(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b, double* t0_out,
-                              double* t1_out) {
+bool homogeneous_liang_barsky(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b,
+                              double* t0_out, double* t1_out) {
   if (!finite(a) || !finite(b)) return false;
   // d_k(P(t)) = da + t (db - da) >= 0 is (da - db) t <= da.
   detail::parametric_interval kept;
@@ -57,8 +66,8 @@ bool homogeneous_liang_barsky(const vec4& a, const vec4& b, vec4& out_a, vec4& o
   return true;
 }
 
-bool homogeneous_cohen_sutherland(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b, double* t0_out,
-                                  double* t1_out) {
+bool homogeneous_cohen_sutherland(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b,
+                                  double* t0_out, double* t1_out) {
   if (!finite(a) || !finite(b)) return false;
   double t0 = 0, t1 = 1;
   int enter_plane = -1, leave_plane = -1;

@@ -157,15 +157,16 @@ point3 crossing(const cut_plane& plane, const point3& a, const point3& b) {
   const ET fa = ep.a() * ea.x() + ep.b() * ea.y() + ep.c() * ea.z() + ep.d();
   const ET fb = ep.a() * eb.x() + ep.b() * eb.y() + ep.c() * eb.z() + ep.d();
   const ET den = fa - fb;
-  point3 out{K::FT(ET((fa * eb.x() - fb * ea.x()) / den)), K::FT(ET((fa * eb.y() - fb * ea.y()) / den)),
+  point3 out{K::FT(ET((fa * eb.x() - fb * ea.x()) / den)),
+             K::FT(ET((fa * eb.y() - fb * ea.y()) / den)),
              K::FT(ET((fa * eb.z() - fb * ea.z()) / den))};
   return out;
 }
 
 /// In-plane edge uses (key: smaller index first).
 struct edge_use {
-  int net = 0;              ///< uses lo->hi minus hi->lo in kept pieces
-  std::uint32_t kept = 0;   ///< uses in kept pieces
+  int net = 0;             ///< uses lo->hi minus hi->lo in kept pieces
+  std::uint32_t kept = 0;  ///< uses in kept pieces
   std::uint32_t removed = 0;
   std::uint32_t first_from = no_point, first_to = no_point;  ///< first kept use
 };
@@ -196,7 +197,9 @@ struct face_info {
   bool seen = false;
 };
 using cdt_vb = CGAL::Triangulation_vertex_base_with_info_2<vertex_info, K>;
-using cdt_fb = CGAL::Triangulation_face_base_with_info_2<face_info, K, CGAL::Constrained_triangulation_face_base_2<K>>;
+using cdt_fb =
+    CGAL::Triangulation_face_base_with_info_2<face_info, K,
+                                              CGAL::Constrained_triangulation_face_base_2<K>>;
 using cdt_tds = CGAL::Triangulation_data_structure_2<cdt_vb, cdt_fb>;
 using cdt = CGAL::Constrained_Delaunay_triangulation_2<K, cdt_tds, CGAL::Exact_intersections_tag>;
 
@@ -209,8 +212,9 @@ using subdivision = std::unordered_map<std::uint64_t, std::vector<std::uint32_t>
 /// outline edges) are lifted to the plane and appended to m; outline edges that pass through
 /// other outline points or Steiner points are reported in `split` (non-conforming or
 /// self-intersecting input only).
-std::vector<tri> build_cap(exact_mesh& m, const cut_plane& plane, const std::vector<directed_edge>& outline,
-                           std::uint32_t cap_face, section_stats& stats, subdivision& split) {
+std::vector<tri> build_cap(exact_mesh& m, const cut_plane& plane,
+                           const std::vector<directed_edge>& outline, std::uint32_t cap_face,
+                           section_stats& stats, subdivision& split) {
   std::vector<tri> cap;
   if (outline.empty()) return cap;
   std::unordered_map<std::uint64_t, int> net;  // lo->hi multiplicity
@@ -263,7 +267,8 @@ std::vector<tri> build_cap(exact_mesh& m, const cut_plane& plane, const std::vec
         if (tr.is_infinite(*ec) || !tr.is_constrained(*ec)) continue;
         const cdt::Face_handle f = ec->first;
         const int i = ec->second;
-        const cdt::Vertex_handle w = f->vertex(cdt::cw(i)) == v ? f->vertex(cdt::ccw(i)) : f->vertex(cdt::cw(i));
+        const cdt::Vertex_handle w =
+            f->vertex(cdt::cw(i)) == v ? f->vertex(cdt::ccw(i)) : f->vertex(cdt::cw(i));
         if (CGAL::collinear(va->point(), vb->point(), w->point()) &&
             CGAL::collinear_are_strictly_ordered_along_line(v->point(), w->point(), vb->point()))
           next = w;
@@ -317,8 +322,10 @@ std::vector<tri> build_cap(exact_mesh& m, const cut_plane& plane, const std::vec
 
   for (auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f) {
     const int w = f->info().winding;
-    const std::uint32_t a = f->vertex(0)->info().id, b = f->vertex(1)->info().id, c = f->vertex(2)->info().id;
-    for (int k = 0; k < std::abs(w); ++k) cap.push_back(w > 0 ? tri{{a, c, b}, cap_face} : tri{{a, b, c}, cap_face});
+    const std::uint32_t a = f->vertex(0)->info().id, b = f->vertex(1)->info().id,
+                        c = f->vertex(2)->info().id;
+    for (int k = 0; k < std::abs(w); ++k)
+      cap.push_back(w > 0 ? tri{{a, c, b}, cap_face} : tri{{a, b, c}, cap_face});
   }
   return cap;
 }
@@ -343,7 +350,8 @@ void refine_kept(std::vector<tri>& kept, const subdivision& split) {
         else
           chain.insert(chain.end(), it->second.rbegin(), it->second.rend());
         chain.push_back(b);
-        for (std::size_t i = chain.size() - 1; i > 0; --i) work.push_back(tri{{chain[i - 1], chain[i], c}, u.face});
+        for (std::size_t i = chain.size() - 1; i > 0; --i)
+          work.push_back(tri{{chain[i - 1], chain[i], c}, u.face});
         done = false;
       }
       if (done) out.push_back(u);
@@ -354,9 +362,12 @@ void refine_kept(std::vector<tri>& kept, const subdivision& split) {
 
 /// The outline with subdivided edges replaced by their pieces; pieces that overlap in
 /// opposite directions cancel (net use per edge, as the outline itself is made).
-std::vector<directed_edge> refine_outline(const std::vector<directed_edge>& outline, const subdivision& split) {
+std::vector<directed_edge> refine_outline(const std::vector<directed_edge>& outline,
+                                          const subdivision& split) {
   std::unordered_map<std::uint64_t, int> net;
-  auto add = [&net](std::uint32_t a, std::uint32_t b) { net[a < b ? edge_key(a, b) : edge_key(b, a)] += a < b ? 1 : -1; };
+  auto add = [&net](std::uint32_t a, std::uint32_t b) {
+    net[a < b ? edge_key(a, b) : edge_key(b, a)] += a < b ? 1 : -1;
+  };
   for (const directed_edge& e : outline) {
     const auto it = split.find(e.from < e.to ? edge_key(e.from, e.to) : edge_key(e.to, e.from));
     if (it == split.end()) {
@@ -373,8 +384,10 @@ std::vector<directed_edge> refine_outline(const std::vector<directed_edge>& outl
   }
   std::vector<directed_edge> out;
   for (const auto& [key, n] : net) {
-    const std::uint32_t lo = static_cast<std::uint32_t>(key >> 32), hi = static_cast<std::uint32_t>(key & 0xffffffffu);
-    for (int k = 0; k < std::abs(n); ++k) out.push_back(n > 0 ? directed_edge{lo, hi} : directed_edge{hi, lo});
+    const std::uint32_t lo = static_cast<std::uint32_t>(key >> 32),
+                        hi = static_cast<std::uint32_t>(key & 0xffffffffu);
+    for (int k = 0; k < std::abs(n); ++k)
+      out.push_back(n > 0 ? directed_edge{lo, hi} : directed_edge{hi, lo});
   }
   std::sort(out.begin(), out.end(), by_ends);
   return out;
@@ -382,7 +395,8 @@ std::vector<directed_edge> refine_outline(const std::vector<directed_edge>& outl
 
 // --- passes 1 to 3a: split, merge, count, outline ------------------------------------------
 
-cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32_t cap_face, section_stats& stats) {
+cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32_t cap_face,
+               section_stats& stats) {
   cut_result r;
   r.closed = is_closed(m.tris);
   stats.input_triangles += m.tris.size();
@@ -397,7 +411,8 @@ cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32
     const std::uint64_t key = a < b ? edge_key(a, b) : edge_key(b, a);
     auto [it, fresh] = cut_point.emplace(key, 0u);
     if (fresh) {
-      it->second = m.add(crossing(plane, m.pts[std::min(a, b)], m.pts[std::max(a, b)]), {NAN, NAN, NAN});
+      it->second =
+          m.add(crossing(plane, m.pts[std::min(a, b)], m.pts[std::max(a, b)]), {NAN, NAN, NAN});
       sign.push_back(0);
       ++stats.cut_points;
     }
@@ -436,7 +451,8 @@ cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32
     ++stats.split;
     const split_pattern pattern = make_split_pattern(s);
     std::array<std::uint32_t, 5> corner{t.v[0], t.v[1], t.v[2], 0, 0};
-    for (int j = 0; j < pattern.new_points; ++j) corner[3 + j] = cross(t.v[pattern.from[j]], t.v[pattern.to[j]]);
+    for (int j = 0; j < pattern.new_points; ++j)
+      corner[3 + j] = cross(t.v[pattern.from[j]], t.v[pattern.to[j]]);
     for (int k = 0; k < pattern.pieces; ++k) {
       const auto& p = pattern.corner[k];
       emit(pattern.side[k], tri{{corner[p[0]], corner[p[1]], corner[p[2]]}, t.face});
@@ -496,9 +512,11 @@ cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32
 
   // Pass 3a: outline edges.
   for (const auto& [key, u] : uses) {
-    const std::uint32_t lo = static_cast<std::uint32_t>(key >> 32), hi = static_cast<std::uint32_t>(key & 0xffffffffu);
+    const std::uint32_t lo = static_cast<std::uint32_t>(key >> 32),
+                        hi = static_cast<std::uint32_t>(key & 0xffffffffu);
     if (r.closed) {
-      for (int k = 0; k < std::abs(u.net); ++k) r.outline.push_back(u.net > 0 ? directed_edge{lo, hi} : directed_edge{hi, lo});
+      for (int k = 0; k < std::abs(u.net); ++k)
+        r.outline.push_back(u.net > 0 ? directed_edge{lo, hi} : directed_edge{hi, lo});
     } else if (u.kept > 0 && u.removed > 0) {
       if (u.net != 0)
         r.outline.push_back(u.net > 0 ? directed_edge{lo, hi} : directed_edge{hi, lo});
@@ -551,7 +569,8 @@ std::vector<section_chain> chain_edges(const std::vector<directed_edge>& edges) 
   for (std::uint32_t s : starts)
     for (int k = 0; k < excess[s]; ++k) {
       section_chain c{{s}, false};
-      for (std::size_t e = take(s); e != edges.size(); e = take(c.p.back())) c.p.push_back(edges[e].to);
+      for (std::size_t e = take(s); e != edges.size(); e = take(c.p.back()))
+        c.p.push_back(edges[e].to);
       if (c.p.size() > 1) polylines.push_back(std::move(c));
     }
   for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
@@ -564,7 +583,9 @@ std::vector<section_chain> chain_edges(const std::vector<directed_edge>& edges) 
       const auto it = pos.find(cur);
       if (it != pos.end()) {
         const std::size_t i = it->second;
-        loops.push_back({std::vector<std::uint32_t>(path.begin() + static_cast<std::ptrdiff_t>(i), path.end()), true});
+        loops.push_back(
+            {std::vector<std::uint32_t>(path.begin() + static_cast<std::ptrdiff_t>(i), path.end()),
+             true});
         for (std::size_t k = i + 1; k < path.size(); ++k) pos.erase(path[k]);
         path.resize(i + 1);
         if (path.size() == 1) break;
@@ -580,7 +601,8 @@ std::vector<section_chain> chain_edges(const std::vector<directed_edge>& edges) 
       cur = edges[e].to;
     }
   }
-  loops.insert(loops.end(), std::make_move_iterator(polylines.begin()), std::make_move_iterator(polylines.end()));
+  loops.insert(loops.end(), std::make_move_iterator(polylines.begin()),
+               std::make_move_iterator(polylines.end()));
   return loops;
 }
 
@@ -599,7 +621,8 @@ void check_section_plane(const section_plane& plane, const std::string& what) {
     throw usage_error(what + ": the normal (A, B, C) must not be zero");
 }
 
-section_result section(const triangle_soup& soup, const section_plane& plane, const section_options& options) {
+section_result section(const triangle_soup& soup, const section_plane& plane,
+                       const section_options& options) {
   check_section_plane(plane);
   const auto t0 = std::chrono::steady_clock::now();
   section_result out;
@@ -640,8 +663,10 @@ section_result section(const triangle_soup& soup, const section_plane& plane, co
   return out;
 }
 
-triangle_soup clip_soup(const triangle_soup& soup, const std::vector<section_plane>& planes, bool caps) {
-  for (std::size_t i = 0; i < planes.size(); ++i) check_section_plane(planes[i], "plane " + std::to_string(i));
+triangle_soup clip_soup(const triangle_soup& soup, const std::vector<section_plane>& planes,
+                        bool caps) {
+  for (std::size_t i = 0; i < planes.size(); ++i)
+    check_section_plane(planes[i], "plane " + std::to_string(i));
   exact_mesh m = from_soup(soup);
   for (std::size_t i = 0; i < planes.size(); ++i) {
     section_stats stats;

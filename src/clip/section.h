@@ -72,29 +72,32 @@ struct section_chain {
 
 /// Counters of one section.
 struct section_stats {
-  std::size_t input_triangles = 0;    ///< triangles of the soup
-  std::size_t degenerate_input = 0;   ///< exactly collinear input triangles (kept or dropped like others)
-  std::size_t kept_whole = 0;         ///< input triangles kept unsplit (in-plane ones included)
-  std::size_t in_plane = 0;           ///< input triangles lying in the plane (kept)
-  std::size_t split = 0;              ///< straddling triangles that were split
-  std::size_t removed = 0;            ///< input triangles entirely on the negative side
-  std::size_t cut_points = 0;         ///< points made on crossing edges
-  std::size_t outline_edges = 0;      ///< directed outline edges (with multiplicity)
+  std::size_t input_triangles = 0;  ///< triangles of the soup
+  std::size_t degenerate_input =
+      0;                       ///< exactly collinear input triangles (kept or dropped like others)
+  std::size_t kept_whole = 0;  ///< input triangles kept unsplit (in-plane ones included)
+  std::size_t in_plane = 0;    ///< input triangles lying in the plane (kept)
+  std::size_t split = 0;       ///< straddling triangles that were split
+  std::size_t removed = 0;     ///< input triangles entirely on the negative side
+  std::size_t cut_points = 0;  ///< points made on crossing edges
+  std::size_t outline_edges = 0;  ///< directed outline edges (with multiplicity)
   std::size_t cap_triangles = 0;
-  std::size_t cap_steiner_points = 0; ///< triangulation vertices not on the outline (crossing loops)
-  std::size_t split_constraints = 0;  ///< outline edges the triangulation subdivided (kept refined there)
-  double seconds = 0;                 ///< wall time of the section
+  std::size_t cap_steiner_points =
+      0;  ///< triangulation vertices not on the outline (crossing loops)
+  std::size_t split_constraints =
+      0;               ///< outline edges the triangulation subdivided (kept refined there)
+  double seconds = 0;  ///< wall time of the section
 };
 
 /// Everything a section produces.
 struct section_result {
   section_plane plane{};
-  bool closed = false;                     ///< the input is closed (see the notation above)
-  std::vector<section_point> points;       ///< every point used below, merged exactly
-  std::vector<section_triangle> kept;      ///< kept triangles in section 3 order
-  std::vector<section_chain> outline;      ///< loops first (closed input: loops only)
-  std::vector<section_triangle> cap;       ///< empty unless `closed`
-  std::uint32_t cap_face = 0;              ///< face id of the cap triangles (= input face_count)
+  bool closed = false;                 ///< the input is closed (see the notation above)
+  std::vector<section_point> points;   ///< every point used below, merged exactly
+  std::vector<section_triangle> kept;  ///< kept triangles in section 3 order
+  std::vector<section_chain> outline;  ///< loops first (closed input: loops only)
+  std::vector<section_triangle> cap;   ///< empty unless `closed`
+  std::uint32_t cap_face = 0;          ///< face id of the cap triangles (= input face_count)
   section_stats stats;
 };
 
@@ -106,7 +109,8 @@ struct section_options {
 
 /// Cuts `soup` by `plane` exactly (see the notation above). Throws usage_error for a bad
 /// plane (check_section_plane); never aborts.
-section_result section(const triangle_soup& soup, const section_plane& plane, const section_options& options = {});
+section_result section(const triangle_soup& soup, const section_plane& plane,
+                       const section_options& options = {});
 
 /// Clips `soup` by every plane in turn (keeping f >= 0 of each, i.e. the intersection of the
 /// half-spaces). With `caps`, each plane that cuts a closed part adds its cap as the new face
@@ -115,7 +119,8 @@ section_result section(const triangle_soup& soup, const section_plane& plane, co
 /// points rounded once to the nearest doubles (the BSP's input is doubles, DESIGN.md
 /// section 2). face_count becomes soup.face_count + planes.size() with caps, unchanged without.
 /// Throws usage_error for a bad plane.
-triangle_soup clip_soup(const triangle_soup& soup, const std::vector<section_plane>& planes, bool caps);
+triangle_soup clip_soup(const triangle_soup& soup, const std::vector<section_plane>& planes,
+                        bool caps);
 
 /// Output formats of `exbsp section` (DESIGN.md section 4).
 ///   json: {"plane", "closed", "kept": [{"face", "v", "exact"}], "outline": [{"closed", "v",
@@ -126,7 +131,8 @@ triangle_soup clip_soup(const triangle_soup& soup, const std::vector<section_pla
 /// Precondition for json: the result was made with exact_text.
 std::string section_json(const section_result& r);
 std::string section_off(const section_result& r);
-std::string section_svg(const section_result& r, const std::array<unsigned char, 3>& cap_color = {200, 60, 50});
+std::string section_svg(const section_result& r,
+                        const std::array<unsigned char, 3>& cap_color = {200, 60, 50});
 
 /// The in-plane basis of the SVG drawing: n̂ = n/|n|; m = the axis of the smallest |n_m|
 /// (first on ties); u = e_m - (e_m·n̂) n̂ normalised; v = n̂ × u; so (u, v, n̂) is right-handed

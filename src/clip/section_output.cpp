@@ -26,10 +26,13 @@ std::string px(double x) {
 
 void append_point(std::string& out, const section_point& p) { json_text::append_point(out, p.v); }
 
-void append_exact(std::string& out, const section_point& p) { json_text::append_exact_point(out, p.exact); }
+void append_exact(std::string& out, const section_point& p) {
+  json_text::append_exact_point(out, p.exact);
+}
 
 /// "v": [...], "exact": [...] of a list of point indices.
-void append_points(std::string& out, const section_result& r, const std::uint32_t* idx, std::size_t n) {
+void append_points(std::string& out, const section_result& r, const std::uint32_t* idx,
+                   std::size_t n) {
   out += "\"v\": [";
   for (std::size_t i = 0; i < n; ++i) {
     if (i) out += ", ";
@@ -48,8 +51,9 @@ double dot(const vec3d& a, const vec3d& b) { return a[0] * b[0] + a[1] * b[1] + 
 }  // namespace
 
 std::string section_json(const section_result& r) {
-  std::string out = "{\"plane\": [" + number(r.plane[0]) + ", " + number(r.plane[1]) + ", " + number(r.plane[2]) + ", " +
-                    number(r.plane[3]) + "],\n \"closed\": " + (r.closed ? "true" : "false") + ",\n \"kept\": [";
+  std::string out = "{\"plane\": [" + number(r.plane[0]) + ", " + number(r.plane[1]) + ", " +
+                    number(r.plane[2]) + ", " + number(r.plane[3]) +
+                    "],\n \"closed\": " + (r.closed ? "true" : "false") + ",\n \"kept\": [";
   for (std::size_t i = 0; i < r.kept.size(); ++i) {
     out += i ? ",\n  {\"face\": " : "\n  {\"face\": ";
     out += std::to_string(r.kept[i].face) + ", ";
@@ -72,14 +76,16 @@ std::string section_json(const section_result& r) {
   const section_stats& s = r.stats;
   out += "\n ],\n \"stats\": {\"input_triangles\": " + std::to_string(s.input_triangles) +
          ", \"degenerate_input\": " + std::to_string(s.degenerate_input) +
-         ", \"kept_whole\": " + std::to_string(s.kept_whole) + ", \"in_plane\": " + std::to_string(s.in_plane) +
+         ", \"kept_whole\": " + std::to_string(s.kept_whole) +
+         ", \"in_plane\": " + std::to_string(s.in_plane) +
          ", \"split\": " + std::to_string(s.split) + ", \"removed\": " + std::to_string(s.removed) +
-         ", \"kept\": " + std::to_string(r.kept.size()) + ", \"cut_points\": " + std::to_string(s.cut_points) +
+         ", \"kept\": " + std::to_string(r.kept.size()) +
+         ", \"cut_points\": " + std::to_string(s.cut_points) +
          ", \"outline_edges\": " + std::to_string(s.outline_edges) +
          ", \"cap_triangles\": " + std::to_string(s.cap_triangles) +
          ", \"cap_steiner_points\": " + std::to_string(s.cap_steiner_points) +
-         ", \"split_constraints\": " + std::to_string(s.split_constraints) + ", \"seconds\": " + number(s.seconds) +
-         "}}\n";
+         ", \"split_constraints\": " + std::to_string(s.split_constraints) +
+         ", \"seconds\": " + number(s.seconds) + "}}\n";
   return out;
 }
 
@@ -94,7 +100,8 @@ std::string section_off(const section_result& r) {
           index[p] = static_cast<std::uint32_t>(order.size());
           order.push_back(p);
         }
-  std::string out = "OFF\n" + std::to_string(order.size()) + " " + std::to_string(r.kept.size() + r.cap.size()) + " 0\n";
+  std::string out = "OFF\n" + std::to_string(order.size()) + " " +
+                    std::to_string(r.kept.size() + r.cap.size()) + " 0\n";
   for (std::uint32_t p : order) {
     const vec3d& v = r.points[p].v;
     out += number(v[0]) + " " + number(v[1]) + " " + number(v[2]) + "\n";
@@ -139,7 +146,8 @@ std::string section_svg(const section_result& r, const std::array<unsigned char,
   if (!(extent > 0)) extent = 1;
   if (!(lo[0] <= hi[0])) lo[0] = hi[0] = lo[1] = hi[1] = 0;
   const double scale = side / extent;
-  const double width = (hi[0] - lo[0]) * scale + 2 * margin, height = (hi[1] - lo[1]) * scale + 2 * margin;
+  const double width = (hi[0] - lo[0]) * scale + 2 * margin,
+               height = (hi[1] - lo[1]) * scale + 2 * margin;
   auto x = [&](std::uint32_t p) { return px((uv[p][0] - lo[0]) * scale + margin); };
   auto y = [&](std::uint32_t p) { return px((hi[1] - uv[p][1]) * scale + margin); };
   char colour[16];
@@ -148,22 +156,26 @@ std::string section_svg(const section_result& r, const std::array<unsigned char,
   const std::string w = px(std::ceil(width)), h = px(std::ceil(height));
   std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + w + "\" height=\"" + h +
                     "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
-  out += "<!-- exbsp section by the plane " + number(r.plane[0]) + "*x + " + number(r.plane[1]) + "*y + " +
-         number(r.plane[2]) + "*z + " + number(r.plane[3]) + " = 0, seen from the kept side; u = (" +
-         number(basis[0][0]) + ", " + number(basis[0][1]) + ", " + number(basis[0][2]) + ") to the right, v = (" +
-         number(basis[1][0]) + ", " + number(basis[1][1]) + ", " + number(basis[1][2]) + ") upwards; scale " + number(scale) +
+  out += "<!-- exbsp section by the plane " + number(r.plane[0]) + "*x + " + number(r.plane[1]) +
+         "*y + " + number(r.plane[2]) + "*z + " + number(r.plane[3]) +
+         " = 0, seen from the kept side; u = (" + number(basis[0][0]) + ", " + number(basis[0][1]) +
+         ", " + number(basis[0][2]) + ") to the right, v = (" + number(basis[1][0]) + ", " +
+         number(basis[1][1]) + ", " + number(basis[1][2]) + ") upwards; scale " + number(scale) +
          " px per unit -->\n";
   std::string loops, lines;
   for (const section_chain& c : r.outline) {
     std::string& d = c.closed ? loops : lines;
-    for (std::size_t i = 0; i < c.p.size(); ++i) d += (i ? " L" : (d.empty() ? "M" : " M")) + x(c.p[i]) + "," + y(c.p[i]);
+    for (std::size_t i = 0; i < c.p.size(); ++i)
+      d += (i ? " L" : (d.empty() ? "M" : " M")) + x(c.p[i]) + "," + y(c.p[i]);
     if (c.closed) d += " Z";
   }
   if (!loops.empty())
     out += "<path id=\"cap\" d=\"" + loops + "\" fill=\"" + colour +
-           "\" fill-rule=\"nonzero\" stroke=\"#000000\" stroke-width=\"1\" stroke-linejoin=\"round\"/>\n";
+           "\" fill-rule=\"nonzero\" stroke=\"#000000\" stroke-width=\"1\" "
+           "stroke-linejoin=\"round\"/>\n";
   if (!lines.empty())
-    out += "<path id=\"open\" d=\"" + lines + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
+    out += "<path id=\"open\" d=\"" + lines +
+           "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
   out += "</svg>\n";
   return out;
 }

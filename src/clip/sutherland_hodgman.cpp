@@ -63,7 +63,8 @@ std::vector<P> clip_one(const std::vector<P>& in, const std::vector<double>& f, 
   const std::size_t n = in.size();
   std::size_t s = n - 1;
   for (std::size_t e = 0; e < n; s = e, ++e) {
-    if ((f[s] > 0.0 && f[e] < 0.0) || (f[s] < 0.0 && f[e] > 0.0)) out.push_back(crossing(in[s], f[s], in[e], f[e], h, axis));
+    if ((f[s] > 0.0 && f[e] < 0.0) || (f[s] < 0.0 && f[e] > 0.0))
+      out.push_back(crossing(in[s], f[s], in[e], f[e], h, axis));
     if (f[e] >= 0.0) out.push_back(in[e]);
   }
   return out;
@@ -121,7 +122,8 @@ vec3 newell_normal(const std::vector<P>& poly) {
 /// One half-space step split into pieces (notation in sutherland_hodgman.h). Appends the
 /// pieces of `in` to `out`.
 template <class P, class H>
-void split_one(const std::vector<P>& in, const H& h, const vec3& normal, std::vector<std::vector<P>>& out) {
+void split_one(const std::vector<P>& in, const H& h, const vec3& normal,
+               std::vector<std::vector<P>>& out) {
   const std::size_t n = in.size();
   std::vector<double> f(n);
   std::size_t first_out = n;
@@ -153,7 +155,9 @@ void split_one(const std::vector<P>& in, const H& h, const vec3& normal, std::ve
       chains.back().has_area = chains.back().has_area || f[e] > 0.0;
     }
   }
-  chains.erase(std::remove_if(chains.begin(), chains.end(), [](const chain& c) { return !c.has_area; }), chains.end());
+  chains.erase(
+      std::remove_if(chains.begin(), chains.end(), [](const chain& c) { return !c.has_area; }),
+      chains.end());
   if (chains.size() <= 1) {  // one piece: the textbook result itself, in its vertex order
     std::vector<P> one = clip_one(in, f, h);
     if (one.size() >= 3) out.push_back(std::move(one));
@@ -231,7 +235,8 @@ std::vector<std::vector<vec3>> sutherland_hodgman_pieces(const std::vector<vec3>
 
 std::vector<half_plane2> window_half_planes(const window2& w) {
   detail::require_valid_box(w, "window_half_planes");
-  return {{1.0, 0.0, -w.min[0]}, {-1.0, 0.0, w.max[0]}, {0.0, 1.0, -w.min[1]}, {0.0, -1.0, w.max[1]}};
+  return {
+      {1.0, 0.0, -w.min[0]}, {-1.0, 0.0, w.max[0]}, {0.0, 1.0, -w.min[1]}, {0.0, -1.0, w.max[1]}};
 }
 
 std::vector<half_space3> box_half_spaces(const box3& b) {
@@ -254,9 +259,8 @@ std::vector<half_space3> frustum_half_spaces(double left, double right, double b
   if (!(near > 0.0)) throw usage_error(std::string(function) + ": near must be > 0");
   // A side plane passes through the eye and one edge of the near rectangle z = -near:
   // x / -z >= left / near  <=>  near * x + left * z >= 0 (for z < 0), and so on.
-  return {{{near, 0.0, left}, 0.0},    {{-near, 0.0, -right}, 0.0},
-          {{0.0, near, bottom}, 0.0},  {{0.0, -near, -top}, 0.0},
-          {{0.0, 0.0, -1.0}, -near},   {{0.0, 0.0, 1.0}, far}};
+  return {{{near, 0.0, left}, 0.0},  {{-near, 0.0, -right}, 0.0}, {{0.0, near, bottom}, 0.0},
+          {{0.0, -near, -top}, 0.0}, {{0.0, 0.0, -1.0}, -near},   {{0.0, 0.0, 1.0}, far}};
 }
 
 std::vector<half_space3> orthographic_half_spaces(double left, double right, double bottom,

@@ -31,7 +31,8 @@ namespace exbsp {
 namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, int err = 0) {
-  throw output_error(path, "cannot write output: " + what + (err ? std::string(": ") + std::strerror(err) : ""));
+  throw output_error(
+      path, "cannot write output: " + what + (err ? std::string(": ") + std::strerror(err) : ""));
 }
 
 // ---- in-flight temporary files, removed by the signal handler ----
@@ -63,7 +64,9 @@ void install_signal_cleanup() {
   std::call_once(once, [] {
     for (int sig : cleanup_signals) {
       struct sigaction old {};
-      if (::sigaction(sig, nullptr, &old) != 0 || (old.sa_flags & SA_SIGINFO) || old.sa_handler != SIG_DFL) continue;
+      if (::sigaction(sig, nullptr, &old) != 0 || (old.sa_flags & SA_SIGINFO) ||
+          old.sa_handler != SIG_DFL)
+        continue;
       struct sigaction act {};
       act.sa_handler = remove_pending_and_reraise;
       sigemptyset(&act.sa_mask);
@@ -111,7 +114,8 @@ int write_all(int fd, std::string_view bytes) {
 void write_directly(const std::string& path, std::string_view bytes) {
   if (path == "-") {
     std::fflush(stdout);  // keep the order of anything printed through stdio before
-    if (const int err = write_all(STDOUT_FILENO, bytes)) fail("(standard output)", "write failed", err);
+    if (const int err = write_all(STDOUT_FILENO, bytes))
+      fail("(standard output)", "write failed", err);
     return;
   }
   const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
@@ -196,7 +200,8 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
   if (const int err = write_all(fd, bytes)) discard("write failed", err);
   if (exists) {
     // Keep the replaced file's owner (only root may give it away; failure is harmless) and mode.
-    if (::fchown(fd, existing.st_uid, existing.st_gid) != 0) { /* not permitted: keep ours */ }
+    if (::fchown(fd, existing.st_uid, existing.st_gid) != 0) { /* not permitted: keep ours */
+    }
     if (::fchmod(fd, existing.st_mode & 07777) != 0) discard("cannot set the file mode", errno);
   }
   if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS) discard("fsync failed", errno);

@@ -10,22 +10,23 @@ namespace exbsp {
 
 /// Base of all exbsp errors. what() is a complete, user-facing message.
 class error : public std::runtime_error {
-public:
+ public:
   using std::runtime_error::runtime_error;
 };
 
 /// Bad input file: unreadable, syntax error, NaN/Inf, index out of range, count mismatch.
 /// The message names the file and, where there is one, the line ("FILE:LINE: ...").
 class input_error : public error {
-public:
+ public:
   input_error(const std::string& file, std::size_t line, const std::string& what)
       : error(line ? file + ":" + std::to_string(line) + ": " + what : file + ": " + what),
-        file_(file), line_(line) {}
+        file_(file),
+        line_(line) {}
   const std::string& file() const { return file_; }
   /// 1-based line number, or 0 when the problem has no line (binary files, missing file).
   std::size_t line() const { return line_; }
 
-private:
+ private:
   std::string file_;
   std::size_t line_;
 };
@@ -33,44 +34,47 @@ private:
 /// Bad scene: a missing or wrongly typed key, an impossible camera or projection.
 /// The message names the scene file and the key (JSON pointer style, e.g. /projection/near).
 class scene_error : public error {
-public:
+ public:
   scene_error(const std::string& file, const std::string& key, const std::string& what)
-      : error(file + ": " + (key.empty() ? std::string() : key + ": ") + what), file_(file), key_(key) {}
+      : error(file + ": " + (key.empty() ? std::string() : key + ": ") + what),
+        file_(file),
+        key_(key) {}
   const std::string& file() const { return file_; }
   const std::string& key() const { return key_; }
 
-private:
+ private:
   std::string file_, key_;
 };
 
 /// A resource limit was reached (e.g. --max-fragments); nothing partial is returned.
 class limit_error : public error {
-public:
+ public:
   using error::error;
 };
 
 /// An output file could not be written (directory missing, disk full, permission, rename).
 /// The message names the file ("FILE: cannot write output: ..."); nothing partial is left.
 class output_error : public error {
-public:
-  output_error(const std::string& file, const std::string& what) : error(file + ": " + what), file_(file) {}
+ public:
+  output_error(const std::string& file, const std::string& what)
+      : error(file + ": " + what), file_(file) {}
   const std::string& file() const { return file_; }
 
-private:
+ private:
   std::string file_;
 };
 
 /// The caller cancelled a build by throwing this from build_options::progress (bsp/engine.h);
 /// bsp::build lets it through unchanged and keeps nothing of the partial tree.
 class build_cancelled : public error {
-public:
+ public:
   build_cancelled() : error("build cancelled") {}
   using error::error;
 };
 
 /// A caller broke a documented precondition (e.g. a zero direction vector).
 class usage_error : public error {
-public:
+ public:
   using error::error;
 };
 

@@ -18,8 +18,10 @@ void check_json_nesting(std::string_view text, const std::string& file, std::siz
       continue;
     }
     if (in_string) {
-      if (c == '\\') ++i;  // the escaped character cannot end the string
-      else if (c == '"') in_string = false;
+      if (c == '\\')
+        ++i;  // the escaped character cannot end the string
+      else if (c == '"')
+        in_string = false;
       continue;
     }
     if (c == '"') {
@@ -28,8 +30,9 @@ void check_json_nesting(std::string_view text, const std::string& file, std::siz
       if (++depth > max_depth)
         throw input_error(file, line,
                           "JSON nested too deeply: more than " + std::to_string(max_depth) +
-                              " levels of arrays and objects (column " + std::to_string(i - line_start + 1) +
-                              ", byte offset " + std::to_string(i) + ")");
+                              " levels of arrays and objects (column " +
+                              std::to_string(i - line_start + 1) + ", byte offset " +
+                              std::to_string(i) + ")");
     } else if ((c == ']' || c == '}') && depth > 0) {
       --depth;
     }

@@ -18,6 +18,7 @@ constexpr std::size_t max_json_depth = 256;
 /// Throws input_error(file, line, ...) naming the line, column and byte offset of the first
 /// '[' or '{' that opens level max_depth + 1. Brackets inside strings (with \" escapes) do not
 /// count. Linear in text.size(), no recursion; says nothing about the text's other syntax.
-void check_json_nesting(std::string_view text, const std::string& file, std::size_t max_depth = max_json_depth);
+void check_json_nesting(std::string_view text, const std::string& file,
+                        std::size_t max_depth = max_json_depth);
 
 }  // namespace exbsp

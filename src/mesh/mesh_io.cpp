@@ -28,7 +28,8 @@ std::string read_input_file(const std::string& path) {
     ~fd_closer() { ::close(fd); }
   } closer{fd};
   struct stat st {};
-  if (::fstat(fd, &st) != 0) throw input_error(path, 0, std::string("cannot examine file: ") + std::strerror(errno));
+  if (::fstat(fd, &st) != 0)
+    throw input_error(path, 0, std::string("cannot examine file: ") + std::strerror(errno));
   if (!S_ISREG(st.st_mode)) {
     const char* kind = S_ISDIR(st.st_mode)    ? "a directory"
                        : S_ISFIFO(st.st_mode) ? "a FIFO (named pipe)"
@@ -36,7 +37,8 @@ std::string read_input_file(const std::string& path) {
                        : S_ISBLK(st.st_mode)  ? "a block device"
                        : S_ISSOCK(st.st_mode) ? "a socket"
                                               : "a special file";
-    throw input_error(path, 0, std::string("cannot read ") + kind + " (input must be a regular file)");
+    throw input_error(path, 0,
+                      std::string("cannot read ") + kind + " (input must be a regular file)");
   }
   std::string bytes;
   bytes.reserve(static_cast<std::size_t>(st.st_size));
@@ -57,7 +59,8 @@ mesh_format mesh_format_for_path(const std::string& path) {
   const std::size_t slash = path.find_last_of('/');
   const std::size_t dot = path.find_last_of('.');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    throw input_error(path, 0, std::string("no file extension; supported mesh formats: ") + supported_extensions);
+    throw input_error(
+        path, 0, std::string("no file extension; supported mesh formats: ") + supported_extensions);
   std::string ext = path.substr(dot);
   for (char& c : ext)
     if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
@@ -65,8 +68,9 @@ mesh_format mesh_format_for_path(const std::string& path) {
   if (ext == ".obj") return mesh_format::obj;
   if (ext == ".ply") return mesh_format::ply;
   if (ext == ".stl") return mesh_format::stl;
-  throw input_error(path, 0, "unknown file extension " + mesh_detail::quote(path.substr(dot)) +
-                                 "; supported mesh formats: " + supported_extensions);
+  throw input_error(path, 0,
+                    "unknown file extension " + mesh_detail::quote(path.substr(dot)) +
+                        "; supported mesh formats: " + supported_extensions);
 }
 
 triangle_soup read_mesh_data(std::string_view data, mesh_format format, const std::string& name) {
@@ -74,12 +78,17 @@ triangle_soup read_mesh_data(std::string_view data, mesh_format format, const st
   // A UTF-8 byte order mark (written by some editors) is not part of the text formats.
   // STL decides itself: a binary STL's 80-byte header may begin with those bytes.
   const std::string_view text = mesh_detail::skip_utf8_bom(data);
-  if (text.empty() && format != mesh_format::stl) throw input_error(name, 0, "empty file (only a byte order mark)");
+  if (text.empty() && format != mesh_format::stl)
+    throw input_error(name, 0, "empty file (only a byte order mark)");
   switch (format) {
-    case mesh_format::off: return mesh_detail::read_off(text, name);
-    case mesh_format::obj: return mesh_detail::read_obj(text, name);
-    case mesh_format::ply: return mesh_detail::read_ply(text, name);
-    case mesh_format::stl: return mesh_detail::read_stl(data, name);
+    case mesh_format::off:
+      return mesh_detail::read_off(text, name);
+    case mesh_format::obj:
+      return mesh_detail::read_obj(text, name);
+    case mesh_format::ply:
+      return mesh_detail::read_ply(text, name);
+    case mesh_format::stl:
+      return mesh_detail::read_stl(data, name);
   }
   throw usage_error("read_mesh_data: invalid mesh_format value");
 }

@@ -20,8 +20,8 @@ namespace exbsp::mesh_detail {
 namespace {
 
 constexpr std::string_view ignored_statements[] = {
-    "vt", "vn", "vp", "g", "o", "s", "usemtl", "mtllib", "l", "p", "mg", "lod",
-    "maplib", "usemap", "bevel", "c_interp", "d_interp", "shadow_obj", "trace_obj"};
+    "vt", "vn",  "vp",     "g",      "o",     "s",        "usemtl",   "mtllib",     "l",        "p",
+    "mg", "lod", "maplib", "usemap", "bevel", "c_interp", "d_interp", "shadow_obj", "trace_obj"};
 
 bool is_ignored(std::string_view keyword) {
   return std::find(std::begin(ignored_statements), std::end(ignored_statements), keyword) !=
@@ -29,25 +29,30 @@ bool is_ignored(std::string_view keyword) {
 }
 
 // Parses one face vertex reference ("i", "i/t", "i/t/n", "i//n") into its vertex number i.
-std::int64_t parse_vertex_reference(std::string_view ref, const std::string& file, std::size_t line) {
+std::int64_t parse_vertex_reference(std::string_view ref, const std::string& file,
+                                    std::size_t line) {
   std::string_view parts[3];
   std::size_t count = 0;
   std::size_t start = 0;
   for (;;) {
     const std::size_t slash = ref.find('/', start);
-    if (count == 3) fail(file, line, "invalid face vertex reference " + quote(ref) + " (too many '/')");
-    parts[count++] = ref.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
+    if (count == 3)
+      fail(file, line, "invalid face vertex reference " + quote(ref) + " (too many '/')");
+    parts[count++] =
+        ref.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
     if (slash == std::string_view::npos) break;
     start = slash + 1;
   }
   const auto bad = [&]() {
-    fail(file, line, "invalid face vertex reference " + quote(ref) + " (expected i, i/t, i/t/n or i//n)");
+    fail(file, line,
+         "invalid face vertex reference " + quote(ref) + " (expected i, i/t, i/t/n or i//n)");
   };
   std::int64_t v = 0;
   std::int64_t unused = 0;
   if (!parse_integer(parts[0], v)) bad();
   if (count == 2 && !parse_integer(parts[1], unused)) bad();
-  if (count == 3 && ((!parts[1].empty() && !parse_integer(parts[1], unused)) || !parse_integer(parts[2], unused)))
+  if (count == 3 &&
+      ((!parts[1].empty() && !parse_integer(parts[1], unused)) || !parse_integer(parts[2], unused)))
     bad();
   return v;
 }
@@ -96,10 +101,11 @@ triangle_soup read_obj(std::string_view text, const std::string& file) {
     if (keyword == "v") {
       const std::size_t values = tokens.size() - 1;
       if (values < 3)
-        fail(file, line, "vertex has " + std::to_string(values) + " coordinates, expected 3 (x y z)");
+        fail(file, line,
+             "vertex has " + std::to_string(values) + " coordinates, expected 3 (x y z)");
       if (values > 7)
-        fail(file, line, "vertex has " + std::to_string(values) +
-                             " values, expected x y z [w] [r g b [a]]");
+        fail(file, line,
+             "vertex has " + std::to_string(values) + " values, expected x y z [w] [r g b [a]]");
       if (soup.vertices.size() >= max_element_count)
         fail(file, line, "too many vertices (at most " + std::to_string(max_element_count) + ")");
       const vec3d p = {parse_coordinate(tokens[1], 'x', file, line),
@@ -114,8 +120,9 @@ triangle_soup read_obj(std::string_view text, const std::string& file) {
     } else if (keyword == "f") {
       const std::size_t k = tokens.size() - 1;
       if (k < 3)
-        fail(file, line, "face " + std::to_string(faces) + " has " + std::to_string(k) +
-                             " vertices (at least 3 needed)");
+        fail(file, line,
+             "face " + std::to_string(faces) + " has " + std::to_string(k) +
+                 " vertices (at least 3 needed)");
       if (faces >= max_element_count)
         fail(file, line, "too many faces (at most " + std::to_string(max_element_count) + ")");
       const auto defined = static_cast<std::int64_t>(soup.vertices.size());
@@ -126,8 +133,9 @@ triangle_soup read_obj(std::string_view text, const std::string& file) {
         // 1-based from the front, or negative: relative to the end of the list so far.
         const std::int64_t index = ref > 0 ? ref - 1 : defined + ref;
         if (index < 0 || index >= defined)
-          fail(file, line, "vertex index " + std::to_string(ref) + " out of range (" +
-                               std::to_string(defined) + " vertices defined so far)");
+          fail(file, line,
+               "vertex index " + std::to_string(ref) + " out of range (" + std::to_string(defined) +
+                   " vertices defined so far)");
         polygon.push_back(static_cast<std::uint32_t>(index));
       }
       soup.add_polygon(polygon, static_cast<std::uint32_t>(faces));
@@ -137,7 +145,8 @@ triangle_soup read_obj(std::string_view text, const std::string& file) {
     }
   }
   if (!any_statement)
-    fail(file, lines.line_number(), "no OBJ statements (the file holds only blank lines and comments)");
+    fail(file, lines.line_number(),
+         "no OBJ statements (the file holds only blank lines and comments)");
   return soup;
 }
 

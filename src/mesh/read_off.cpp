@@ -22,11 +22,12 @@ constexpr std::size_t max_face_colour_values = 4;
 // Parses the header keyword; returns whether per-vertex extra columns are allowed.
 bool parse_off_keyword(std::string_view keyword, const std::string& file, std::size_t line) {
   const auto bad = [&]() {
-    fail(file, line, "expected an OFF header ('OFF', 'COFF', 'NOFF', 'STOFF', ...), found " +
-                         quote(keyword));
+    fail(file, line,
+         "expected an OFF header ('OFF', 'COFF', 'NOFF', 'STOFF', ...), found " + quote(keyword));
   };
   constexpr std::string_view suffix = "OFF";
-  if (keyword.size() < suffix.size() || keyword.substr(keyword.size() - suffix.size()) != suffix) bad();
+  if (keyword.size() < suffix.size() || keyword.substr(keyword.size() - suffix.size()) != suffix)
+    bad();
   std::string_view prefix = keyword.substr(0, keyword.size() - suffix.size());
   const bool has_extra = !prefix.empty();
   if (prefix.substr(0, 2) == "ST") prefix.remove_prefix(2);
@@ -41,12 +42,14 @@ bool parse_off_keyword(std::string_view keyword, const std::string& file, std::s
 std::uint64_t parse_count(std::string_view token, const char* what, const std::string& file,
                           std::size_t line) {
   std::int64_t v = 0;
-  if (!parse_integer(token, v)) fail(file, line, std::string(what) + " " + quote(token) + " is not an integer");
+  if (!parse_integer(token, v))
+    fail(file, line, std::string(what) + " " + quote(token) + " is not an integer");
   if (v < 0) fail(file, line, std::string(what) + " " + std::to_string(v) + " is negative");
   const auto count = static_cast<std::uint64_t>(v);
   if (count > max_element_count)
-    fail(file, line, std::string(what) + " " + std::to_string(count) + " exceeds the supported maximum " +
-                         std::to_string(max_element_count));
+    fail(file, line,
+         std::string(what) + " " + std::to_string(count) + " exceeds the supported maximum " +
+             std::to_string(max_element_count));
   return count;
 }
 
@@ -95,11 +98,13 @@ triangle_soup read_off(std::string_view text, const std::string& file) {
                " vertices");
     const std::size_t line = lines.line_number();
     if (tokens.size() < 3)
-      fail(file, line, "vertex " + std::to_string(i) + " has " + std::to_string(tokens.size()) +
-                           " coordinates, expected 3 (x y z)");
+      fail(file, line,
+           "vertex " + std::to_string(i) + " has " + std::to_string(tokens.size()) +
+               " coordinates, expected 3 (x y z)");
     if (tokens.size() > 3 && !extra_vertex_columns)
-      fail(file, line, "vertex " + std::to_string(i) + " has " + std::to_string(tokens.size()) +
-                           " values, expected 3 (extra columns need a COFF/NOFF/STOFF header)");
+      fail(file, line,
+           "vertex " + std::to_string(i) + " has " + std::to_string(tokens.size()) +
+               " values, expected 3 (extra columns need a COFF/NOFF/STOFF header)");
     soup.vertices.push_back({parse_coordinate(tokens[0], 'x', file, line),
                              parse_coordinate(tokens[1], 'y', file, line),
                              parse_coordinate(tokens[2], 'z', file, line)});
@@ -109,23 +114,27 @@ triangle_soup read_off(std::string_view text, const std::string& file) {
   for (std::uint64_t f = 0; f < nf; ++f) {
     if (!next_content_line())
       fail(file, lines.line_number(),
-           "unexpected end of file: read " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+           "unexpected end of file: read " + std::to_string(f) + " of " + std::to_string(nf) +
+               " faces");
     const std::size_t line = lines.line_number();
     std::int64_t k = 0;
     if (!parse_integer(tokens[0], k))
       fail(file, line, "face vertex count " + quote(tokens[0]) + " is not an integer");
     if (k < 3)
-      fail(file, line, "face " + std::to_string(f) + " has " + std::to_string(k) +
-                           " vertices (at least 3 needed)");
+      fail(file, line,
+           "face " + std::to_string(f) + " has " + std::to_string(k) +
+               " vertices (at least 3 needed)");
     const std::size_t listed = tokens.size() - 1;
     if (static_cast<std::uint64_t>(k) > listed)
-      fail(file, line, "face " + std::to_string(f) + " declares " + std::to_string(k) +
-                           " vertices but lists only " + std::to_string(listed) + " indices");
+      fail(file, line,
+           "face " + std::to_string(f) + " declares " + std::to_string(k) +
+               " vertices but lists only " + std::to_string(listed) + " indices");
     const std::size_t nk = static_cast<std::size_t>(k);
     if (listed - nk > max_face_colour_values)
-      fail(file, line, "face " + std::to_string(f) + " has " + std::to_string(listed - nk) +
-                           " values after its " + std::to_string(nk) +
-                           " indices (at most 4 colour values allowed)");
+      fail(file, line,
+           "face " + std::to_string(f) + " has " + std::to_string(listed - nk) +
+               " values after its " + std::to_string(nk) +
+               " indices (at most 4 colour values allowed)");
     for (std::size_t c = 1 + nk; c < tokens.size(); ++c) {
       double colour = 0.0;
       if (parse_double(tokens[c], colour) != number_status::ok)
@@ -137,8 +146,9 @@ triangle_soup read_off(std::string_view text, const std::string& file) {
       if (!parse_integer(tokens[c], index))
         fail(file, line, "vertex index " + quote(tokens[c]) + " is not an integer");
       if (index < 0 || static_cast<std::uint64_t>(index) >= nv)
-        fail(file, line, "vertex index " + std::to_string(index) + " out of range (" +
-                             std::to_string(nv) + " vertices)");
+        fail(file, line,
+             "vertex index " + std::to_string(index) + " out of range (" + std::to_string(nv) +
+                 " vertices)");
       polygon.push_back(static_cast<std::uint32_t>(index));
     }
     soup.add_polygon(polygon, static_cast<std::uint32_t>(f));
@@ -146,8 +156,8 @@ triangle_soup read_off(std::string_view text, const std::string& file) {
 
   if (next_content_line())
     fail(file, lines.line_number(),
-         "unexpected data after the last face (declared face count: " + std::to_string(nf) + "): " +
-             quote(tokens[0]));
+         "unexpected data after the last face (declared face count: " + std::to_string(nf) +
+             "): " + quote(tokens[0]));
   soup.face_count = static_cast<std::uint32_t>(nf);
   return soup;
 }

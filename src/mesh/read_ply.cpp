@@ -37,19 +37,27 @@ struct ply_type_name {
   ply_type type;
 };
 constexpr ply_type_name ply_type_names[] = {
-    {"char", ply_type::int8},     {"int8", ply_type::int8},      {"uchar", ply_type::uint8},
-    {"uint8", ply_type::uint8},   {"short", ply_type::int16},    {"int16", ply_type::int16},
-    {"ushort", ply_type::uint16}, {"uint16", ply_type::uint16},  {"int", ply_type::int32},
-    {"int32", ply_type::int32},   {"uint", ply_type::uint32},    {"uint32", ply_type::uint32},
-    {"float", ply_type::float32}, {"float32", ply_type::float32}, {"double", ply_type::float64},
+    {"char", ply_type::int8},      {"int8", ply_type::int8},       {"uchar", ply_type::uint8},
+    {"uint8", ply_type::uint8},    {"short", ply_type::int16},     {"int16", ply_type::int16},
+    {"ushort", ply_type::uint16},  {"uint16", ply_type::uint16},   {"int", ply_type::int32},
+    {"int32", ply_type::int32},    {"uint", ply_type::uint32},     {"uint32", ply_type::uint32},
+    {"float", ply_type::float32},  {"float32", ply_type::float32}, {"double", ply_type::float64},
     {"float64", ply_type::float64}};
 
 std::size_t size_of(ply_type t) {
   switch (t) {
-    case ply_type::int8: case ply_type::uint8: return 1;
-    case ply_type::int16: case ply_type::uint16: return 2;
-    case ply_type::int32: case ply_type::uint32: case ply_type::float32: return 4;
-    case ply_type::float64: return 8;
+    case ply_type::int8:
+    case ply_type::uint8:
+      return 1;
+    case ply_type::int16:
+    case ply_type::uint16:
+      return 2;
+    case ply_type::int32:
+    case ply_type::uint32:
+    case ply_type::float32:
+      return 4;
+    case ply_type::float64:
+      return 8;
   }
   return 8;
 }
@@ -96,16 +104,17 @@ struct ply_header {
 // The faces as read, validated against the vertex count at the end.
 struct pending_faces {
   std::vector<std::int64_t> indices;
-  std::vector<std::size_t> start;     // face f is indices[start[f] .. start[f+1])
-  std::vector<std::uint64_t> where;   // ascii: line; binary: byte offset of the instance
+  std::vector<std::size_t> start;    // face f is indices[start[f] .. start[f+1])
+  std::vector<std::uint64_t> where;  // ascii: line; binary: byte offset of the instance
 };
 
 ply_type parse_type(std::string_view token, const std::string& file, std::size_t line) {
   for (const ply_type_name& n : ply_type_names)
     if (n.name == token) return n.type;
-  fail(file, line, "unknown property type " + quote(token) +
-                       " (expected char, uchar, short, ushort, int, uint, float, double or their "
-                       "int8..float64 aliases)");
+  fail(file, line,
+       "unknown property type " + quote(token) +
+           " (expected char, uchar, short, ushort, int, uint, float, double or their "
+           "int8..float64 aliases)");
 }
 
 // Assigns roles to the vertex and face properties and checks what the reader relies on.
@@ -121,8 +130,9 @@ void check_elements(ply_header& header, const std::string& file) {
       if (vertex) fail(file, e.line, "second 'vertex' element");
       vertex = &e;
       if (e.count > max_element_count)
-        fail(file, e.line, "vertex count " + std::to_string(e.count) + " exceeds the supported maximum " +
-                               std::to_string(max_element_count));
+        fail(file, e.line,
+             "vertex count " + std::to_string(e.count) + " exceeds the supported maximum " +
+                 std::to_string(max_element_count));
       const char* axes[] = {"x", "y", "z"};
       const ply_role roles[] = {ply_role::x, ply_role::y, ply_role::z};
       for (int a = 0; a < 3; ++a) {
@@ -131,25 +141,29 @@ void check_elements(ply_header& header, const std::string& file) {
         if (p == e.properties.end())
           fail(file, e.line, std::string("element 'vertex' has no '") + axes[a] + "' property");
         if (p->is_list)
-          fail(file, p->line, std::string("vertex property '") + axes[a] + "' must be a scalar, not a list");
+          fail(file, p->line,
+               std::string("vertex property '") + axes[a] + "' must be a scalar, not a list");
         p->role = roles[a];
       }
     } else if (e.name == "face") {
       if (face) fail(file, e.line, "second 'face' element");
       face = &e;
       if (e.count > max_element_count)
-        fail(file, e.line, "face count " + std::to_string(e.count) + " exceeds the supported maximum " +
-                               std::to_string(max_element_count));
+        fail(file, e.line,
+             "face count " + std::to_string(e.count) + " exceeds the supported maximum " +
+                 std::to_string(max_element_count));
       auto p = std::find_if(e.properties.begin(), e.properties.end(),
                             [](const ply_property& q) { return q.name == "vertex_indices"; });
       if (p == e.properties.end())
         p = std::find_if(e.properties.begin(), e.properties.end(),
                          [](const ply_property& q) { return q.name == "vertex_index"; });
       if (p == e.properties.end())
-        fail(file, e.line, "element 'face' has no list property 'vertex_indices' (or 'vertex_index')");
+        fail(file, e.line,
+             "element 'face' has no list property 'vertex_indices' (or 'vertex_index')");
       if (!p->is_list) fail(file, p->line, "face property " + quote(p->name) + " must be a list");
       if (!is_integral(p->value_type))
-        fail(file, p->line, "face indices must have an integer type, not " + std::string(name_of(p->value_type)));
+        fail(file, p->line,
+             "face indices must have an integer type, not " + std::string(name_of(p->value_type)));
       p->role = ply_role::face_indices;
     }
   }
@@ -185,13 +199,20 @@ ply_header parse_header(std::string_view text, const std::string& file) {
     }
     if (keyword == "format") {
       if (have_format) fail(file, n, "second 'format' line");
-      if (tokens.size() != 3) fail(file, n, "expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
-      if (tokens[1] == "ascii") header.encoding = ply_encoding::ascii;
-      else if (tokens[1] == "binary_little_endian") header.encoding = ply_encoding::binary_little_endian;
-      else if (tokens[1] == "binary_big_endian") header.encoding = ply_encoding::binary_big_endian;
-      else fail(file, n, "unknown PLY format " + quote(tokens[1]) +
-                             " (expected ascii, binary_little_endian or binary_big_endian)");
-      if (tokens[2] != "1.0") fail(file, n, "unsupported PLY format version " + quote(tokens[2]) + " (expected 1.0)");
+      if (tokens.size() != 3)
+        fail(file, n, "expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
+      if (tokens[1] == "ascii")
+        header.encoding = ply_encoding::ascii;
+      else if (tokens[1] == "binary_little_endian")
+        header.encoding = ply_encoding::binary_little_endian;
+      else if (tokens[1] == "binary_big_endian")
+        header.encoding = ply_encoding::binary_big_endian;
+      else
+        fail(file, n,
+             "unknown PLY format " + quote(tokens[1]) +
+                 " (expected ascii, binary_little_endian or binary_big_endian)");
+      if (tokens[2] != "1.0")
+        fail(file, n, "unsupported PLY format version " + quote(tokens[2]) + " (expected 1.0)");
       have_format = true;
     } else if (keyword == "element") {
       if (!have_format) fail(file, n, "'element' before the 'format' line");
@@ -214,7 +235,8 @@ ply_header parse_header(std::string_view text, const std::string& file) {
       ply_property p;
       p.line = n;
       if (tokens.size() >= 2 && tokens[1] == "list") {
-        if (tokens.size() != 5) fail(file, n, "expected 'property list COUNT_TYPE VALUE_TYPE NAME'");
+        if (tokens.size() != 5)
+          fail(file, n, "expected 'property list COUNT_TYPE VALUE_TYPE NAME'");
         p.is_list = true;
         p.count_type = parse_type(tokens[2], file, n);
         if (!is_integral(p.count_type))
@@ -250,12 +272,14 @@ struct value_name {
 std::int64_t ascii_integer(std::string_view token, ply_type type, const value_name& what,
                            const std::string& file, std::size_t line) {
   std::int64_t v = 0;
-  if (!parse_integer(token, v)) fail(file, line, what.text() + " value " + quote(token) + " is not an integer");
+  if (!parse_integer(token, v))
+    fail(file, line, what.text() + " value " + quote(token) + " is not an integer");
   std::int64_t lo = 0, hi = 0;
   range_of(type, lo, hi);
   if (v < lo || v > hi)
-    fail(file, line, what.text() + " value " + std::to_string(v) + " does not fit its type " +
-                         std::string(name_of(type)));
+    fail(file, line,
+         what.text() + " value " + std::to_string(v) + " does not fit its type " +
+             std::string(name_of(type)));
   return v;
 }
 
@@ -293,12 +317,13 @@ void read_ascii_body(const ply_header& header, std::string_view text, const std:
       }
       if (!found)
         fail(file, lines.line_number(),
-             "unexpected end of file: read " + std::to_string(i) + " of " + std::to_string(e.count) +
-                 " instances of element " + quote(e.name));
+             "unexpected end of file: read " + std::to_string(i) + " of " +
+                 std::to_string(e.count) + " instances of element " + quote(e.name));
       const std::size_t n = lines.line_number();
       const auto too_few = [&]() {
-        fail(file, n, "too few values for element " + quote(e.name) + " (" + std::to_string(tokens.size()) +
-                          " on the line)");
+        fail(file, n,
+             "too few values for element " + quote(e.name) + " (" + std::to_string(tokens.size()) +
+                 " on the line)");
       };
       std::size_t t = 0;
       vec3d p = {0.0, 0.0, 0.0};
@@ -318,39 +343,43 @@ void read_ascii_body(const ply_header& header, std::string_view text, const std:
           continue;
         }
         if (t >= tokens.size()) too_few();
-        const std::int64_t count =
-            ascii_integer(tokens[t++], prop.count_type, value_name{"list count of", prop.name}, file, n);
+        const std::int64_t count = ascii_integer(tokens[t++], prop.count_type,
+                                                 value_name{"list count of", prop.name}, file, n);
         if (count < 0) fail(file, n, "list count of " + quote(prop.name) + " is negative");
         if (static_cast<std::uint64_t>(count) > tokens.size() - t) too_few();
         if (prop.role == ply_role::face_indices) {
           if (count < 3)
-            fail(file, n, "face " + std::to_string(i) + " has " + std::to_string(count) +
-                              " vertices (at least 3 needed)");
+            fail(file, n,
+                 "face " + std::to_string(i) + " has " + std::to_string(count) +
+                     " vertices (at least 3 needed)");
           faces.start.push_back(faces.indices.size());
           faces.where.push_back(n);
           for (std::int64_t c = 0; c < count; ++c)
             faces.indices.push_back(ascii_integer(tokens[t++], prop.value_type, what, file, n));
         } else {
-          for (std::int64_t c = 0; c < count; ++c) ascii_skip_value(tokens[t++], prop.value_type, what, file, n);
+          for (std::int64_t c = 0; c < count; ++c)
+            ascii_skip_value(tokens[t++], prop.value_type, what, file, n);
         }
       }
       if (t != tokens.size())
-        fail(file, n, "too many values for element " + quote(e.name) + " (" + std::to_string(tokens.size()) +
-                          " on the line, " + std::to_string(t) + " expected)");
+        fail(file, n,
+             "too many values for element " + quote(e.name) + " (" + std::to_string(tokens.size()) +
+                 " on the line, " + std::to_string(t) + " expected)");
       if (is_vertex) soup.vertices.push_back(p);
     }
   }
   while (lines.next(line_text)) {
     split_tokens(line_text, tokens);
     if (!tokens.empty())
-      fail(file, lines.line_number(), "unexpected data after the last element: " + quote(tokens[0]));
+      fail(file, lines.line_number(),
+           "unexpected data after the last element: " + quote(tokens[0]));
   }
 }
 
 // ---- binary body ----
 
 class byte_reader {
-public:
+ public:
   byte_reader(std::string_view text, std::size_t offset, bool big_endian)
       : text_(text), pos_(offset), big_endian_(big_endian) {}
   std::size_t offset() const { return pos_; }
@@ -370,10 +399,14 @@ public:
   std::int64_t integer(ply_type t) {
     const std::uint64_t b = bits(size_of(t));
     switch (t) {
-      case ply_type::int8: return static_cast<std::int8_t>(static_cast<std::uint8_t>(b));
-      case ply_type::int16: return static_cast<std::int16_t>(static_cast<std::uint16_t>(b));
-      case ply_type::int32: return static_cast<std::int32_t>(static_cast<std::uint32_t>(b));
-      default: return static_cast<std::int64_t>(b);
+      case ply_type::int8:
+        return static_cast<std::int8_t>(static_cast<std::uint8_t>(b));
+      case ply_type::int16:
+        return static_cast<std::int16_t>(static_cast<std::uint16_t>(b));
+      case ply_type::int32:
+        return static_cast<std::int32_t>(static_cast<std::uint32_t>(b));
+      default:
+        return static_cast<std::int64_t>(b);
     }
   }
   // A value of any type `t`, widened exactly to double. Precondition: left() >= size_of(t).
@@ -393,7 +426,7 @@ public:
     return static_cast<double>(integer(t));
   }
 
-private:
+ private:
   std::string_view text_;
   std::size_t pos_;
   bool big_endian_;
@@ -411,16 +444,19 @@ void read_binary_body(const ply_header& header, std::string_view text, const std
       if (p.is_list) fixed_size = false;
     }
     if (e.count > in.left() / min_size)
-      fail(file, 0, "unexpected end of file: element " + quote(e.name) + " declares " + std::to_string(e.count) +
-                        " instances of at least " + std::to_string(min_size) + " bytes, but only " +
-                        std::to_string(in.left()) + " bytes remain (byte offset " + std::to_string(in.offset()) + ")");
+      fail(file, 0,
+           "unexpected end of file: element " + quote(e.name) + " declares " +
+               std::to_string(e.count) + " instances of at least " + std::to_string(min_size) +
+               " bytes, but only " + std::to_string(in.left()) + " bytes remain (byte offset " +
+               std::to_string(in.offset()) + ")");
     const bool is_vertex = e.name == "vertex";
     const bool is_face = e.name == "face";
     if (!is_vertex && !is_face && fixed_size) {
       in.skip(static_cast<std::size_t>(e.count) * min_size);
       continue;
     }
-    if (is_vertex) soup.vertices.reserve(static_cast<std::size_t>(e.count));  // bounded by the check above
+    if (is_vertex)
+      soup.vertices.reserve(static_cast<std::size_t>(e.count));  // bounded by the check above
     if (is_face) {
       faces.where.reserve(static_cast<std::size_t>(e.count));
       faces.start.reserve(static_cast<std::size_t>(e.count));
@@ -446,13 +482,15 @@ void read_binary_body(const ply_header& header, std::string_view text, const std
           const int axis = prop.role == ply_role::x ? 0 : prop.role == ply_role::y ? 1 : 2;
           p[axis] = in.real(prop.value_type);
           if (!std::isfinite(p[axis]))
-            fail(file, 0, where() + ": " + std::string(1, static_cast<char>('x' + axis)) +
-                              " coordinate is not finite (NaN/Inf are not allowed)");
+            fail(file, 0,
+                 where() + ": " + std::string(1, static_cast<char>('x' + axis)) +
+                     " coordinate is not finite (NaN/Inf are not allowed)");
           continue;
         }
         need(size_of(prop.count_type));
         const std::int64_t count = in.integer(prop.count_type);
-        if (count < 0) fail(file, 0, where() + ": list " + quote(prop.name) + " has a negative count");
+        if (count < 0)
+          fail(file, 0, where() + ": list " + quote(prop.name) + " has a negative count");
         const std::size_t value_size = size_of(prop.value_type);
         need(static_cast<std::uint64_t>(count) * value_size);
         if (prop.role != ply_role::face_indices) {
@@ -460,19 +498,22 @@ void read_binary_body(const ply_header& header, std::string_view text, const std
           continue;
         }
         if (count < 3)
-          fail(file, 0, where() + ": face has " + std::to_string(count) + " vertices (at least 3 needed)");
+          fail(file, 0,
+               where() + ": face has " + std::to_string(count) + " vertices (at least 3 needed)");
         faces.start.push_back(faces.indices.size());
         faces.where.push_back(instance_offset);
-        for (std::int64_t c = 0; c < count; ++c) faces.indices.push_back(in.integer(prop.value_type));
+        for (std::int64_t c = 0; c < count; ++c)
+          faces.indices.push_back(in.integer(prop.value_type));
       }
       if (is_vertex) soup.vertices.push_back(p);
     }
   }
   for (std::size_t k = in.offset(); k < text.size(); ++k)
     if (!is_blank(text[k]) && text[k] != '\n')
-      fail(file, 0, std::to_string(text.size() - in.offset()) +
-                        " bytes of unexpected data after the last element (byte offset " +
-                        std::to_string(in.offset()) + ")");
+      fail(file, 0,
+           std::to_string(text.size() - in.offset()) +
+               " bytes of unexpected data after the last element (byte offset " +
+               std::to_string(in.offset()) + ")");
 }
 
 }  // namespace
@@ -483,8 +524,10 @@ triangle_soup read_ply(std::string_view text, const std::string& file) {
   soup.source = file;
   pending_faces faces;
   const bool ascii = header.encoding == ply_encoding::ascii;
-  if (ascii) read_ascii_body(header, text, file, soup, faces);
-  else read_binary_body(header, text, file, soup, faces);
+  if (ascii)
+    read_ascii_body(header, text, file, soup, faces);
+  else
+    read_binary_body(header, text, file, soup, faces);
 
   const std::size_t nv = soup.vertices.size();
   std::vector<std::uint32_t> polygon;
@@ -499,8 +542,9 @@ triangle_soup read_ply(std::string_view text, const std::string& file) {
         const std::string what = "vertex index " + std::to_string(index) + " out of range (" +
                                  std::to_string(nv) + " vertices)";
         if (ascii) fail(file, static_cast<std::size_t>(faces.where[f]), what);
-        fail(file, 0, "element 'face' #" + std::to_string(f) + " (byte offset " +
-                          std::to_string(faces.where[f]) + "): " + what);
+        fail(file, 0,
+             "element 'face' #" + std::to_string(f) + " (byte offset " +
+                 std::to_string(faces.where[f]) + "): " + what);
       }
       polygon.push_back(static_cast<std::uint32_t>(index));
     }

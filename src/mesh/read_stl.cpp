@@ -31,7 +31,8 @@ constexpr std::size_t stl_record_size = 50;
 
 std::uint32_t little_endian_u32(std::string_view text, std::size_t at) {
   std::uint32_t v = 0;
-  for (int k = 3; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(text[at + static_cast<std::size_t>(k)]);
+  for (int k = 3; k >= 0; --k)
+    v = (v << 8) | static_cast<unsigned char>(text[at + static_cast<std::size_t>(k)]);
   return v;
 }
 
@@ -63,8 +64,9 @@ triangle_soup read_binary_stl(std::string_view text, const std::string& file, st
       for (std::size_t a = 0; a < 3; ++a) {
         p[a] = static_cast<double>(little_endian_float(text, record + 12 + 12 * v + 4 * a));
         if (!std::isfinite(p[a]))
-          fail(file, 0, "triangle #" + std::to_string(t) + " (byte offset " + std::to_string(record) +
-                            "): coordinate is not finite (NaN/Inf are not allowed)");
+          fail(file, 0,
+               "triangle #" + std::to_string(t) + " (byte offset " + std::to_string(record) +
+                   "): coordinate is not finite (NaN/Inf are not allowed)");
       }
       polygon[v] = weld.index_of(p, file, 0);
     }
@@ -75,7 +77,7 @@ triangle_soup read_binary_stl(std::string_view text, const std::string& file, st
 
 // Tokens of an ascii STL with the line of each.
 class token_reader {
-public:
+ public:
   explicit token_reader(std::string_view text) : text_(text) {}
   // Stores the next token in `token`; false at end of text.
   bool next(std::string_view& token) {
@@ -100,7 +102,7 @@ public:
     return !text_.empty() && ends_line(text_, text_.size() - 1) ? line_count() : line_count() + 1;
   }
 
-private:
+ private:
   std::size_t line_count() const {
     std::size_t n = 0;
     for (std::size_t i = 0; i < text_.size(); ++i) n += ends_line(text_, i);
@@ -132,8 +134,9 @@ triangle_soup read_ascii_stl(std::string_view text, const std::string& file) {
   bool first_solid = true;
   while (in.next(token)) {
     if (!equals_ignoring_case(token, "solid"))
-      fail(file, in.line(), std::string(first_solid ? "expected 'solid'" : "expected 'solid' or the end of file") +
-                                ", found " + quote(token));
+      fail(file, in.line(),
+           std::string(first_solid ? "expected 'solid'" : "expected 'solid' or the end of file") +
+               ", found " + quote(token));
     first_solid = false;
     in.skip_line();
     for (;;) {
@@ -167,11 +170,13 @@ triangle_soup read_ascii_stl(std::string_view text, const std::string& file) {
         polygon.push_back(weld.index_of(p, file, in.line()));
       }
       if (polygon.size() < 3)
-        fail(file, in.line(), "facet " + std::to_string(facets) + " has " + std::to_string(polygon.size()) +
-                                  " vertices (at least 3 needed)");
+        fail(file, in.line(),
+             "facet " + std::to_string(facets) + " has " + std::to_string(polygon.size()) +
+                 " vertices (at least 3 needed)");
       expect("endfacet");
       if (facets >= max_element_count)
-        fail(file, in.line(), "too many facets (at most " + std::to_string(max_element_count) + ")");
+        fail(file, in.line(),
+             "too many facets (at most " + std::to_string(max_element_count) + ")");
       soup.add_polygon(polygon, static_cast<std::uint32_t>(facets));
       ++facets;
     }
@@ -188,13 +193,16 @@ triangle_soup read_stl(std::string_view text, const std::string& file) {
     if (text.size() == expected) return read_binary_stl(text, file, count);
     if (starts_with_solid(skip_utf8_bom(text)) && text.find('\0') == std::string_view::npos)
       return read_ascii_stl(skip_utf8_bom(text), file);
-    fail(file, 0, "binary STL declares " + std::to_string(count) + " triangles (" + std::to_string(expected) +
-                      " bytes) but the file has " + std::to_string(text.size()) + " bytes");
+    fail(file, 0,
+         "binary STL declares " + std::to_string(count) + " triangles (" +
+             std::to_string(expected) + " bytes) but the file has " + std::to_string(text.size()) +
+             " bytes");
   }
   text = skip_utf8_bom(text);
   if (!starts_with_solid(text) || text.find('\0') != std::string_view::npos)
-    fail(file, 0, "not an STL file: too short for binary STL (" + std::to_string(text.size()) +
-                      " bytes, at least 84 needed) and not ascii STL (no 'solid' at the start)");
+    fail(file, 0,
+         "not an STL file: too short for binary STL (" + std::to_string(text.size()) +
+             " bytes, at least 84 needed) and not ascii STL (no 'solid' at the start)");
   return read_ascii_stl(text, file);
 }
 

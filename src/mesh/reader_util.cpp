@@ -46,7 +46,9 @@ bool line_reader::next(std::string_view& line) {
   if (pos_ >= text_.size()) return false;
   const std::size_t end = std::min(text_.find_first_of("\r\n", pos_), text_.size());
   std::size_t after = end;
-  if (end < text_.size()) after = text_[end] == '\r' && end + 1 < text_.size() && text_[end + 1] == '\n' ? end + 2 : end + 1;
+  if (end < text_.size())
+    after =
+        text_[end] == '\r' && end + 1 < text_.size() && text_[end + 1] == '\n' ? end + 2 : end + 1;
   line = text_.substr(pos_, end - pos_);
   pos_ = after;
   ++line_;
@@ -105,8 +107,10 @@ bool magnitude_exceeds_one(std::string_view body) {
     ++i;
     for (; i < n && is_digit(body[i]); ++i) {
       if (nonzero_seen) continue;
-      if (body[i] != '0') nonzero_seen = true;
-      else --e;  // leading zeros of the fraction
+      if (body[i] != '0')
+        nonzero_seen = true;
+      else
+        --e;  // leading zeros of the fraction
     }
   }
   if (i < n && (body[i] == 'e' || body[i] == 'E')) {
@@ -143,7 +147,8 @@ number_status parse_double(std::string_view token, double& value) {
   double magnitude = 0.0;
   const char* first = body.data();
   const char* last = body.data() + body.size();
-  const std::from_chars_result r = std::from_chars(first, last, magnitude, std::chars_format::general);
+  const std::from_chars_result r =
+      std::from_chars(first, last, magnitude, std::chars_format::general);
   if (r.ec == std::errc::invalid_argument || r.ptr != last) return number_status::syntax;
   if (r.ec == std::errc::result_out_of_range) {
     if (magnitude_exceeds_one(body)) return number_status::overflow;
@@ -174,7 +179,8 @@ double parse_coordinate(std::string_view token, char axis, const std::string& fi
   const number_status status = parse_double(token, v);
   if (status == number_status::ok) return v;
   const std::string name = std::string(1, axis) + " coordinate " + quote(token);
-  if (status == number_status::not_finite) fail(file, line, name + " is not finite (NaN/Inf are not allowed)");
+  if (status == number_status::not_finite)
+    fail(file, line, name + " is not finite (NaN/Inf are not allowed)");
   if (status == number_status::overflow) fail(file, line, name + " overflows double (not finite)");
   fail(file, line, name + " is not a number");
 }

@@ -40,7 +40,7 @@ inline bool ends_line(std::string_view text, std::size_t i) {
 
 /// Splits text into lines. A line excludes its terminator ("\n", "\r\n" or "\r").
 class line_reader {
-public:
+ public:
   /// Starts at byte `start` of `text`; line numbers continue from `first_line - 1`.
   explicit line_reader(std::string_view text, std::size_t start = 0, std::size_t first_line = 1)
       : text_(text), pos_(start), line_(first_line - 1) {}
@@ -52,14 +52,16 @@ public:
   /// Byte offset just after the terminator of the line last returned.
   std::size_t offset() const { return pos_; }
 
-private:
+ private:
   std::string_view text_;
   std::size_t pos_;
   std::size_t line_;
 };
 
 /// Whether `c` separates tokens (space, \t, \r, \f, \v; \n never occurs inside a line).
-inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+inline bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
 
 /// Whether `s` equals `lowercase_word` ignoring ASCII case (`lowercase_word` is lower case).
 bool equals_ignoring_case(std::string_view s, std::string_view lowercase_word);
@@ -102,13 +104,13 @@ std::size_t bounded_reserve(std::uint64_t declared, std::size_t bytes_left,
 /// Merges vertices with exactly equal coordinates (== on doubles, so -0 and +0 merge; the
 /// first occurrence is stored). Used by the STL reader, whose facets carry coordinates.
 class vertex_welder {
-public:
+ public:
   explicit vertex_welder(triangle_soup& soup) : soup_(soup) {}
   /// Index of the vertex equal to `p`, appending it if new. Throws input_error(file, line)
   /// when the soup would exceed max_element_count vertices.
   std::uint32_t index_of(const vec3d& p, const std::string& file, std::size_t line);
 
-private:
+ private:
   struct hash {
     std::size_t operator()(const vec3d& p) const;
   };

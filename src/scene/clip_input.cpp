@@ -25,14 +25,16 @@ using view::reader;
 namespace {
 
 const json& array_of(const reader& r, const json& v, const std::string& key, const char* what) {
-  if (!v.is_array()) r.fail(key, std::string("must be an array of ") + what + " (got " + v.type_name() + ")");
+  if (!v.is_array())
+    r.fail(key, std::string("must be an array of ") + what + " (got " + v.type_name() + ")");
   return v;
 }
 
 template <std::size_t N>
 std::array<double, N> point(const reader& r, const json& v, const std::string& key) {
   if (!v.is_array() || v.size() != N)
-    r.fail(key, "must be a point of " + std::to_string(N) + " numbers (the region is " + std::to_string(N) + "D)");
+    r.fail(key, "must be a point of " + std::to_string(N) + " numbers (the region is " +
+                    std::to_string(N) + "D)");
   std::array<double, N> p{};
   for (std::size_t k = 0; k < N; ++k) p[k] = r.number(v[k], key + "/" + std::to_string(k));
   return p;
@@ -42,13 +44,15 @@ template <std::size_t N>
 std::vector<std::array<double, N>> points(const reader& r, const json& v, const std::string& key) {
   array_of(r, v, key, "points");
   std::vector<std::array<double, N>> out;
-  for (std::size_t i = 0; i < v.size(); ++i) out.push_back(point<N>(r, v[i], key + "/" + std::to_string(i)));
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out.push_back(point<N>(r, v[i], key + "/" + std::to_string(i)));
   return out;
 }
 
 void parse_region(const reader& r, const json& doc, clip_input& in) {
   const json& region = r.object(r.require(doc, "", "region"), "/region");
-  if (region.size() != 1) r.fail("/region", "must have exactly one of rect, box, convex, halfspaces");
+  if (region.size() != 1)
+    r.fail("/region", "must have exactly one of rect, box, convex, halfspaces");
   const std::string name = region.begin().key();
   const std::string key = "/region/" + name;
   const json& v = region.begin().value();
@@ -64,7 +68,8 @@ void parse_region(const reader& r, const json& doc, clip_input& in) {
       in.window = clip::make_window(b[0], b[2], b[1], b[3]);
       in.planes2 = clip::window_half_planes(in.window);
     } else if (name == "box") {
-      if (!v.is_array() || v.size() != 6) r.fail(key, "must be [xmin, ymin, zmin, xmax, ymax, zmax]");
+      if (!v.is_array() || v.size() != 6)
+        r.fail(key, "must be [xmin, ymin, zmin, xmax, ymax, zmax]");
       const auto b = point<6>(r, v, key);
       for (int k = 0; k < 3; ++k)
         if (!(b[k] <= b[k + 3])) r.fail(key + "/" + std::to_string(k + 3), "max must be >= min");
@@ -75,7 +80,9 @@ void parse_region(const reader& r, const json& doc, clip_input& in) {
     } else if (name == "convex") {
       array_of(r, v, key, "points");
       if (v.empty() || !v[0].is_array() || (v[0].size() != 2 && v[0].size() != 3))
-        r.fail(key, "must be a list of 2D points [x, y] (a convex polygon) or 3D points (a convex hull)");
+        r.fail(
+            key,
+            "must be a list of 2D points [x, y] (a convex polygon) or 3D points (a convex hull)");
       in.kind = kind::convex;
       in.dimension = static_cast<int>(v[0].size());
       if (in.dimension == 2) {
@@ -94,14 +101,17 @@ void parse_region(const reader& r, const json& doc, clip_input& in) {
       for (std::size_t i = 0; i < v.size(); ++i) {
         const std::string k = key + "/" + std::to_string(i);
         if (in.dimension == 2) {
-          if (!v[i].is_array() || v[i].size() != 3) r.fail(k, "must be [a, b, c] like /region/halfspaces/0");
+          if (!v[i].is_array() || v[i].size() != 3)
+            r.fail(k, "must be [a, b, c] like /region/halfspaces/0");
           const auto h = point<3>(r, v[i], k);
           if (h[0] == 0 && h[1] == 0) r.fail(k, "the normal (a, b) must not be zero");
           in.planes2.push_back({h[0], h[1], h[2]});
         } else {
-          if (!v[i].is_array() || v[i].size() != 4) r.fail(k, "must be [a, b, c, d] like /region/halfspaces/0");
+          if (!v[i].is_array() || v[i].size() != 4)
+            r.fail(k, "must be [a, b, c, d] like /region/halfspaces/0");
           const auto h = point<4>(r, v[i], k);
-          if (h[0] == 0 && h[1] == 0 && h[2] == 0) r.fail(k, "the normal (a, b, c) must not be zero");
+          if (h[0] == 0 && h[1] == 0 && h[2] == 0)
+            r.fail(k, "the normal (a, b, c) must not be zero");
           in.planes3.push_back({{h[0], h[1], h[2]}, h[3]});
         }
       }
@@ -120,8 +130,10 @@ void parse_items(const reader& r, const json& doc, std::vector<clip::segment<N>>
     array_of(r, *s, "/segments", "segments [p, q]");
     for (std::size_t i = 0; i < s->size(); ++i) {
       const std::string key = "/segments/" + std::to_string(i);
-      if (!(*s)[i].is_array() || (*s)[i].size() != 2) r.fail(key, "must be a segment [p, q] of two points");
-      segments.push_back({point<N>(r, (*s)[i][0], key + "/0"), point<N>(r, (*s)[i][1], key + "/1")});
+      if (!(*s)[i].is_array() || (*s)[i].size() != 2)
+        r.fail(key, "must be a segment [p, q] of two points");
+      segments.push_back(
+          {point<N>(r, (*s)[i][0], key + "/0"), point<N>(r, (*s)[i][1], key + "/1")});
     }
   }
   if (const json* p = r.optional(doc, "polygons")) {
@@ -157,13 +169,14 @@ std::string outcode_text(unsigned code, int dimension) {
   for (int b = bits - 1; b >= 0; --b) s += (code >> b) & 1u ? '1' : '0';
   std::string list;
   for (int b = 0; b < bits; ++b)
-    if ((code >> b) & 1u) list += (list.empty() ? "" : "|") + std::string(dimension == 2 ? names2[b] : names[b]);
+    if ((code >> b) & 1u)
+      list += (list.empty() ? "" : "|") + std::string(dimension == 2 ? names2[b] : names[b]);
   return s + " (" + (list.empty() ? "inside" : list) + ")";
 }
 
 template <std::size_t N, class Region>
-void clip_segments(const std::vector<clip::segment<N>>& segments, const Region& region, segment_clipper algorithm,
-                   json& result, std::ostream* log) {
+void clip_segments(const std::vector<clip::segment<N>>& segments, const Region& region,
+                   segment_clipper algorithm, json& result, std::ostream* log) {
   json out = json::array(), codes = json::array(), ts = json::array();
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const clip::segment<N>& s = segments[i];
@@ -183,8 +196,8 @@ void clip_segments(const std::vector<clip::segment<N>>& segments, const Region& 
                          : clip::trivially_rejected(c0, c1) ? "trivially rejected"
                          : kept                             ? "clipped"
                                                             : "rejected after clipping";
-      *log << "segment " << i << ": p0 outcode " << outcode_text(c0, N) << ", p1 outcode " << outcode_text(c1, N)
-           << ": " << what << "\n";
+      *log << "segment " << i << ": p0 outcode " << outcode_text(c0, N) << ", p1 outcode "
+           << outcode_text(c1, N) << ": " << what << "\n";
     }
   }
   result["segments"] = out;
@@ -195,8 +208,8 @@ void clip_segments(const std::vector<clip::segment<N>>& segments, const Region& 
 }
 
 template <class P, class H>
-void clip_polygons(const std::vector<std::vector<P>>& polygons, const std::vector<H>& planes, json& result,
-                   std::ostream* log) {
+void clip_polygons(const std::vector<std::vector<P>>& polygons, const std::vector<H>& planes,
+                   json& result, std::ostream* log) {
   json out = json::array(), pieces = json::array();
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     out.push_back(polygon_json(clip::sutherland_hodgman_clip(polygons[i], planes)));
@@ -204,8 +217,8 @@ void clip_polygons(const std::vector<std::vector<P>>& polygons, const std::vecto
     const auto parts = clip::sutherland_hodgman_pieces(polygons[i], planes);
     for (const auto& p : parts) list.push_back(polygon_json(p));
     if (log)
-      *log << "polygon " << i << ": " << polygons[i].size() << " vertices -> " << out.back().size() << " vertices, "
-           << parts.size() << (parts.size() == 1 ? " piece" : " pieces") << "\n";
+      *log << "polygon " << i << ": " << polygons[i].size() << " vertices -> " << out.back().size()
+           << " vertices, " << parts.size() << (parts.size() == 1 ? " piece" : " pieces") << "\n";
     pieces.push_back(std::move(list));
   }
   result["polygons"] = out;
@@ -222,7 +235,8 @@ std::string fixed(double v) {
 
 clip_input parse_clip_input(const json& doc, const std::string& path) {
   const reader r(path, nullptr);
-  if (!doc.is_object()) r.fail("", std::string("the input must be a JSON object (got ") + doc.type_name() + ")");
+  if (!doc.is_object())
+    r.fail("", std::string("the input must be a JSON object (got ") + doc.type_name() + ")");
   for (auto it = doc.begin(); it != doc.end(); ++it)
     if (it.key() != "region" && it.key() != "segments" && it.key() != "polygons")
       r.fail("/" + it.key(), "unknown key (expected region, segments, polygons)");
@@ -238,7 +252,7 @@ clip_input parse_clip_input(const json& doc, const std::string& path) {
 
 clip_input load_clip_input(const std::string& path) {
   const std::string text = read_input_file(path);  // a regular file: no FIFO hang, no /dev/zero
-  check_json_nesting(text, path);                   // before nlohmann builds and copies it
+  check_json_nesting(text, path);                  // before nlohmann builds and copies it
   json doc;
   try {
     doc = json::parse(text);
@@ -254,16 +268,23 @@ json run_clip(const clip_input& in, const std::string& algorithm, std::ostream* 
     throw usage_error("clip: unknown --algorithm " + algorithm +
                       " (expected cohen-sutherland, liang-barsky or sutherland-hodgman)");
   const bool has_segments = !in.segments2.empty() || !in.segments3.empty();
-  const bool box_region = in.kind == clip_input::region_kind::rect || in.kind == clip_input::region_kind::box;
+  const bool box_region =
+      in.kind == clip_input::region_kind::rect || in.kind == clip_input::region_kind::box;
   if (has_segments && algorithm == "sutherland-hodgman")
-    throw scene_error(in.path, "/segments", "Sutherland–Hodgman clips polygons; clip segments with cohen-sutherland or liang-barsky");
+    throw scene_error(
+        in.path, "/segments",
+        "Sutherland–Hodgman clips polygons; clip segments with cohen-sutherland or liang-barsky");
   if (has_segments && !box_region)
-    throw scene_error(in.path, "/region", "segments are clipped against a rect or box only (Cohen–Sutherland, Liang–Barsky)");
-  const segment_clipper sc = algorithm == "liang-barsky" ? segment_clipper::liang_barsky : segment_clipper::cohen_sutherland;
+    throw scene_error(
+        in.path, "/region",
+        "segments are clipped against a rect or box only (Cohen–Sutherland, Liang–Barsky)");
+  const segment_clipper sc = algorithm == "liang-barsky" ? segment_clipper::liang_barsky
+                                                         : segment_clipper::cohen_sutherland;
   json result;
   result["dimension"] = in.dimension;
-  result["algorithm"] = {{"segments", sc == segment_clipper::liang_barsky ? "liang-barsky" : "cohen-sutherland"},
-                         {"polygons", "sutherland-hodgman"}};
+  result["algorithm"] = {
+      {"segments", sc == segment_clipper::liang_barsky ? "liang-barsky" : "cohen-sutherland"},
+      {"polygons", "sutherland-hodgman"}};
   if (in.dimension == 2) {
     if (has_segments) clip_segments<2>(in.segments2, in.window, sc, result, log);
     clip_polygons(in.polygons2, in.planes2, result, log);
@@ -276,7 +297,9 @@ json run_clip(const clip_input& in, const std::string& algorithm, std::ostream* 
 }
 
 std::string clip_svg(const clip_input& in, const json& result) {
-  if (in.dimension != 2) throw scene_error(in.path, "/region", "SVG output draws 2D input only (use -o OUT.json for 3D)");
+  if (in.dimension != 2)
+    throw scene_error(in.path, "/region",
+                      "SVG output draws 2D input only (use -o OUT.json for 3D)");
   // Bounds: every input point, and the region when it is bounded.
   double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   double hi[2] = {-lo[0], -lo[1]};
@@ -294,7 +317,10 @@ std::string clip_svg(const clip_input& in, const json& result) {
     for (const auto& p : poly) grow(p);
   std::vector<clip::vec2> region;
   if (in.kind == clip_input::region_kind::rect) {
-    region = {in.window.min, {in.window.max[0], in.window.min[1]}, in.window.max, {in.window.min[0], in.window.max[1]}};
+    region = {in.window.min,
+              {in.window.max[0], in.window.min[1]},
+              in.window.max,
+              {in.window.min[0], in.window.max[1]}};
   } else if (in.kind == clip_input::region_kind::convex) {
     region = in.convex_polygon;
   }
@@ -306,29 +332,36 @@ std::string clip_svg(const clip_input& in, const json& result) {
     hi[k] += 0.05 * span;
   }
   if (in.kind == clip_input::region_kind::halfspaces)  // the half-planes' region within the bounds
-    region = clip::sutherland_hodgman_clip(std::vector<clip::vec2>{{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}},
-                                           in.planes2);
+    region = clip::sutherland_hodgman_clip(
+        std::vector<clip::vec2>{{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}},
+        in.planes2);
   span = std::max(hi[0] - lo[0], hi[1] - lo[1]);
   const double scale = 512.0 / span;
   const double width = (hi[0] - lo[0]) * scale, height = (hi[1] - lo[1]) * scale;
-  auto xy = [&](double x, double y) { return fixed((x - lo[0]) * scale) + "," + fixed((hi[1] - y) * scale); };
+  auto xy = [&](double x, double y) {
+    return fixed((x - lo[0]) * scale) + "," + fixed((hi[1] - y) * scale);
+  };
   auto path = [&](const json& pts, bool closed) {
     std::string d;
-    for (std::size_t i = 0; i < pts.size(); ++i) d += (i ? " L" : "M") + xy(pts[i][0].get<double>(), pts[i][1].get<double>());
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      d += (i ? " L" : "M") + xy(pts[i][0].get<double>(), pts[i][1].get<double>());
     return d + (closed ? " Z" : "");
   };
   std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fixed(width) << "\" height=\"" << fixed(height)
-      << "\" viewBox=\"0 0 " << fixed(width) << " " << fixed(height) << "\">\n";
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fixed(width) << "\" height=\""
+      << fixed(height) << "\" viewBox=\"0 0 " << fixed(width) << " " << fixed(height) << "\">\n";
   svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   json region_pts = json::array();
   for (const auto& p : region) region_pts.push_back({p[0], p[1]});
   if (!region_pts.empty())
-    svg << "<path id=\"region\" d=\"" << path(region_pts, true) << "\" fill=\"#dce8f5\" stroke=\"#4a6fa5\" stroke-width=\"1.5\"/>\n";
-  svg << "<g id=\"input\" fill=\"none\" stroke=\"#888\" stroke-width=\"1\" stroke-dasharray=\"4 3\">\n";
+    svg << "<path id=\"region\" d=\"" << path(region_pts, true)
+        << "\" fill=\"#dce8f5\" stroke=\"#4a6fa5\" stroke-width=\"1.5\"/>\n";
+  svg << "<g id=\"input\" fill=\"none\" stroke=\"#888\" stroke-width=\"1\" stroke-dasharray=\"4 "
+         "3\">\n";
   for (const auto& s : in.segments2)
     svg << "<path d=\"M" << xy(s.p0[0], s.p0[1]) << " L" << xy(s.p1[0], s.p1[1]) << "\"/>\n";
-  for (const auto& poly : in.polygons2) svg << "<path d=\"" << path(polygon_json(poly), true) << "\"/>\n";
+  for (const auto& poly : in.polygons2)
+    svg << "<path d=\"" << path(polygon_json(poly), true) << "\"/>\n";
   svg << "</g>\n<g id=\"result\" stroke=\"#c0392b\" stroke-width=\"2\">\n";
   for (const auto& pieces : result.at("pieces"))
     for (const auto& piece : pieces)
@@ -339,20 +372,24 @@ std::string clip_svg(const clip_input& in, const json& result) {
   // The textbook Sutherland–Hodgman polygon where it differs from its pieces: its degenerate
   // connecting edges show as dark dotted lines along the region's boundary.
   const json& textbook = result.at("polygons");
-  svg << "<g id=\"textbook\" fill=\"none\" stroke=\"#222\" stroke-width=\"1\" stroke-dasharray=\"1 3\">\n";
+  svg << "<g id=\"textbook\" fill=\"none\" stroke=\"#222\" stroke-width=\"1\" stroke-dasharray=\"1 "
+         "3\">\n";
   for (std::size_t i = 0; i < textbook.size(); ++i)
-    if (result.at("pieces")[i].size() > 1) svg << "<path d=\"" << path(textbook[i], true) << "\"/>\n";
+    if (result.at("pieces")[i].size() > 1)
+      svg << "<path d=\"" << path(textbook[i], true) << "\"/>\n";
   svg << "</g>\n</svg>\n";
   return svg.str();
 }
 
-void clip_command(const std::string& input_path, const std::string& output_path, const std::string& algorithm,
-                  bool verbose, std::ostream& out, std::ostream& log) {
+void clip_command(const std::string& input_path, const std::string& output_path,
+                  const std::string& algorithm, bool verbose, std::ostream& out,
+                  std::ostream& log) {
   auto ends_with = [&](const char* ext) {
     const std::string e(ext);
     if (output_path.size() < e.size()) return false;
     std::string tail = output_path.substr(output_path.size() - e.size());
-    std::transform(tail.begin(), tail.end(), tail.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(tail.begin(), tail.end(), tail.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return tail == e;
   };
   const bool svg = ends_with(".svg");

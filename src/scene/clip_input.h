@@ -47,11 +47,11 @@ struct clip_input {
   std::string path;
   int dimension = 2;
   enum class region_kind { rect, box, convex, halfspaces } kind = region_kind::rect;
-  clip::window2 window{};                   ///< rect
-  clip::box3 box{};                         ///< box
-  std::vector<clip::vec2> convex_polygon;   ///< 2D convex region's vertices (for drawing)
-  std::vector<clip::half_plane2> planes2;   ///< the 2D region as half-planes (every kind)
-  std::vector<clip::half_space3> planes3;   ///< the 3D region as half-spaces (every kind)
+  clip::window2 window{};                  ///< rect
+  clip::box3 box{};                        ///< box
+  std::vector<clip::vec2> convex_polygon;  ///< 2D convex region's vertices (for drawing)
+  std::vector<clip::half_plane2> planes2;  ///< the 2D region as half-planes (every kind)
+  std::vector<clip::half_space3> planes3;  ///< the 3D region as half-spaces (every kind)
   std::vector<clip::segment2> segments2;
   std::vector<clip::segment3> segments3;
   std::vector<std::vector<clip::vec2>> polygons2;
@@ -80,7 +80,7 @@ std::string clip_svg(const clip_input& in, const nlohmann::json& result);
 
 /// `exbsp clip`: load, clip, write JSON or SVG (by the extension of output_path) atomically,
 /// or JSON to `out` when output_path is empty. Log lines (verbose) go to `log`.
-void clip_command(const std::string& input_path, const std::string& output_path, const std::string& algorithm,
-                  bool verbose, std::ostream& out, std::ostream& log);
+void clip_command(const std::string& input_path, const std::string& output_path,
+                  const std::string& algorithm, bool verbose, std::ostream& out, std::ostream& log);
 
 }  // namespace exbsp::scene

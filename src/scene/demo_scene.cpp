@@ -27,13 +27,15 @@ void add_shaded(scene& s, const std::string& name, const triangle_soup& local, v
   std::map<std::tuple<int, int, int>, triangle_soup> parts;
   std::map<std::pair<std::tuple<int, int, int>, std::uint32_t>, std::uint32_t> face_ids;
   for (const soup_triangle& t : local.triangles) {
-    const view::point3 a = view::to_point(local.vertices[t.v[0]]), b = view::to_point(local.vertices[t.v[1]]),
+    const view::point3 a = view::to_point(local.vertices[t.v[0]]),
+                       b = view::to_point(local.vertices[t.v[1]]),
                        c = view::to_point(local.vertices[t.v[2]]);
     const view::vector3 n_local = view::cross(b - a, c - a);
     if (!(view::length(n_local) > 0)) continue;
     const view::vector3 n = view::normalized(view::transform_vector(transform, n_local));
     const double k = 0.5 + 0.5 * std::fabs(view::dot(n, light));
-    const std::tuple<int, int, int> key{static_cast<int>(std::lround(base.r * k)), static_cast<int>(std::lround(base.g * k)),
+    const std::tuple<int, int, int> key{static_cast<int>(std::lround(base.r * k)),
+                                        static_cast<int>(std::lround(base.g * k)),
                                         static_cast<int>(std::lround(base.b * k))};
     triangle_soup& part = parts[key];
     const auto [it, inserted] = face_ids.try_emplace({key, t.face}, part.face_count);
@@ -46,7 +48,8 @@ void add_shaded(scene& s, const std::string& name, const triangle_soup& local, v
     m.file = name;
     m.path = "(built-in) " + name;
     m.key = "/meshes/" + std::to_string(s.meshes.size());
-    m.color = {static_cast<std::uint8_t>(std::get<0>(key)), static_cast<std::uint8_t>(std::get<1>(key)),
+    m.color = {static_cast<std::uint8_t>(std::get<0>(key)),
+               static_cast<std::uint8_t>(std::get<1>(key)),
                static_cast<std::uint8_t>(std::get<2>(key))};
     m.transform = transform;
     part.source = name;
@@ -71,7 +74,8 @@ scene demo_scene() {
   add_shaded(s, "cube", make_box({-1, -1, -1}, {1, 1, 1}), {220, 70, 60},
              translate({-4.6, 0.6, 1.0}) * rotate(25, {0, 0, 1}));
   add_shaded(s, "slab", make_box({-2.1, -0.3, -0.5}, {2.1, 0.3, 0.5}), {70, 130, 220},
-             translate({-4.6, 0.6, 1.1}) * rotate(-40, {0, 0, 1}) * rotate(20, {1, 0, 0}) * rotate(15, {0, 1, 0}));
+             translate({-4.6, 0.6, 1.1}) * rotate(-40, {0, 0, 1}) * rotate(20, {1, 0, 0}) *
+                 rotate(15, {0, 1, 0}));
   // Cyclic overlap: three planks, each over the next where they cross; one colour each.
   const triangle_soup planks = make_cyclic_planks(0.75, 2.1, 0.6, 0.25);
   const view::rgb8 plank_colors[3] = {{240, 190, 60}, {235, 125, 45}, {150, 95, 200}};
@@ -86,7 +90,8 @@ scene demo_scene() {
   // translations here: they keep the gear's coplanar faces exactly coplanar in double, so the
   // BSP needs no splits for them (a tilt would round each face onto its own plane).
   const view::mat4 gear_frame = translate({4.6, 0.4, 0.9});
-  add_shaded(s, "gear", make_gear(12, 1.25, 1.6, 0.5, 0.4), {150, 160, 175}, gear_frame * rotate(7, {0, 0, 1}));
+  add_shaded(s, "gear", make_gear(12, 1.25, 1.6, 0.5, 0.4), {150, 160, 175},
+             gear_frame * rotate(7, {0, 0, 1}));
   add_shaded(s, "shaft", make_prism(hexagon(0.36), -1.1, 1.2), {60, 170, 100}, gear_frame);
   s.camera = {{0.0, -8.5, 11.0}, {0.0, 0.6, 0.5}, {0, 0, 1}};
   s.projection.kind = view::projection_kind::perspective;

@@ -29,8 +29,9 @@ struct named_view {
 };
 
 constexpr named_view views[] = {
-    {"iso", {1, 1, 1}, {0, 1, 0}},    {"front", {0, 0, 1}, {0, 1, 0}}, {"back", {0, 0, -1}, {0, 1, 0}},
-    {"left", {-1, 0, 0}, {0, 1, 0}},  {"right", {1, 0, 0}, {0, 1, 0}}, {"top", {0, 1, 0}, {0, 0, -1}},
+    {"iso", {1, 1, 1}, {0, 1, 0}},     {"front", {0, 0, 1}, {0, 1, 0}},
+    {"back", {0, 0, -1}, {0, 1, 0}},   {"left", {-1, 0, 0}, {0, 1, 0}},
+    {"right", {1, 0, 0}, {0, 1, 0}},   {"top", {0, 1, 0}, {0, 0, -1}},
     {"bottom", {0, -1, 0}, {0, 0, 1}},
 };
 
@@ -48,14 +49,18 @@ const std::vector<std::string>& mesh_view_names() {
   return names;
 }
 
-scene mesh_scene(std::shared_ptr<const triangle_soup> soup, const std::string& name, const mesh_view_options& options) {
+scene mesh_scene(std::shared_ptr<const triangle_soup> soup, const std::string& name,
+                 const mesh_view_options& options) {
   const named_view* chosen = nullptr;
   for (const named_view& v : views)
     if (options.view == v.name) chosen = &v;
-  if (!chosen) throw usage_error("--view: unknown view '" + options.view + "' (expected iso, front, back, left, right, top or bottom)");
+  if (!chosen)
+    throw usage_error("--view: unknown view '" + options.view +
+                      "' (expected iso, front, back, left, right, top or bottom)");
   if (options.width < 1 || options.width > 16384 || options.height < 1 || options.height > 16384)
     throw usage_error("--size: width and height must be in 1..16384");
-  if (!soup || soup->triangles.empty()) throw input_error(name, 0, "the mesh has no triangle to render");
+  if (!soup || soup->triangles.empty())
+    throw input_error(name, 0, "the mesh has no triangle to render");
 
   // Bounding box of the vertices the triangles use (a stray unused vertex does not move the view).
   std::array<double, 3> lo{}, hi{};
@@ -74,7 +79,8 @@ scene mesh_scene(std::shared_ptr<const triangle_soup> soup, const std::string& n
     half[k] = hi[k] / 2 - lo[k] / 2;
   }
   double radius = std::sqrt(half[0] * half[0] + half[1] * half[1] + half[2] * half[2]);
-  const double magnitude = std::max({std::fabs(centre[0]), std::fabs(centre[1]), std::fabs(centre[2])});
+  const double magnitude =
+      std::max({std::fabs(centre[0]), std::fabs(centre[1]), std::fabs(centre[2])});
   // A mesh that is a single point (all triangles degenerate there) still gets a view of a small
   // region around it, scaled to its coordinates so that eye - centre is not lost to rounding.
   if (!(radius > magnitude * 1e-12)) radius = std::max(magnitude * 1e-6, 1.0);
@@ -87,9 +93,11 @@ scene mesh_scene(std::shared_ptr<const triangle_soup> soup, const std::string& n
   std::array<double, 3> eye{};
   for (int k = 0; k < 3; ++k) eye[k] = centre[k] + distance * triple(w)[k];
   const double near_dist = distance - 1.01 * radius, far_dist = distance + 1.01 * radius;
-  const bool finite = std::isfinite(distance) && std::isfinite(far_dist) && near_dist > 0 &&
-                      std::all_of(eye.begin(), eye.end(), [](double x) { return std::isfinite(x); });
-  if (!finite) throw input_error(name, 0, "the mesh's coordinates are too large to fit a view in double");
+  const bool finite =
+      std::isfinite(distance) && std::isfinite(far_dist) && near_dist > 0 &&
+      std::all_of(eye.begin(), eye.end(), [](double x) { return std::isfinite(x); });
+  if (!finite)
+    throw input_error(name, 0, "the mesh's coordinates are too large to fit a view in double");
 
   // Light over the viewer's left shoulder: towards the eye, up and to the left.
   const view::vector3 right = view::normalized(view::cross(chosen->up, w));
@@ -98,10 +106,12 @@ scene mesh_scene(std::shared_ptr<const triangle_soup> soup, const std::string& n
   const nlohmann::json doc = {
       {"meshes", {{{"file", name}, {"color", {176, 190, 214}}}}},
       {"camera", {{"eye", eye}, {"look_at", centre}, {"up", triple(chosen->up)}}},
-      {"projection", {{"type", "perspective"}, {"fovy_deg", fovy_deg}, {"near", near_dist}, {"far", far_dist}}},
+      {"projection",
+       {{"type", "perspective"}, {"fovy_deg", fovy_deg}, {"near", near_dist}, {"far", far_dist}}},
       {"viewport", {{"width", options.width}, {"height", options.height}}},
       {"background", {250, 250, 252}},
-      {"effects", {{"lighting", {{"direction", triple(light)}, {"ambient", 0.3}, {"intensity", 0.7}}}}},
+      {"effects",
+       {{"lighting", {{"direction", triple(light)}, {"ambient", 0.3}, {"intensity", 0.7}}}}},
       {"svg", {{"edges", options.edges}}},
   };
   scene s = parse_scene(doc, name, nullptr, true);

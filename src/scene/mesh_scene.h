@@ -6,9 +6,9 @@
 // bottom: -y with up +z, iso: (1, 1, 1) with up +y). r is the radius of the box's bounding
 // sphere (half its diagonal). A perspective camera with vertical field of view fovy (30
 // degrees) at distance d = 1.08 r / sin(fov / 2) from c, fov the smaller of the vertical and
-// horizontal fields of view, sees the whole sphere with a margin; near = d - 1.01 r and far = d + 1.01 r
-// enclose it. The mesh is lit (the "lighting" effect) from over the viewer's left shoulder,
-// so its shape reads without a hand-written scene; SVG and PDF get visible regions and
+// horizontal fields of view, sees the whole sphere with a margin; near = d - 1.01 r and far = d
+// + 1.01 r enclose it. The mesh is lit (the "lighting" effect) from over the viewer's left
+// shoulder, so its shape reads without a hand-written scene; SVG and PDF get visible regions and
 // edges.
 #pragma once
 #include <memory>
@@ -22,9 +22,9 @@ namespace exbsp::scene {
 
 /// What `exbsp render MESH` may choose.
 struct mesh_view_options {
-  std::string view = "iso";        ///< one of mesh_view_names()
-  int width = 800, height = 600;   ///< viewport (= image) in pixels, each in 1..16384
-  std::string edges = "visible";   ///< SVG/PDF edges: "none", "visible" or "visible+hidden"
+  std::string view = "iso";       ///< one of mesh_view_names()
+  int width = 800, height = 600;  ///< viewport (= image) in pixels, each in 1..16384
+  std::string edges = "visible";  ///< SVG/PDF edges: "none", "visible" or "visible+hidden"
 };
 
 /// "iso", "front", "back", "left", "right", "top", "bottom".

@@ -16,15 +16,19 @@ std::uint32_t add_vertex(triangle_soup& s, double x, double y, double z) {
   return static_cast<std::uint32_t>(s.vertices.size() - 1);
 }
 
-void add_face(triangle_soup& s, const std::vector<std::uint32_t>& poly) { s.add_polygon(poly, s.face_count); }
+void add_face(triangle_soup& s, const std::vector<std::uint32_t>& poly) {
+  s.add_polygon(poly, s.face_count);
+}
 }  // namespace
 
 triangle_soup make_box(const vec3d& lo, const vec3d& hi) {
-  if (!(lo[0] < hi[0] && lo[1] < hi[1] && lo[2] < hi[2])) throw usage_error("make_box: need lo < hi");
+  if (!(lo[0] < hi[0] && lo[1] < hi[1] && lo[2] < hi[2]))
+    throw usage_error("make_box: need lo < hi");
   triangle_soup s;
   s.source = "box";
   // Vertex k has x = hi if bit 0, y = hi if bit 1, z = hi if bit 2.
-  for (int k = 0; k < 8; ++k) add_vertex(s, k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]);
+  for (int k = 0; k < 8; ++k)
+    add_vertex(s, k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]);
   add_face(s, {0, 2, 3, 1});  // z = lo, normal -z
   add_face(s, {4, 5, 7, 6});  // z = hi, +z
   add_face(s, {0, 1, 5, 4});  // y = lo, -y
@@ -35,7 +39,8 @@ triangle_soup make_box(const vec3d& lo, const vec3d& hi) {
 }
 
 triangle_soup make_prism(const std::vector<std::array<double, 2>>& outline, double z0, double z1) {
-  if (outline.size() < 3 || !(z0 < z1)) throw usage_error("make_prism: need >= 3 outline points and z0 < z1");
+  if (outline.size() < 3 || !(z0 < z1))
+    throw usage_error("make_prism: need >= 3 outline points and z0 < z1");
   triangle_soup s;
   s.source = "prism";
   const auto n = static_cast<std::uint32_t>(outline.size());
@@ -55,8 +60,10 @@ triangle_soup make_prism(const std::vector<std::array<double, 2>>& outline, doub
   return s;
 }
 
-triangle_soup make_gear(int teeth, double root_radius, double tip_radius, double bore_radius, double thickness) {
-  if (teeth < 3 || !(0 < bore_radius && bore_radius < root_radius && root_radius < tip_radius) || !(thickness > 0))
+triangle_soup make_gear(int teeth, double root_radius, double tip_radius, double bore_radius,
+                        double thickness) {
+  if (teeth < 3 || !(0 < bore_radius && bore_radius < root_radius && root_radius < tip_radius) ||
+      !(thickness > 0))
     throw usage_error("make_gear: bad dimensions");
   triangle_soup s;
   s.source = "gear";
@@ -74,9 +81,11 @@ triangle_soup make_gear(int teeth, double root_radius, double tip_radius, double
   const double z0 = -thickness / 2, z1 = thickness / 2;
   // Vertex blocks: outer bottom, outer top, bore bottom, bore top.
   for (double z : {z0, z1})
-    for (std::uint32_t i = 0; i < m; ++i) add_vertex(s, radius[i] * std::cos(angle[i]), radius[i] * std::sin(angle[i]), z);
+    for (std::uint32_t i = 0; i < m; ++i)
+      add_vertex(s, radius[i] * std::cos(angle[i]), radius[i] * std::sin(angle[i]), z);
   for (double z : {z0, z1})
-    for (std::uint32_t i = 0; i < m; ++i) add_vertex(s, bore_radius * std::cos(angle[i]), bore_radius * std::sin(angle[i]), z);
+    for (std::uint32_t i = 0; i < m; ++i)
+      add_vertex(s, bore_radius * std::cos(angle[i]), bore_radius * std::sin(angle[i]), z);
   auto ob = [&](std::uint32_t i) { return i % m; };
   auto ot = [&](std::uint32_t i) { return m + i % m; };
   auto bb = [&](std::uint32_t i) { return 2 * m + i % m; };
@@ -95,8 +104,8 @@ triangle_soup make_cyclic_planks(double offset, double half_length, double width
   s.source = "cyclic planks";
   for (int i = 0; i < 3; ++i) {
     const double a = i * (2 * pi / 3);
-    const double ux = std::cos(a), uy = std::sin(a);  // along the plank
-    const double nx = -uy, ny = ux;                   // across, u x n = +z
+    const double ux = std::cos(a), uy = std::sin(a);    // along the plank
+    const double nx = -uy, ny = ux;                     // across, u x n = +z
     const double cx = -offset * nx, cy = -offset * ny;  // foot of the centre line
     std::vector<std::uint32_t> quad;
     for (const auto& [t, w] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {

@@ -22,7 +22,8 @@ triangle_soup make_prism(const std::vector<std::array<double, 2>>& outline, doub
 /// round bore of bore_radius (sampled at the profile's angles), extruded from -thickness/2 to
 /// +thickness/2 along z, centred on the z axis; outward. Preconditions: teeth >= 3,
 /// 0 < bore_radius < root_radius < tip_radius, thickness > 0.
-triangle_soup make_gear(int teeth, double root_radius, double tip_radius, double bore_radius, double thickness);
+triangle_soup make_gear(int teeth, double root_radius, double tip_radius, double bore_radius,
+                        double thickness);
 
 /// Three long flat planks (one quad face each) in cyclic overlap as seen from +z: plank i
 /// runs along direction angle 120 i degrees, at distance `offset` from the origin, from

@@ -26,8 +26,9 @@ namespace {
 
 bool ends_with_ci(const std::string& s, const std::string& suffix) {
   if (s.size() < suffix.size()) return false;
-  return std::equal(suffix.rbegin(), suffix.rend(), s.rbegin(),
-                    [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
+  return std::equal(suffix.rbegin(), suffix.rend(), s.rbegin(), [](char a, char b) {
+    return std::tolower(static_cast<unsigned char>(a)) == b;
+  });
 }
 
 std::string seconds_text(double s) {
@@ -61,7 +62,8 @@ std::string frame_path(const std::string& output, std::size_t k) {
   return has_ext ? output.substr(0, dot) + num + output.substr(dot) : output + num;
 }
 
-std::vector<std::array<double, 2>> resample_path(const std::vector<std::array<double, 2>>& path, std::size_t count) {
+std::vector<std::array<double, 2>> resample_path(const std::vector<std::array<double, 2>>& path,
+                                                 std::size_t count) {
   if (path.empty()) throw usage_error("resample_path: the path is empty");
   if (count == 0) throw usage_error("resample_path: count must be >= 1");
   std::vector<double> along(path.size(), 0.0);  // arc length at each point
@@ -90,14 +92,15 @@ std::vector<std::array<double, 2>> resample_path(const std::vector<std::array<do
   return out;
 }
 
-std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(const scene::scene& s,
-                                                                  const std::vector<std::array<double, 2>>& path,
-                                                                  std::size_t frames) {
+std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(
+    const scene::scene& s, const std::vector<std::array<double, 2>>& path, std::size_t frames) {
   if (path.empty()) throw usage_error("orbit: the drag path is empty");
-  const std::vector<std::array<double, 2>> points = frames == 0 ? path : resample_path(path, frames);
+  const std::vector<std::array<double, 2>> points =
+      frames == 0 ? path : resample_path(path, frames);
   if (s.form == scene::camera_form::phigs)
-    throw usage_error("orbit: a phigs camera is fixed (its projection is tied to its view reference frame); "
-                      "use eye/look_at/up, position/look/up, polar or pilot");
+    throw usage_error(
+        "orbit: a phigs camera is fixed (its projection is tied to its view reference frame); "
+        "use eye/look_at/up, position/look/up, polar or pilot");
   const arcball ball(s.width, s.height, screen_y::down,
                      s.trackball == "virtual" ? trackball_kind::virtual_ : trackball_kind::arcball);
   const std::vector<quaternion> turns = ball.drag_path(points);
@@ -107,9 +110,8 @@ std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(const scene::s
   std::vector<std::pair<view::camera, view::vector3>> out;
   out.reserve(turns.size());
   for (const quaternion& q : turns) {
-    const orbit_view o = orbit_camera({view::to_vec3d(s.camera.eye), view::to_vec3d(s.camera.look_at),
-                                       to_array(s.camera.up)},
-                                      q);
+    const orbit_view o = orbit_camera(
+        {view::to_vec3d(s.camera.eye), view::to_vec3d(s.camera.look_at), to_array(s.camera.up)}, q);
     view::camera c{view::to_point(o.eye), view::to_point(o.look_at), to_vector(o.up)};
     const view::camera_basis b = view::look_at_basis(c.eye, c.look_at, c.up);
     out.push_back({c, du * b.u + dv * b.v + dw * b.w});
@@ -118,7 +120,8 @@ std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(const scene::s
 }
 
 render_summary render_command(const render_request& request, std::ostream& log) {
-  const std::string out = request.output_path.empty() ? std::string("exbsp.png") : request.output_path;
+  const std::string out =
+      request.output_path.empty() ? std::string("exbsp.png") : request.output_path;
   view::output_kind kind;
   if (out == "-" || ends_with_ci(out, ".png")) {
     kind = view::output_kind::png;
@@ -131,19 +134,22 @@ render_summary render_command(const render_request& request, std::ostream& log) 
   }
   const bool orbit = !request.orbit_drag.empty();
   if (!orbit && request.frames != 0) throw usage_error("render: --frames needs --orbit-drag");
-  if (orbit && out == "-") throw usage_error("render: an orbit writes several files; it cannot go to standard output");
+  if (orbit && out == "-")
+    throw usage_error("render: an orbit writes several files; it cannot go to standard output");
 
   const auto t0 = std::chrono::steady_clock::now();
-  scene::scene s = request.preloaded           ? *request.preloaded
-                   : request.scene_path.empty() ? scene::demo_scene()
-                                                : scene::load_scene(request.scene_path, &log, request.strict);
+  scene::scene s = request.preloaded ? *request.preloaded
+                   : request.scene_path.empty()
+                       ? scene::demo_scene()
+                       : scene::load_scene(request.scene_path, &log, request.strict);
   if (!request.trackball.empty()) {
     if (request.trackball != "arcball" && request.trackball != "virtual")
       throw usage_error("render: --trackball must be arcball or virtual, got " + request.trackball);
     s.trackball = request.trackball;
   }
   view::frame f = scene::make_frame(s);
-  const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double load_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   f.build.progress = request.progress;
   if (!request.kernel.empty()) f.build.kernel = parse_kernel(request.kernel);
   f.build.max_fragments = request.max_fragments;
@@ -155,20 +161,24 @@ render_summary render_command(const render_request& request, std::ostream& log) 
     summary.build_seconds = f.tree->stats().build_seconds;
     summary.kernel = f.tree->stats().kernel;
   };
-  const auto elapsed = [&t0] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  const auto elapsed = [&t0] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
 
   for (const std::string& name : view::effects_without_stage(s.effects, kind))
-    log << "exbsp: warning: " << s.path << ": /effects/" << name << ": applies to PNG output only; ignored for " << out
-        << "\n";
+    log << "exbsp: warning: " << s.path << ": /effects/" << name
+        << ": applies to PNG output only; ignored for " << out << "\n";
   const bool curves = !s.curves.empty();
   const view::pipeline per_view = view::per_view_pipeline(s.effects, kind, curves);
   std::ostream* stage_log = request.verbose ? &log : nullptr;
 
   if (request.verbose) {
-    log << "scene: " << s.path << ": " << s.meshes.size() << " meshes, " << f.soup.triangles.size() << " triangles, "
-        << s.curves.size() - s.line_count << " curves, " << s.line_count << " lines, "
-        << view::to_string(s.projection.kind) << " " << s.width << "x" << s.height << "\n";
-    log << "stage load: " << seconds_text(load_seconds) << " s (meshes read, transformed, appended into one soup)\n";
+    log << "scene: " << s.path << ": " << s.meshes.size() << " meshes, " << f.soup.triangles.size()
+        << " triangles, " << s.curves.size() - s.line_count << " curves, " << s.line_count
+        << " lines, " << view::to_string(s.projection.kind) << " " << s.width << "x" << s.height
+        << "\n";
+    log << "stage load: " << seconds_text(load_seconds)
+        << " s (meshes read, transformed, appended into one soup)\n";
     std::string names = orbit ? "build" : "reject, build";
     for (const std::string& n : per_view.names()) names += ", " + n;
     if (f.view.needs_placement()) names += ", place";

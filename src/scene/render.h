@@ -34,7 +34,7 @@ struct render_request {
   render_request(std::string scene, std::string output, bool verbose_log = false)
       : scene_path(std::move(scene)), output_path(std::move(output)), verbose(verbose_log) {}
 
-  std::string scene_path;   ///< empty: the built-in demo scene (unless `preloaded` is set)
+  std::string scene_path;  ///< empty: the built-in demo scene (unless `preloaded` is set)
   /// A scene made by the caller (e.g. scene::mesh_scene for `render MESH`); used instead of
   /// reading scene_path.
   std::optional<scene::scene> preloaded;
@@ -78,13 +78,13 @@ std::string frame_path(const std::string& output, std::size_t k);
 /// `path` resampled to `count` points evenly spaced along its length, first and last kept
 /// (a path of zero length: `count` copies of its first point). Throws usage_error for an empty
 /// path or count 0.
-std::vector<std::array<double, 2>> resample_path(const std::vector<std::array<double, 2>>& path, std::size_t count);
+std::vector<std::array<double, 2>> resample_path(const std::vector<std::array<double, 2>>& path,
+                                                 std::size_t count);
 
 /// The cameras of an orbit over scene `s` (see the notation at the top): one per frame, with
 /// the oblique direction of projection turned along (second of each pair).
 /// Throws usage_error for an empty path.
-std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(const scene::scene& s,
-                                                                  const std::vector<std::array<double, 2>>& path,
-                                                                  std::size_t frames);
+std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(
+    const scene::scene& s, const std::vector<std::array<double, 2>>& path, std::size_t frames);
 
 }  // namespace exbsp

@@ -30,19 +30,23 @@ void parse_projection(const reader& r, const json& doc, scene& s) {
   if (!type.is_string()) r.fail("/projection/type", "must be a string");
   const std::string t = type.get<std::string>();
   projection_spec& ps = s.projection;
-  auto num = [&](const char* name) { return r.number(r.require(p, "/projection", name), std::string("/projection/") + name); };
+  auto num = [&](const char* name) {
+    return r.number(r.require(p, "/projection", name), std::string("/projection/") + name);
+  };
   if (t == "perspective") {
     ps.kind = view::projection_kind::perspective;
     r.warn_unknown(p, "/projection", {"type", "fovy_deg", "near", "far"});
     ps.fovy_deg = num("fovy_deg");
     if (!(ps.fovy_deg > 0 && ps.fovy_deg < 180))
-      r.fail("/projection/fovy_deg", "must be in (0, 180) degrees (got " + number_text(ps.fovy_deg) + ")");
+      r.fail("/projection/fovy_deg",
+             "must be in (0, 180) degrees (got " + number_text(ps.fovy_deg) + ")");
   } else if (t == "frustum" || t == "orthographic" || t == "oblique") {
-    ps.kind = t == "frustum" ? view::projection_kind::frustum
+    ps.kind = t == "frustum"        ? view::projection_kind::frustum
               : t == "orthographic" ? view::projection_kind::orthographic
                                     : view::projection_kind::oblique;
     if (ps.kind == view::projection_kind::oblique)
-      r.warn_unknown(p, "/projection", {"type", "left", "right", "bottom", "top", "near", "far", "direction"});
+      r.warn_unknown(p, "/projection",
+                     {"type", "left", "right", "bottom", "top", "near", "far", "direction"});
     else
       r.warn_unknown(p, "/projection", {"type", "left", "right", "bottom", "top", "near", "far"});
   } else if (t == "ortho2d") {
@@ -51,7 +55,8 @@ void parse_projection(const reader& r, const json& doc, scene& s) {
     r.warn_unknown(p, "/projection", {"type", "left", "right", "bottom", "top"});
   } else {
     r.fail("/projection/type",
-           "unknown projection type \"" + t + "\" (expected perspective, frustum, orthographic, oblique or ortho2d)");
+           "unknown projection type \"" + t +
+               "\" (expected perspective, frustum, orthographic, oblique or ortho2d)");
   }
   if (t == "frustum" || t == "orthographic" || t == "oblique" || t == "ortho2d") {
     ps.left = num("left");
@@ -69,19 +74,25 @@ void parse_projection(const reader& r, const json& doc, scene& s) {
   ps.near_dist = num("near");
   ps.far_dist = num("far");
   if (ps.kind == view::projection_kind::orthographic) {  // glOrtho: any distinct near and far
-    if (ps.near_dist == ps.far_dist) r.fail("/projection/far", "must differ from /projection/near (glOrtho)");
+    if (ps.near_dist == ps.far_dist)
+      r.fail("/projection/far", "must differ from /projection/near (glOrtho)");
   } else if (!(ps.near_dist > 0))
-    r.fail("/projection/near", "must be a positive distance in front of the eye (got " + number_text(ps.near_dist) + ")");
+    r.fail("/projection/near", "must be a positive distance in front of the eye (got " +
+                                   number_text(ps.near_dist) + ")");
   if (ps.kind != view::projection_kind::orthographic && !(ps.far_dist > ps.near_dist))
-    r.fail("/projection/far", "must be greater than /projection/near (near " + number_text(ps.near_dist) + ", far " +
-                                  number_text(ps.far_dist) + ")");
+    r.fail("/projection/far", "must be greater than /projection/near (near " +
+                                  number_text(ps.near_dist) + ", far " + number_text(ps.far_dist) +
+                                  ")");
   if (ps.kind == view::projection_kind::oblique) {
     ps.direction = r.triple(r.require(p, "/projection", "direction"), "/projection/direction");
-    if (!(view::length(ps.direction) > 0)) r.fail("/projection/direction", "must not be the zero vector");
+    if (!(view::length(ps.direction) > 0))
+      r.fail("/projection/direction", "must not be the zero vector");
     const view::vector3 g = s.camera.look_at - s.camera.eye;
-    const double cos_angle = view::dot(ps.direction, g) / (view::length(ps.direction) * view::length(g));
+    const double cos_angle =
+        view::dot(ps.direction, g) / (view::length(ps.direction) * view::length(g));
     if (!(cos_angle > 1e-6))
-      r.fail("/projection/direction", "must point into the scene (positive component along look_at - eye)");
+      r.fail("/projection/direction",
+             "must point into the scene (positive component along look_at - eye)");
   }
 }
 
@@ -90,11 +101,13 @@ void parse_effects(const reader& r, const json& doc, scene& s) {
   if (!e) return;
   r.object(*e, "/effects");
   std::string known;
-  for (const view::effect_description& d : view::effect_catalog()) known += (known.empty() ? "" : ", ") + d.name;
+  for (const view::effect_description& d : view::effect_catalog())
+    known += (known.empty() ? "" : ", ") + d.name;
   const bool parallel = s.projection.kind != view::projection_kind::perspective &&
                         s.projection.kind != view::projection_kind::frustum;
-  const view::effect_scene facts{parallel, s.projection.near_dist, s.projection.far_dist, s.background,
-                                 s.width, s.height, max_viewport_side};
+  const view::effect_scene facts{
+      parallel, s.projection.near_dist, s.projection.far_dist, s.background, s.width,
+      s.height, max_viewport_side};
   for (auto it = e->begin(); it != e->end(); ++it) {
     const std::string key = "/effects/" + it.key();
     const view::effect_description* d = view::find_effect(it.key());
@@ -119,7 +132,8 @@ void parse_effects(const reader& r, const json& doc, scene& s) {
 void parse_curves(const reader& r, const json& doc, scene& s) {
   const json* c = r.optional(doc, "curves");
   if (!c) return;
-  if (!c->is_array()) r.fail("/curves", std::string("must be an array (got ") + c->type_name() + ")");
+  if (!c->is_array())
+    r.fail("/curves", std::string("must be an array (got ") + c->type_name() + ")");
   for (std::size_t i = 0; i < c->size(); ++i) {
     const std::string key = "/curves/" + std::to_string(i);
     const json& entry = r.object((*c)[i], key);
@@ -128,8 +142,8 @@ void parse_curves(const reader& r, const json& doc, scene& s) {
     if (!b.is_array() || b.empty())
       r.fail(key + "/bezier", "must be an array of at least 1 control point [x, y, z]");
     if (b.size() > max_curve_control_points)
-      r.fail(key + "/bezier", "at most " + std::to_string(max_curve_control_points) + " control points (got " +
-                                  std::to_string(b.size()) + ")");
+      r.fail(key + "/bezier", "at most " + std::to_string(max_curve_control_points) +
+                                  " control points (got " + std::to_string(b.size()) + ")");
     view::curve_spec curve;
     for (std::size_t k = 0; k < b.size(); ++k) {
       const view::vector3 p = r.triple(b[k], key + "/bezier/" + std::to_string(k));
@@ -148,25 +162,36 @@ void parse_vector(const reader& r, const json& doc, scene& s) {
   r.reject_unknown(*v, "/svg", "svg", {"mode", "edges", "crease_deg"});
   auto text = [&](const char* name) -> std::string {
     const json& t = (*v)[name];
-    if (!t.is_string()) r.fail(std::string("/svg/") + name, std::string("must be a string (got ") + t.type_name() + ")");
+    if (!t.is_string())
+      r.fail(std::string("/svg/") + name,
+             std::string("must be a string (got ") + t.type_name() + ")");
     return t.get<std::string>();
   };
   if (r.optional(*v, "mode")) {
     const std::string m = text("mode");
-    if (m == "visible") s.vector.mode = view::vector_options::mode_kind::visible;
-    else if (m == "painter") s.vector.mode = view::vector_options::mode_kind::painter;
-    else r.fail("/svg/mode", "unknown mode \"" + m + "\" (expected visible or painter)");
+    if (m == "visible")
+      s.vector.mode = view::vector_options::mode_kind::visible;
+    else if (m == "painter")
+      s.vector.mode = view::vector_options::mode_kind::painter;
+    else
+      r.fail("/svg/mode", "unknown mode \"" + m + "\" (expected visible or painter)");
   }
   if (r.optional(*v, "edges")) {
     const std::string e = text("edges");
-    if (e == "none") s.vector.edges = view::vector_options::edges_kind::none;
-    else if (e == "visible") s.vector.edges = view::vector_options::edges_kind::visible;
-    else if (e == "visible+hidden") s.vector.edges = view::vector_options::edges_kind::visible_hidden;
-    else r.fail("/svg/edges", "unknown edges \"" + e + "\" (expected none, visible or visible+hidden)");
+    if (e == "none")
+      s.vector.edges = view::vector_options::edges_kind::none;
+    else if (e == "visible")
+      s.vector.edges = view::vector_options::edges_kind::visible;
+    else if (e == "visible+hidden")
+      s.vector.edges = view::vector_options::edges_kind::visible_hidden;
+    else
+      r.fail("/svg/edges",
+             "unknown edges \"" + e + "\" (expected none, visible or visible+hidden)");
   }
   if (const json* c = r.optional(*v, "crease_deg")) {
     const double d = r.number(*c, "/svg/crease_deg");
-    if (!(d > 0 && d <= 180)) r.fail("/svg/crease_deg", "must be in (0, 180] (got " + number_text(d) + ")");
+    if (!(d > 0 && d <= 180))
+      r.fail("/svg/crease_deg", "must be in (0, 180] (got " + number_text(d) + ")");
     s.vector.crease_deg = d;
   }
 }
@@ -174,16 +199,21 @@ void parse_vector(const reader& r, const json& doc, scene& s) {
 /// "clip_planes" and "caps" (notation in scene.h).
 void parse_clip_planes(const reader& r, const json& doc, scene& s) {
   if (const json* c = r.optional(doc, "clip_planes")) {
-    if (!c->is_array()) r.fail("/clip_planes", std::string("must be an array of [A, B, C, D] (got ") + c->type_name() + ")");
+    if (!c->is_array())
+      r.fail("/clip_planes",
+             std::string("must be an array of [A, B, C, D] (got ") + c->type_name() + ")");
     if (c->size() > max_clip_planes)
-      r.fail("/clip_planes", "at most " + std::to_string(max_clip_planes) + " planes (got " + std::to_string(c->size()) + ")");
+      r.fail("/clip_planes", "at most " + std::to_string(max_clip_planes) + " planes (got " +
+                                 std::to_string(c->size()) + ")");
     for (std::size_t i = 0; i < c->size(); ++i) {
       const std::string key = "/clip_planes/" + std::to_string(i);
       const json& p = (*c)[i];
-      if (!p.is_array() || p.size() != 4) r.fail(key, "must be an array of 4 numbers [A, B, C, D] (A*x+B*y+C*z+D >= 0 is kept)");
+      if (!p.is_array() || p.size() != 4)
+        r.fail(key, "must be an array of 4 numbers [A, B, C, D] (A*x+B*y+C*z+D >= 0 is kept)");
       std::array<double, 4> plane{};
       for (int k = 0; k < 4; ++k) plane[k] = r.number(p[k], key + "/" + std::to_string(k));
-      if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0) r.fail(key, "the normal (A, B, C) must not be zero");
+      if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0)
+        r.fail(key, "the normal (A, B, C) must not be zero");
       s.clip_planes.push_back(plane);
     }
   }
@@ -200,9 +230,12 @@ void parse_clip_planes(const reader& r, const json& doc, scene& s) {
 
 scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings, bool strict) {
   const reader r(path, warnings, strict);
-  if (!doc.is_object()) r.fail("", std::string("the scene must be a JSON object (got ") + doc.type_name() + ")");
-  r.warn_unknown(doc, "", {"meshes", "groups", "curves", "lines", "camera", "projection", "viewport", "image", "aspect",
-                           "background", "effects", "trackball", "svg", "clip_planes", "caps"});
+  if (!doc.is_object())
+    r.fail("", std::string("the scene must be a JSON object (got ") + doc.type_name() + ")");
+  r.warn_unknown(
+      doc, "",
+      {"meshes", "groups", "curves", "lines", "camera", "projection", "viewport", "image", "aspect",
+       "background", "effects", "trackball", "svg", "clip_planes", "caps"});
   scene s;
   s.path = path;
   detail::parse_mesh_tree(r, doc, path, s);
@@ -212,7 +245,9 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   if (s.form != camera_form::phigs)
     parse_projection(r, doc, s);
   else if (r.optional(doc, "projection"))
-    r.fail("/projection", "a phigs camera defines its own projection (window, front, back, projection): remove this key");
+    r.fail("/projection",
+           "a phigs camera defines its own projection (window, front, back, projection): remove "
+           "this key");
   detail::parse_viewport_and_image(r, doc, s);
   detail::parse_trackball(r, doc, s);
   if (const json* b = r.optional(doc, "background")) s.background = r.color(*b, "/background");
@@ -223,7 +258,8 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   return s;
 }
 
-scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings, bool strict) {
+scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings,
+                       bool strict) {
   check_json_nesting(text, path);  // before nlohmann builds (and later copies) the document
   json doc;
   try {
@@ -253,27 +289,29 @@ view::view_setup make_view_setup(const scene& s) {
     if (s.phigs) {
       v.projection = s.phigs->projection;
       v.direction = s.phigs->direction;
-    } else switch (p.kind) {
-      case view::projection_kind::perspective:
-        v.projection =
-            view::perspective(p.fovy_deg, static_cast<double>(v.vp.width) / v.vp.height, p.near_dist, p.far_dist);
-        break;
-      case view::projection_kind::frustum:
-        v.projection = view::frustum(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist);
-        break;
-      case view::projection_kind::orthographic:
-        v.projection = view::ortho(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist);
-        v.direction = view::gaze_direction(s.camera);
-        break;
-      case view::projection_kind::oblique: {
-        const view::vector3 d = view::normalized(p.direction);
-        const view::vector3 dop_eye = view::transform_vector(v.model_view, d);
-        const double pivot = -view::length(s.camera.look_at - s.camera.eye);
-        v.projection = view::oblique(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist, dop_eye, pivot);
-        v.direction = d;
-        break;
+    } else
+      switch (p.kind) {
+        case view::projection_kind::perspective:
+          v.projection = view::perspective(
+              p.fovy_deg, static_cast<double>(v.vp.width) / v.vp.height, p.near_dist, p.far_dist);
+          break;
+        case view::projection_kind::frustum:
+          v.projection = view::frustum(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist);
+          break;
+        case view::projection_kind::orthographic:
+          v.projection = view::ortho(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist);
+          v.direction = view::gaze_direction(s.camera);
+          break;
+        case view::projection_kind::oblique: {
+          const view::vector3 d = view::normalized(p.direction);
+          const view::vector3 dop_eye = view::transform_vector(v.model_view, d);
+          const double pivot = -view::length(s.camera.look_at - s.camera.eye);
+          v.projection = view::oblique(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist,
+                                       dop_eye, pivot);
+          v.direction = d;
+          break;
+        }
       }
-    }
   } catch (const usage_error& e) {
     throw scene_error(s.path, "/projection", e.what());
   }
@@ -283,9 +321,11 @@ view::view_setup make_view_setup(const scene& s) {
     return true;
   };
   if (!finite(v.model_view))
-    throw scene_error(s.path, "/camera/eye", "the viewing transformation overflows (coordinates too large)");
+    throw scene_error(s.path, "/camera/eye",
+                      "the viewing transformation overflows (coordinates too large)");
   if (!finite(v.projection))
-    throw scene_error(s.path, "/projection", "the projection matrix overflows (near, far or window too extreme)");
+    throw scene_error(s.path, "/projection",
+                      "the projection matrix overflows (near, far or window too extreme)");
   return v;
 }
 
@@ -300,38 +340,44 @@ scene_geometry load_geometry(const scene& s) {
       part = *m.soup;
     } else {
       std::error_code ec;
-      if (!std::filesystem::exists(m.path, ec)) throw scene_error(s.path, m.key + "/file", "mesh file not found: " + m.path);
+      if (!std::filesystem::exists(m.path, ec))
+        throw scene_error(s.path, m.key + "/file", "mesh file not found: " + m.path);
       part = read_mesh(m.path);
     }
     const bool identity = m.transform.m == view::mat4::identity().m;
     // Where a vertex that is too large comes from: the transform, or the mesh file itself.
     const std::string culprit =
-        identity ? m.key + "/file" : (m.transform_key.empty() ? m.key + "/transform" : m.transform_key);
+        identity ? m.key + "/file"
+                 : (m.transform_key.empty() ? m.key + "/transform" : m.transform_key);
     for (std::size_t k = 0; k < part.vertices.size(); ++k) {
       vec3d p = part.vertices[k];
       if (!identity) {
         const view::hpoint h = m.transform * view::to_point(p);
         p = h.w == 1 ? vec3d{h.x, h.y, h.z} : vec3d{h.x / h.w, h.y / h.w, h.z / h.w};
         if (!(h.w != 0) || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-          throw scene_error(s.path, culprit, "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
+          throw scene_error(s.path, culprit,
+                            "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
         part.vertices[k] = p;
       }
       // Finite in the world but too large once viewed (e.g. scaled by 1e308): say so here,
       // naming the key, rather than as a NaN deep inside the clipper, which forms sums such
       // as w + z and interpolates between vertices (hence the headroom of 16).
-      const view::hpoint clip = view_matrices.projection * (view_matrices.model_view * view::to_point(p));
-      if (!(std::fabs(clip.x) <= max_clip && std::fabs(clip.y) <= max_clip && std::fabs(clip.z) <= max_clip &&
-            std::fabs(clip.w) <= max_clip))
+      const view::hpoint clip =
+          view_matrices.projection * (view_matrices.model_view * view::to_point(p));
+      if (!(std::fabs(clip.x) <= max_clip && std::fabs(clip.y) <= max_clip &&
+            std::fabs(clip.z) <= max_clip && std::fabs(clip.w) <= max_clip))
         throw scene_error(s.path, culprit,
                           "vertex " + std::to_string(k) + " of " + m.path +
-                              " is too large to view: its clip coordinates exceed " + number_text(max_clip) +
+                              " is too large to view: its clip coordinates exceed " +
+                              number_text(max_clip) +
                               " (the largest double / 16; scale the mesh down)");
     }
     const std::uint32_t first_face = g.soup.face_count, own_faces = part.face_count;
     if (!s.clip_planes.empty()) part = clip_soup(part, s.clip_planes, s.caps);
     g.soup.append(part);
     g.face_colors.resize(g.soup.face_count, m.color);
-    for (std::uint32_t f = first_face + own_faces; f < g.soup.face_count; ++f) g.face_colors[f] = s.cap_color;
+    for (std::uint32_t f = first_face + own_faces; f < g.soup.face_count; ++f)
+      g.face_colors[f] = s.cap_color;
     g.face_offsets.push_back(g.soup.face_count);
   }
   return g;
@@ -353,7 +399,8 @@ view::frame make_frame(const scene& s) {
 
 std::size_t mesh_of_face(const scene_geometry& g, std::uint32_t face) {
   const auto it = std::upper_bound(g.face_offsets.begin(), g.face_offsets.end(), face);
-  if (it == g.face_offsets.begin() || it == g.face_offsets.end()) return g.face_offsets.empty() ? 0 : g.face_offsets.size() - 1;
+  if (it == g.face_offsets.begin() || it == g.face_offsets.end())
+    return g.face_offsets.empty() ? 0 : g.face_offsets.size() - 1;
   return static_cast<std::size_t>(it - g.face_offsets.begin()) - 1;
 }
 

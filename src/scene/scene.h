@@ -105,23 +105,23 @@ constexpr std::size_t max_clip_planes = 6;
 
 /// One entry of "meshes".
 struct mesh_spec {
-  std::string file;                          ///< as written in the scene
-  std::string path;                          ///< resolved against the scene file's directory
-  std::string key;                           ///< JSON pointer of the entry, e.g. "/meshes/0"
-  std::string transform_key;                 ///< key named when the transform fails (default key + "/transform")
-  view::rgb8 color{160, 160, 160};           ///< default grey
+  std::string file;           ///< as written in the scene
+  std::string path;           ///< resolved against the scene file's directory
+  std::string key;            ///< JSON pointer of the entry, e.g. "/meshes/0"
+  std::string transform_key;  ///< key named when the transform fails (default key + "/transform")
+  view::rgb8 color{160, 160, 160};  ///< default grey
   view::mat4 transform = view::mat4::identity();
-  std::shared_ptr<const triangle_soup> soup; ///< inline geometry (built-in demo): file not read
+  std::shared_ptr<const triangle_soup> soup;  ///< inline geometry (built-in demo): file not read
 };
 
 /// "projection".
 struct projection_spec {
   view::projection_kind kind = view::projection_kind::perspective;
-  double fovy_deg = 0;                             ///< perspective
-  double left = 0, right = 0, bottom = 0, top = 0; ///< frustum, orthographic, oblique
+  double fovy_deg = 0;                              ///< perspective
+  double left = 0, right = 0, bottom = 0, top = 0;  ///< frustum, orthographic, oblique
   double near_dist = 0, far_dist = 0;
-  view::vector3 direction;                         ///< oblique: world-space direction of projection
-  bool ortho2d = false;                            ///< "ortho2d": orthographic with near -1, far 1
+  view::vector3 direction;  ///< oblique: world-space direction of projection
+  bool ortho2d = false;     ///< "ortho2d": orthographic with near -1, far 1
 };
 
 /// How the view volume's window meets a viewport of another aspect ratio ("aspect").
@@ -141,7 +141,7 @@ struct scene {
   projection_spec projection;
   int width = 0, height = 0;
   view::rgb8 background{255, 255, 255};
-  std::vector<std::string> effects;  ///< enabled effects (names from view::effect_catalog())
+  std::vector<std::string> effects;       ///< enabled effects (names from view::effect_catalog())
   view::effect_settings effect_settings;  ///< parameters of the enabled effects, defaults filled in
   std::vector<view::curve_spec> curves;   ///< "curves", then "lines" (empty when absent)
   std::size_t line_count = 0;             ///< the last line_count entries of curves are "lines"
@@ -151,14 +151,14 @@ struct scene {
   /// then the equivalent gluLookAt camera (view::camera_of): its eye orders the BSP.
   std::optional<view::mat4> view_matrix;
   std::optional<view::phigs_matrices> phigs;  ///< phigs form: its projection replaces "projection"
-  int viewport_x = 0, viewport_y = 0;     ///< glViewport x, y (from the image's lower left)
-  int image_width = 0, image_height = 0;  ///< "image" (default: the viewport's size)
+  int viewport_x = 0, viewport_y = 0;         ///< glViewport x, y (from the image's lower left)
+  int image_width = 0, image_height = 0;      ///< "image" (default: the viewport's size)
   aspect_policy aspect = aspect_policy::stretch;
-  std::string trackball = "arcball";      ///< "arcball" or "virtual" (orbit drags)
-  view::vector_options vector;            ///< "svg": vector output options (SVG and PDF)
+  std::string trackball = "arcball";               ///< "arcball" or "virtual" (orbit drags)
+  view::vector_options vector;                     ///< "svg": vector output options (SVG and PDF)
   std::vector<std::array<double, 4>> clip_planes;  ///< "clip_planes" (A, B, C, D), keep >= 0
-  bool caps = false;                                ///< "caps" present: draw the cut faces
-  view::rgb8 cap_color{200, 60, 50};                ///< "caps": {"color"}
+  bool caps = false;                               ///< "caps" present: draw the cut faces
+  view::rgb8 cap_color{200, 60, 50};               ///< "caps": {"color"}
 };
 
 /// Validates a parsed JSON document. `path` names the file in messages and anchors relative
@@ -167,13 +167,13 @@ struct scene {
 /// Throws scene_error naming the key for every missing, wrongly typed or impossible
 /// value (including up parallel to the view direction, unknown and not-yet-supported effects,
 /// unknown or bad effect parameters and bad curves).
-scene parse_scene(const nlohmann::json& doc, const std::string& path, std::ostream* warnings = nullptr,
-                  bool strict = false);
+scene parse_scene(const nlohmann::json& doc, const std::string& path,
+                  std::ostream* warnings = nullptr, bool strict = false);
 
 /// parse_scene on JSON text; a syntax error is a scene_error with an empty key; nesting deeper
 /// than max_json_depth (mesh/json_limits.h) an input_error naming the line, before parsing.
-scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings = nullptr,
-                       bool strict = false);
+scene parse_scene_text(const std::string& text, const std::string& path,
+                       std::ostream* warnings = nullptr, bool strict = false);
 
 /// Reads and validates a scene file. Throws input_error when the file cannot be read or is not
 /// a regular file (mesh_io.h read_input_file), scene_error as parse_scene.
@@ -187,8 +187,8 @@ view::view_setup make_view_setup(const scene& s);
 /// as extra faces of each mesh) and appended into one soup.
 struct scene_geometry {
   triangle_soup soup;
-  std::vector<view::rgb8> face_colors;       ///< colour by face id of `soup`
-  std::vector<std::uint32_t> face_offsets;   ///< first face id of mesh k (size = meshes + 1)
+  std::vector<view::rgb8> face_colors;      ///< colour by face id of `soup`
+  std::vector<std::uint32_t> face_offsets;  ///< first face id of mesh k (size = meshes + 1)
 };
 
 /// Reads every mesh (read_mesh: input_error for bad files), applies its transform and appends

@@ -16,8 +16,10 @@ namespace {
 view::point3 as_point(const view::vector3& v) { return {v.x, v.y, v.z}; }
 
 /// Applies a "transforms" list to the top of `stack` (each entry post-multiplies).
-void apply_transforms(const reader& r, const json& list, const std::string& key, view::matrix_stack& stack) {
-  if (!list.is_array()) r.fail(key, std::string("must be an array of transforms (got ") + list.type_name() + ")");
+void apply_transforms(const reader& r, const json& list, const std::string& key,
+                      view::matrix_stack& stack) {
+  if (!list.is_array())
+    r.fail(key, std::string("must be an array of transforms (got ") + list.type_name() + ")");
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string k = key + "/" + std::to_string(i);
     const json& t = r.object(list[i], k);
@@ -35,11 +37,14 @@ void apply_transforms(const reader& r, const json& list, const std::string& key,
     const std::string vk = k + "/" + kinds[found];
     const json& v = t.at(kinds[found]);
     switch (found) {
-      case 0: stack.multiply(view::translate(r.triple(v, vk))); break;
+      case 0:
+        stack.multiply(view::translate(r.triple(v, vk)));
+        break;
       case 1: {
         if (!v.is_array() || v.size() != 4) r.fail(vk, "must be [degrees, ax, ay, az]");
         const double deg = r.number(v[0], vk + "/0");
-        const view::vector3 axis{r.number(v[1], vk + "/1"), r.number(v[2], vk + "/2"), r.number(v[3], vk + "/3")};
+        const view::vector3 axis{r.number(v[1], vk + "/1"), r.number(v[2], vk + "/2"),
+                                 r.number(v[3], vk + "/3")};
         if (!(view::length(axis) > 0)) r.fail(vk, "the rotation axis must not be the zero vector");
         stack.multiply(view::rotate(deg, axis));
         break;
@@ -56,7 +61,9 @@ void apply_transforms(const reader& r, const json& list, const std::string& key,
         const json& order = r.require(t, k, "order");
         const std::string o = order.is_string() ? order.get<std::string>() : std::string();
         if (o != "row-major" && o != "column-major")
-          r.fail(k + "/order", "must be \"row-major\" or \"column-major\" (GL, glTF and three.js store matrices column-major)");
+          r.fail(k + "/order",
+                 "must be \"row-major\" or \"column-major\" (GL, glTF and three.js store matrices "
+                 "column-major)");
         const view::mat4 rows = view::mat4::from_rows(m);
         stack.multiply(o == "row-major" ? rows : view::transpose(rows));
       }
@@ -82,9 +89,11 @@ mesh_spec parse_mesh_entry(const reader& r, const json& entry, const std::string
   if (t && ts) r.fail(key + "/transforms", "give transform or transforms, not both");
   stack.push();
   if (t) {
-    if (!t->is_array() || t->size() != 16) r.fail(key + "/transform", "must be an array of 16 numbers (row-major 4x4)");
+    if (!t->is_array() || t->size() != 16)
+      r.fail(key + "/transform", "must be an array of 16 numbers (row-major 4x4)");
     std::array<double, 16> rows{};
-    for (int k = 0; k < 16; ++k) rows[k] = r.number((*t)[k], key + "/transform/" + std::to_string(k));
+    for (int k = 0; k < 16; ++k)
+      rows[k] = r.number((*t)[k], key + "/transform/" + std::to_string(k));
     stack.multiply(view::mat4::from_rows(rows));
   }
   if (ts) apply_transforms(r, *ts, key + "/transforms", stack);
@@ -95,18 +104,21 @@ mesh_spec parse_mesh_entry(const reader& r, const json& entry, const std::string
 }
 
 /// The meshes of one group object (or the document) at `key` ("" for the document).
-void parse_group_meshes(const reader& r, const json& group, const std::string& key, const std::filesystem::path& base,
-                        view::matrix_stack& stack, scene& s) {
+void parse_group_meshes(const reader& r, const json& group, const std::string& key,
+                        const std::filesystem::path& base, view::matrix_stack& stack, scene& s) {
   const json* meshes = r.optional(group, "meshes");
   if (!meshes) return;
-  if (!meshes->is_array()) r.fail(key + "/meshes", std::string("must be an array (got ") + meshes->type_name() + ")");
+  if (!meshes->is_array())
+    r.fail(key + "/meshes", std::string("must be an array (got ") + meshes->type_name() + ")");
   for (std::size_t i = 0; i < meshes->size(); ++i)
-    s.meshes.push_back(parse_mesh_entry(r, (*meshes)[i], key + "/meshes/" + std::to_string(i), base, stack));
+    s.meshes.push_back(
+        parse_mesh_entry(r, (*meshes)[i], key + "/meshes/" + std::to_string(i), base, stack));
 }
 
 const json* groups_of(const reader& r, const json& group, const std::string& key) {
   const json* g = r.optional(group, "groups");
-  if (g && !g->is_array()) r.fail(key + "/groups", std::string("must be an array of groups (got ") + g->type_name() + ")");
+  if (g && !g->is_array())
+    r.fail(key + "/groups", std::string("must be an array of groups (got ") + g->type_name() + ")");
   return g;
 }
 
@@ -149,7 +161,8 @@ void parse_mesh_tree(const reader& r, const json& doc, const std::string& path, 
       r.fail(key, "groups nested deeper than " + std::to_string(max_group_depth) + " levels");
     r.warn_unknown(group, key, {"transforms", "meshes", "groups"});
     stack.push();
-    if (const json* t = r.optional(group, "transforms")) apply_transforms(r, *t, key + "/transforms", stack);
+    if (const json* t = r.optional(group, "transforms"))
+      apply_transforms(r, *t, key + "/transforms", stack);
     parse_group_meshes(r, group, key, base, stack, s);
     if (const json* g = groups_of(r, group, key))
       levels.push_back({g, key + "/groups"});
@@ -168,7 +181,8 @@ bool is_ortho2d(const json& doc) {
 namespace {
 
 /// The member object `name` of the camera, with its known keys.
-const json& camera_member(const reader& r, const json& cam, const char* name, std::initializer_list<const char*> known) {
+const json& camera_member(const reader& r, const json& cam, const char* name,
+                          std::initializer_list<const char*> known) {
   const std::string key = std::string("/camera/") + name;
   const json& m = r.object(cam.at(name), key);
   r.warn_unknown(m, key, known);
@@ -177,7 +191,8 @@ const json& camera_member(const reader& r, const json& cam, const char* name, st
 
 void parse_phigs(const reader& r, const json& cam, scene& s) {
   const std::string key = "/camera/phigs";
-  const json& p = camera_member(r, cam, "phigs", {"vrp", "vpn", "vup", "prp", "window", "front", "back", "projection"});
+  const json& p = camera_member(
+      r, cam, "phigs", {"vrp", "vpn", "vup", "prp", "window", "front", "back", "projection"});
   view::phigs_view v;
   v.vrp = as_point(r.triple(r.require(p, key, "vrp"), key + "/vrp"));
   v.vpn = r.triple(r.require(p, key, "vpn"), key + "/vpn");
@@ -193,7 +208,8 @@ void parse_phigs(const reader& r, const json& cam, scene& s) {
   v.back = r.number(r.require(p, key, "back"), key + "/back");
   const json& proj = r.require(p, key, "projection");
   const std::string pt = proj.is_string() ? proj.get<std::string>() : std::string();
-  if (pt != "perspective" && pt != "parallel") r.fail(key + "/projection", "must be \"perspective\" or \"parallel\"");
+  if (pt != "perspective" && pt != "parallel")
+    r.fail(key + "/projection", "must be \"perspective\" or \"parallel\"");
   v.perspective = pt == "perspective";
   if (!(view::length(v.vpn) > 0)) r.fail(key + "/vpn", "must not be the zero vector");
   if (!(view::length(v.vup) > 0)) r.fail(key + "/vup", "must not be the zero vector");
@@ -210,8 +226,8 @@ void parse_phigs(const reader& r, const json& cam, scene& s) {
   s.camera = view::camera_of(m.model_view, v.perspective ? v.prp.z : 1.0);
   projection_spec& ps = s.projection;
   ps.kind = v.perspective ? view::projection_kind::frustum
-            : m.oblique  ? view::projection_kind::oblique
-                         : view::projection_kind::orthographic;
+            : m.oblique   ? view::projection_kind::oblique
+                          : view::projection_kind::orthographic;
   ps.left = v.umin;
   ps.right = v.umax;
   ps.bottom = v.vmin;
@@ -236,8 +252,9 @@ void parse_any_camera(const reader& r, const json& doc, scene& s) {
   for (int k = 0; k < 5; ++k)
     if (cam.contains(forms[k])) {
       if (form >= 0)
-        r.fail(std::string("/camera/") + forms[k],
-               std::string("one camera form only (") + forms[form] + " and " + forms[k] + " given)");
+        r.fail(
+            std::string("/camera/") + forms[k],
+            std::string("one camera form only (") + forms[form] + " and " + forms[k] + " given)");
       form = k;
     }
   if (form < 0) form = 0;  // the gluLookAt form names what is missing
@@ -246,9 +263,11 @@ void parse_any_camera(const reader& r, const json& doc, scene& s) {
       s.form = camera_form::look_at;
       r.warn_unknown(cam, "/camera", {"eye", "look_at", "up"});
       s.camera.eye = as_point(r.triple(r.require(cam, "/camera", "eye"), "/camera/eye"));
-      s.camera.look_at = as_point(r.triple(r.require(cam, "/camera", "look_at"), "/camera/look_at"));
+      s.camera.look_at =
+          as_point(r.triple(r.require(cam, "/camera", "look_at"), "/camera/look_at"));
       s.camera.up = r.triple(r.require(cam, "/camera", "up"), "/camera/up");
-      if (!(view::length(s.camera.look_at - s.camera.eye) > 0)) r.fail("/camera/look_at", "must differ from /camera/eye");
+      if (!(view::length(s.camera.look_at - s.camera.eye) > 0))
+        r.fail("/camera/look_at", "must differ from /camera/eye");
       break;
     }
     case 1: {
@@ -272,12 +291,16 @@ void parse_any_camera(const reader& r, const json& doc, scene& s) {
       s.form = camera_form::polar;
       r.warn_unknown(cam, "/camera", {"polar"});
       const std::string key = "/camera/polar";
-      const json& p = camera_member(r, cam, "polar", {"distance", "twist_deg", "elevation_deg", "azimuth_deg", "look_at"});
+      const json& p = camera_member(
+          r, cam, "polar", {"distance", "twist_deg", "elevation_deg", "azimuth_deg", "look_at"});
       const double distance = r.number(r.require(p, key, "distance"), key + "/distance");
-      if (!(distance > 0)) r.fail(key + "/distance", "must be > 0 (the eye's distance from look_at)");
+      if (!(distance > 0))
+        r.fail(key + "/distance", "must be > 0 (the eye's distance from look_at)");
       view::point3 centre{0, 0, 0};
-      if (const json* l = r.optional(p, "look_at")) centre = as_point(r.triple(*l, key + "/look_at"));
-      s.view_matrix = view::polar_view(distance, angle(r, p, key, "twist_deg"), angle(r, p, key, "elevation_deg"),
+      if (const json* l = r.optional(p, "look_at"))
+        centre = as_point(r.triple(*l, key + "/look_at"));
+      s.view_matrix = view::polar_view(distance, angle(r, p, key, "twist_deg"),
+                                       angle(r, p, key, "elevation_deg"),
                                        angle(r, p, key, "azimuth_deg"), centre);
       s.camera = view::camera_of(*s.view_matrix, distance);
       break;
@@ -286,10 +309,13 @@ void parse_any_camera(const reader& r, const json& doc, scene& s) {
       s.form = camera_form::pilot;
       r.warn_unknown(cam, "/camera", {"pilot"});
       const std::string key = "/camera/pilot";
-      const json& p = camera_member(r, cam, "pilot", {"position", "roll_deg", "pitch_deg", "heading_deg"});
-      const view::point3 position = as_point(r.triple(r.require(p, key, "position"), key + "/position"));
-      s.view_matrix = view::pilot_view(position, angle(r, p, key, "roll_deg"), angle(r, p, key, "pitch_deg"),
-                                       angle(r, p, key, "heading_deg"));
+      const json& p =
+          camera_member(r, cam, "pilot", {"position", "roll_deg", "pitch_deg", "heading_deg"});
+      const view::point3 position =
+          as_point(r.triple(r.require(p, key, "position"), key + "/position"));
+      s.view_matrix =
+          view::pilot_view(position, angle(r, p, key, "roll_deg"), angle(r, p, key, "pitch_deg"),
+                           angle(r, p, key, "heading_deg"));
       s.camera = view::camera_of(*s.view_matrix, 1.0);
       break;
     }
@@ -314,7 +340,8 @@ void parse_viewport_and_image(const reader& r, const json& doc, scene& s) {
   auto side = [&](const json& obj, const std::string& key, const char* name) {
     const long long v = r.integer(r.require(obj, key, name), key + "/" + name);
     if (v < 1 || v > max_viewport_side)
-      r.fail(key + "/" + name, "must be in 1.." + std::to_string(max_viewport_side) + " (got " + std::to_string(v) + ")");
+      r.fail(key + "/" + name, "must be in 1.." + std::to_string(max_viewport_side) + " (got " +
+                                   std::to_string(v) + ")");
     return static_cast<int>(v);
   };
   s.width = side(vp, "/viewport", "width");
@@ -324,7 +351,8 @@ void parse_viewport_and_image(const reader& r, const json& doc, scene& s) {
     if (!v) return 0LL;
     const long long o = r.integer(*v, std::string("/viewport/") + name);
     if (o < 0 || o > max_viewport_side)
-      r.fail(std::string("/viewport/") + name, "must be in 0.." + std::to_string(max_viewport_side));
+      r.fail(std::string("/viewport/") + name,
+             "must be in 0.." + std::to_string(max_viewport_side));
     return o;
   };
   s.viewport_x = static_cast<int>(offset("x"));
@@ -339,10 +367,12 @@ void parse_viewport_and_image(const reader& r, const json& doc, scene& s) {
   }
   if (s.viewport_x + s.width > s.image_width)
     r.fail("/viewport/x", "the viewport (x + width = " + std::to_string(s.viewport_x + s.width) +
-                              ") must fit in the image (width " + std::to_string(s.image_width) + ")");
+                              ") must fit in the image (width " + std::to_string(s.image_width) +
+                              ")");
   if (s.viewport_y + s.height > s.image_height)
     r.fail("/viewport/y", "the viewport (y + height = " + std::to_string(s.viewport_y + s.height) +
-                              ") must fit in the image (height " + std::to_string(s.image_height) + ")");
+                              ") must fit in the image (height " + std::to_string(s.image_height) +
+                              ")");
   if (const json* a = r.optional(doc, "aspect")) {
     const std::string v = a->is_string() ? a->get<std::string>() : std::string();
     if (v == "fit")
@@ -356,7 +386,8 @@ void place_viewport(const scene& s, view::view_setup& v) {
   int w = s.width, h = s.height, dx = 0, dy = 0;
   const bool has_window = s.phigs || s.projection.kind != view::projection_kind::perspective;
   if (s.aspect == aspect_policy::fit && has_window) {
-    const double window_aspect = (s.projection.right - s.projection.left) / (s.projection.top - s.projection.bottom);
+    const double window_aspect =
+        (s.projection.right - s.projection.left) / (s.projection.top - s.projection.bottom);
     const double viewport_aspect = static_cast<double>(w) / h;
     if (window_aspect > viewport_aspect) {
       const int fitted = std::max(1, static_cast<int>(std::lround(w / window_aspect)));
@@ -378,13 +409,15 @@ void place_viewport(const scene& s, view::view_setup& v) {
 void parse_lines(const reader& r, const json& doc, scene& s) {
   const json* lines = r.optional(doc, "lines");
   if (!lines) return;
-  if (!lines->is_array()) r.fail("/lines", std::string("must be an array (got ") + lines->type_name() + ")");
+  if (!lines->is_array())
+    r.fail("/lines", std::string("must be an array (got ") + lines->type_name() + ")");
   for (std::size_t i = 0; i < lines->size(); ++i) {
     const std::string key = "/lines/" + std::to_string(i);
     const json& entry = r.object((*lines)[i], key);
     r.warn_unknown(entry, key, {"points", "color", "clipper"});
     const json& pts = r.require(entry, key, "points");
-    if (!pts.is_array() || pts.size() < 2) r.fail(key + "/points", "must be an array of at least 2 points [x, y, z]");
+    if (!pts.is_array() || pts.size() < 2)
+      r.fail(key + "/points", "must be an array of at least 2 points [x, y, z]");
     if (pts.size() > max_line_points)
       r.fail(key + "/points", "at most " + std::to_string(max_line_points) + " points");
     view::curve_spec line;
@@ -411,7 +444,9 @@ void parse_trackball(const reader& r, const json& doc, scene& s) {
   if (!t) return;
   const std::string v = t->is_string() ? t->get<std::string>() : std::string();
   if (v != "arcball" && v != "virtual")
-    r.fail("/trackball", "must be \"arcball\" (Shoemake, the default) or \"virtual\" (the classic virtual trackball)");
+    r.fail("/trackball",
+           "must be \"arcball\" (Shoemake, the default) or \"virtual\" (the classic virtual "
+           "trackball)");
   s.trackball = v;
 }
 

@@ -189,14 +189,16 @@ std::pair<bezier_curve, bezier_curve> bezier_curve::split(double t) const {
     first[k] = q[0];
     second[n - k] = q[n - k];
   }
-  return {bezier_curve(std::move(first), unchecked{}), bezier_curve(std::move(second), unchecked{})};
+  return {bezier_curve(std::move(first), unchecked{}),
+          bezier_curve(std::move(second), unchecked{})};
 }
 
 flattened_curve flatten(const bezier_curve& curve, const projection_2d& project, double tolerance,
                         const flatten_options& options) {
   if (!project) throw usage_error("flatten: the projection is empty");
   if (!(std::isfinite(tolerance) && tolerance > 0.0))
-    throw usage_error("flatten: tolerance must be finite and > 0, got " + std::to_string(tolerance));
+    throw usage_error("flatten: tolerance must be finite and > 0, got " +
+                      std::to_string(tolerance));
   if (options.max_depth < 0 || options.max_depth > 60)
     throw usage_error("flatten: max_depth must be in [0, 60], got " +
                       std::to_string(options.max_depth));

@@ -37,7 +37,7 @@ std::vector<double> bernstein_weights(std::size_t n, double t);
 /// A Bézier curve of degree n >= 0 given by n + 1 finite control points.
 /// A degree-0 curve (one control point) is valid: it is that point for every t.
 class bezier_curve {
-public:
+ public:
   /// Throws usage_error when `control_points` is empty or a coordinate is NaN or infinite.
   explicit bezier_curve(std::vector<vec3d> control_points);
 
@@ -74,7 +74,7 @@ public:
   /// Throws usage_error unless t is finite and in [0, 1].
   std::pair<bezier_curve, bezier_curve> split(double t) const;
 
-private:
+ private:
   struct unchecked {};
   bezier_curve(std::vector<vec3d> control_points, unchecked);
   std::vector<vec3d> control_points_;

@@ -23,7 +23,8 @@ camera_basis look_direction_basis(const vector3& g, const vector3& up) {
   const vector3 w = (-1.0 / glen) * g;
   const vector3 txw = cross(up, w);
   const double s = length(txw);
-  if (!(s > 1e-9 * tlen)) throw usage_error("look_at: the up vector is parallel to the view direction");
+  if (!(s > 1e-9 * tlen))
+    throw usage_error("look_at: the up vector is parallel to the view direction");
   camera_basis b;
   b.w = w;
   b.u = (1.0 / s) * txw;
@@ -51,23 +52,27 @@ mat4 look_along(const point3& eye, const vector3& look, const vector3& up) {
   return r;
 }
 
-mat4 polar_view(double distance, double twist_deg, double elevation_deg, double azimuth_deg, const point3& look_at) {
+mat4 polar_view(double distance, double twist_deg, double elevation_deg, double azimuth_deg,
+                const point3& look_at) {
   if (!std::isfinite(distance) || !std::isfinite(twist_deg) || !std::isfinite(elevation_deg) ||
       !std::isfinite(azimuth_deg) || !is_finite(look_at))
     throw usage_error("polar_view: non-finite input");
-  return translate({0, 0, -distance}) * rotate(-twist_deg, {0, 0, 1}) * rotate(elevation_deg, {1, 0, 0}) *
-         rotate(azimuth_deg, {0, 0, 1}) * translate({-look_at.x, -look_at.y, -look_at.z});
+  return translate({0, 0, -distance}) * rotate(-twist_deg, {0, 0, 1}) *
+         rotate(elevation_deg, {1, 0, 0}) * rotate(azimuth_deg, {0, 0, 1}) *
+         translate({-look_at.x, -look_at.y, -look_at.z});
 }
 
 mat4 pilot_view(const point3& position, double roll_deg, double pitch_deg, double heading_deg) {
-  if (!is_finite(position) || !std::isfinite(roll_deg) || !std::isfinite(pitch_deg) || !std::isfinite(heading_deg))
+  if (!is_finite(position) || !std::isfinite(roll_deg) || !std::isfinite(pitch_deg) ||
+      !std::isfinite(heading_deg))
     throw usage_error("pilot_view: non-finite input");
-  return rotate(roll_deg, {0, 1, 0}) * rotate(pitch_deg, {1, 0, 0}) * rotate(heading_deg, {0, 0, 1}) *
-         translate({-position.x, -position.y, -position.z});
+  return rotate(roll_deg, {0, 1, 0}) * rotate(pitch_deg, {1, 0, 0}) *
+         rotate(heading_deg, {0, 0, 1}) * translate({-position.x, -position.y, -position.z});
 }
 
 camera camera_of(const mat4& m, double look_distance) {
-  const vector3 rows[3] = {{m(0, 0), m(0, 1), m(0, 2)}, {m(1, 0), m(1, 1), m(1, 2)}, {m(2, 0), m(2, 1), m(2, 2)}};
+  const vector3 rows[3] = {
+      {m(0, 0), m(0, 1), m(0, 2)}, {m(1, 0), m(1, 1), m(1, 2)}, {m(2, 0), m(2, 1), m(2, 2)}};
   const double t[3] = {m(0, 3), m(1, 3), m(2, 3)};
   const vector3 eye = -(t[0] * rows[0] + t[1] * rows[1] + t[2] * rows[2]);
   camera c;
@@ -79,7 +84,8 @@ camera camera_of(const mat4& m, double look_distance) {
 
 vector3 gaze_direction(const camera& c) {
   const vector3 g = c.look_at - c.eye;
-  if (!is_finite(g) || !(length(g) > 0)) throw usage_error("gaze_direction: eye and look_at are the same point");
+  if (!is_finite(g) || !(length(g) > 0))
+    throw usage_error("gaze_direction: eye and look_at are the same point");
   return normalized(g);
 }
 

@@ -40,7 +40,8 @@ mat4 look_along(const point3& eye, const vector3& look, const vector3& up);
 /// polarView: Mv = T(0, 0, -distance) * Rz(-twist) * Rx(elevation) * Rz(azimuth) * T(-look_at),
 /// R as glRotated (degrees, counter-clockwise about the axis). Throws usage_error for
 /// non-finite input.
-mat4 polar_view(double distance, double twist_deg, double elevation_deg, double azimuth_deg, const point3& look_at);
+mat4 polar_view(double distance, double twist_deg, double elevation_deg, double azimuth_deg,
+                const point3& look_at);
 
 /// pilotView: Mv = Ry(roll) * Rx(pitch) * Rz(heading) * T(-position), R as glRotated.
 /// Throws usage_error for non-finite input.

@@ -22,10 +22,12 @@ void clip_to_view_volume(const std::vector<hpoint>& in, std::vector<hpoint>& out
   for (const clip::vec4& p : clipped.positions) out.push_back({p[0], p[1], p[2], p[3]});
 }
 
-unsigned view_volume_outcode(const hpoint& p) { return clip::homogeneous_outcode({p.x, p.y, p.z, p.w}); }
+unsigned view_volume_outcode(const hpoint& p) {
+  return clip::homogeneous_outcode({p.x, p.y, p.z, p.w});
+}
 
-bool clip_segment_to_view_volume(const hpoint& a, const hpoint& b, hpoint& out_a, hpoint& out_b, double* t0_out,
-                                 double* t1_out, segment_clipper clipper) {
+bool clip_segment_to_view_volume(const hpoint& a, const hpoint& b, hpoint& out_a, hpoint& out_b,
+                                 double* t0_out, double* t1_out, segment_clipper clipper) {
   const clip::vec4 ca{a.x, a.y, a.z, a.w}, cb{b.x, b.y, b.z, b.w};
   clip::vec4 oa, ob;
   const bool kept = clipper == segment_clipper::cohen_sutherland

@@ -16,18 +16,22 @@ namespace {
 /// Visits the tree once for a view: nodes, the eye's sides, and each cell's position = the
 /// drawn fragments visited before it.
 class cell_collector final : public bsp_visitor {
-public:
-  cell_collector(curve_cells& cells, const std::vector<std::uint8_t>& drawn) : cells_(cells), drawn_(drawn) {}
+ public:
+  cell_collector(curve_cells& cells, const std::vector<std::uint8_t>& drawn)
+      : cells_(cells), drawn_(drawn) {}
   void enter(const bsp_node& n, int eye_side) override {
     cells_.nodes[n.index] = n;
     cells_.near[n.index] = eye_side < 0 ? -1 : 1;
   }
   void fragments(const bsp_node& n) override {
-    for (std::uint32_t k = 0; k < n.fragment_count; ++k) drawn_before_ += drawn_[n.first_fragment + k];
+    for (std::uint32_t k = 0; k < n.fragment_count; ++k)
+      drawn_before_ += drawn_[n.first_fragment + k];
   }
-  void cell(const bsp_node& n, int side) override { cells_.position[n.index][side > 0] = drawn_before_; }
+  void cell(const bsp_node& n, int side) override {
+    cells_.position[n.index][side > 0] = drawn_before_;
+  }
 
-private:
+ private:
   curve_cells& cells_;
   const std::vector<std::uint8_t>& drawn_;
   std::size_t drawn_before_ = 0;
@@ -40,7 +44,8 @@ int clamped_side(const bsp_node& n, const vec3d& p, int lo, int hi) {
 
 }  // namespace
 
-curve_cells make_curve_cells(const bsp& tree, const view_setup& view, const std::vector<std::uint32_t>& drawn_order) {
+curve_cells make_curve_cells(const bsp& tree, const view_setup& view,
+                             const std::vector<std::uint32_t>& drawn_order) {
   curve_cells cells;
   const std::size_t n = tree.node_count();
   cells.nodes.resize(n);
@@ -59,8 +64,9 @@ curve_cells make_curve_cells(const bsp& tree, const view_setup& view, const std:
   return cells;
 }
 
-void place_chord(const curve_cells& cells, const vec3d& a, const vec3d& b, const std::vector<vec3d>& hull,
-                 std::uint32_t curve, std::size_t segment, bool point, std::vector<curve_piece>& out,
+void place_chord(const curve_cells& cells, const vec3d& a, const vec3d& b,
+                 const std::vector<vec3d>& hull, std::uint32_t curve, std::size_t segment,
+                 bool point, std::vector<curve_piece>& out,
                  std::vector<std::uint8_t>* hull_ranges) {
   if (cells.nodes.empty()) {
     out.push_back({a, b, 0, curve, segment, 0.0, point});
@@ -89,7 +95,8 @@ void place_chord(const curve_cells& cells, const vec3d& a, const vec3d& b, const
         return;
       }
       const vec3d pa = at(t0), pb = at(t1);
-      if (!point && (t0 > 0 || t1 < 1) && pa == pb) return;  // a split-off sliver that rounds to a point
+      if (!point && (t0 > 0 || t1 < 1) && pa == pb)
+        return;  // a split-off sliver that rounds to a point
       out.push_back({pa, pb, cells.position[nd.index][side > 0], curve, segment, t0, point});
     };
     int lo = 1, hi = -1;  // the hull's sign range, once per node and curve
@@ -132,7 +139,8 @@ placed_curves place_curves(const frame& f) {
   const viewport& vp = f.view.vp;
   // This view of the tree: nodes, the eye's sides and the cells' positions.
   placed_curves out;
-  const curve_cells cells = f.tree && !f.fragments.empty() ? make_curve_cells(*f.tree, f.view, f.order) : curve_cells{};
+  const curve_cells cells =
+      f.tree && !f.fragments.empty() ? make_curve_cells(*f.tree, f.view, f.order) : curve_cells{};
   out.nodes = cells.nodes.size();
 
   // 1. Flatten, 2. place.
@@ -164,8 +172,8 @@ placed_curves place_curves(const frame& f) {
     out.forced += poly.forced_chords;
     for (std::size_t s = 0; s + 1 < poly.points.size(); ++s) {
       ++out.chords;
-      place_chord(cells, poly.points[s], poly.points[s + 1], curve.control_points(), k, s, false, pieces,
-                  &hull_ranges);
+      place_chord(cells, poly.points[s], poly.points[s + 1], curve.control_points(), k, s, false,
+                  pieces, &hull_ranges);
     }
   }
   std::stable_sort(pieces.begin(), pieces.end(), [](const curve_piece& x, const curve_piece& y) {
@@ -198,8 +206,8 @@ std::string curves_stage(frame& f) {
   // 3. Clip in homogeneous coordinates, divide, viewport.
   for (const curve_piece& piece : placed.pieces) {
     hpoint ca, cb;
-    if (!clip_segment_to_view_volume(pm * to_point(piece.a), pm * to_point(piece.b), ca, cb, nullptr, nullptr,
-                                     f.curves[piece.curve].clipper))
+    if (!clip_segment_to_view_volume(pm * to_point(piece.a), pm * to_point(piece.b), ca, cb,
+                                     nullptr, nullptr, f.curves[piece.curve].clipper))
       continue;
     if (!(ca.w > 0) || !(cb.w > 0)) continue;
     screen_line line;
@@ -211,9 +219,10 @@ std::string curves_stage(frame& f) {
     line.point = piece.point;
     f.lines.push_back(line);
   }
-  return std::to_string(f.curves.size()) + " curves, " + std::to_string(placed.chords) + " chords (" +
-         std::to_string(placed.forced) + " forced), " + std::to_string(placed.pieces.size()) + " pieces in " +
-         std::to_string(placed.nodes) + " nodes, " + std::to_string(f.lines.size()) + " lines drawn";
+  return std::to_string(f.curves.size()) + " curves, " + std::to_string(placed.chords) +
+         " chords (" + std::to_string(placed.forced) + " forced), " +
+         std::to_string(placed.pieces.size()) + " pieces in " + std::to_string(placed.nodes) +
+         " nodes, " + std::to_string(f.lines.size()) + " lines drawn";
 }
 
 }  // namespace exbsp::view

@@ -16,7 +16,8 @@
 //    every chord is clipped in step 3 before any divide, so no point behind the eye wraps
 //    around. The guarantee "within tolerance of the curve" therefore holds for every visible
 //    part (all its control points have w > 0 there, where flatten's guarantee applies).
-// 2. DEPTH RULE (cells). A point of a curve belongs to the BSP cell containing it (bsp/traversal.h),
+// 2. DEPTH RULE (cells). A point of a curve belongs to the BSP cell containing it
+// (bsp/traversal.h),
 //    and curve pieces are drawn when the back-to-front traversal reaches their cell. Each chord
 //    is pushed down the tree: at node N both ends are classified by the EXACT sign of h_N
 //    (side_of_plane), clamped into the sign range of the curve's control points (the
@@ -63,23 +64,25 @@ struct curve_piece {
   vec3d a, b;
   std::size_t order_position = 0;  ///< fragments of the order drawn before it
   std::uint32_t curve = 0;
-  std::size_t segment = 0;         ///< chord index along the curve's polyline
-  double t_begin = 0;              ///< where the piece starts on its chord (for sorting)
-  bool point = false;              ///< degree-0 curve
+  std::size_t segment = 0;  ///< chord index along the curve's polyline
+  double t_begin = 0;       ///< where the piece starts on its chord (for sorting)
+  bool point = false;       ///< degree-0 curve
 };
 
 /// The tree as one view sees it (depth rule above): its nodes, the eye's side of each and
 /// the painter's position of each cell.
 struct curve_cells {
-  std::vector<bsp_node> nodes;                       ///< by node id
-  std::vector<std::int8_t> near;                     ///< per node: +1 or -1, the eye's side (s = 0: +1)
-  std::vector<std::array<std::size_t, 2>> position;  ///< per node: [0] negative, [1] positive cell's position
+  std::vector<bsp_node> nodes;    ///< by node id
+  std::vector<std::int8_t> near;  ///< per node: +1 or -1, the eye's side (s = 0: +1)
+  std::vector<std::array<std::size_t, 2>>
+      position;  ///< per node: [0] negative, [1] positive cell's position
 };
 
 /// The cells of `tree` for `view`, positions counted over `drawn_order` (f.order: the
 /// traversal's order, possibly without culled fragments). Throws usage_error when
 /// drawn_order names a fragment the tree does not have.
-curve_cells make_curve_cells(const bsp& tree, const view_setup& view, const std::vector<std::uint32_t>& drawn_order);
+curve_cells make_curve_cells(const bsp& tree, const view_setup& view,
+                             const std::vector<std::uint32_t>& drawn_order);
 
 /// hull_ranges entry of a node whose hull sign range is not known yet (else 3 (lo + 1) + hi + 1).
 constexpr std::uint8_t unknown_range = 0xff;
@@ -87,9 +90,11 @@ constexpr std::uint8_t unknown_range = 0xff;
 /// Pushes chord (a, b) of polyline segment `segment` of curve `curve` down the tree (depth
 /// rule above; `hull`: the curve's control points, or the segment's two ends) and appends
 /// its pieces to `out`. With no nodes: one piece at position 0. `hull_ranges` (optional, one
-/// entry per node, unknown_range at first) keeps the hull's sign ranges for the curve's next chords.
-void place_chord(const curve_cells& cells, const vec3d& a, const vec3d& b, const std::vector<vec3d>& hull,
-                 std::uint32_t curve, std::size_t segment, bool point, std::vector<curve_piece>& out,
+/// entry per node, unknown_range at first) keeps the hull's sign ranges for the curve's next
+/// chords.
+void place_chord(const curve_cells& cells, const vec3d& a, const vec3d& b,
+                 const std::vector<vec3d>& hull, std::uint32_t curve, std::size_t segment,
+                 bool point, std::vector<curve_piece>& out,
                  std::vector<std::uint8_t>* hull_ranges = nullptr);
 
 /// Steps 1 and 2 for f.curves: the pieces sorted by position, then curve, then along the curve.

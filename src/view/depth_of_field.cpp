@@ -12,26 +12,32 @@ namespace {
 constexpr double golden_angle = 2.39996322972865332;  // pi (3 - sqrt 5)
 
 void check(const depth_of_field_settings& s) {
-  if (!(std::isfinite(s.focal_length) && s.focal_length > 0)) throw usage_error("depth_of_field: focal_length must be > 0");
-  if (!(std::isfinite(s.aperture) && s.aperture > 0)) throw usage_error("depth_of_field: aperture must be > 0");
+  if (!(std::isfinite(s.focal_length) && s.focal_length > 0))
+    throw usage_error("depth_of_field: focal_length must be > 0");
+  if (!(std::isfinite(s.aperture) && s.aperture > 0))
+    throw usage_error("depth_of_field: aperture must be > 0");
   if (!(std::isfinite(s.focus_distance) && s.focus_distance > s.focal_length))
     throw usage_error("depth_of_field: focus_distance must be greater than focal_length");
-  if (s.samples < 2 || s.samples > 1024) throw usage_error("depth_of_field: samples must be in 2..1024");
+  if (s.samples < 2 || s.samples > 1024)
+    throw usage_error("depth_of_field: samples must be in 2..1024");
 }
 }  // namespace
 
 double circle_of_confusion(const depth_of_field_settings& s, double u) {
-  return s.aperture * s.focal_length * std::fabs(u - s.focus_distance) / (u * (s.focus_distance - s.focal_length));
+  return s.aperture * s.focal_length * std::fabs(u - s.focus_distance) /
+         (u * (s.focus_distance - s.focal_length));
 }
 
-double circle_of_confusion_pixels(const depth_of_field_settings& s, const view_setup& view, double u) {
+double circle_of_confusion_pixels(const depth_of_field_settings& s, const view_setup& view,
+                                  double u) {
   return s.aperture * std::fabs(u - s.focus_distance) * view.vp.height * view.projection(1, 1) /
          (2 * u * s.focus_distance);
 }
 
 std::vector<lens_offset> lens_samples(int count, double aperture) {
   if (count < 1) throw usage_error("lens_samples: count must be >= 1");
-  if (!(std::isfinite(aperture) && aperture >= 0)) throw usage_error("lens_samples: aperture must be finite and >= 0");
+  if (!(std::isfinite(aperture) && aperture >= 0))
+    throw usage_error("lens_samples: aperture must be finite and >= 0");
   std::vector<lens_offset> out(static_cast<std::size_t>(count));
   for (int k = 1; k < count; ++k) {
     const double r = 0.5 * aperture * std::sqrt((k - 0.5) / (count - 1));
@@ -42,8 +48,10 @@ std::vector<lens_offset> lens_samples(int count, double aperture) {
 }
 
 view_setup lens_view(const view_setup& view, const lens_offset& lens, double focus_distance) {
-  if (view.is_parallel()) throw usage_error("depth_of_field: needs a perspective or frustum projection");
-  if (!(std::isfinite(focus_distance) && focus_distance > 0)) throw usage_error("depth_of_field: focus_distance must be > 0");
+  if (view.is_parallel())
+    throw usage_error("depth_of_field: needs a perspective or frustum projection");
+  if (!(std::isfinite(focus_distance) && focus_distance > 0))
+    throw usage_error("depth_of_field: focus_distance must be > 0");
   const camera_basis b = look_at_basis(view.cam.eye, view.cam.look_at, view.cam.up);
   const vector3 shift = lens.dx * b.u + lens.dy * b.v;
   view_setup v = view;
@@ -58,7 +66,8 @@ view_setup lens_view(const view_setup& view, const lens_offset& lens, double foc
 std::string depth_of_field_stage(frame& f, const pipeline& per_view) {
   const depth_of_field_settings& s = f.settings.depth_of_field;
   check(s);
-  if (f.view.is_parallel()) throw usage_error("depth_of_field: needs a perspective or frustum projection");
+  if (f.view.is_parallel())
+    throw usage_error("depth_of_field: needs a perspective or frustum projection");
   const std::vector<lens_offset> lens = lens_samples(s.samples, s.aperture);
   std::vector<std::uint32_t> sum(f.picture.data().begin(), f.picture.data().end());
 
@@ -77,7 +86,8 @@ std::string depth_of_field_stage(frame& f, const pipeline& per_view) {
     f.view = lens_view(centre, lens[k], s.focus_distance);
     per_view.run(f, nullptr);
     const std::vector<std::uint8_t>& px = f.picture.data();
-    if (px.size() != sum.size()) throw usage_error("depth_of_field: a lens sample changed the image size");
+    if (px.size() != sum.size())
+      throw usage_error("depth_of_field: a lens sample changed the image size");
     for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += px[i];
   }
 
@@ -93,33 +103,41 @@ std::string depth_of_field_stage(frame& f, const pipeline& per_view) {
   f.picture = centre_picture;
   const std::uint32_t n = static_cast<std::uint32_t>(lens.size());
   std::vector<std::uint8_t>& out = f.picture.data();
-  for (std::size_t i = 0; i < sum.size(); ++i) out[i] = static_cast<std::uint8_t>((sum[i] + n / 2) / n);
+  for (std::size_t i = 0; i < sum.size(); ++i)
+    out[i] = static_cast<std::uint8_t>((sum[i] + n / 2) / n);
 
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%d lens samples (traversals of one BSP), aperture %g, focus at %g, f %g", s.samples,
-                s.aperture, s.focus_distance, s.focal_length);
+  std::snprintf(buf, sizeof buf,
+                "%d lens samples (traversals of one BSP), aperture %g, focus at %g, f %g",
+                s.samples, s.aperture, s.focus_distance, s.focal_length);
   return buf;
 }
 
-void parse_depth_of_field_parameters(const reader& r, const json& p, const std::string& key, const effect_scene& scene,
-                                     effect_settings& out) {
+void parse_depth_of_field_parameters(const reader& r, const json& p, const std::string& key,
+                                     const effect_scene& scene, effect_settings& out) {
   depth_of_field_settings& d = out.depth_of_field;
-  r.reject_unknown(p, key, "depth_of_field", {"focal_length", "aperture", "f_number", "focus_distance", "samples"});
-  if (scene.parallel) r.fail(key, "needs a perspective or frustum projection (a parallel projection has no lens)");
+  r.reject_unknown(p, key, "depth_of_field",
+                   {"focal_length", "aperture", "f_number", "focus_distance", "samples"});
+  if (scene.parallel)
+    r.fail(key, "needs a perspective or frustum projection (a parallel projection has no lens)");
   d.focal_length = r.positive(r.require(p, key, "focal_length"), key + "/focal_length");
   const json* aperture = r.optional(p, "aperture");
   const json* f_number = r.optional(p, "f_number");
   if (aperture && f_number) r.fail(key + "/f_number", "give aperture or f_number, not both");
-  if (!aperture && !f_number) r.fail(key + "/aperture", "missing key (the lens diameter; or give f_number)");
+  if (!aperture && !f_number)
+    r.fail(key + "/aperture", "missing key (the lens diameter; or give f_number)");
   d.aperture = aperture ? r.positive(*aperture, key + "/aperture")
                         : d.focal_length / r.positive(*f_number, key + "/f_number");
-  if (!(std::isfinite(d.aperture) && d.aperture > 0)) r.fail(key + "/f_number", "gives an impossible aperture");
+  if (!(std::isfinite(d.aperture) && d.aperture > 0))
+    r.fail(key + "/f_number", "gives an impossible aperture");
   d.focus_distance = r.positive(r.require(p, key, "focus_distance"), key + "/focus_distance");
   if (!(d.focus_distance > d.focal_length))
-    r.fail(key + "/focus_distance", "must be greater than focal_length (a thin lens cannot focus closer than f)");
+    r.fail(key + "/focus_distance",
+           "must be greater than focal_length (a thin lens cannot focus closer than f)");
   if (const json* v = r.optional(p, "samples")) {
     const long long n = r.integer(*v, key + "/samples");
-    if (n < 2 || n > 1024) r.fail(key + "/samples", "must be in 2..1024 (got " + std::to_string(n) + ")");
+    if (n < 2 || n > 1024)
+      r.fail(key + "/samples", "must be in 2..1024 (got " + std::to_string(n) + ")");
     d.samples = static_cast<int>(n);
   }
 }

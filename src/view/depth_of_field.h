@@ -34,7 +34,8 @@ namespace exbsp::view {
 double circle_of_confusion(const depth_of_field_settings& s, double u);
 
 /// c_px = A |u - u_f| H P11 / (2 u u_f): the circle of confusion in pixels of `view`.
-double circle_of_confusion_pixels(const depth_of_field_settings& s, const view_setup& view, double u);
+double circle_of_confusion_pixels(const depth_of_field_settings& s, const view_setup& view,
+                                  double u);
 
 /// A point on the lens disk in the camera's (right, up) frame, world units.
 struct lens_offset {

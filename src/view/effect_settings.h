@@ -49,10 +49,10 @@ struct fog_settings {
 /// 1/f = 1/u + 1/v). Rendered by accumulating `samples` painter's renders with the eye moved
 /// over the lens disk (depth_of_field.h).
 struct depth_of_field_settings {
-  double focal_length = 0.05;   ///< f > 0, world units
-  double aperture = 0.01;       ///< A > 0, lens diameter in world units (f / f_number)
-  double focus_distance = 1;    ///< u_f > f, world units along the gaze
-  int samples = 32;             ///< lens samples, 2..1024
+  double focal_length = 0.05;  ///< f > 0, world units
+  double aperture = 0.01;      ///< A > 0, lens diameter in world units (f / f_number)
+  double focus_distance = 1;   ///< u_f > f, world units along the gaze
+  int samples = 32;            ///< lens samples, 2..1024
 };
 
 /// "antialias": samples x samples supersampling with a box filter.
@@ -70,11 +70,11 @@ struct effect_settings {
 
 /// What the defaults and checks of effect parameters depend on in a scene.
 struct effect_scene {
-  bool parallel = false;        ///< orthographic or oblique projection (no lens, planar fog distance)
+  bool parallel = false;  ///< orthographic or oblique projection (no lens, planar fog distance)
   double near_dist = 1, far_dist = 100;
   rgb8 background{255, 255, 255};
-  int width = 1, height = 1;    ///< the viewport
-  int max_side = 16384;         ///< the largest image side a scene may ask for
+  int width = 1, height = 1;  ///< the viewport
+  int max_side = 16384;       ///< the largest image side a scene may ask for
 };
 
 /// What the "fog" stage computes for a view (its sample shader reads it): the settings and

@@ -26,11 +26,34 @@ void no_parameters(const reader& r, const json& params, const std::string& key, 
 
 const std::vector<effect_description>& effect_catalog() {
   static const std::vector<effect_description> catalog = {
-      {"backface_culling", effect_hook::after_order, true, no_parameters, backface_culling_stage, {}, false},
-      {"lighting", effect_hook::after_order, true, parse_lighting_parameters, lighting_stage, {}, false},
+      {"backface_culling",
+       effect_hook::after_order,
+       true,
+       no_parameters,
+       backface_culling_stage,
+       {},
+       false},
+      {"lighting",
+       effect_hook::after_order,
+       true,
+       parse_lighting_parameters,
+       lighting_stage,
+       {},
+       false},
       {"fog", effect_hook::after_transform, true, parse_fog_parameters, fog_stage, {}, false},
-      {"antialias", effect_hook::raster, true, parse_antialias_parameters, antialias_stage, {}, true},
-      {"depth_of_field", effect_hook::after_raster, true, parse_depth_of_field_parameters, {}, depth_of_field_stage,
+      {"antialias",
+       effect_hook::raster,
+       true,
+       parse_antialias_parameters,
+       antialias_stage,
+       {},
+       true},
+      {"depth_of_field",
+       effect_hook::after_raster,
+       true,
+       parse_depth_of_field_parameters,
+       {},
+       depth_of_field_stage,
        true},
   };
   return catalog;
@@ -60,7 +83,8 @@ std::vector<const effect_description*> chosen_effects(const std::vector<std::str
 
 }  // namespace
 
-pipeline per_view_pipeline(const std::vector<std::string>& effects, output_kind output, bool curves) {
+pipeline per_view_pipeline(const std::vector<std::string>& effects, output_kind output,
+                           bool curves) {
   const std::vector<const effect_description*> chosen = chosen_effects(effects);
   auto has_hook = [&](effect_hook hook) {
     return std::any_of(chosen.begin(), chosen.end(), [&](const effect_description* e) {
@@ -78,7 +102,8 @@ pipeline per_view_pipeline(const std::vector<std::string>& effects, output_kind 
   if (curves) p.add("curves", curves_stage);
   add_hook(p, effect_hook::after_transform);
   if (output != output_kind::png) {
-    p.add(output == output_kind::svg ? "svg" : "pdf", output == output_kind::svg ? svg_stage : pdf_stage);
+    p.add(output == output_kind::svg ? "svg" : "pdf",
+          output == output_kind::svg ? svg_stage : pdf_stage);
     return p;
   }
   if (has_hook(effect_hook::raster))
@@ -97,7 +122,8 @@ pipeline per_view_pipeline(const std::vector<std::string>& effects, output_kind 
   return p;
 }
 
-pipeline standard_pipeline(const std::vector<std::string>& effects, output_kind output, bool curves) {
+pipeline standard_pipeline(const std::vector<std::string>& effects, output_kind output,
+                           bool curves) {
   pipeline p;
   p.add("build", build_stage);
   const pipeline views = per_view_pipeline(effects, output, curves);
@@ -105,7 +131,8 @@ pipeline standard_pipeline(const std::vector<std::string>& effects, output_kind 
   return p;
 }
 
-std::vector<std::string> effects_without_stage(const std::vector<std::string>& effects, output_kind output) {
+std::vector<std::string> effects_without_stage(const std::vector<std::string>& effects,
+                                               output_kind output) {
   std::vector<std::string> out;
   if (output == output_kind::png) return out;
   for (const effect_description* e : chosen_effects(effects))

@@ -35,20 +35,22 @@ enum class effect_hook { after_order, after_transform, raster, after_raster };
 
 /// Reads an effect's parameters `params` (a JSON object; {} for `true`) at JSON pointer `key`
 /// into its member of `out`; throws scene_error naming the bad or unknown parameter's key.
-using effect_parameters_reader = void (*)(const reader& r, const json& params, const std::string& key,
-                                          const effect_scene& scene, effect_settings& out);
+using effect_parameters_reader = void (*)(const reader& r, const json& params,
+                                          const std::string& key, const effect_scene& scene,
+                                          effect_settings& out);
 
 /// One known effect.
 struct effect_description {
   std::string name;
   effect_hook hook;
-  bool available;                          ///< false: known name, not implemented yet
-  effect_parameters_reader parse;          ///< its parameters (none: every parameter is unknown)
-  std::function<std::string(frame&)> run;  ///< the stage (hooks after_order, after_transform, raster)
+  bool available;                  ///< false: known name, not implemented yet
+  effect_parameters_reader parse;  ///< its parameters (none: every parameter is unknown)
+  std::function<std::string(frame&)>
+      run;  ///< the stage (hooks after_order, after_transform, raster)
   /// after_raster stages: also given the per-view stages ("order" up to raster/antialias) to
   /// render other views of the same BSP.
   std::function<std::string(frame&, const pipeline&)> run_with_views;
-  bool png_only = false;                   ///< no stage in SVG output
+  bool png_only = false;  ///< no stage in SVG output
 };
 
 /// All known effects, implemented or not, in stage order within each hook.

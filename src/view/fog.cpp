@@ -62,7 +62,8 @@ fog_shading make_fog_shading(const fog_settings& s, const view_setup& view) {
   f.settings = s;
   f.vp = view.vp;
   f.radial = !view.is_parallel();
-  if (!invert(view.projection, f.inverse_projection)) throw usage_error("fog: the projection matrix is singular");
+  if (!invert(view.projection, f.inverse_projection))
+    throw usage_error("fog: the projection matrix is singular");
   return f;
 }
 
@@ -86,20 +87,23 @@ rgb8 fog_color(const fog_shading& fog, rgb8 base, double d) {
 std::string fog_stage(frame& f) {
   f.fog = make_fog_shading(f.settings.fog, f.view);
   const fog_shading fog = *f.fog;
-  f.shader = sample_shader{
-      [fog](rgb8 c, double x, double y, double z) { return fog_color(fog, c, eye_distance(fog, x, y, z)); },
-      fog.settings.color};
+  f.shader = sample_shader{[fog](rgb8 c, double x, double y, double z) {
+                             return fog_color(fog, c, eye_distance(fog, x, y, z));
+                           },
+                           fog.settings.color};
   const fog_settings& s = f.settings.fog;
   char buf[128];
   if (s.mode == fog_mode::linear)
-    std::snprintf(buf, sizeof buf, "linear %g..%g, %s distance", s.start, s.end, f.fog->radial ? "radial" : "planar");
+    std::snprintf(buf, sizeof buf, "linear %g..%g, %s distance", s.start, s.end,
+                  f.fog->radial ? "radial" : "planar");
   else
-    std::snprintf(buf, sizeof buf, "exp density %g, %s distance", s.density, f.fog->radial ? "radial" : "planar");
+    std::snprintf(buf, sizeof buf, "exp density %g, %s distance", s.density,
+                  f.fog->radial ? "radial" : "planar");
   return buf;
 }
 
-void parse_fog_parameters(const reader& r, const json& p, const std::string& key, const effect_scene& scene,
-                          effect_settings& out) {
+void parse_fog_parameters(const reader& r, const json& p, const std::string& key,
+                          const effect_scene& scene, effect_settings& out) {
   fog_settings& f = out.fog;
   r.reject_unknown(p, key, "fog", {"mode", "start", "end", "density", "color"});
   f.mode = fog_mode::linear;
@@ -112,18 +116,21 @@ void parse_fog_parameters(const reader& r, const json& p, const std::string& key
   }
   const double near_dist = scene.near_dist, far_dist = scene.far_dist;
   if (f.mode == fog_mode::linear) {
-    if (p.contains("density")) r.fail(key + "/density", "only for mode \"exp\" (linear fog takes start and end)");
+    if (p.contains("density"))
+      r.fail(key + "/density", "only for mode \"exp\" (linear fog takes start and end)");
     f.start = near_dist;
     f.end = far_dist;
     if (const json* v = r.optional(p, "start")) f.start = r.positive(*v, key + "/start", true);
     if (const json* v = r.optional(p, "end")) f.end = r.positive(*v, key + "/end");
     if (!(f.end > f.start))
-      r.fail(key + "/end", "must be greater than start (start " + number_text(f.start) + ", end " + number_text(f.end) + ")");
+      r.fail(key + "/end", "must be greater than start (start " + number_text(f.start) + ", end " +
+                               number_text(f.end) + ")");
     if (f.end > far_dist)
       r.warn(key + "/end", "fog ends beyond the far plane (" + number_text(far_dist) +
                                "): geometry cut by the far plane will pop instead of fading");
   } else {
-    if (p.contains("start")) r.fail(key + "/start", "only for mode \"linear\" (exp fog takes density)");
+    if (p.contains("start"))
+      r.fail(key + "/start", "only for mode \"linear\" (exp fog takes density)");
     if (p.contains("end")) r.fail(key + "/end", "only for mode \"linear\" (exp fog takes density)");
     f.density = std::log(255.0) / far_dist;
     if (const json* v = r.optional(p, "density")) f.density = r.positive(*v, key + "/density");

@@ -9,13 +9,15 @@ namespace exbsp::view {
 /// An 8-bit sRGB colour.
 struct rgb8 {
   std::uint8_t r = 0, g = 0, b = 0;
-  friend bool operator==(const rgb8& a, const rgb8& b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+  friend bool operator==(const rgb8& a, const rgb8& b) {
+    return a.r == b.r && a.g == b.g && a.b == b.b;
+  }
   friend bool operator!=(const rgb8& a, const rgb8& b) { return !(a == b); }
 };
 
 /// width x height RGB pixels, 3 bytes each, top row first.
 class image {
-public:
+ public:
   image() = default;
   /// Throws usage_error unless 0 < width, height <= 65536.
   image(int width, int height, rgb8 fill);
@@ -43,7 +45,7 @@ public:
   const std::vector<std::uint8_t>& data() const { return data_; }
   std::vector<std::uint8_t>& data() { return data_; }
 
-private:
+ private:
   int width_ = 0, height_ = 0;
   std::vector<std::uint8_t> data_;
 };

@@ -32,12 +32,14 @@ inline std::string number_text(double v) {
 
 /// JSON reading with JSON-pointer error messages.
 class reader {
-public:
+ public:
   /// `strict`: unknown keys (warn_unknown) are errors, not warnings.
   reader(std::string file, std::ostream* warnings, bool strict = false)
       : file_(std::move(file)), warnings_(warnings), strict_(strict) {}
 
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const { throw scene_error(file_, key, what); }
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw scene_error(file_, key, what);
+  }
 
   void warn(const std::string& key, const std::string& what) const {
     if (warnings_) *warnings_ << "exbsp: warning: " << file_ << ": " << key << ": " << what << "\n";
@@ -64,9 +66,11 @@ public:
 
   /// Warns about (strict: fails on) each member of `obj` whose name is not in `known`, and
   /// says which names were expected there (a misspelt key is then easy to spot).
-  void warn_unknown(const json& obj, const std::string& key, std::initializer_list<const char*> known) const {
+  void warn_unknown(const json& obj, const std::string& key,
+                    std::initializer_list<const char*> known) const {
     for (auto it = obj.begin(); it != obj.end(); ++it) {
-      const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; });
+      const bool ok =
+          std::any_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; });
       if (ok) continue;
       std::string expected;
       for (const char* k : known) expected += (expected.empty() ? "" : ", ") + std::string(k);
@@ -84,11 +88,13 @@ public:
 
   long long integer(const json& v, const std::string& key) const {
     if (v.is_number_integer()) {
-      if (v.is_number_unsigned() && v.get<unsigned long long>() > 1ull << 62) fail(key, "integer out of range");
+      if (v.is_number_unsigned() && v.get<unsigned long long>() > 1ull << 62)
+        fail(key, "integer out of range");
       return v.get<long long>();
     }
     const double d = number(v, key);
-    if (d != std::floor(d) || std::fabs(d) > 4.0e18) fail(key, "must be an integer (got " + number_text(d) + ")");
+    if (d != std::floor(d) || std::fabs(d) > 4.0e18)
+      fail(key, "must be an integer (got " + number_text(d) + ")");
     return static_cast<long long>(d);
   }
 
@@ -102,7 +108,8 @@ public:
     std::uint8_t c[3];
     for (int k = 0; k < 3; ++k) {
       const std::string ck = key + "/" + std::to_string(k);
-      if (!v[k].is_number()) fail(ck, std::string("must be an integer in 0..255 (got ") + v[k].type_name() + ")");
+      if (!v[k].is_number())
+        fail(ck, std::string("must be an integer in 0..255 (got ") + v[k].type_name() + ")");
       const double d = v[k].get<double>();
       if (!(d >= 0 && d <= 255) || d != std::floor(d))
         fail(ck, "colour component must be an integer in 0..255 (got " + number_text(d) + ")");
@@ -117,10 +124,11 @@ public:
     std::string list;
     for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
     for (auto it = params.begin(); it != params.end(); ++it) {
-      const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; });
+      const bool ok =
+          std::any_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; });
       if (!ok)
-        fail(key + "/" + it.key(),
-             "unknown parameter (" + name + " takes " + (list.empty() ? std::string("none") : list) + ")");
+        fail(key + "/" + it.key(), "unknown parameter (" + name + " takes " +
+                                       (list.empty() ? std::string("none") : list) + ")");
     }
   }
 
@@ -128,13 +136,14 @@ public:
   double positive(const json& v, const std::string& key, bool zero_ok = false) const {
     const double d = number(v, key);
     if (zero_ok ? !(d >= 0) : !(d > 0))
-      fail(key, std::string("must be ") + (zero_ok ? ">= 0" : "> 0") + " (got " + number_text(d) + ")");
+      fail(key,
+           std::string("must be ") + (zero_ok ? ">= 0" : "> 0") + " (got " + number_text(d) + ")");
     return d;
   }
 
   const std::string& file() const { return file_; }
 
-private:
+ private:
   std::string file_;
   std::ostream* warnings_;
   bool strict_;

@@ -37,20 +37,23 @@ std::string lighting_stage(frame& f) {
   f.fragment_colors.assign(f.fragments.size(), rgb8{});
   for (std::uint32_t idx : f.order) {
     const fragment_d& fr = f.fragments.at(idx);
-    f.fragment_colors[idx] = lambert_color(f.color_of(fr.face), shading_normal(fr, f.view, s.two_sided), s);
+    f.fragment_colors[idx] =
+        lambert_color(f.color_of(fr.face), shading_normal(fr, f.view, s.two_sided), s);
   }
-  return std::to_string(f.order.size()) + " fragments lit, " + (s.two_sided ? "two-sided" : "one-sided");
+  return std::to_string(f.order.size()) + " fragments lit, " +
+         (s.two_sided ? "two-sided" : "one-sided");
 }
 
-void parse_lighting_parameters(const reader& r, const json& p, const std::string& key, const effect_scene&,
-                               effect_settings& out) {
+void parse_lighting_parameters(const reader& r, const json& p, const std::string& key,
+                               const effect_scene&, effect_settings& out) {
   lighting_settings& l = out.lighting;
   r.reject_unknown(p, key, "lighting", {"direction", "intensity", "ambient", "two_sided"});
   if (const json* v = r.optional(p, "direction")) {
     l.direction = r.triple(*v, key + "/direction");
     if (!(length(l.direction) > 0)) r.fail(key + "/direction", "must not be the zero vector");
   }
-  if (const json* v = r.optional(p, "intensity")) l.intensity = r.positive(*v, key + "/intensity", true);
+  if (const json* v = r.optional(p, "intensity"))
+    l.intensity = r.positive(*v, key + "/intensity", true);
   if (const json* v = r.optional(p, "ambient")) l.ambient = r.positive(*v, key + "/ambient", true);
   if (const json* v = r.optional(p, "two_sided")) {
     if (!v->is_boolean()) r.fail(key + "/two_sided", "must be true or false");

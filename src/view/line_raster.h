@@ -38,8 +38,8 @@ inline bool band(double v, int w, int n, int& lo, int& hi) {
 /// Calls cover(i, j, t) for every pixel of segment (x0, y0) -> (x1, y1) of width `line_width`
 /// under the column-centre rule above, in a width x height image.
 template <class Cover>
-void for_each_line_pixel(double x0, double y0, double x1, double y1, int line_width, int width, int height,
-                         Cover&& cover) {
+void for_each_line_pixel(double x0, double y0, double x1, double y1, int line_width, int width,
+                         int height, Cover&& cover) {
   if (!std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1)) return;
   if (line_width < 1) line_width = 1;
   const double dx = x1 - x0, dy = y1 - y0;
@@ -80,11 +80,13 @@ void for_each_line_pixel(double x0, double y0, double x1, double y1, int line_wi
 
 /// Calls cover(i, j, 0) for the line_width x line_width pixels of a lone point (x, y).
 template <class Cover>
-void for_each_point_pixel(double x, double y, int line_width, int width, int height, Cover&& cover) {
+void for_each_point_pixel(double x, double y, int line_width, int width, int height,
+                          Cover&& cover) {
   if (!std::isfinite(x) || !std::isfinite(y)) return;
   if (line_width < 1) line_width = 1;
   int i0, i1, j0, j1;
-  if (!detail::band(x, line_width, width, i0, i1) || !detail::band(y, line_width, height, j0, j1)) return;
+  if (!detail::band(x, line_width, width, i0, i1) || !detail::band(y, line_width, height, j0, j1))
+    return;
   for (int j = j0; j <= j1; ++j)
     for (int i = i0; i <= i1; ++i) cover(i, j, 0.0);
 }

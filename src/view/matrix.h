@@ -31,11 +31,21 @@ struct hpoint {
   double x = 0, y = 0, z = 0, w = 1;
 };
 
-inline vector3 operator-(const point3& a, const point3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline point3 operator+(const point3& p, const vector3& v) { return {p.x + v.x, p.y + v.y, p.z + v.z}; }
-inline point3 operator-(const point3& p, const vector3& v) { return {p.x - v.x, p.y - v.y, p.z - v.z}; }
-inline vector3 operator+(const vector3& a, const vector3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline vector3 operator-(const vector3& a, const vector3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline vector3 operator-(const point3& a, const point3& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+inline point3 operator+(const point3& p, const vector3& v) {
+  return {p.x + v.x, p.y + v.y, p.z + v.z};
+}
+inline point3 operator-(const point3& p, const vector3& v) {
+  return {p.x - v.x, p.y - v.y, p.z - v.z};
+}
+inline vector3 operator+(const vector3& a, const vector3& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+inline vector3 operator-(const vector3& a, const vector3& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
 inline vector3 operator-(const vector3& a) { return {-a.x, -a.y, -a.z}; }
 inline vector3 operator*(double s, const vector3& a) { return {s * a.x, s * a.y, s * a.z}; }
 inline double dot(const vector3& a, const vector3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
@@ -43,8 +53,12 @@ inline vector3 cross(const vector3& a, const vector3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 inline double length(const vector3& a) { return std::sqrt(dot(a, a)); }
-inline bool is_finite(const vector3& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
-inline bool is_finite(const point3& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
+inline bool is_finite(const vector3& a) {
+  return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+}
+inline bool is_finite(const point3& a) {
+  return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+}
 
 /// a / |a|. Throws usage_error for a zero or non-finite vector.
 vector3 normalized(const vector3& a);

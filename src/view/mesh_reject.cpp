@@ -19,7 +19,8 @@ std::string mesh_reject_stage(frame& f) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   std::vector<clip::box3> boxes(meshes, clip::box3{{inf, inf, inf}, {-inf, -inf, -inf}});
   auto mesh_of = [&](std::uint32_t face) {
-    return static_cast<std::size_t>(std::upper_bound(off.begin(), off.end(), face) - off.begin()) - 1;
+    return static_cast<std::size_t>(std::upper_bound(off.begin(), off.end(), face) - off.begin()) -
+           1;
   };
   for (const soup_triangle& t : f.soup.triangles) {
     const std::size_t k = mesh_of(t.face);
@@ -42,7 +43,8 @@ std::string mesh_reject_stage(frame& f) {
     reject[k] = clip::homogeneous_trivially_rejected(corners);
     if (reject[k]) f.rejected_meshes.push_back(k);
   }
-  if (f.rejected_meshes.empty()) return "0 of " + std::to_string(meshes) + " meshes outside the view volume";
+  if (f.rejected_meshes.empty())
+    return "0 of " + std::to_string(meshes) + " meshes outside the view volume";
   const std::size_t before = f.soup.triangles.size();
   f.soup.triangles.erase(std::remove_if(f.soup.triangles.begin(), f.soup.triangles.end(),
                                         [&](const soup_triangle& t) {
@@ -53,8 +55,9 @@ std::string mesh_reject_stage(frame& f) {
   std::string list;
   for (std::size_t k : f.rejected_meshes) list += (list.empty() ? "" : ", ") + std::to_string(k);
   return std::to_string(f.rejected_meshes.size()) + " of " + std::to_string(meshes) +
-         " meshes outside the view volume, rejected by their bounding boxes before the BSP build (mesh " + list + "; " +
-         std::to_string(before - f.soup.triangles.size()) + " triangles)";
+         " meshes outside the view volume, rejected by their bounding boxes before the BSP build "
+         "(mesh " +
+         list + "; " + std::to_string(before - f.soup.triangles.size()) + " triangles)";
 }
 
 }  // namespace exbsp::view

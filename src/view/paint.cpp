@@ -24,7 +24,9 @@ void put(std::uint8_t* p, rgb8 c) {
 struct pixel_rows {
   std::uint8_t* base;
   int width, height;
-  std::uint8_t* row(int j) const { return base + 3 * static_cast<std::size_t>(height - 1 - j) * width; }
+  std::uint8_t* row(int j) const {
+    return base + 3 * static_cast<std::size_t>(height - 1 - j) * width;
+  }
 };
 
 /// One bit per pixel of the front-to-back walk over the band of rows first_row..last_row: set
@@ -32,9 +34,11 @@ struct pixel_rows {
 /// is pixel (i, j). Written by hand: a bitset whose word operations (masked range test, claim
 /// with count-trailing-zeros) are the whole point.
 class coverage_mask {
-public:
+ public:
   coverage_mask(int width, int first_row, int last_row)
-      : first_row_(first_row), last_row_(last_row), words_((width + 63) / 64),
+      : first_row_(first_row),
+        last_row_(last_row),
+        words_((width + 63) / 64),
         bits_(static_cast<std::size_t>(words_) * (last_row - first_row + 1), 0),
         uncovered_(static_cast<std::size_t>(width) * (last_row - first_row + 1)) {}
 
@@ -91,8 +95,10 @@ public:
   /// True when every pixel is set: nothing behind can show any more.
   bool full() const { return uncovered_ == 0; }
 
-private:
-  const std::uint64_t* row_bits(int j) const { return &bits_[static_cast<std::size_t>(j - first_row_) * words_]; }
+ private:
+  const std::uint64_t* row_bits(int j) const {
+    return &bits_[static_cast<std::size_t>(j - first_row_) * words_];
+  }
 
   /// The bits of word w that lie in pixel range lo..hi.
   static std::uint64_t range(int w, int lo, int hi) {
@@ -109,7 +115,8 @@ private:
 /// (mask == nullptr, back to front) or only the pixels no nearer polygon painted (front to
 /// back). Front to back, a polygon whose box of pixel centres is entirely covered is skipped.
 template <class Shade>
-void paint_spans(const std::vector<vec2>& poly, const pixel_rows& rows, coverage_mask* mask, Shade&& shade) {
+void paint_spans(const std::vector<vec2>& poly, const pixel_rows& rows, coverage_mask* mask,
+                 Shade&& shade) {
   if (!mask) {
     for_each_covered_span_polygon(poly, rows.width, rows.height, [&](int j, int lo, int hi) {
       std::uint8_t* r = rows.row(j);
@@ -126,13 +133,18 @@ void paint_spans(const std::vector<vec2>& poly, const pixel_rows& rows, coverage
       y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
     }
   int i0, i1, j0, j1;
-  if (!detail::pixel_range(x0, x1, rows.width, i0, i1) || !detail::pixel_range(y0, y1, rows.height, j0, j1)) return;
+  if (!detail::pixel_range(x0, x1, rows.width, i0, i1) ||
+      !detail::pixel_range(y0, y1, rows.height, j0, j1))
+    return;
   j0 = std::max(j0, mask->first_row()), j1 = std::min(j1, mask->last_row());
   if (j0 > j1 || mask->box_covered(i0, i1, j0, j1)) return;
-  for_each_covered_span_polygon(poly, rows.width, rows.height, [&](int j, int lo, int hi) {
-    std::uint8_t* r = rows.row(j);
-    mask->claim(j, lo, hi, [&](int i) { put(r + 3 * i, shade(i, j)); });
-  }, [&](int j, int& lo, int& hi) { return mask->narrow_to_unset(j, lo, hi); });
+  for_each_covered_span_polygon(
+      poly, rows.width, rows.height,
+      [&](int j, int lo, int hi) {
+        std::uint8_t* r = rows.row(j);
+        mask->claim(j, lo, hi, [&](int i) { put(r + 3 * i, shade(i, j)); });
+      },
+      [&](int j, int& lo, int& hi) { return mask->narrow_to_unset(j, lo, hi); });
 }
 
 void paint_line(const frame& f, const screen_line& l, int scale, image& img) {
@@ -144,7 +156,8 @@ void paint_line(const frame& f, const screen_line& l, int scale, image& img) {
       img.set_pixel(i, j, l.color);
       return;
     }
-    const double x = l.a.x + t * (l.b.x - l.a.x), y = l.a.y + t * (l.b.y - l.a.y), z = l.a.z + t * (l.b.z - l.a.z);
+    const double x = l.a.x + t * (l.b.x - l.a.x), y = l.a.y + t * (l.b.y - l.a.y),
+                 z = l.a.z + t * (l.b.z - l.a.z);
     img.set_pixel(i, j, f.shader->shade(l.color, x, y, z));
   };
   if (l.point)
@@ -153,8 +166,8 @@ void paint_line(const frame& f, const screen_line& l, int scale, image& img) {
     for_each_line_pixel(ax, ay, bx, by, scale, img.width(), img.height(), cover);
 }
 
-void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vector<vec2>& poly, const pixel_rows& rows,
-                   coverage_mask* mask) {
+void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vector<vec2>& poly,
+                   const pixel_rows& rows, coverage_mask* mask) {
   const viewport& vp = f.view.vp;
   poly.clear();
   for (const window_point& w : p.v) poly.push_back({scale * (w.x - vp.x), scale * (w.y - vp.y)});
@@ -163,7 +176,8 @@ void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vect
     return;
   }
   const depth_plane plane = polygon_depth_plane(p.v);
-  const double lo = std::min(vp.depth_near, vp.depth_far), hi = std::max(vp.depth_near, vp.depth_far);
+  const double lo = std::min(vp.depth_near, vp.depth_far),
+               hi = std::max(vp.depth_near, vp.depth_far);
   paint_spans(poly, rows, mask, [&](int i, int j) {
     const double x = vp.x + (i + 0.5) / scale, y = vp.y + (j + 0.5) / scale;
     const double z = std::min(hi, std::max(lo, plane.at(x, y)));
@@ -177,8 +191,9 @@ void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vect
 /// read-only frame.
 void paint_front_to_back(const frame& f, int scale, const pixel_rows& rows) {
   const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int bands = f.raster_threads > 0 ? std::min(static_cast<int>(std::min(f.raster_threads, 1024u)), rows.height)
-                                         : std::max(1, std::min({hardware, 8, rows.height / 64}));
+  const int bands = f.raster_threads > 0
+                        ? std::min(static_cast<int>(std::min(f.raster_threads, 1024u)), rows.height)
+                        : std::max(1, std::min({hardware, 8, rows.height / 64}));
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(bands));
   auto band = [&](int b) {
     try {
@@ -207,9 +222,12 @@ paint_order effective_paint_order(const frame& f) {
 image paint_frame(const frame& f, int scale) {
   const viewport& vp = f.view.vp;
   if (scale < 1) throw usage_error("paint_frame: scale must be >= 1");
-  const long long w = static_cast<long long>(vp.width) * scale, h = static_cast<long long>(vp.height) * scale;
-  if (w > 65536 || h > 65536) throw usage_error("paint_frame: the supersampled image would exceed 65536 pixels a side");
-  image img(static_cast<int>(w), static_cast<int>(h), f.shader ? f.shader->background : f.background);
+  const long long w = static_cast<long long>(vp.width) * scale,
+                  h = static_cast<long long>(vp.height) * scale;
+  if (w > 65536 || h > 65536)
+    throw usage_error("paint_frame: the supersampled image would exceed 65536 pixels a side");
+  image img(static_cast<int>(w), static_cast<int>(h),
+            f.shader ? f.shader->background : f.background);
   const pixel_rows rows{img.data().data(), img.width(), img.height()};
   if (effective_paint_order(f) == paint_order::front_to_back) {
     paint_front_to_back(f, scale, rows);
@@ -218,7 +236,8 @@ image paint_frame(const frame& f, int scale) {
   std::vector<vec2> poly;
   std::size_t next_line = 0;
   for (std::size_t k = 0; k <= f.polygons.size(); ++k) {
-    while (next_line < f.lines.size() && f.lines[next_line].slot <= k) paint_line(f, f.lines[next_line++], scale, img);
+    while (next_line < f.lines.size() && f.lines[next_line].slot <= k)
+      paint_line(f, f.lines[next_line++], scale, img);
     if (k < f.polygons.size()) paint_polygon(f, f.polygons[k], scale, poly, rows, nullptr);
   }
   return img;
@@ -243,7 +262,8 @@ image box_downsample(const image& hi, int n) {
           for (int ch = 0; ch < 3; ++ch) sum[3 * c + ch] += row[3 * (c * n + cc) + ch];
     }
     std::uint8_t* out_row = &dst[3 * static_cast<std::size_t>(r) * w];
-    for (std::size_t k = 0; k < sum.size(); ++k) out_row[k] = static_cast<std::uint8_t>((sum[k] + count / 2) / count);
+    for (std::size_t k = 0; k < sum.size(); ++k)
+      out_row[k] = static_cast<std::uint8_t>((sum[k] + count / 2) / count);
   }
   return out;
 }

@@ -25,8 +25,8 @@ namespace exbsp::view {
 /// frame with lines is painted back_to_front.
 paint_order effective_paint_order(const frame& f);
 
-/// Paints the background (the sample shader's, when there is one), then for every slot k the lines of
-/// slot k and polygon k of f.polygons: the image of the back-to-front walk, whichever walk
+/// Paints the background (the sample shader's, when there is one), then for every slot k the lines
+/// of slot k and polygon k of f.polygons: the image of the back-to-front walk, whichever walk
 /// (effective_paint_order) computes it. Throws usage_error unless 1 <= scale and the scaled
 /// image fits (image.h).
 image paint_frame(const frame& f, int scale);

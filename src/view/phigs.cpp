@@ -16,10 +16,14 @@ phigs_matrices phigs_view_matrices(const phigs_view& p) {
   for (double x : {p.umin, p.umax, p.vmin, p.vmax})
     if (!std::isfinite(x)) throw usage_error("window: must be finite");
   if (!std::isfinite(p.front) || !std::isfinite(p.back)) throw usage_error("front: must be finite");
-  if (!is_finite(p.vpn) || !(length(p.vpn) > 0)) throw usage_error("vpn: must be a finite nonzero vector");
-  if (!is_finite(p.vup) || !(length(p.vup) > 0)) throw usage_error("vup: must be a finite nonzero vector");
-  if (!(p.umin < p.umax) || !(p.vmin < p.vmax)) throw usage_error("window: needs umin < umax and vmin < vmax");
-  if (!(p.front > p.back)) throw usage_error("front: must be greater than back (both along n, n towards the viewer)");
+  if (!is_finite(p.vpn) || !(length(p.vpn) > 0))
+    throw usage_error("vpn: must be a finite nonzero vector");
+  if (!is_finite(p.vup) || !(length(p.vup) > 0))
+    throw usage_error("vup: must be a finite nonzero vector");
+  if (!(p.umin < p.umax) || !(p.vmin < p.vmax))
+    throw usage_error("window: needs umin < umax and vmin < vmax");
+  if (!(p.front > p.back))
+    throw usage_error("front: must be greater than back (both along n, n towards the viewer)");
   phigs_matrices r;
   try {
     r.basis = look_direction_basis(-p.vpn, p.vup);  // w = n
@@ -32,7 +36,8 @@ phigs_matrices phigs_view_matrices(const phigs_view& p) {
   r.eye = p.vrp + prp_world;
   if (p.perspective) {
     if (!(p.prp.z > p.front))
-      throw usage_error("prp: the centre of projection must lie in front of the front plane (prp n > front)");
+      throw usage_error(
+          "prp: the centre of projection must lie in front of the front plane (prp n > front)");
     const double d = p.prp.z, near_dist = p.prp.z - p.front, far_dist = p.prp.z - p.back;
     const double k = near_dist / d;
     const mat4 shift = translate({-p.prp.x, -p.prp.y, -p.prp.z});
@@ -41,7 +46,8 @@ phigs_matrices phigs_view_matrices(const phigs_view& p) {
     r.mapping = r.projection * shift;
     r.model_view = shift * r.orientation;
   } else {
-    if (!(p.prp.z > 0)) throw usage_error("prp: must lie on the viewer's side of the view plane (prp n > 0)");
+    if (!(p.prp.z > 0))
+      throw usage_error("prp: must lie on the viewer's side of the view plane (prp n > 0)");
     const vector3 dop{(p.umin + p.umax) / 2 - p.prp.x, (p.vmin + p.vmax) / 2 - p.prp.y, -p.prp.z};
     r.oblique = dop.x != 0 || dop.y != 0;
     r.mapping = r.oblique ? oblique(p.umin, p.umax, p.vmin, p.vmax, -p.front, -p.back, dop, 0.0)

@@ -37,14 +37,14 @@ struct phigs_view {
 
 /// The matrices of a PHIGS view.
 struct phigs_matrices {
-  camera_basis basis;                  ///< u, v, n (n in the w slot)
-  mat4 orientation = mat4::identity(); ///< O: world -> VRC
-  mat4 mapping = mat4::identity();     ///< M: VRC -> clip coordinates
-  mat4 model_view = mat4::identity();  ///< rigid part for the pipeline
-  mat4 projection = mat4::identity();  ///< projection * model_view = mapping * orientation
-  point3 eye;                          ///< world position of PRP (the centre of projection)
-  vector3 direction;                   ///< parallel: unit world DOP (eye into the scene)
-  bool oblique = false;                ///< parallel with DOP not along -n
+  camera_basis basis;                   ///< u, v, n (n in the w slot)
+  mat4 orientation = mat4::identity();  ///< O: world -> VRC
+  mat4 mapping = mat4::identity();      ///< M: VRC -> clip coordinates
+  mat4 model_view = mat4::identity();   ///< rigid part for the pipeline
+  mat4 projection = mat4::identity();   ///< projection * model_view = mapping * orientation
+  point3 eye;                           ///< world position of PRP (the centre of projection)
+  vector3 direction;                    ///< parallel: unit world DOP (eye into the scene)
+  bool oblique = false;                 ///< parallel with DOP not along -n
 };
 
 /// Builds the matrices. Throws usage_error naming the parameter ("vup", "prp", "window",

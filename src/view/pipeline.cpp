@@ -10,10 +10,14 @@ namespace exbsp::view {
 
 const char* to_string(projection_kind k) {
   switch (k) {
-    case projection_kind::perspective: return "perspective";
-    case projection_kind::frustum: return "frustum";
-    case projection_kind::orthographic: return "orthographic";
-    case projection_kind::oblique: return "oblique";
+    case projection_kind::perspective:
+      return "perspective";
+    case projection_kind::frustum:
+      return "frustum";
+    case projection_kind::orthographic:
+      return "orthographic";
+    case projection_kind::oblique:
+      return "oblique";
   }
   return "?";
 }
@@ -22,10 +26,12 @@ void pipeline::add(std::string name, std::function<std::string(frame&)> run) {
   stages_.push_back({std::move(name), std::move(run)});
 }
 
-void pipeline::insert_after(const std::string& after, std::string name, std::function<std::string(frame&)> run) {
+void pipeline::insert_after(const std::string& after, std::string name,
+                            std::function<std::string(frame&)> run) {
   for (std::size_t i = 0; i < stages_.size(); ++i)
     if (stages_[i].name == after) {
-      stages_.insert(stages_.begin() + static_cast<std::ptrdiff_t>(i) + 1, {std::move(name), std::move(run)});
+      stages_.insert(stages_.begin() + static_cast<std::ptrdiff_t>(i) + 1,
+                     {std::move(name), std::move(run)});
       return;
     }
   throw usage_error("pipeline::insert_after: no stage named " + after);
@@ -41,7 +47,8 @@ void pipeline::run(frame& f, std::ostream* log) const {
   for (const stage& s : stages_) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::string note = s.run(f);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (log) {
       char buf[64];
       std::snprintf(buf, sizeof buf, "%.4f", seconds);

@@ -3,11 +3,11 @@
 // Data flow (DESIGN.md section 1): world-space soup -> BSP build -> fragments converted once to
 // double -> back-to-front order for the view -> [world-space effects: backface_culling,
 // lighting] -> modelview, projection, homogeneous clip, divide, viewport -> [curves] ->
-// [screen effects: fog, a sample shader] -> rasterizer (painter's algorithm; antialias replaces it) or SVG ->
-// [image effects: depth_of_field] -> write.
-// Only the stages a scene asks for are in the list, so an effect that is not named costs
-// nothing, and the curves stage exists only when the scene has curves. Effects plug in at
-// four hooks (effects.h); the render command adds the write stage.
+// [screen effects: fog, a sample shader] -> rasterizer (painter's algorithm; antialias replaces it)
+// or SVG -> [image effects: depth_of_field] -> write. Only the stages a scene asks for are in the
+// list, so an effect that is not named costs nothing, and the curves stage exists only when the
+// scene has curves. Effects plug in at four hooks (effects.h); the render command adds the write
+// stage.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -40,9 +40,9 @@ const char* to_string(projection_kind k);
 /// Everything the stages need to know about the view.
 struct view_setup {
   projection_kind kind = projection_kind::perspective;
-  camera cam;                         ///< gluLookAt input; cam.eye orders perspective views
-  mat4 model_view = mat4::identity(); ///< look_at(cam)
-  mat4 projection = mat4::identity(); ///< eye -> clip coordinates
+  camera cam;                          ///< gluLookAt input; cam.eye orders perspective views
+  mat4 model_view = mat4::identity();  ///< look_at(cam)
+  mat4 projection = mat4::identity();  ///< eye -> clip coordinates
   viewport vp;
   /// Parallel kinds only: unit direction of projection in WORLD space, from the eye into the
   /// scene (the gaze for orthographic, the oblique direction for oblique).
@@ -55,10 +55,13 @@ struct view_setup {
 
   /// True when the image is larger than the viewport.
   bool needs_placement() const {
-    return image_width > 0 && (image_width != vp.width || image_height != vp.height || place_x != 0 || place_y != 0);
+    return image_width > 0 &&
+           (image_width != vp.width || image_height != vp.height || place_x != 0 || place_y != 0);
   }
 
-  bool is_parallel() const { return kind == projection_kind::orthographic || kind == projection_kind::oblique; }
+  bool is_parallel() const {
+    return kind == projection_kind::orthographic || kind == projection_kind::oblique;
+  }
 };
 
 /// How the painter (paint.h) walks the polygons: the reference back-to-front walk, or
@@ -69,38 +72,42 @@ enum class paint_order { back_to_front, front_to_back };
 /// products it is responsible for.
 struct frame {
   // Inputs.
-  triangle_soup soup;               ///< all meshes, transformed to world space, appended
-  build_options build;              ///< BSP options (default: epeck, default heuristic)
-  std::vector<rgb8> face_colors;    ///< colour by face id of `soup`
+  triangle_soup soup;             ///< all meshes, transformed to world space, appended
+  build_options build;            ///< BSP options (default: epeck, default heuristic)
+  std::vector<rgb8> face_colors;  ///< colour by face id of `soup`
   view_setup view;
   rgb8 background{255, 255, 255};
-  effect_settings settings;         ///< parameters of the named effects (the others are ignored)
-  std::vector<curve_spec> curves;   ///< world-space Bézier curves and polylines ("curves" stage)
-  std::vector<std::uint32_t> mesh_face_offsets;  ///< first face id of mesh k (size meshes + 1; "reject")
+  effect_settings settings;        ///< parameters of the named effects (the others are ignored)
+  std::vector<curve_spec> curves;  ///< world-space Bézier curves and polylines ("curves" stage)
+  std::vector<std::uint32_t>
+      mesh_face_offsets;  ///< first face id of mesh k (size meshes + 1; "reject")
   paint_order painter = paint_order::front_to_back;  ///< walk of "raster" and "antialias" (paint.h)
   /// Front-to-back bands painted in parallel (0: one per core). Default 1: on the shared 2-core
   /// machine of bench/RESULTS.md section 3, two bands were slower than one.
   unsigned raster_threads = 1;
-  vector_options vector;            ///< SVG / PDF: visible regions or painter's stack, edges
+  vector_options vector;  ///< SVG / PDF: visible regions or painter's stack, edges
 
   // Products.
-  std::optional<bsp> tree;                 ///< "build"
-  std::vector<fragment_d> fragments;       ///< "build": fragments_double(), converted once
-  std::vector<vec3d> points;               ///< "build": the distinct vertices of `fragments` (bitwise)
-  std::vector<std::array<std::uint32_t, 3>> fragment_points;  ///< "build": corner k of fragment i is points[fragment_points[i][k]]
-  std::vector<std::uint32_t> order;        ///< "order": fragment indices, back to front
-  std::vector<screen_polygon> polygons;    ///< "transform+clip": visible polygons, back to front
-  image picture;                           ///< "raster"
-  std::string svg;                         ///< "svg": the SVG document
-  std::string pdf;                         ///< "pdf": the PDF document
-  std::vector<rgb8> fragment_colors;       ///< "lighting": colour by fragment index (empty: face colours)
-  std::vector<screen_line> lines;          ///< "curves": clipped curve pieces in painter's slots
-  std::optional<fog_shading> fog;          ///< "fog": its parameters for this view
-  std::optional<sample_shader> shader;     ///< screen effects ("fog"): the painters' per-sample colour change
+  std::optional<bsp> tree;            ///< "build"
+  std::vector<fragment_d> fragments;  ///< "build": fragments_double(), converted once
+  std::vector<vec3d> points;          ///< "build": the distinct vertices of `fragments` (bitwise)
+  std::vector<std::array<std::uint32_t, 3>>
+      fragment_points;  ///< "build": corner k of fragment i is points[fragment_points[i][k]]
+  std::vector<std::uint32_t> order;      ///< "order": fragment indices, back to front
+  std::vector<screen_polygon> polygons;  ///< "transform+clip": visible polygons, back to front
+  image picture;                         ///< "raster"
+  std::string svg;                       ///< "svg": the SVG document
+  std::string pdf;                       ///< "pdf": the PDF document
+  std::vector<rgb8>
+      fragment_colors;             ///< "lighting": colour by fragment index (empty: face colours)
+  std::vector<screen_line> lines;  ///< "curves": clipped curve pieces in painter's slots
+  std::optional<fog_shading> fog;  ///< "fog": its parameters for this view
+  std::optional<sample_shader>
+      shader;  ///< screen effects ("fog"): the painters' per-sample colour change
 
   // Counters for --verbose.
-  std::size_t culled = 0;         ///< fragments removed by backface_culling
-  std::size_t fully_clipped = 0;  ///< fragments entirely outside the view volume
+  std::size_t culled = 0;                    ///< fragments removed by backface_culling
+  std::size_t fully_clipped = 0;             ///< fragments entirely outside the view volume
   std::vector<std::size_t> rejected_meshes;  ///< "reject": meshes dropped by their bounding boxes
 
   /// Colour of a face id (grey when the id has no colour).
@@ -118,12 +125,13 @@ struct stage {
 
 /// An ordered list of stages.
 class pipeline {
-public:
+ public:
   /// Appends a stage.
   void add(std::string name, std::function<std::string(frame&)> run);
   /// Inserts a stage right after the first stage called `after`; throws usage_error when
   /// there is none.
-  void insert_after(const std::string& after, std::string name, std::function<std::string(frame&)> run);
+  void insert_after(const std::string& after, std::string name,
+                    std::function<std::string(frame&)> run);
   const std::vector<stage>& stages() const { return stages_; }
   /// Stage names in order.
   std::vector<std::string> names() const;
@@ -131,7 +139,7 @@ public:
   /// "stage NAME: SECONDS s (NOTE)". Exceptions from a stage propagate unchanged.
   void run(frame& f, std::ostream* log) const;
 
-private:
+ private:
   std::vector<stage> stages_;
 };
 

@@ -60,8 +60,9 @@ bool encode_rows(png_context* ctx, int width, int height, png_bytepp rows) {
     return false;
   }
   png_set_write_fn(png, ctx, on_write, on_flush);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8, PNG_COLOR_TYPE_RGB,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
+               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   png_write_image(png, rows);
   png_write_end(png, info);
@@ -113,17 +114,20 @@ bool decode_rows(png_context* ctx, read_source* src, decode_buffers* out) {
   const int color_type = png_get_color_type(png, info);
   if (png_get_bit_depth(png, info) == 16) png_set_strip_16(png);
   if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
-  if (color_type == PNG_COLOR_TYPE_GRAY || color_type == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
+  if (color_type == PNG_COLOR_TYPE_GRAY || color_type == PNG_COLOR_TYPE_GRAY_ALPHA)
+    png_set_gray_to_rgb(png);
   if (png_get_bit_depth(png, info) < 8) png_set_expand(png);
   if (png_get_valid(png, info, PNG_INFO_tRNS)) png_set_tRNS_to_alpha(png);
   png_set_strip_alpha(png);
   png_set_interlace_handling(png);
   png_read_update_info(png, info);
-  if (png_get_rowbytes(png, info) != 3 * static_cast<std::size_t>(w)) png_error(png, "unsupported pixel format");
+  if (png_get_rowbytes(png, info) != 3 * static_cast<std::size_t>(w))
+    png_error(png, "unsupported pixel format");
   out->pixels = static_cast<std::uint8_t*>(std::malloc(3 * static_cast<std::size_t>(w) * h));
   out->rows = static_cast<png_bytepp>(std::malloc(sizeof(png_bytep) * h));
   if (!out->pixels || !out->rows) png_error(png, "out of memory");
-  for (png_uint_32 r = 0; r < h; ++r) out->rows[r] = out->pixels + 3 * static_cast<std::size_t>(w) * r;
+  for (png_uint_32 r = 0; r < h; ++r)
+    out->rows[r] = out->pixels + 3 * static_cast<std::size_t>(w) * r;
   png_read_image(png, out->rows);
   png_read_end(png, nullptr);
   std::free(out->rows);
@@ -140,7 +144,8 @@ std::vector<std::uint8_t> encode_png(const image& img) {
   std::vector<std::uint8_t> out;
   std::vector<png_bytep> rows(static_cast<std::size_t>(img.height()));
   auto* base = const_cast<std::uint8_t*>(img.data().data());
-  for (int r = 0; r < img.height(); ++r) rows[r] = base + 3 * static_cast<std::size_t>(img.width()) * r;
+  for (int r = 0; r < img.height(); ++r)
+    rows[r] = base + 3 * static_cast<std::size_t>(img.width()) * r;
   png_context ctx;
   ctx.out = &out;
   if (!encode_rows(&ctx, img.width(), img.height(), rows.data()))
@@ -150,7 +155,8 @@ std::vector<std::uint8_t> encode_png(const image& img) {
 
 void write_png(const image& img, const std::string& path) {
   const std::vector<std::uint8_t> bytes = encode_png(img);
-  write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  write_file_atomically(
+      path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 image read_png(const std::string& path) {
@@ -159,15 +165,18 @@ image read_png(const std::string& path) {
   std::vector<std::uint8_t> bytes;
   std::uint8_t chunk[65536];
   std::size_t n;
-  while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0) bytes.insert(bytes.end(), chunk, chunk + n);
+  while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0)
+    bytes.insert(bytes.end(), chunk, chunk + n);
   const bool read_error = std::ferror(f) != 0;
   std::fclose(f);
   if (read_error) throw input_error(path, 0, "read error");
-  if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0) throw input_error(path, 0, "not a PNG file");
+  if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0)
+    throw input_error(path, 0, "not a PNG file");
   read_source src{bytes.data(), bytes.size(), 0};
   png_context ctx;
   decode_buffers buf;
-  if (!decode_rows(&ctx, &src, &buf)) throw input_error(path, 0, std::string("invalid PNG: ") + ctx.message);
+  if (!decode_rows(&ctx, &src, &buf))
+    throw input_error(path, 0, std::string("invalid PNG: ") + ctx.message);
   image img;
   try {
     img = image(buf.width, buf.height, rgb8{});

@@ -19,7 +19,8 @@ bool all_finite(std::initializer_list<double> xs) {
 
 mat4 ortho(double l, double r, double b, double t, double n, double f) {
   if (!all_finite({l, r, b, t, n, f})) throw usage_error("ortho: non-finite parameter");
-  if (l == r || b == t || n == f) throw usage_error("ortho: empty view volume (left == right, bottom == top or near == far)");
+  if (l == r || b == t || n == f)
+    throw usage_error("ortho: empty view volume (left == right, bottom == top or near == far)");
   mat4 m;
   m(0, 0) = 2 / (r - l);
   m(0, 3) = -(r + l) / (r - l);
@@ -48,7 +49,8 @@ mat4 frustum(double l, double r, double b, double t, double n, double f) {
 
 mat4 perspective(double fovy_deg, double aspect, double n, double f) {
   if (!all_finite({fovy_deg, aspect, n, f})) throw usage_error("perspective: non-finite parameter");
-  if (!(fovy_deg > 0 && fovy_deg < 180)) throw usage_error("perspective: fovy must be in (0, 180) degrees");
+  if (!(fovy_deg > 0 && fovy_deg < 180))
+    throw usage_error("perspective: fovy must be in (0, 180) degrees");
   if (!(aspect > 0)) throw usage_error("perspective: aspect must be positive");
   if (!(n > 0) || !(f > n)) throw usage_error("perspective: need 0 < near < far");
   const double tan_half = std::tan(fovy_deg * (pi / 360.0));
@@ -62,8 +64,12 @@ mat4 perspective(double fovy_deg, double aspect, double n, double f) {
 }
 
 mat4 oblique_shear(const vector3& dop, double pivot_z) {
-  if (!is_finite(dop) || !std::isfinite(pivot_z)) throw usage_error("oblique_shear: non-finite input");
-  if (!(dop.z < 0)) throw usage_error("oblique_shear: the direction of projection must point into the scene (z < 0 in eye coordinates)");
+  if (!is_finite(dop) || !std::isfinite(pivot_z))
+    throw usage_error("oblique_shear: non-finite input");
+  if (!(dop.z < 0))
+    throw usage_error(
+        "oblique_shear: the direction of projection must point into the scene (z < 0 in eye "
+        "coordinates)");
   const double shx = -dop.x / dop.z, shy = -dop.y / dop.z;
   mat4 m = mat4::identity();
   m(0, 2) = shx;
@@ -73,7 +79,8 @@ mat4 oblique_shear(const vector3& dop, double pivot_z) {
   return m;
 }
 
-mat4 oblique(double l, double r, double b, double t, double n, double f, const vector3& dop, double pivot_z) {
+mat4 oblique(double l, double r, double b, double t, double n, double f, const vector3& dop,
+             double pivot_z) {
   return ortho(l, r, b, t, n, f) * oblique_shear(dop, pivot_z);
 }
 

@@ -4,7 +4,8 @@
 //
 // Oblique parallel projection (PHIGS style): the direction of projection dop (eye coordinates,
 // pointing from the eye into the scene, dop.z < 0) need not be the view-plane normal. A shear
-//   x' = x + shx (z - z_p),  y' = y + shy (z - z_p),  z' = z,   shx = -dop.x/dop.z, shy = -dop.y/dop.z
+//   x' = x + shx (z - z_p),  y' = y + shy (z - z_p),  z' = z,   shx = -dop.x/dop.z, shy =
+//   -dop.y/dop.z
 // maps dop onto -z and leaves the plane z = z_p (the view plane, containing the window)
 // fixed; the sheared volume is then projected orthographically: oblique = ortho * shear.
 #pragma once
@@ -17,7 +18,8 @@ mat4 ortho(double left, double right, double bottom, double top, double near_dis
 
 /// glFrustum(l, r, b, t, n, f); l, r, b, t are measured on the near plane.
 /// Throws usage_error unless 0 < n < f, l != r, b != t, all finite.
-mat4 frustum(double left, double right, double bottom, double top, double near_dist, double far_dist);
+mat4 frustum(double left, double right, double bottom, double top, double near_dist,
+             double far_dist);
 
 /// gluPerspective(fovy, aspect, n, f), fovy in degrees.
 /// Throws usage_error unless 0 < fovy < 180, aspect > 0, 0 < n < f, all finite.
@@ -29,7 +31,7 @@ mat4 oblique_shear(const vector3& dop_eye, double pivot_z = 0);
 
 /// Oblique parallel projection: ortho(l, r, b, t, n, f) * oblique_shear(dop_eye, pivot_z).
 /// The window (l, r, b, t) lies in the view plane z_eye = pivot_z. Throws like its parts.
-mat4 oblique(double left, double right, double bottom, double top, double near_dist, double far_dist,
-             const vector3& dop_eye, double pivot_z = 0);
+mat4 oblique(double left, double right, double bottom, double top, double near_dist,
+             double far_dist, const vector3& dop_eye, double pivot_z = 0);
 
 }  // namespace exbsp::view

@@ -4,11 +4,13 @@
 namespace exbsp::view {
 
 void fill_triangle(image& img, const vec2& a, const vec2& b, const vec2& c, rgb8 color) {
-  for_each_covered_pixel(a, b, c, img.width(), img.height(), [&](int i, int j) { img.set_pixel(i, j, color); });
+  for_each_covered_pixel(a, b, c, img.width(), img.height(),
+                         [&](int i, int j) { img.set_pixel(i, j, color); });
 }
 
 void fill_convex_polygon(image& img, const std::vector<vec2>& poly, rgb8 color) {
-  for_each_covered_pixel_polygon(poly, img.width(), img.height(), [&](int i, int j) { img.set_pixel(i, j, color); });
+  for_each_covered_pixel_polygon(poly, img.width(), img.height(),
+                                 [&](int i, int j) { img.set_pixel(i, j, color); });
 }
 
 }  // namespace exbsp::view

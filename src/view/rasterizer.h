@@ -39,7 +39,9 @@ inline bool pixel_range(double vmin, double vmax, int n, int& lo, int& hi) {
   hi = fhi > n - 1 ? n - 1 : static_cast<int>(fhi);
   return lo <= hi;
 }
-inline bool owns_edge(const vec2& s, const vec2& t) { return t.y < s.y || (t.y == s.y && t.x < s.x); }
+inline bool owns_edge(const vec2& s, const vec2& t) {
+  return t.y < s.y || (t.y == s.y && t.x < s.x);
+}
 inline bool inside_edge(const vec2& s, const vec2& t, double px, double py, bool owned) {
   const int o = orient2d(s.x, s.y, t.x, t.y, px, py);
   return o > 0 || (o == 0 && owned);
@@ -52,16 +54,20 @@ inline bool inside_edge(const vec2& s, const vec2& t, double px, double py, bool
 /// non-finite triangles cover nothing. The reference that for_each_covered_span must
 /// reproduce exactly (tests/test_raster.cpp); the painters use the span version.
 template <class Cover>
-void for_each_covered_pixel_reference(vec2 a, vec2 b, vec2 c, int width, int height, Cover&& cover) {
+void for_each_covered_pixel_reference(vec2 a, vec2 b, vec2 c, int width, int height,
+                                      Cover&& cover) {
   for (const vec2* p : {&a, &b, &c})
     if (!std::isfinite(p->x) || !std::isfinite(p->y)) return;
   const int o = orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
   if (o == 0) return;
   if (o < 0) std::swap(b, c);
   int i0, i1, j0, j1;
-  if (!detail::pixel_range(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), width, i0, i1)) return;
-  if (!detail::pixel_range(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), height, j0, j1)) return;
-  const bool own_ab = detail::owns_edge(a, b), own_bc = detail::owns_edge(b, c), own_ca = detail::owns_edge(c, a);
+  if (!detail::pixel_range(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), width, i0, i1))
+    return;
+  if (!detail::pixel_range(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), height, j0, j1))
+    return;
+  const bool own_ab = detail::owns_edge(a, b), own_bc = detail::owns_edge(b, c),
+             own_ca = detail::owns_edge(c, a);
   for (int j = j0; j <= j1; ++j) {
     const double py = j + 0.5;
     bool entered = false;
@@ -140,12 +146,15 @@ struct span_edge {
 /// span(j, lo, hi) then reports the covered run within the narrowed columns (the
 /// front-to-back painter narrows to the pixels not yet painted).
 template <class Span, class Narrow>
-void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&& span, Narrow&& narrow) {
+void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&& span,
+                           Narrow&& narrow) {
   for (const vec2* p : {&a, &b, &c})
     if (!std::isfinite(p->x) || !std::isfinite(p->y)) return;
   int i0, i1, j0, j1;  // the box first: most fragments of a fine mesh miss every centre
-  if (!detail::pixel_range(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), width, i0, i1)) return;
-  if (!detail::pixel_range(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), height, j0, j1)) return;
+  if (!detail::pixel_range(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), width, i0, i1))
+    return;
+  if (!detail::pixel_range(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), height, j0, j1))
+    return;
   const int o = orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
   if (o == 0) return;
   if (o < 0) std::swap(b, c);
@@ -155,7 +164,8 @@ void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&&
   // triangle's y-range (the box's rows are rounded outwards) has no such edge: empty.
   const detail::span_edge e[3] = {{a, b}, {b, c}, {c, a}};
   double e_lo[3], e_hi[3];
-  for (int k = 0; k < 3; ++k) e_lo[k] = std::min(e[k].s.y, e[k].t.y), e_hi[k] = std::max(e[k].s.y, e[k].t.y);
+  for (int k = 0; k < 3; ++k)
+    e_lo[k] = std::min(e[k].s.y, e[k].t.y), e_hi[k] = std::max(e[k].s.y, e[k].t.y);
   for (int j = j0; j <= j1; ++j) {
     const double py = j + 0.5;
     int lo = i0, hi = i1, crossed = 0;
@@ -193,20 +203,25 @@ void for_each_covered_pixel(vec2 a, vec2 b, vec2 c, int width, int height, Cover
 /// vertex: (v0, v[k], v[k+1]). Fan diagonals are shared edges, so no pixel is reported twice
 /// when the polygon is convex (as every clipped triangle is).
 template <class Cover>
-void for_each_covered_pixel_polygon(const std::vector<vec2>& poly, int width, int height, Cover&& cover) {
-  for (std::size_t k = 1; k + 1 < poly.size(); ++k) for_each_covered_pixel(poly[0], poly[k], poly[k + 1], width, height, cover);
+void for_each_covered_pixel_polygon(const std::vector<vec2>& poly, int width, int height,
+                                    Cover&& cover) {
+  for (std::size_t k = 1; k + 1 < poly.size(); ++k)
+    for_each_covered_pixel(poly[0], poly[k], poly[k + 1], width, height, cover);
 }
 
 /// Calls span(j, lo, hi) for the covered runs of each fan triangle of a convex polygon (as
 /// for_each_covered_pixel_polygon, a run per triangle and row).
 template <class Span>
-void for_each_covered_span_polygon(const std::vector<vec2>& poly, int width, int height, Span&& span) {
-  for (std::size_t k = 1; k + 1 < poly.size(); ++k) for_each_covered_span(poly[0], poly[k], poly[k + 1], width, height, span);
+void for_each_covered_span_polygon(const std::vector<vec2>& poly, int width, int height,
+                                   Span&& span) {
+  for (std::size_t k = 1; k + 1 < poly.size(); ++k)
+    for_each_covered_span(poly[0], poly[k], poly[k + 1], width, height, span);
 }
 
 /// The same with a row filter `narrow` for each fan triangle (for_each_covered_span).
 template <class Span, class Narrow>
-void for_each_covered_span_polygon(const std::vector<vec2>& poly, int width, int height, Span&& span, Narrow&& narrow) {
+void for_each_covered_span_polygon(const std::vector<vec2>& poly, int width, int height,
+                                   Span&& span, Narrow&& narrow) {
   for (std::size_t k = 1; k + 1 < poly.size(); ++k)
     for_each_covered_span(poly[0], poly[k], poly[k + 1], width, height, span, narrow);
 }

@@ -11,7 +11,8 @@ depth_plane polygon_depth_plane(const std::vector<window_point>& v) {
   double best = 0;
   std::size_t kb = 0;
   for (std::size_t k = 1; k + 1 < v.size(); ++k) {
-    const double det = (v[k].x - v[0].x) * (v[k + 1].y - v[0].y) - (v[k + 1].x - v[0].x) * (v[k].y - v[0].y);
+    const double det =
+        (v[k].x - v[0].x) * (v[k + 1].y - v[0].y) - (v[k + 1].x - v[0].x) * (v[k].y - v[0].y);
     if (std::fabs(det) > std::fabs(best)) {
       best = det;
       kb = k;

@@ -18,7 +18,9 @@ namespace {
 /// Bitwise key of a point (so that -0 and +0 stay distinct points: bit-identical transforms).
 struct point_bits {
   std::uint64_t k[3];
-  bool operator==(const point_bits& o) const { return k[0] == o.k[0] && k[1] == o.k[1] && k[2] == o.k[2]; }
+  bool operator==(const point_bits& o) const {
+    return k[0] == o.k[0] && k[1] == o.k[1] && k[2] == o.k[2];
+  }
 };
 struct point_bits_hash {
   std::size_t operator()(const point_bits& p) const {
@@ -84,9 +86,10 @@ std::string build_stage(frame& f) {
   f.fragments = f.tree->fragments_double();
   index_points(f);
   const build_stats& s = f.tree->stats();
-  return std::to_string(s.input_triangles) + " triangles, " + std::to_string(s.fragments) + " fragments, " +
-         std::to_string(s.splits) + " splits, " + std::to_string(s.nodes) + " nodes, depth " +
-         std::to_string(s.depth) + ", kernel " + s.kernel + ", heuristic " + s.heuristic;
+  return std::to_string(s.input_triangles) + " triangles, " + std::to_string(s.fragments) +
+         " fragments, " + std::to_string(s.splits) + " splits, " + std::to_string(s.nodes) +
+         " nodes, depth " + std::to_string(s.depth) + ", kernel " + s.kernel + ", heuristic " +
+         s.heuristic;
 }
 
 std::string order_stage(frame& f) {
@@ -137,7 +140,7 @@ std::string transform_clip_stage(frame& f) {
     const bool inside = any == 0;  // the clipper returns it unchanged, every w > 0
     bool ok = inside;
     if (!inside && (any & clipped_point::not_finite) == 0 && (all & 63) != 0) {
-      ok = false;  // outside one plane: the clipper returns it empty
+      ok = false;          // outside one plane: the clipper returns it empty
     } else if (!inside) {  // crosses a plane, has w <= 0 or a non-finite coordinate (throws)
       for (int k = 0; k < 3; ++k) in[k] = to_clip(pm, fr.v[k]);
       clip_to_view_volume(in, out);
@@ -163,16 +166,19 @@ std::string transform_clip_stage(frame& f) {
     }
   }
   f.polygons.resize(count);
-  return std::to_string(f.polygons.size()) + " polygons, " + std::to_string(f.fully_clipped) + " fully clipped";
+  return std::to_string(f.polygons.size()) + " polygons, " + std::to_string(f.fully_clipped) +
+         " fully clipped";
 }
 
 std::string raster_stage(frame& f) {
   const viewport& vp = f.view.vp;
   f.picture = paint_frame(f, 1);
-  std::string note = std::to_string(vp.width) + "x" + std::to_string(vp.height) + ", " +
-                     std::to_string(f.polygons.size()) + " polygons painted " +
-                     (effective_paint_order(f) == paint_order::front_to_back ? "front to back" : "back to front");
-  if (!f.lines.empty()) note += ", " + std::to_string(f.lines.size()) + " curve lines in their slots";
+  std::string note =
+      std::to_string(vp.width) + "x" + std::to_string(vp.height) + ", " +
+      std::to_string(f.polygons.size()) + " polygons painted " +
+      (effective_paint_order(f) == paint_order::front_to_back ? "front to back" : "back to front");
+  if (!f.lines.empty())
+    note += ", " + std::to_string(f.lines.size()) + " curve lines in their slots";
   return note;
 }
 
@@ -181,8 +187,9 @@ namespace {
 std::string drawing_note(const vector_drawing& d, std::size_t bytes) {
   const drawing_counts c = count_paths(d);
   return std::to_string(c.regions) + " regions (" + std::to_string(c.rings) + " rings), " +
-         std::to_string(c.visible_edges) + " visible and " + std::to_string(c.hidden_edges) + " hidden edge pieces, " +
-         std::to_string(c.curves) + " curve paths, " + std::to_string(bytes) + " bytes";
+         std::to_string(c.visible_edges) + " visible and " + std::to_string(c.hidden_edges) +
+         " hidden edge pieces, " + std::to_string(c.curves) + " curve paths, " +
+         std::to_string(bytes) + " bytes";
 }
 
 }  // namespace
@@ -194,11 +201,12 @@ std::string svg_stage(frame& f) {
     return "visible regions: " + drawing_note(d, f.svg.size());
   }
   f.svg = f.lines.empty() && !f.shader ? svg_document(f.view.vp, f.background, f.polygons)
-                                        : svg_document(f.view.vp, f.background, f.polygons, f.lines,
-                                                       f.shader ? &*f.shader : nullptr);
+                                       : svg_document(f.view.vp, f.background, f.polygons, f.lines,
+                                                      f.shader ? &*f.shader : nullptr);
   if (f.view.needs_placement()) f.svg = place_svg(f.svg, f.view.vp.height, placement_of(f));
-  return "painter: " + std::to_string(f.polygons.size()) + " paths, " + std::to_string(f.lines.size()) +
-         " curve pieces, " + std::to_string(f.svg.size()) + " bytes";
+  return "painter: " + std::to_string(f.polygons.size()) + " paths, " +
+         std::to_string(f.lines.size()) + " curve pieces, " + std::to_string(f.svg.size()) +
+         " bytes";
 }
 
 std::string pdf_stage(frame& f) {

@@ -45,9 +45,10 @@ std::string svg_document(const vector_drawing& d) {
   const std::string w = std::to_string(d.width), h = std::to_string(d.height);
   const long long y_top = static_cast<long long>(d.height) * grid_per_pixel;
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" + h +
-         "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
-  out += "<rect x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" + hex_color(d.background) + "\"/>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" +
+         h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+  out += "<rect x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
+         hex_color(d.background) + "\"/>\n";
   auto point = [&](const grid_point& q) {
     append_grid(out, q.x);
     out += ' ';
@@ -93,10 +94,11 @@ std::string svg_document(const vector_drawing& d) {
         const bool hidden = p.kind == vector_path::kind_type::hidden_edge;
         char width[32];
         std::snprintf(width, sizeof width, "%g", hidden ? hidden_edge_width : visible_edge_width);
-        open_group(hidden ? "hidden-edges" : "visible-edges",
-                   std::string(" fill=\"none\" stroke-width=\"") + width + "\"" +
-                       (hidden ? std::string(" stroke-dasharray=\"") + dash + "\" stroke-linecap=\"butt\""
-                               : std::string(" stroke-linecap=\"round\" stroke-linejoin=\"round\"")));
+        open_group(
+            hidden ? "hidden-edges" : "visible-edges",
+            std::string(" fill=\"none\" stroke-width=\"") + width + "\"" +
+                (hidden ? std::string(" stroke-dasharray=\"") + dash + "\" stroke-linecap=\"butt\""
+                        : std::string(" stroke-linecap=\"round\" stroke-linejoin=\"round\"")));
         out += "<path data-mesh=\"" + mesh + "\" stroke=\"" + color + "\" d=\"";
         rings(p, false);
         out += "\"/>\n";
@@ -126,26 +128,32 @@ std::string svg_document(const vector_drawing& d) {
 std::string place_svg(const std::string& document, int height, const drawing_placement& placement) {
   std::string inner = document;
   if (inner.compare(0, 5, "<?xml") == 0) inner.erase(0, inner.find('\n') + 1);
-  const std::string x = std::to_string(placement.x), y = std::to_string(placement.image_height - placement.y - height);
+  const std::string x = std::to_string(placement.x),
+                    y = std::to_string(placement.image_height - placement.y - height);
   inner.replace(inner.find("<svg "), 5, "<svg x=\"" + x + "\" y=\"" + y + "\" ");
-  const std::string iw = std::to_string(placement.image_width), ih = std::to_string(placement.image_height);
-  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
-         iw + "\" height=\"" + ih + "\" viewBox=\"0 0 " + iw + " " + ih + "\">\n<rect x=\"0\" y=\"0\" width=\"" + iw +
-         "\" height=\"" + ih + "\" fill=\"" + hex_color(placement.background) + "\"/>\n" + inner + "</svg>\n";
+  const std::string iw = std::to_string(placement.image_width),
+                    ih = std::to_string(placement.image_height);
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+         "version=\"1.1\" width=\"" +
+         iw + "\" height=\"" + ih + "\" viewBox=\"0 0 " + iw + " " + ih +
+         "\">\n<rect x=\"0\" y=\"0\" width=\"" + iw + "\" height=\"" + ih + "\" fill=\"" +
+         hex_color(placement.background) + "\"/>\n" + inner + "</svg>\n";
 }
 
-std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons) {
+std::string svg_document(const viewport& vp, rgb8 background,
+                         const std::vector<screen_polygon>& polygons) {
   return svg_document(vp, background, polygons, {}, nullptr);
 }
 
-std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons,
+std::string svg_document(const viewport& vp, rgb8 background,
+                         const std::vector<screen_polygon>& polygons,
                          const std::vector<screen_line>& lines, const sample_shader* shader) {
   std::string out;
   out.reserve(256 + polygons.size() * 120 + lines.size() * 40);
   const std::string w = std::to_string(vp.width), h = std::to_string(vp.height);
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" + h +
-         "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" +
+         h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
   out += "<rect x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
          hex_color(shader ? shader->background : background) + "\"/>\n";
   if (svg_seam_stroke > 0) {
@@ -180,8 +188,8 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
         ++next_line;
         continue;
       }
-      out += "<path data-curve=\"" + std::to_string(first.curve) + "\" fill=\"none\" stroke=\"" + color +
-             "\" stroke-width=\"1\" stroke-linecap=\"butt\" d=\"M";
+      out += "<path data-curve=\"" + std::to_string(first.curve) + "\" fill=\"none\" stroke=\"" +
+             color + "\" stroke-width=\"1\" stroke-linecap=\"butt\" d=\"M";
       point(first.a.x, first.a.y);
       out += " L";
       point(first.b.x, first.b.y);
@@ -189,7 +197,9 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
       while (!shader && next_line < lines.size()) {
         const screen_line& l = lines[next_line];
         const screen_line& prev = lines[next_line - 1];
-        if (l.point || l.slot != prev.slot || l.curve != prev.curve || l.a.x != prev.b.x || l.a.y != prev.b.y) break;
+        if (l.point || l.slot != prev.slot || l.curve != prev.curve || l.a.x != prev.b.x ||
+            l.a.y != prev.b.y)
+          break;
         out += " L";
         point(l.b.x, l.b.y);
         ++next_line;
@@ -213,8 +223,8 @@ std::string svg_document(const viewport& vp, rgb8 background, const std::vector<
       fill = shader->shade(fill, cx / n, cy / n, cz / n);
     }
     const std::string color = hex_color(fill);
-    out += "<path data-face=\"" + std::to_string(p.face) + "\" data-fragment=\"" + std::to_string(p.fragment) +
-           "\" fill=\"" + color + "\" stroke=\"" + color + "\" d=\"";
+    out += "<path data-face=\"" + std::to_string(p.face) + "\" data-fragment=\"" +
+           std::to_string(p.fragment) + "\" fill=\"" + color + "\" stroke=\"" + color + "\" d=\"";
     for (std::size_t k2 = 0; k2 < p.v.size(); ++k2) {
       out += k2 == 0 ? "M" : " L";
       point(p.v[k2].x, p.v[k2].y);

@@ -45,11 +45,13 @@ namespace exbsp::view {
 constexpr double svg_seam_stroke = 0.5;
 
 /// The SVG document: a background rectangle, then one path per polygon in order.
-std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons);
+std::string svg_document(const viewport& vp, rgb8 background,
+                         const std::vector<screen_polygon>& polygons);
 
 /// The SVG document with curve pieces in their slots (lines sorted by slot) and, when `shader`
 /// is not null, flat shading as described above.
-std::string svg_document(const viewport& vp, rgb8 background, const std::vector<screen_polygon>& polygons,
+std::string svg_document(const viewport& vp, rgb8 background,
+                         const std::vector<screen_polygon>& polygons,
                          const std::vector<screen_line>& lines, const sample_shader* shader);
 
 /// The SVG document of a visible-region drawing (notation above), placed in its image when

@@ -58,10 +58,9 @@ void check_screen(const vec2d& s) {
 }  // namespace
 
 quaternion operator*(const quaternion& a, const quaternion& b) {
-  return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
-          a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-          a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+  return {
+      a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+      a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
 
 quaternion conjugate(const quaternion& q) { return {q.w, -q.x, -q.y, -q.z}; }
@@ -145,8 +144,8 @@ quaternion slerp(const quaternion& a, const quaternion& b, double t) {
     wp = std::sin((1.0 - t) * theta) / s;
     wq = std::sin(t * theta) / s;
   }
-  return normalize({wp * p.w + wq * q.w, wp * p.x + wq * q.x, wp * p.y + wq * q.y,
-                    wp * p.z + wq * q.z});
+  return normalize(
+      {wp * p.w + wq * q.w, wp * p.x + wq * q.x, wp * p.y + wq * q.y, wp * p.z + wq * q.z});
 }
 
 quaternion arcball_rotation(const vec3d& p, const vec3d& q) {
@@ -170,7 +169,8 @@ quaternion virtual_trackball_rotation(const vec3d& p, const vec3d& q) {
   return normalize({1.0 + c, axis[0], axis[1], axis[2]});
 }
 
-arcball::arcball(double width, double height, screen_y y_axis, trackball_kind kind) : arcball(width, height, y_axis) {
+arcball::arcball(double width, double height, screen_y y_axis, trackball_kind kind)
+    : arcball(width, height, y_axis) {
   kind_ = kind;
 }
 
@@ -199,8 +199,9 @@ vec3d arcball::sphere_point(const vec2d& screen) const {
 }
 
 quaternion arcball::drag(const vec2d& from, const vec2d& to) const {
-  return kind_ == trackball_kind::virtual_ ? virtual_trackball_rotation(sphere_point(from), sphere_point(to))
-                                           : arcball_rotation(sphere_point(from), sphere_point(to));
+  return kind_ == trackball_kind::virtual_
+             ? virtual_trackball_rotation(sphere_point(from), sphere_point(to))
+             : arcball_rotation(sphere_point(from), sphere_point(to));
 }
 
 std::vector<quaternion> arcball::drag_path(const std::vector<vec2d>& path,

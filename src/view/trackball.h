@@ -113,7 +113,7 @@ enum class screen_y {
 
 /// Shoemake's arcball over a viewport.
 class arcball {
-public:
+ public:
   /// Ball centred in the viewport [0, width] x [0, height], radius min(width, height) / 2.
   /// Throws usage_error unless width and height are finite and > 0.
   arcball(double width, double height, screen_y y_axis = screen_y::down);
@@ -131,8 +131,8 @@ public:
   /// The unit-sphere point under a screen point (eye coordinates; rim point when outside the
   /// ball). Throws usage_error for a non-finite screen point.
   vec3d sphere_point(const vec2d& screen) const;
-  /// The rotation (arcball or virtual trackball, by kind()) of a drag from screen point `from` to `to`.
-  /// Throws usage_error for non-finite screen points.
+  /// The rotation (arcball or virtual trackball, by kind()) of a drag from screen point `from` to
+  /// `to`. Throws usage_error for non-finite screen points.
   quaternion drag(const vec2d& from, const vec2d& to) const;
   /// Cumulative rotations along a drag path: result[0] = start and
   /// result[k] = compose(drag(path[k-1], path[k]), result[k-1]) (renormalised every step).
@@ -140,7 +140,7 @@ public:
   std::vector<quaternion> drag_path(const std::vector<vec2d>& path,
                                     const quaternion& start = quaternion{}) const;
 
-private:
+ private:
   vec2d centre_;
   double radius_;
   screen_y y_axis_;

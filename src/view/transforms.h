@@ -19,7 +19,7 @@ mat4 rotate(double angle_deg, const vector3& axis);
 
 /// A stack of matrices; the top is the current transform. Never empty.
 class matrix_stack {
-public:
+ public:
   /// Starts with one identity matrix.
   matrix_stack();
   /// The current matrix.
@@ -36,7 +36,7 @@ public:
   /// Number of matrices on the stack (1 after construction).
   std::size_t depth() const { return stack_.size(); }
 
-private:
+ private:
   std::vector<mat4> stack_;
 };
 

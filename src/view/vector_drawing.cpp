@@ -26,9 +26,12 @@ const char* to_string(vector_options::mode_kind m) {
 
 const char* to_string(vector_options::edges_kind e) {
   switch (e) {
-    case vector_options::edges_kind::none: return "none";
-    case vector_options::edges_kind::visible: return "visible";
-    case vector_options::edges_kind::visible_hidden: return "visible+hidden";
+    case vector_options::edges_kind::none:
+      return "none";
+    case vector_options::edges_kind::visible:
+      return "visible";
+    case vector_options::edges_kind::visible_hidden:
+      return "visible+hidden";
   }
   return "?";
 }
@@ -39,15 +42,23 @@ drawing_counts count_paths(const vector_drawing& d) {
   drawing_counts c;
   for (const vector_path& p : d.paths) {
     switch (p.kind) {
-      case vector_path::kind_type::underlay: ++c.underlays; break;
+      case vector_path::kind_type::underlay:
+        ++c.underlays;
+        break;
       case vector_path::kind_type::region:
         ++c.regions;
         c.rings += p.rings.size();
         break;
-      case vector_path::kind_type::visible_edge: c.visible_edges += p.rings.size(); break;
-      case vector_path::kind_type::hidden_edge: c.hidden_edges += p.rings.size(); break;
+      case vector_path::kind_type::visible_edge:
+        c.visible_edges += p.rings.size();
+        break;
+      case vector_path::kind_type::hidden_edge:
+        c.hidden_edges += p.rings.size();
+        break;
       case vector_path::kind_type::curve:
-      case vector_path::kind_type::point: ++c.curves; break;
+      case vector_path::kind_type::point:
+        ++c.curves;
+        break;
     }
   }
   return c;
@@ -95,7 +106,8 @@ void remove_spikes(cl::Path& ring) {
   out.reserve(ring.size());
   for (const cl::IntPoint& p : ring) {
     out.push_back(p);
-    while (out.size() >= 3 && spike_at(out[out.size() - 3], out[out.size() - 2], out.back())) out.erase(out.end() - 2);
+    while (out.size() >= 3 && spike_at(out[out.size() - 3], out[out.size() - 2], out.back()))
+      out.erase(out.end() - 2);
   }
   for (bool changed = true; changed && out.size() >= 3;) {
     changed = false;
@@ -134,7 +146,7 @@ bbox_i bbox_of(const Points& pts) {
 /// lists (or squares) of P's tiles: any earlier polygon overlapping P shares a tile with it.
 /// Nonzero fill with every input polygon counter-clockwise makes a list mean its union.
 class tiled_coverage {
-public:
+ public:
   static constexpr long long tile_side = 16 * grid_per_pixel;
   static constexpr int merge_every = 8;
 
@@ -145,7 +157,8 @@ public:
     for (int ty = 0; ty < ny_; ++ty)
       for (int tx = 0; tx < nx_; ++tx) {
         const long long x0 = tx * tile_side, y0 = ty * tile_side;
-        tiles_[index(tx, ty)].rect = {{x0, y0}, {x0 + tile_side, y0}, {x0 + tile_side, y0 + tile_side}, {x0, y0 + tile_side}};
+        tiles_[index(tx, ty)].rect = {
+            {x0, y0}, {x0 + tile_side, y0}, {x0 + tile_side, y0 + tile_side}, {x0, y0 + tile_side}};
       }
   }
 
@@ -210,7 +223,7 @@ public:
     return winding != 0;
   }
 
-private:
+ private:
   struct tile {
     cl::Paths covered;  ///< merged paths and pending polygons (nonzero union)
     cl::Path rect;
@@ -221,10 +234,14 @@ private:
   std::size_t index(int tx, int ty) const { return static_cast<std::size_t>(ty) * nx_ + tx; }
 
   std::array<int, 4> tile_range(const bbox_i& b) const {
-    auto clamp_x = [&](long long v) { return static_cast<int>(std::clamp<long long>(v / tile_side, 0, nx_ - 1)); };
-    auto clamp_y = [&](long long v) { return static_cast<int>(std::clamp<long long>(v / tile_side, 0, ny_ - 1)); };
-    return {clamp_x(std::max(0LL, b.x0)), clamp_y(std::max(0LL, b.y0)), clamp_x(std::max(0LL, b.x1)),
-            clamp_y(std::max(0LL, b.y1))};
+    auto clamp_x = [&](long long v) {
+      return static_cast<int>(std::clamp<long long>(v / tile_side, 0, nx_ - 1));
+    };
+    auto clamp_y = [&](long long v) {
+      return static_cast<int>(std::clamp<long long>(v / tile_side, 0, ny_ - 1));
+    };
+    return {clamp_x(std::max(0LL, b.x0)), clamp_y(std::max(0LL, b.y0)),
+            clamp_x(std::max(0LL, b.x1)), clamp_y(std::max(0LL, b.y1))};
   }
 
   void merge(tile& t) {
@@ -235,7 +252,9 @@ private:
     // Holes thinner than min_region_width are rounding cracks, not gaps anything can be seen
     // through: closing them keeps the coverage simple and lets the tile become full.
     t.covered.erase(std::remove_if(t.covered.begin(), t.covered.end(),
-                                   [](const cl::Path& p) { return !cl::Orientation(p) && mean_width(p) < min_region_width; }),
+                                   [](const cl::Path& p) {
+                                     return !cl::Orientation(p) && mean_width(p) < min_region_width;
+                                   }),
                     t.covered.end());
     double area = 0;
     for (const cl::Path& p : t.covered) area += cl::Area(p);
@@ -263,9 +282,11 @@ private:
         const tile& t = tiles_[index(tx, ty)];
         for (const cl::Path& p : t.covered) {
           std::size_t h = p.size();
-          for (const cl::IntPoint& q : p) h = (h * 1000003u) ^ std::hash<long long>{}(q.X * 31 + q.Y);
+          for (const cl::IntPoint& q : p)
+            h = (h * 1000003u) ^ std::hash<long long>{}(q.X * 31 + q.Y);
           if (!seen.insert(h).second &&
-              std::any_of(clip.begin() + static_cast<std::ptrdiff_t>(first), clip.end(), [&](const cl::Path& o) { return o == p; }))
+              std::any_of(clip.begin() + static_cast<std::ptrdiff_t>(first), clip.end(),
+                          [&](const cl::Path& o) { return o == p; }))
             continue;
           clip.push_back(p);
         }
@@ -285,16 +306,17 @@ private:
 /// two share the boundary exactly. Vertices are found in a sorted index of 4-pixel cells,
 /// walking the cells along each edge; a polygon is mended only when it may be visible.
 class t_junction_mender {
-public:
+ public:
   explicit t_junction_mender(const std::vector<cl::Path>& polys) {
     for (const cl::Path& p : polys)
       for (const cl::IntPoint& q : p) index_.push_back({key(cell_of(q.X), cell_of(q.Y)), q});
     std::sort(index_.begin(), index_.end(), [](const entry& a, const entry& b) {
       return a.key != b.key ? a.key < b.key : a.p.X != b.p.X ? a.p.X < b.p.X : a.p.Y < b.p.Y;
     });
-    index_.erase(std::unique(index_.begin(), index_.end(),
-                             [](const entry& a, const entry& b) { return a.key == b.key && a.p == b.p; }),
-                 index_.end());
+    index_.erase(
+        std::unique(index_.begin(), index_.end(),
+                    [](const entry& a, const entry& b) { return a.key == b.key && a.p == b.p; }),
+        index_.end());
   }
 
   /// Inserts into p's edges the vertices lying less than one unit from their insides.
@@ -310,14 +332,16 @@ public:
       const long long steps = static_cast<long long>(len / (cell / 2)) + 1;
       for (long long s = 0; s <= steps; ++s) {
         const double t = static_cast<double>(s) / static_cast<double>(steps);
-        const long long cx = cell_of(a.X + std::llround(t * dx)), cy = cell_of(a.Y + std::llround(t * dy));
+        const long long cx = cell_of(a.X + std::llround(t * dx)),
+                        cy = cell_of(a.Y + std::llround(t * dy));
         for (long long ox = -1; ox <= 1; ++ox)
           for (long long oy = -1; oy <= 1; ++oy) cells_.push_back(key(cx + ox, cy + oy));
       }
       std::sort(cells_.begin(), cells_.end());
       cells_.erase(std::unique(cells_.begin(), cells_.end()), cells_.end());
       for (const std::uint64_t k : cells_) {
-        auto it = std::lower_bound(index_.begin(), index_.end(), k, [](const entry& e, std::uint64_t v) { return e.key < v; });
+        auto it = std::lower_bound(index_.begin(), index_.end(), k,
+                                   [](const entry& e, std::uint64_t v) { return e.key < v; });
         for (; it != index_.end() && it->key == k; ++it) {
           const cl::IntPoint& v = it->p;
           const double vx = static_cast<double>(v.X - a.X), vy = static_cast<double>(v.Y - a.Y);
@@ -327,21 +351,23 @@ public:
           on_edge_.push_back({along, v});
         }
       }
-      std::sort(on_edge_.begin(), on_edge_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+      std::sort(on_edge_.begin(), on_edge_.end(),
+                [](const auto& x, const auto& y) { return x.first < y.first; });
       for (const auto& [along, v] : on_edge_)
         if (!(mended_.back() == v)) mended_.push_back(v);
     }
     p.swap(mended_);
   }
 
-private:
+ private:
   static constexpr long long cell = 4 * grid_per_pixel;
   struct entry {
     std::uint64_t key;
     cl::IntPoint p;
   };
   static std::uint64_t key(long long cx, long long cy) {
-    return static_cast<std::uint64_t>(cx + (1LL << 30)) << 32 | static_cast<std::uint64_t>(cy + (1LL << 30));
+    return static_cast<std::uint64_t>(cx + (1LL << 30)) << 32 |
+           static_cast<std::uint64_t>(cy + (1LL << 30));
   }
   static long long cell_of(long long v) { return v >= 0 ? v / cell : -((-v + cell - 1) / cell); }
 
@@ -355,7 +381,8 @@ private:
 std::uint32_t mesh_of(const frame& f, std::uint32_t face) {
   if (f.mesh_face_offsets.empty()) return 0;
   const auto it = std::upper_bound(f.mesh_face_offsets.begin(), f.mesh_face_offsets.end(), face);
-  return static_cast<std::uint32_t>(std::max<std::ptrdiff_t>(0, it - f.mesh_face_offsets.begin() - 1));
+  return static_cast<std::uint32_t>(
+      std::max<std::ptrdiff_t>(0, it - f.mesh_face_offsets.begin() - 1));
 }
 
 rgb8 shaded(const frame& f, rgb8 c, double x, double y, double z) {
@@ -379,7 +406,8 @@ vector_path curve_path(const frame& f, const screen_line& l) {
 void append_curve(vector_drawing& d, vector_path&& piece) {
   if (piece.kind == vector_path::kind_type::curve && !d.paths.empty()) {
     vector_path& last = d.paths.back();
-    if (last.kind == vector_path::kind_type::curve && last.face == piece.face && last.color == piece.color) {
+    if (last.kind == vector_path::kind_type::curve && last.face == piece.face &&
+        last.color == piece.color) {
       for (auto& r : piece.rings) {
         if (!last.rings.empty() && last.rings.back().back() == r.front())
           last.rings.back().insert(last.rings.back().end(), r.begin() + 1, r.end());
@@ -443,7 +471,8 @@ std::vector<feature_edge> feature_edges(const frame& f, double crease_deg) {
   halves.reserve(3 * s.triangles.size());
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {
     const auto& v = s.triangles[t].v;
-    normal[t] = cross(sub(s.vertices[v[1]], s.vertices[v[0]]), sub(s.vertices[v[2]], s.vertices[v[0]]));
+    normal[t] =
+        cross(sub(s.vertices[v[1]], s.vertices[v[0]]), sub(s.vertices[v[2]], s.vertices[v[0]]));
     if (dot(normal[t], normal[t]) == 0) continue;  // degenerate: no plane, not drawn
     for (int k = 0; k < 3; ++k) {
       std::uint64_t p = id[v[k]], q = id[v[(k + 1) % 3]];
@@ -451,8 +480,9 @@ std::vector<feature_edge> feature_edges(const frame& f, double crease_deg) {
       halves.push_back({p << 32 | q, static_cast<std::uint32_t>(t)});
     }
   }
-  std::sort(halves.begin(), halves.end(),
-            [](const half& x, const half& y) { return x.key != y.key ? x.key < y.key : x.tri < y.tri; });
+  std::sort(halves.begin(), halves.end(), [](const half& x, const half& y) {
+    return x.key != y.key ? x.key < y.key : x.tri < y.tri;
+  });
   const double cos_crease = std::cos(crease_deg * M_PI / 180.0);
   const vec3d eye = to_vec3d(f.view.cam.eye);
   const vec3d towards_eye = {-f.view.direction.x, -f.view.direction.y, -f.view.direction.z};
@@ -482,7 +512,8 @@ std::vector<feature_edge> feature_edges(const frame& f, double crease_deg) {
     std::vector<std::uint32_t> tris;
     for (std::size_t k = i; k < j; ++k) {
       const std::uint32_t t = halves[k].tri;
-      if (std::none_of(tris.begin(), tris.end(), [&](std::uint32_t u) { return s.triangles[u].face == s.triangles[t].face; }))
+      if (std::none_of(tris.begin(), tris.end(),
+                       [&](std::uint32_t u) { return s.triangles[u].face == s.triangles[t].face; }))
         tris.push_back(t);
     }
     const std::size_t uses = j - i;
@@ -500,7 +531,8 @@ std::vector<feature_edge> feature_edges(const frame& f, double crease_deg) {
     }
     if (!draw) continue;
     const std::uint32_t f0 = s.triangles[tris[0]].face;
-    edges.push_back({a, b, {f0, tris.size() > 1 ? s.triangles[tris[1]].face : f0}, tris.size() > 1 ? 2 : 1});
+    edges.push_back(
+        {a, b, {f0, tris.size() > 1 ? s.triangles[tris[1]].face : f0}, tris.size() > 1 ? 2 : 1});
   }
   return edges;
 }
@@ -521,8 +553,8 @@ bool project_edge(const frame& f, const mat4& pm, const feature_edge& e, cl::Pat
 /// overlap): alternating visible / hidden runs covering [0, length], each run shorter than
 /// 3 edge_margin (a gap between two regions' margins, or a rounding crumb) absorbed by the
 /// run before it, and neighbours of one kind merged.
-std::vector<std::pair<std::pair<double, double>, bool>> edge_runs(std::vector<std::pair<double, double>> visible,
-                                                                  double length) {
+std::vector<std::pair<std::pair<double, double>, bool>> edge_runs(
+    std::vector<std::pair<double, double>> visible, double length) {
   using run = std::pair<std::pair<double, double>, bool>;
   std::sort(visible.begin(), visible.end());
   std::vector<run> raw;  // alternating runs covering [0, length]
@@ -561,9 +593,12 @@ void add_edges(const frame& f, const std::vector<vector_path>& regions, vector_d
   const long long ny = std::max<long long>(1, (d.height * grid_per_pixel + tile - 1) / tile);
   std::vector<std::vector<std::uint32_t>> by_tile(static_cast<std::size_t>(nx * ny));
   std::vector<bbox_i> boxes(regions.size());
-  auto tile_of = [&](long long v, long long n) { return std::clamp<long long>(v / tile, 0, n - 1); };
+  auto tile_of = [&](long long v, long long n) {
+    return std::clamp<long long>(v / tile, 0, n - 1);
+  };
   for (std::size_t r = 0; r < regions.size(); ++r) {
-    bbox_i b{regions[r].rings[0][0].x, regions[r].rings[0][0].y, regions[r].rings[0][0].x, regions[r].rings[0][0].y};
+    bbox_i b{regions[r].rings[0][0].x, regions[r].rings[0][0].y, regions[r].rings[0][0].x,
+             regions[r].rings[0][0].y};
     for (const auto& ring : regions[r].rings)
       for (const grid_point& q : ring) {
         b.x0 = std::min(b.x0, q.x);
@@ -595,7 +630,8 @@ void add_edges(const frame& f, const std::vector<vector_path>& regions, vector_d
     return shrunk[r];
   };
   const bool hidden = opt.edges == vector_options::edges_kind::visible_hidden;
-  const std::uint32_t meshes = f.mesh_face_offsets.empty() ? 1 : static_cast<std::uint32_t>(f.mesh_face_offsets.size());
+  const std::uint32_t meshes =
+      f.mesh_face_offsets.empty() ? 1 : static_cast<std::uint32_t>(f.mesh_face_offsets.size());
   std::vector<vector_path> visible_paths(meshes), hidden_paths(meshes);
   for (std::uint32_t m = 0; m < meshes; ++m) {
     visible_paths[m].kind = vector_path::kind_type::visible_edge;
@@ -628,7 +664,8 @@ void add_edges(const frame& f, const std::vector<vector_path>& regions, vector_d
         }
     // Visible intervals along the segment (parameter = grid units from segment[0]); the rest
     // is hidden.
-    const double dx = static_cast<double>(segment[1].X - segment[0].X), dy = static_cast<double>(segment[1].Y - segment[0].Y);
+    const double dx = static_cast<double>(segment[1].X - segment[0].X),
+                 dy = static_cast<double>(segment[1].Y - segment[0].Y);
     const double length = std::hypot(dx, dy);
     std::vector<std::pair<double, double>> visible_parts;
     if (clip.empty()) {
@@ -641,7 +678,9 @@ void add_edges(const frame& f, const std::vector<vector_path>& regions, vector_d
       clipper.Execute(cl::ctDifference, tree, cl::pftNonZero, cl::pftNonZero);
       cl::OpenPathsFromPolyTree(tree, pieces);
       auto param = [&](const cl::IntPoint& q) {
-        return std::clamp((static_cast<double>(q.X - segment[0].X) * dx + static_cast<double>(q.Y - segment[0].Y) * dy) / length,
+        return std::clamp((static_cast<double>(q.X - segment[0].X) * dx +
+                           static_cast<double>(q.Y - segment[0].Y) * dy) /
+                              length,
                           0.0, length);
       };
       for (const cl::Path& piece : pieces) {
@@ -656,9 +695,11 @@ void add_edges(const frame& f, const std::vector<vector_path>& regions, vector_d
     for (const auto& [run, is_visible] : edge_runs(visible_parts, length)) {
       if (!is_visible && !hidden) continue;
       auto at = [&](double t) {
-        return grid_point{segment[0].X + std::llround(t / length * dx), segment[0].Y + std::llround(t / length * dy)};
+        return grid_point{segment[0].X + std::llround(t / length * dx),
+                          segment[0].Y + std::llround(t / length * dy)};
       };
-      (is_visible ? visible_paths : hidden_paths)[mesh].rings.push_back({at(run.first), at(run.second)});
+      (is_visible ? visible_paths : hidden_paths)[mesh].rings.push_back(
+          {at(run.first), at(run.second)});
     }
   }
   if (hidden)
@@ -697,7 +738,8 @@ vector_drawing visible_drawing(const frame& f) {
       if (!coverage.covers({q.x, q.y})) curve_paths.push_back(std::move(p));
       return;
     }
-    const cl::Paths parts = coverage.outside({{p.rings[0][0].x, p.rings[0][0].y}, {p.rings[0][1].x, p.rings[0][1].y}});
+    const cl::Paths parts =
+        coverage.outside({{p.rings[0][0].x, p.rings[0][0].y}, {p.rings[0][1].x, p.rings[0][1].y}});
     p.rings.clear();
     for (const cl::Path& part : parts)
       if (part.size() >= 2) p.rings.push_back(to_ring(part));
@@ -772,7 +814,8 @@ vector_drawing visible_drawing(const frame& f) {
     r.color = shaded(f, acc.color, acc.sx / n, acc.sy / n, acc.sz / n);
     for (cl::Path& ring : merged) {
       remove_spikes(ring);
-      if (ring.size() >= 3 && mean_width(ring) >= min_region_width) r.rings.push_back(to_ring(ring));
+      if (ring.size() >= 3 && mean_width(ring) >= min_region_width)
+        r.rings.push_back(to_ring(ring));
     }
     if (!r.rings.empty()) regions.push_back(std::move(r));
   }
@@ -804,7 +847,8 @@ vector_drawing visible_drawing(const frame& f) {
   d.paths.insert(d.paths.end(), regions.begin(), regions.end());
   if (opt.edges != vector_options::edges_kind::none) add_edges(f, regions, d);
   // Curve pieces were clipped front to back: put them back in back-to-front order.
-  for (auto it = curve_paths.rbegin(); it != curve_paths.rend(); ++it) append_curve(d, std::move(*it));
+  for (auto it = curve_paths.rbegin(); it != curve_paths.rend(); ++it)
+    append_curve(d, std::move(*it));
   return d;
 }
 
@@ -818,7 +862,8 @@ vector_drawing painter_drawing(const frame& f) {
   d.painter = true;
   std::size_t next_line = 0;
   for (std::size_t k = 0; k <= f.polygons.size(); ++k) {
-    while (next_line < f.lines.size() && f.lines[next_line].slot <= k) append_curve(d, curve_path(f, f.lines[next_line++]));
+    while (next_line < f.lines.size() && f.lines[next_line].slot <= k)
+      append_curve(d, curve_path(f, f.lines[next_line++]));
     if (k == f.polygons.size()) break;
     const screen_polygon& p = f.polygons[k];
     vector_path r;

@@ -93,9 +93,9 @@ struct vector_path {
   };
   kind_type kind = kind_type::region;
   rgb8 color;
-  std::uint32_t mesh = 0;      ///< mesh index (regions, edges)
-  std::uint32_t face = 0;      ///< regions: source face id; curves: curve index
-  std::uint32_t fragment = 0;  ///< painter regions: fragment index
+  std::uint32_t mesh = 0;                      ///< mesh index (regions, edges)
+  std::uint32_t face = 0;                      ///< regions: source face id; curves: curve index
+  std::uint32_t fragment = 0;                  ///< painter regions: fragment index
   std::vector<std::vector<grid_point>> rings;  ///< closed rings (regions) or open polylines
 };
 
@@ -112,14 +112,15 @@ struct drawing_placement {
 struct vector_drawing {
   int width = 0, height = 0;  ///< pixels (the viewport)
   rgb8 background{255, 255, 255};
-  bool painter = false;       ///< the painter's stack (one region per fragment, back to front)
+  bool painter = false;  ///< the painter's stack (one region per fragment, back to front)
   std::vector<vector_path> paths;
   drawing_placement placement;  ///< set from the frame's view (view_setup::needs_placement)
 
   /// True when the image is larger than the drawing or the drawing is not at its origin.
   bool placed() const {
-    return placement.image_width > 0 && (placement.image_width != width || placement.image_height != height ||
-                                         placement.x != 0 || placement.y != 0);
+    return placement.image_width > 0 &&
+           (placement.image_width != width || placement.image_height != height ||
+            placement.x != 0 || placement.y != 0);
   }
 };
 
@@ -141,7 +142,8 @@ long long to_grid(double v);
 
 /// Counts of a drawing, for logs and the bench.
 struct drawing_counts {
-  std::size_t underlays = 0, regions = 0, rings = 0, visible_edges = 0, hidden_edges = 0, curves = 0;
+  std::size_t underlays = 0, regions = 0, rings = 0, visible_edges = 0, hidden_edges = 0,
+              curves = 0;
 };
 drawing_counts count_paths(const vector_drawing& d);
 

@@ -18,7 +18,9 @@ cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned i
   return CAIRO_STATUS_SUCCESS;
 }
 
-void set_color(cairo_t* cr, rgb8 c) { cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
+void set_color(cairo_t* cr, rgb8 c) {
+  cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0);
+}
 
 }  // namespace
 
@@ -30,13 +32,16 @@ std::string pdf_document(const vector_drawing& d) {
   const drawing_placement& place = d.placement;
   {
     std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-        cairo_pdf_surface_create_for_stream(append_bytes, &bytes, placed ? place.image_width : d.width,
+        cairo_pdf_surface_create_for_stream(append_bytes, &bytes,
+                                            placed ? place.image_width : d.width,
                                             placed ? place.image_height : d.height),
         cairo_surface_destroy);
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "exbsp");
-    std::unique_ptr<cairo_t, decltype(&cairo_destroy)> context(cairo_create(surface.get()), cairo_destroy);
+    std::unique_ptr<cairo_t, decltype(&cairo_destroy)> context(cairo_create(surface.get()),
+                                                               cairo_destroy);
     cairo_t* cr = context.get();
-    if (placed) {  // the image's background, then the drawing translated and clipped to its viewport
+    if (placed) {  // the image's background, then the drawing translated and clipped to its
+                   // viewport
       set_color(cr, place.background);
       cairo_paint(cr);
       cairo_translate(cr, place.x, place.image_height - place.y - d.height);
@@ -88,7 +93,8 @@ std::string pdf_document(const vector_drawing& d) {
     }
     cairo_show_page(cr);
     const cairo_status_t status = cairo_status(cr);
-    if (status != CAIRO_STATUS_SUCCESS) throw usage_error(std::string("PDF output: cairo: ") + cairo_status_to_string(status));
+    if (status != CAIRO_STATUS_SUCCESS)
+      throw usage_error(std::string("PDF output: cairo: ") + cairo_status_to_string(status));
     context.reset();
     cairo_surface_finish(surface.get());
     const cairo_status_t finished = cairo_surface_status(surface.get());

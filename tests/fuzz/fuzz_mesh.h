@@ -28,7 +28,8 @@ namespace exbsp::fuzz {
 inline void check_soup(const triangle_soup& soup, const std::string& name) {
   require(soup.source == name, "soup.source is the file name");
   for (const vec3d& p : soup.vertices)
-    require(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]), "every coordinate is finite");
+    require(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]),
+            "every coordinate is finite");
   std::uint64_t faces_seen = 0;  // the id the next new face must have
   for (const soup_triangle& t : soup.triangles) {
     for (std::uint32_t v : t.v) require(v < soup.vertices.size(), "vertex index in range");
@@ -73,7 +74,8 @@ inline void check_off_round_trip(const triangle_soup& soup) {
 }
 
 /// The body of a mesh fuzz target.
-inline int fuzz_mesh(const std::uint8_t* data, std::size_t size, mesh_format format, const std::string& name) {
+inline int fuzz_mesh(const std::uint8_t* data, std::size_t size, mesh_format format,
+                     const std::string& name) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   run_guarded([&] {
     const triangle_soup soup = read_mesh_data(text, format, name);

@@ -88,12 +88,14 @@ void check_double(std::string_view token) {
     const double expected = std::strtod(text.c_str(), &end);
     require(end == text.c_str() + text.size(), "strtod reads the whole decimal");
     const bool overflows = std::isinf(expected);
-    require(overflows == (status == number_status::overflow), "overflow exactly when strtod overflows");
+    require(overflows == (status == number_status::overflow),
+            "overflow exactly when strtod overflows");
     if (status == number_status::ok) {
       if (!same_bits(value, expected)) {
-        std::fprintf(stderr, "exbsp fuzz: parse_double %.17g (%a), strtod %.17g (%a)\n", value, value, expected,
-                     expected);
-        require(false, "parse_double gives the double nearest to the decimal (bit-identical to strtod)");
+        std::fprintf(stderr, "exbsp fuzz: parse_double %.17g (%a), strtod %.17g (%a)\n", value,
+                     value, expected, expected);
+        require(false,
+                "parse_double gives the double nearest to the decimal (bit-identical to strtod)");
       }
     }
   } else if (is_non_finite_word(token)) {

@@ -60,8 +60,10 @@ constexpr fixture_file fixture_files[] = {
     {"huge.off", "OFF\n3 1 0\n1e308 0 0\n0 1e308 0\n0 0 1e308\n3 0 1 2\n"},
     {"meshes/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
     {"meshes/tri.ply",
-     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-     "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+     "z\n"
+     "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 "
+     "1 2\n"},
     {"meshes/tri.stl",
      "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
      "endfacet\nendsolid t\n"},
@@ -69,7 +71,7 @@ constexpr fixture_file fixture_files[] = {
 };
 
 class fixture {
-public:
+ public:
   fixture() {
     const char* tmp = std::getenv("TMPDIR");
     std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/exbsp-fuzz-scene-XXXXXX";
@@ -101,7 +103,7 @@ public:
 
   const std::string& scene_path() const { return scene_path_; }
 
-private:
+ private:
   fs::path dir_;
   std::string scene_path_;
 };
@@ -144,14 +146,16 @@ void check_effect_settings(const exbsp::scene::scene& s) {
   const exbsp::view::effect_settings& es = s.effect_settings;
   if (enabled(s, "lighting")) {
     const exbsp::view::lighting_settings& l = es.lighting;
-    require(finite(l.direction) && exbsp::view::length(l.direction) > 0, "light direction finite, not zero");
+    require(finite(l.direction) && exbsp::view::length(l.direction) > 0,
+            "light direction finite, not zero");
     require(finite(l.intensity) && l.intensity >= 0, "light intensity finite, >= 0");
     require(finite(l.ambient) && l.ambient >= 0, "ambient finite, >= 0");
   }
   if (enabled(s, "fog")) {
     const exbsp::view::fog_settings& f = es.fog;
     if (f.mode == exbsp::view::fog_mode::linear)
-      require(finite(f.start) && finite(f.end) && f.start >= 0 && f.end > f.start, "linear fog: 0 <= start < end");
+      require(finite(f.start) && finite(f.end) && f.start >= 0 && f.end > f.start,
+              "linear fog: 0 <= start < end");
     else
       require(finite(f.density) && f.density > 0, "exp fog: density finite, > 0");
   }
@@ -159,14 +163,16 @@ void check_effect_settings(const exbsp::scene::scene& s) {
     const exbsp::view::depth_of_field_settings& d = es.depth_of_field;
     require(finite(d.focal_length) && d.focal_length > 0, "focal_length finite, > 0");
     require(finite(d.aperture) && d.aperture > 0, "aperture finite, > 0");
-    require(finite(d.focus_distance) && d.focus_distance > d.focal_length, "focus_distance > focal_length");
+    require(finite(d.focus_distance) && d.focus_distance > d.focal_length,
+            "focus_distance > focal_length");
     require(d.samples >= 2 && d.samples <= 1024, "depth_of_field samples in 2..1024");
   }
   if (enabled(s, "antialias")) {
     const int n = es.antialias.samples;
     require(n >= 1 && n <= 8, "antialias samples in 1..8");
-    require(static_cast<long long>(std::max(s.width, s.height)) * n <= exbsp::scene::max_viewport_side,
-            "the supersampled image fits max_viewport_side");
+    require(
+        static_cast<long long>(std::max(s.width, s.height)) * n <= exbsp::scene::max_viewport_side,
+        "the supersampled image fits max_viewport_side");
   }
 }
 
@@ -175,7 +181,8 @@ void check_scene(const exbsp::scene::scene& s) {
   require(s.path == the_fixture().scene_path(), "scene.path is the scene file");
   require(s.width >= 1 && s.width <= exbsp::scene::max_viewport_side, "viewport width in range");
   require(s.height >= 1 && s.height <= exbsp::scene::max_viewport_side, "viewport height in range");
-  require(finite(s.camera.eye) && finite(s.camera.look_at) && finite(s.camera.up), "camera is finite");
+  require(finite(s.camera.eye) && finite(s.camera.look_at) && finite(s.camera.up),
+          "camera is finite");
   require(!(s.camera.eye.x == s.camera.look_at.x && s.camera.eye.y == s.camera.look_at.y &&
             s.camera.eye.z == s.camera.look_at.z),
           "eye differs from look_at");
@@ -185,10 +192,12 @@ void check_scene(const exbsp::scene::scene& s) {
   if (p.kind == projection_kind::perspective) {
     require(p.fovy_deg > 0 && p.fovy_deg < 180, "fovy in (0, 180)");
   } else {
-    require(finite(p.left) && finite(p.right) && finite(p.bottom) && finite(p.top), "window is finite");
+    require(finite(p.left) && finite(p.right) && finite(p.bottom) && finite(p.top),
+            "window is finite");
     require(p.right > p.left && p.top > p.bottom, "window is not empty");
   }
-  if (p.kind == projection_kind::oblique) require(finite(p.direction), "oblique direction is finite");
+  if (p.kind == projection_kind::oblique)
+    require(finite(p.direction), "oblique direction is finite");
   std::set<std::string> effects;
   for (const std::string& e : s.effects) {
     const exbsp::view::effect_description* d = exbsp::view::find_effect(e);
@@ -196,7 +205,8 @@ void check_scene(const exbsp::scene::scene& s) {
     require(effects.insert(e).second, "no effect enabled twice");
   }
   for (const exbsp::view::curve_spec& c : s.curves) {
-    require(!c.control_points.empty() && c.control_points.size() <= exbsp::scene::max_curve_control_points,
+    require(!c.control_points.empty() &&
+                c.control_points.size() <= exbsp::scene::max_curve_control_points,
             "a curve has 1..max_curve_control_points control points");
     for (const exbsp::vec3d& q : c.control_points)
       require(finite(q[0]) && finite(q[1]) && finite(q[2]), "curve control points are finite");
@@ -222,8 +232,10 @@ void check_view_setup(const exbsp::scene::scene& s) {
   require(v.kind == s.projection.kind, "view_setup has the scene's projection type");
   require(v.vp.width == s.width && v.vp.height == s.height, "view_setup has the scene's viewport");
   if (allow_nonfinite_view()) return;
-  require(exbsp::view::is_finite(v.model_view), "the model-view matrix of a validated scene is finite");
-  require(exbsp::view::is_finite(v.projection), "the projection matrix of a validated scene is finite");
+  require(exbsp::view::is_finite(v.model_view),
+          "the model-view matrix of a validated scene is finite");
+  require(exbsp::view::is_finite(v.projection),
+          "the projection matrix of a validated scene is finite");
   if (v.is_parallel()) require(finite(v.direction), "the direction of projection is finite");
 }
 
@@ -253,7 +265,8 @@ void check_geometry(const exbsp::scene::scene& s, const exbsp::scene::scene_geom
   for (std::uint32_t f = 0; f < soup.face_count; ++f) {
     const std::size_t k = exbsp::scene::mesh_of_face(g, f);
     require(k < s.meshes.size(), "mesh_of_face finds a mesh for every face");
-    require(g.face_offsets[k] <= f && f < g.face_offsets[k + 1], "mesh_of_face agrees with face_offsets");
+    require(g.face_offsets[k] <= f && f < g.face_offsets[k + 1],
+            "mesh_of_face agrees with face_offsets");
     require(g.face_colors[f] == s.meshes[k].color, "a face has its mesh's colour");
   }
 }

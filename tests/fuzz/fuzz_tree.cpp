@@ -49,7 +49,8 @@ void check_tree(const exbsp::bsp& tree) {
       }
     }
     require_permutation(tree.order_from_eye({3, 4, 5}), n, "the eye order is a permutation");
-    require_permutation(tree.order_for_direction({1, -1, 2}, false), n, "the direction order is a permutation");
+    require_permutation(tree.order_for_direction({1, -1, 2}, false), n,
+                        "the direction order is a permutation");
     const std::string saved = tree.serialize();
     const exbsp::bsp again = exbsp::bsp::deserialize(saved, "resaved.exbsp");
     require(again.serialize() == saved, "a loaded tree's file loads and saves to the same bytes");

@@ -53,10 +53,14 @@ struct lattice_plane {
 lattice_plane pick_lattice_plane() {
   const double h = pick_half(-2, 2);
   switch (pick_int(0, 4)) {
-    case 0: return {{0, 0, h}, {1, 0, 0}, {0, 1, 0}};    // z = h
-    case 1: return {{h, 0, 0}, {0, 1, 0}, {0, 0, 1}};    // x = h
-    case 2: return {{0, 0, h}, {1, 0, -1}, {0, 1, -1}};  // x + y + z = h
-    case 3: return {{h, h, 0}, {1, 1, 0}, {0, 0, 1}};    // x = y, shifted
+    case 0:
+      return {{0, 0, h}, {1, 0, 0}, {0, 1, 0}};  // z = h
+    case 1:
+      return {{h, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // x = h
+    case 2:
+      return {{0, 0, h}, {1, 0, -1}, {0, 1, -1}};  // x + y + z = h
+    case 3:
+      return {{h, h, 0}, {1, 1, 0}, {0, 0, 1}};  // x = y, shifted
     default: {
       lattice_plane p{{static_cast<double>(pick_int(-2, 2)), static_cast<double>(pick_int(-2, 2)),
                        static_cast<double>(pick_int(-2, 2))},
@@ -79,21 +83,27 @@ void apply_picked_motion(soup_case& c) {
   if (kind == 0) return;
   if (kind == 1) {
     std::array<int, 3> perm{0, 1, 2};
-    for (int i = 2; i > 0; --i) std::swap(perm[static_cast<std::size_t>(i)], perm[static_cast<std::size_t>(pick_int(0, i))]);
+    for (int i = 2; i > 0; --i)
+      std::swap(perm[static_cast<std::size_t>(i)], perm[static_cast<std::size_t>(pick_int(0, i))]);
     const vec3d sign{pick_bool() ? 1.0 : -1.0, pick_bool() ? 1.0 : -1.0, pick_bool() ? 1.0 : -1.0};
     const double s = std::ldexp(1.0, pick_int(-4, 4));
     for (tri_d& t : c.tris)
       for (vec3d& p : t) {
         const vec3d q = p;
-        for (int k = 0; k < 3; ++k) p[static_cast<std::size_t>(k)] = s * sign[static_cast<std::size_t>(k)] * q[static_cast<std::size_t>(perm[static_cast<std::size_t>(k)])];
+        for (int k = 0; k < 3; ++k)
+          p[static_cast<std::size_t>(k)] =
+              s * sign[static_cast<std::size_t>(k)] *
+              q[static_cast<std::size_t>(perm[static_cast<std::size_t>(k)])];
       }
     c.kind += " (exact motion)";
     return;
   }
   double w = pick_real(-1, 1), x = pick_real(-1, 1), y = pick_real(-1, 1), z = pick_real(-1, 1);
   const double norm = std::sqrt(w * w + x * x + y * y + z * z);
-  if (norm < 1e-3) w = 1, x = y = z = 0;
-  else w /= norm, x /= norm, y /= norm, z /= norm;
+  if (norm < 1e-3)
+    w = 1, x = y = z = 0;
+  else
+    w /= norm, x /= norm, y /= norm, z /= norm;
   const double R[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
                           {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
                           {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
@@ -102,7 +112,8 @@ void apply_picked_motion(soup_case& c) {
     for (vec3d& p : t) {
       const vec3d q = p;
       for (int k = 0; k < 3; ++k)
-        p[static_cast<std::size_t>(k)] = R[k][0] * q[0] + R[k][1] * q[1] + R[k][2] * q[2] + shift[static_cast<std::size_t>(k)];
+        p[static_cast<std::size_t>(k)] =
+            R[k][0] * q[0] + R[k][1] * q[1] + R[k][2] * q[2] + shift[static_cast<std::size_t>(k)];
     }
   c.kind += " (rounded rotation)";
 }
@@ -110,7 +121,8 @@ void apply_picked_motion(soup_case& c) {
 std::vector<tri_d> triangles_of(const exbsp::triangle_soup& s) {
   std::vector<tri_d> out;
   out.reserve(s.triangles.size());
-  for (const auto& t : s.triangles) out.push_back({s.vertices[t.v[0]], s.vertices[t.v[1]], s.vertices[t.v[2]]});
+  for (const auto& t : s.triangles)
+    out.push_back({s.vertices[t.v[0]], s.vertices[t.v[1]], s.vertices[t.v[2]]});
   return out;
 }
 
@@ -121,7 +133,8 @@ rc::Gen<soup_case> random_soup(int max_triangles) {
   return rc::gen::exec([max_triangles] {
     soup_case c{"random_soup", {}, {}};
     const int n = pick_int(1, max_triangles);
-    for (int i = 0; i < n; ++i) c.tris.push_back({pick_point(-10, 10), pick_point(-10, 10), pick_point(-10, 10)});
+    for (int i = 0; i < n; ++i)
+      c.tris.push_back({pick_point(-10, 10), pick_point(-10, 10), pick_point(-10, 10)});
     return c;
   });
 }
@@ -166,12 +179,26 @@ rc::Gen<soup_case> coplanar_stack() {
       auto w_pos = [] { return pick_int(1, 4) / 2.0; };
       tri_d t;
       switch (pick_int(0, 5)) {
-        case 0: t = {off(w_pos()), off(-w_pos()), off(pick_bool() ? w_pos() : -w_pos())}; break;  // straddles
-        case 1: t = {off(0), off(w_pos()), off(-w_pos())}; break;  // vertex on the plane, 2 pieces
-        case 2: t = {off(0), off(w_pos()), off(w_pos())}; break;   // touches with a vertex
-        case 3: t = {off(0), off(0), off(-w_pos())}; break;        // touches with an edge
-        case 4: { const double w = w_pos(); t = {off(w), off(w), off(w)}; break; }  // parallel
-        default: t = {off(pick_half(-2, 2)), off(pick_half(-2, 2)), off(pick_half(-2, 2))}; break;
+        case 0:
+          t = {off(w_pos()), off(-w_pos()), off(pick_bool() ? w_pos() : -w_pos())};
+          break;  // straddles
+        case 1:
+          t = {off(0), off(w_pos()), off(-w_pos())};
+          break;  // vertex on the plane, 2 pieces
+        case 2:
+          t = {off(0), off(w_pos()), off(w_pos())};
+          break;  // touches with a vertex
+        case 3:
+          t = {off(0), off(0), off(-w_pos())};
+          break;  // touches with an edge
+        case 4: {
+          const double w = w_pos();
+          t = {off(w), off(w), off(w)};
+          break;
+        }  // parallel
+        default:
+          t = {off(pick_half(-2, 2)), off(pick_half(-2, 2)), off(pick_half(-2, 2))};
+          break;
       }
       for (int k = pick_int(0, 2); k > 0; --k) t = {t[1], t[2], t[0]};  // vertex on plane anywhere
       c.tris.push_back(t);
@@ -229,20 +256,35 @@ rc::Gen<soup_case> near_coplanar() {
     soup_case c{"near_coplanar", {}, {}};
     double h = 0;
     switch (pick_int(0, 5)) {
-      case 0: h = 0; break;
-      case 1: h = 0.1; break;
-      case 2: h = -1e-3; break;
-      case 3: h = 1e5 + pick_real(0, 1); break;
-      case 4: h = 1e-200; break;
-      default: h = pick_real(-1, 1); break;
+      case 0:
+        h = 0;
+        break;
+      case 1:
+        h = 0.1;
+        break;
+      case 2:
+        h = -1e-3;
+        break;
+      case 3:
+        h = 1e5 + pick_real(0, 1);
+        break;
+      case 4:
+        h = 1e-200;
+        break;
+      default:
+        h = pick_real(-1, 1);
+        break;
     }
     const int kind = pick_int(0, 2);  // 0: z = h, 1: x = h, 2: y = x
     auto point = [&](int ulps) {
       const double a = pick_real(-1, 1), b = pick_real(-1, 1);
       switch (kind) {
-        case 0: return vec3d{a, b, ulps_from(h, ulps)};
-        case 1: return vec3d{ulps_from(h, ulps), a, b};
-        default: return vec3d{a, ulps_from(a, ulps), b};
+        case 0:
+          return vec3d{a, b, ulps_from(h, ulps)};
+        case 1:
+          return vec3d{ulps_from(h, ulps), a, b};
+        default:
+          return vec3d{a, ulps_from(a, ulps), b};
       }
     };
     const int exact = pick_int(1, 3);
@@ -267,12 +309,14 @@ rc::Gen<soup_case> scale_disparity() {
     soup_case c{"scale_disparity", {}, {}};
     const int mode = pick_int(0, 2);
     if (mode == 0) {
-      const vec3d centre{1e9 * (1 + pick_real(0, 1)), -1e9 * (1 + pick_real(0, 1)), 1e9 * pick_real(0.5, 1)};
+      const vec3d centre{1e9 * (1 + pick_real(0, 1)), -1e9 * (1 + pick_real(0, 1)),
+                         1e9 * pick_real(0.5, 1)};
       auto feature = [&] { return add(centre, pick_point(-1e-3, 1e-3)); };
       const int n = pick_int(2, 6);
       for (int i = 0; i < n; ++i) c.tris.push_back({feature(), feature(), feature()});
       // A huge triangle in the plane z = centre.z, and a huge generic one.
-      c.tris.push_back({vec3d{centre[0] - 1e9, centre[1] - 1e9, centre[2]}, vec3d{centre[0] + 1e9, centre[1], centre[2]},
+      c.tris.push_back({vec3d{centre[0] - 1e9, centre[1] - 1e9, centre[2]},
+                        vec3d{centre[0] + 1e9, centre[1], centre[2]},
                         vec3d{centre[0], centre[1] + 1e9, centre[2]}});
       if (pick_bool()) {
         vec3d a = feature();
@@ -280,7 +324,8 @@ rc::Gen<soup_case> scale_disparity() {
         c.tris.push_back({a, feature(), feature()});
       }
       if (pick_bool())
-        c.tris.push_back({add(centre, pick_point(-1e9, 1e9)), add(centre, pick_point(-1e9, 1e9)), feature()});
+        c.tris.push_back(
+            {add(centre, pick_point(-1e9, 1e9)), add(centre, pick_point(-1e9, 1e9)), feature()});
     } else if (mode == 1) {
       const int n = pick_int(2, 6);
       for (int i = 0; i < n; ++i)
@@ -310,14 +355,21 @@ rc::Gen<soup_case> slivers() {
       const vec3d a = pick_point(-2, 2), u = pick_point(-3, 3), v = pick_point(-1, 1);
       const double eps = std::pow(10.0, -3 * pick_int(1, 5));
       switch (pick_int(0, 2)) {
-        case 0: c.tris.push_back({a, add(a, u), add(add(a, u), scale(eps, v))}); break;    // needle
-        case 1: c.tris.push_back({a, add(a, u), add(add(a, scale(0.5, u)), scale(eps, v))}); break;  // cap
-        default: c.tris.push_back({a, add(add(a, u), scale(eps, v)), sub(add(a, u), scale(eps, v))}); break;
+        case 0:
+          c.tris.push_back({a, add(a, u), add(add(a, u), scale(eps, v))});
+          break;  // needle
+        case 1:
+          c.tris.push_back({a, add(a, u), add(add(a, scale(0.5, u)), scale(eps, v))});
+          break;  // cap
+        default:
+          c.tris.push_back({a, add(add(a, u), scale(eps, v)), sub(add(a, u), scale(eps, v))});
+          break;
       }
     }
     if (pick_int(0, 3) == 0) c.tris.push_back({vec3d{0, 0, 0}, vec3d{1, 2, 3}, vec3d{2, 4, 6}});
     const int crossers = pick_int(0, 3);
-    for (int i = 0; i < crossers; ++i) c.tris.push_back({pick_point(-3, 3), pick_point(-3, 3), pick_point(-3, 3)});
+    for (int i = 0; i < crossers; ++i)
+      c.tris.push_back({pick_point(-3, 3), pick_point(-3, 3), pick_point(-3, 3)});
     shuffle_picked(c.tris);
     return c;
   });
@@ -331,11 +383,13 @@ rc::Gen<soup_case> mesh_like() {
   return rc::gen::exec([] {
     soup_case c{"mesh_like", {}, {}};
     const int n = pick_int(1, 3);
-    std::vector<std::vector<double>> h(static_cast<std::size_t>(n + 1), std::vector<double>(static_cast<std::size_t>(n + 1)));
+    std::vector<std::vector<double>> h(static_cast<std::size_t>(n + 1),
+                                       std::vector<double>(static_cast<std::size_t>(n + 1)));
     for (auto& row : h)
       for (double& z : row) z = pick_int(-1, 1);
     auto P = [&](int i, int j) {
-      return vec3d{static_cast<double>(i), static_cast<double>(j), h[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)]};
+      return vec3d{static_cast<double>(i), static_cast<double>(j),
+                   h[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)]};
     };
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
@@ -348,7 +402,8 @@ rc::Gen<soup_case> mesh_like() {
         }
       }
     for (int k = pick_int(0, 2); k > 0; --k) {  // T-junctions
-      const std::size_t t = static_cast<std::size_t>(pick_int(0, static_cast<int>(c.tris.size()) - 1));
+      const std::size_t t =
+          static_cast<std::size_t>(pick_int(0, static_cast<int>(c.tris.size()) - 1));
       const int e = pick_int(0, 2);
       const tri_d o = c.tris[t];
       const vec3d& a = o[static_cast<std::size_t>(e)];
@@ -359,13 +414,16 @@ rc::Gen<soup_case> mesh_like() {
       c.tris.push_back({m, b, d});
     }
     for (int k = pick_int(0, 2); k > 0; --k)
-      c.tris.push_back(c.tris[static_cast<std::size_t>(pick_int(0, static_cast<int>(c.tris.size()) - 1))]);
+      c.tris.push_back(
+          c.tris[static_cast<std::size_t>(pick_int(0, static_cast<int>(c.tris.size()) - 1))]);
     for (int k = pick_int(0, 2); k > 0; --k)
-      c.tris.push_back(flipped(c.tris[static_cast<std::size_t>(pick_int(0, static_cast<int>(c.tris.size()) - 1))]));
+      c.tris.push_back(flipped(
+          c.tris[static_cast<std::size_t>(pick_int(0, static_cast<int>(c.tris.size()) - 1))]));
     if (pick_bool()) {  // a second sheet, roughly the plane y = 0.5 + x/2, crossing the first
       for (int i = 0; i < n; ++i) {
         const double y0 = 0.5 + i / 2.0, y1 = 0.5 + (i + 1) / 2.0;
-        c.tris.push_back({vec3d{double(i), y0, -1.5}, vec3d{double(i + 1), y1, -1.5}, vec3d{double(i), y0, 1.5}});
+        c.tris.push_back({vec3d{double(i), y0, -1.5}, vec3d{double(i + 1), y1, -1.5},
+                          vec3d{double(i), y0, 1.5}});
       }
     }
     for (int k = pick_int(0, 2); k > 0; --k) {
@@ -402,8 +460,8 @@ rc::Gen<soup_case> cyclic_sticks(int min_n, int max_n) {
 
 /// Every small generator above (not the sticks): for properties that hold for any soup.
 rc::Gen<soup_case> any_small_soup() {
-  return rc::gen::oneOf(random_soup(), grid_soup(), coplanar_stack(), vertex_on_plane(), near_coplanar(),
-                        scale_disparity(), slivers(), mesh_like());
+  return rc::gen::oneOf(random_soup(), grid_soup(), coplanar_stack(), vertex_on_plane(),
+                        near_coplanar(), scale_disparity(), slivers(), mesh_like());
 }
 
 /// The triangles and face ids of data/meshes/NAME (read once), or nullptr if it is missing.
@@ -427,7 +485,8 @@ const soup_case* cad_mesh(const std::string& name) {
 /// The CAD meshes of the corpus used by the subset generators, those present.
 std::vector<std::string> present_cad_meshes() {
   std::vector<std::string> out;
-  for (const char* name : {"fandisk.off", "part.off", "couplingdown.off", "rotor.off", "ALSTOM_TEST4.off", "anchor.off"})
+  for (const char* name : {"fandisk.off", "part.off", "couplingdown.off", "rotor.off",
+                           "ALSTOM_TEST4.off", "anchor.off"})
     if (cad_mesh(name)) out.push_back(name);
   return out;
 }
@@ -442,17 +501,18 @@ rc::Gen<soup_case> cad_subset(std::vector<std::string> files, std::size_t max_tr
     const std::size_t start = *rc::gen::inRange<std::size_t>(0, mesh.tris.size() - count + 1);
     soup_case c;
     c.kind = name + " [" + std::to_string(start) + ", " + std::to_string(start + count) + ")";
-    c.tris.assign(mesh.tris.begin() + static_cast<std::ptrdiff_t>(start), mesh.tris.begin() + static_cast<std::ptrdiff_t>(start + count));
-    c.faces.assign(mesh.faces.begin() + static_cast<std::ptrdiff_t>(start), mesh.faces.begin() + static_cast<std::ptrdiff_t>(start + count));
+    c.tris.assign(mesh.tris.begin() + static_cast<std::ptrdiff_t>(start),
+                  mesh.tris.begin() + static_cast<std::ptrdiff_t>(start + count));
+    c.faces.assign(mesh.faces.begin() + static_cast<std::ptrdiff_t>(start),
+                   mesh.faces.begin() + static_cast<std::ptrdiff_t>(start + count));
     apply_picked_motion(c);
     return c;
   });
 }
 
-
 template <class K>
-check_report build_and_check(const soup_case& c, const std::string& heuristic, const check_options& o,
-                             std::uint64_t build_seed) {
+check_report build_and_check(const soup_case& c, const std::string& heuristic,
+                             const check_options& o, std::uint64_t build_seed) {
   const exbsp::triangle_soup soup = c.soup();
   exbsp::build_options bo;
   bo.heuristic = heuristic;
@@ -465,7 +525,8 @@ check_report build_and_check(const soup_case& c, const std::string& heuristic, c
 }
 
 template <class K>
-void rc_assert_invariants_for_every_heuristic(const soup_case& c, std::size_t max_rays, const check_options& extra) {
+void rc_assert_invariants_for_every_heuristic(const soup_case& c, std::size_t max_rays,
+                                              const check_options& extra) {
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
   bool any_split = false;
   for (const std::string& h : exbsp::heuristic_names()) {
@@ -485,10 +546,11 @@ void rc_assert_invariants_for_every_heuristic(const soup_case& c, std::size_t ma
   RC_TAG(c.kind.substr(0, c.kind.find(' ')), any_split ? "splits" : "no splits");
 }
 
-#define EXBSP_GENERATORS_FOR_KERNEL(K)                                                                       \
-  template check_report build_and_check<K>(const soup_case&, const std::string&, const check_options&,      \
-                                           std::uint64_t);                                                  \
-  template void rc_assert_invariants_for_every_heuristic<K>(const soup_case&, std::size_t, const check_options&);
+#define EXBSP_GENERATORS_FOR_KERNEL(K)                                                     \
+  template check_report build_and_check<K>(const soup_case&, const std::string&,           \
+                                           const check_options&, std::uint64_t);           \
+  template void rc_assert_invariants_for_every_heuristic<K>(const soup_case&, std::size_t, \
+                                                            const check_options&);
 EXBSP_GENERATORS_FOR_KERNEL(exbsp::double_kernel)
 EXBSP_GENERATORS_FOR_KERNEL(exbsp::epick_kernel)
 EXBSP_GENERATORS_FOR_KERNEL(exbsp::epeck_kernel)

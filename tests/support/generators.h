@@ -32,7 +32,9 @@ struct soup_case {
   std::vector<tri_d> tris;
   std::vector<std::uint32_t> faces;
 
-  std::uint32_t face_of(std::size_t i) const { return faces.empty() ? static_cast<std::uint32_t>(i) : faces[i]; }
+  std::uint32_t face_of(std::size_t i) const {
+    return faces.empty() ? static_cast<std::uint32_t>(i) : faces[i];
+  }
   exbsp::triangle_soup soup() const;
 };
 
@@ -42,7 +44,9 @@ std::string to_off(const soup_case& c);
 /// How RapidCheck prints a counterexample: reproducible as an OFF file.
 void showValue(const soup_case& c, std::ostream& os);
 
-inline soup_case case_of(const std::string& kind, const std::vector<tri_d>& tris) { return soup_case{kind, tris, {}}; }
+inline soup_case case_of(const std::string& kind, const std::vector<tri_d>& tris) {
+  return soup_case{kind, tris, {}};
+}
 
 inline tri_d flipped(const tri_d& t) { return {t[0], t[2], t[1]}; }
 
@@ -62,7 +66,9 @@ inline double pick_real(double lo, double hi) {
   const std::int64_t k = *rc::gen::inRange<std::int64_t>(0, (std::int64_t{1} << 52) + 1);
   return lo + (hi - lo) * std::ldexp(static_cast<double>(k), -52);
 }
-inline vec3d pick_point(double lo, double hi) { return {pick_real(lo, hi), pick_real(lo, hi), pick_real(lo, hi)}; }
+inline vec3d pick_point(double lo, double hi) {
+  return {pick_real(lo, hi), pick_real(lo, hi), pick_real(lo, hi)};
+}
 /// k/2 for an integer k in [2*lo, 2*hi]: exact, and exactly representable sums and products.
 inline double pick_half(int lo, int hi) { return pick_int(2 * lo, 2 * hi) / 2.0; }
 
@@ -120,8 +126,8 @@ rc::Gen<soup_case> cad_subset(std::vector<std::string> files, std::size_t max_tr
 
 /// Builds the tree of `c` with `heuristic` in kernel K and checks it.
 template <class K>
-check_report build_and_check(const soup_case& c, const std::string& heuristic, const check_options& o,
-                             std::uint64_t build_seed = 0);
+check_report build_and_check(const soup_case& c, const std::string& heuristic,
+                             const check_options& o, std::uint64_t build_seed = 0);
 
 /// Inside a RapidCheck property: builds `c` with every heuristic in kernel K (the build seed
 /// and the viewpoints drawn from RapidCheck) and fails the property on any broken invariant.

@@ -51,15 +51,16 @@ triangle_soup make_sticks(std::size_t k) {
 }
 
 std::string off_text(const triangle_soup& soup) {
-  std::string out = "OFF\n" + std::to_string(soup.vertices.size()) + " " + std::to_string(soup.triangles.size()) + " 0\n";
+  std::string out = "OFF\n" + std::to_string(soup.vertices.size()) + " " +
+                    std::to_string(soup.triangles.size()) + " 0\n";
   char buffer[128];
   for (const vec3d& p : soup.vertices) {
     std::snprintf(buffer, sizeof buffer, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
     out += buffer;
   }
   for (const exbsp::soup_triangle& t : soup.triangles) {
-    std::snprintf(buffer, sizeof buffer, "3 %u %u %u\n", static_cast<unsigned>(t.v[0]), static_cast<unsigned>(t.v[1]),
-                  static_cast<unsigned>(t.v[2]));
+    std::snprintf(buffer, sizeof buffer, "3 %u %u %u\n", static_cast<unsigned>(t.v[0]),
+                  static_cast<unsigned>(t.v[1]), static_cast<unsigned>(t.v[2]));
     out += buffer;
   }
   return out;

@@ -25,7 +25,7 @@ namespace exbsp_test {
 
 /// splitmix64 stream: portable, unlike std:: distributions.
 class split_mix {
-public:
+ public:
   explicit split_mix(std::uint64_t seed) : state_(seed) {}
   std::uint64_t next();
   /// Uniform double in [0, 1) with 53 random bits.
@@ -35,7 +35,7 @@ public:
   /// An integer in [0, n) (0 when n is 0); modulo bias is irrelevant here.
   std::size_t below(std::size_t n) { return n ? static_cast<std::size_t>(next() % n) : 0; }
 
-private:
+ private:
   std::uint64_t state_;
 };
 

@@ -6,9 +6,10 @@ namespace exbsp_test {
 
 std::string observable(const exbsp::bsp& t, const std::vector<exbsp::vec3d>& eyes) {
   const auto& s = t.stats();
-  std::string out = std::to_string(s.input_triangles) + " " + std::to_string(s.degenerate_input) + " " +
-                    std::to_string(s.fragments) + " " + std::to_string(s.splits) + " " + std::to_string(s.nodes) +
-                    " " + std::to_string(s.depth) + " " + s.heuristic + "\n";
+  std::string out = std::to_string(s.input_triangles) + " " + std::to_string(s.degenerate_input) +
+                    " " + std::to_string(s.fragments) + " " + std::to_string(s.splits) + " " +
+                    std::to_string(s.nodes) + " " + std::to_string(s.depth) + " " + s.heuristic +
+                    "\n";
   char buf[64];
   for (std::size_t i = 0; i < t.fragment_count(); ++i) {
     const auto d = t.fragment(i);
@@ -21,7 +22,8 @@ std::string observable(const exbsp::bsp& t, const std::vector<exbsp::vec3d>& eye
         std::snprintf(buf, sizeof buf, " %.17g", x);
         out += buf;
       }
-    for (const auto& a : t.ancestors(i)) out += " " + std::to_string(a.plane_face) + (a.side > 0 ? "+" : "-");
+    for (const auto& a : t.ancestors(i))
+      out += " " + std::to_string(a.plane_face) + (a.side > 0 ? "+" : "-");
     out += "\n";
   }
   for (const exbsp::vec3d& e : eyes) {
@@ -38,7 +40,8 @@ std::string observable(const exbsp::bsp& t, const std::vector<exbsp::vec3d>& eye
 
 std::vector<exbsp::vec3d> eyes_for(const exbsp::triangle_soup& soup) {
   std::vector<exbsp::vec3d> eyes{{0.3, -7, 11}, {-5, 2, -3}, {1, 1, 1}};
-  for (std::size_t i = 0; i < soup.vertices.size() && i < 9; i += 4) eyes.push_back(soup.vertices[i]);
+  for (std::size_t i = 0; i < soup.vertices.size() && i < 9; i += 4)
+    eyes.push_back(soup.vertices[i]);
   return eyes;
 }
 

@@ -11,8 +11,8 @@
 
 namespace exbsp_test {
 
-/// Stats, fragments (face, exact (exact kernels only) and %.17g double coordinates, ancestors) and, for each eye,
-/// order_from_eye and (for a nonzero eye) order_for_direction of the same vector.
+/// Stats, fragments (face, exact (exact kernels only) and %.17g double coordinates, ancestors) and,
+/// for each eye, order_from_eye and (for a nonzero eye) order_for_direction of the same vector.
 std::string observable(const exbsp::bsp& t, const std::vector<exbsp::vec3d>& eyes);
 
 /// Eyes for a soup: fixed far points, and some input vertices (eyes exactly on node planes).

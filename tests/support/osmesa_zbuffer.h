@@ -47,7 +47,8 @@ namespace exbsp::osmesa {
 /// created, a SIGSEGV prints what happened and ends the program with a failure.
 inline void crashed(int) {
   static const char msg[] =
-      "\nOSMesa: FAILED: Mesa crashed (SIGSEGV) creating an OSMesa context: its off-screen OpenGL is "
+      "\nOSMesa: FAILED: Mesa crashed (SIGSEGV) creating an OSMesa context: its off-screen OpenGL "
+      "is "
       "not usable on this machine (Debian: libosmesa6, libosmesa6-dev; check GALLIUM_DRIVER)\n";
   if (::write(2, msg, sizeof msg - 1) < 0) {
   }
@@ -56,7 +57,7 @@ inline void crashed(int) {
 
 /// Installs `crashed` as the SIGSEGV handler while it lives.
 class crash_guard {
-public:
+ public:
   crash_guard() {
     struct sigaction sa {};
     sa.sa_handler = crashed;
@@ -67,20 +68,21 @@ public:
   crash_guard(const crash_guard&) = delete;
   crash_guard& operator=(const crash_guard&) = delete;
 
-private:
+ private:
   struct sigaction old_ {};
 };
 
 /// An OSMesa RGBA context with a 24-bit depth buffer, current on this thread while it lives.
 /// Throws std::runtime_error when Mesa cannot create or bind it.
 class context {
-public:
+ public:
   context(int width, int height) : width_(width), height_(height) {
     const crash_guard guard;
     ctx_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
     if (!ctx_)
-      throw std::runtime_error("OSMesaCreateContextExt(OSMESA_RGBA, 24 depth bits) failed: Mesa's off-screen "
-                               "OpenGL is not usable on this machine (Debian: libosmesa6, libosmesa6-dev)");
+      throw std::runtime_error(
+          "OSMesaCreateContextExt(OSMESA_RGBA, 24 depth bits) failed: Mesa's off-screen "
+          "OpenGL is not usable on this machine (Debian: libosmesa6, libosmesa6-dev)");
     buffer_.assign(static_cast<std::size_t>(width) * height * 4, 0);
     if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, width, height)) {
       OSMesaDestroyContext(ctx_);
@@ -108,7 +110,7 @@ public:
     return img;
   }
 
-private:
+ private:
   OSMesaContext ctx_ = nullptr;
   int width_, height_;
   std::vector<GLubyte> buffer_;
@@ -146,7 +148,8 @@ struct zbuffer_scene {
 /// when nearer points have greater window depth), back faces culled when asked (front =
 /// counter-clockwise in window coordinates, clockwise when the scene is drawn mirrored), and
 /// the colour and depth buffers cleared.
-inline void begin_zbuffer_frame(view::rgb8 background, bool cull_back, bool mirror_y, bool nearer_is_smaller = true) {
+inline void begin_zbuffer_frame(view::rgb8 background, bool cull_back, bool mirror_y,
+                                bool nearer_is_smaller = true) {
   glDisable(GL_LIGHTING);
   glDisable(GL_BLEND);
   glDisable(GL_DITHER);
@@ -175,7 +178,8 @@ inline view::image render_zbuffer(const zbuffer_scene& s) {
   context ctx(s.image_width, s.image_height);
   GLint depth_bits = 0;
   glGetIntegerv(GL_DEPTH_BITS, &depth_bits);
-  if (depth_bits < 24) throw std::runtime_error("OSMesa context has " + std::to_string(depth_bits) + " depth bits");
+  if (depth_bits < 24)
+    throw std::runtime_error("OSMesa context has " + std::to_string(depth_bits) + " depth bits");
   const int vp_y = s.mirror_y ? s.image_height - s.vp_y - s.vp_height : s.vp_y;
   glViewport(s.vp_x, vp_y, s.vp_width, s.vp_height);
   glDepthRange(s.depth_near, s.depth_far);
@@ -196,7 +200,8 @@ inline view::image render_zbuffer(const zbuffer_scene& s) {
   glEnd();
   glFinish();
   const GLenum err = glGetError();
-  if (err != GL_NO_ERROR) throw std::runtime_error("OpenGL error " + std::to_string(err) + " while rendering");
+  if (err != GL_NO_ERROR)
+    throw std::runtime_error("OpenGL error " + std::to_string(err) + " while rendering");
   return ctx.picture(s.mirror_y);
 }
 

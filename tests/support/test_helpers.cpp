@@ -31,7 +31,8 @@ void write_file(const std::filesystem::path& p, const std::string& text) {
 }
 
 std::filesystem::path make_temp_dir(const std::string& name) {
-  std::string tmpl = (std::filesystem::temp_directory_path() / ("exbsp_" + name + "_XXXXXX")).string();
+  std::string tmpl =
+      (std::filesystem::temp_directory_path() / ("exbsp_" + name + "_XXXXXX")).string();
   if (!::mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed for " + tmpl);
   return tmpl;
 }
@@ -57,8 +58,8 @@ std::set<std::tuple<int, int, int>> colours_of(const exbsp::view::image& img) {
   return c;
 }
 
-std::uint32_t add_quad(exbsp::triangle_soup& s, const exbsp::vec3d& a, const exbsp::vec3d& b, const exbsp::vec3d& c,
-                       const exbsp::vec3d& d) {
+std::uint32_t add_quad(exbsp::triangle_soup& s, const exbsp::vec3d& a, const exbsp::vec3d& b,
+                       const exbsp::vec3d& c, const exbsp::vec3d& d) {
   const auto base = static_cast<std::uint32_t>(s.vertices.size());
   s.vertices.insert(s.vertices.end(), {a, b, c, d});
   const std::uint32_t face = s.face_count;
@@ -66,9 +67,10 @@ std::uint32_t add_quad(exbsp::triangle_soup& s, const exbsp::vec3d& a, const exb
   return face;
 }
 
-exbsp::view::frame perspective_frame(exbsp::triangle_soup soup, std::vector<exbsp::view::rgb8> colors,
-                                     const exbsp::view::camera& cam, int width, int height, double fovy,
-                                     double near_dist, double far_dist) {
+exbsp::view::frame perspective_frame(exbsp::triangle_soup soup,
+                                     std::vector<exbsp::view::rgb8> colors,
+                                     const exbsp::view::camera& cam, int width, int height,
+                                     double fovy, double near_dist, double far_dist) {
   namespace view = exbsp::view;
   view::frame f;
   f.soup = std::move(soup);
@@ -77,7 +79,8 @@ exbsp::view::frame perspective_frame(exbsp::triangle_soup soup, std::vector<exbs
   f.view.kind = view::projection_kind::perspective;
   f.view.cam = cam;
   f.view.model_view = view::look_at(cam);
-  f.view.projection = view::perspective(fovy, static_cast<double>(width) / height, near_dist, far_dist);
+  f.view.projection =
+      view::perspective(fovy, static_cast<double>(width) / height, near_dist, far_dist);
   f.view.vp = {0, 0, width, height, 0, 1};
   return f;
 }
@@ -90,12 +93,14 @@ exbsp::view::image zbuffer_render(const exbsp::view::frame& f, bool cull) {
   const view::mat4 pm = f.view.projection * f.view.model_view;
   std::vector<view::hpoint> in(3), out;
   for (const exbsp::soup_triangle& t : f.soup.triangles) {
-    const exbsp::fragment_d tri{t.face, {f.soup.vertices[t.v[0]], f.soup.vertices[t.v[1]], f.soup.vertices[t.v[2]]}};
+    const exbsp::fragment_d tri{
+        t.face, {f.soup.vertices[t.v[0]], f.soup.vertices[t.v[1]], f.soup.vertices[t.v[2]]}};
     if (cull && view::is_back_facing(tri, f.view)) continue;
     for (int k = 0; k < 3; ++k) in[k] = pm * view::to_point(tri.v[k]);
     view::clip_to_view_volume(in, out);
     std::vector<view::window_point> p;
-    for (const view::hpoint& c : out) p.push_back(view::to_window(f.view.vp, c.x / c.w, c.y / c.w, c.z / c.w));
+    for (const view::hpoint& c : out)
+      p.push_back(view::to_window(f.view.vp, c.x / c.w, c.y / c.w, c.z / c.w));
     for (std::size_t k = 1; k + 1 < p.size(); ++k) {
       const view::window_point &a = p[0], &b = p[k], &c = p[k + 1];
       const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);

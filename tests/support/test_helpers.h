@@ -1,7 +1,7 @@
 // Small helpers of the test files, one copy each: whole-file reads and writes, temporary
 // directories, RapidCheck's fixed seed, soups from triangles, the key of a scene_error, the
-// colours of an image, quads and perspective frames, a z-buffer oracle of a frame, matrices from GLM, vector arithmetic on
-// std::array<T, 3>, and the CGAL corpus (data/meshes) check.
+// colours of an image, quads and perspective frames, a z-buffer oracle of a frame, matrices from
+// GLM, vector arithmetic on std::array<T, 3>, and the CGAL corpus (data/meshes) check.
 //
 // The corpus: tests that need data/meshes/ (extracted by scripts/setup) skip with a visible
 // message when it is missing, unless EXBSP_REQUIRE_CORPUS=1 (scripts/test and CI set it):
@@ -66,14 +66,16 @@ std::string error_key(Parse&& parse, std::string* message = nullptr) {
 std::set<std::tuple<int, int, int>> colours_of(const exbsp::view::image& img);
 
 /// Appends quad (a, b, c, d) as one face with the next face id; returns the id.
-std::uint32_t add_quad(exbsp::triangle_soup& s, const exbsp::vec3d& a, const exbsp::vec3d& b, const exbsp::vec3d& c,
-                       const exbsp::vec3d& d);
+std::uint32_t add_quad(exbsp::triangle_soup& s, const exbsp::vec3d& a, const exbsp::vec3d& b,
+                       const exbsp::vec3d& c, const exbsp::vec3d& d);
 
 /// A frame of `soup` (colours by face id, white background) seen from `cam` through
 /// gluPerspective(fovy, width / height, near_dist, far_dist) on a width x height viewport.
-exbsp::view::frame perspective_frame(exbsp::triangle_soup soup, std::vector<exbsp::view::rgb8> colors,
-                                     const exbsp::view::camera& cam, int width, int height, double fovy = 45,
-                                     double near_dist = 0.5, double far_dist = 100);
+exbsp::view::frame perspective_frame(exbsp::triangle_soup soup,
+                                     std::vector<exbsp::view::rgb8> colors,
+                                     const exbsp::view::camera& cam, int width, int height,
+                                     double fovy = 45, double near_dist = 0.5,
+                                     double far_dist = 100);
 
 /// Z-buffer rendering of the frame's unsplit soup with the painter's coverage rule (the
 /// oracle of the BSP order): triangles clipped to the view volume, depth interpolated
@@ -117,7 +119,9 @@ std::array<T, 3> cross(const std::array<T, 3>& a, const std::array<T, 3>& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 inline double norm(const std::array<double, 3>& a) { return std::sqrt(dot(a, a)); }
-inline double dist(const std::array<double, 3>& a, const std::array<double, 3>& b) { return norm(sub(a, b)); }
+inline double dist(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return norm(sub(a, b));
+}
 
 // --- the CGAL corpus ---------------------------------------------------------------------------
 
@@ -130,11 +134,12 @@ bool corpus_required();
 
 /// In a test body: unless `present`, fails (EXBSP_REQUIRE_CORPUS=1) or skips the test with a
 /// message naming `what` is missing.
-#define EXBSP_NEED_CORPUS(present, what)                                                              \
-  do {                                                                                                \
-    if (!(present)) {                                                                                 \
-      if (::exbsp_test::corpus_required())                                                            \
-        FAIL() << (what) << " is missing and EXBSP_REQUIRE_CORPUS=1: run scripts/setup";              \
-      GTEST_SKIP() << "SKIPPED: " << (what) << " is missing (run scripts/setup to extract the corpus)"; \
-    }                                                                                                 \
+#define EXBSP_NEED_CORPUS(present, what)                                                 \
+  do {                                                                                   \
+    if (!(present)) {                                                                    \
+      if (::exbsp_test::corpus_required())                                               \
+        FAIL() << (what) << " is missing and EXBSP_REQUIRE_CORPUS=1: run scripts/setup"; \
+      GTEST_SKIP() << "SKIPPED: " << (what)                                              \
+                   << " is missing (run scripts/setup to extract the corpus)";           \
+    }                                                                                    \
   } while (false)

@@ -44,7 +44,7 @@ namespace {
 /// queried with a parametric line e + t d, t in [t0, t1] (infinite ends allowed), against
 /// boxes widened by a margin. Boxes only select candidates.
 class box_tree {
-public:
+ public:
   explicit box_tree(std::vector<CGAL::Bbox_3> boxes) : boxes_(std::move(boxes)) {
     items_.resize(boxes_.size());
     for (std::size_t i = 0; i < items_.size(); ++i) items_[i] = static_cast<std::uint32_t>(i);
@@ -72,7 +72,8 @@ public:
       const std::uint32_t mid = r.begin + (r.end - r.begin) / 2;
       std::nth_element(items_.begin() + r.begin, items_.begin() + mid, items_.begin() + r.end,
                        [&](std::uint32_t a, std::uint32_t b) {
-                         return boxes_[a].min(axis) + boxes_[a].max(axis) < boxes_[b].min(axis) + boxes_[b].max(axis);
+                         return boxes_[a].min(axis) + boxes_[a].max(axis) <
+                                boxes_[b].min(axis) + boxes_[b].max(axis);
                        });
       const auto left = static_cast<std::uint32_t>(nodes_.size());
       nodes_.push_back({});
@@ -89,7 +90,8 @@ public:
 
   /// Calls visit(item) for every item whose widened box may meet the line e + t d, t in [t0, t1].
   template <class Visit>
-  void line_query(const vec3d& e, const vec3d& d, double t0, double t1, double margin, Visit visit) const {
+  void line_query(const vec3d& e, const vec3d& d, double t0, double t1, double margin,
+                  Visit visit) const {
     if (nodes_.empty()) return;
     std::vector<std::uint32_t> stack{0};
     while (!stack.empty()) {
@@ -106,13 +108,14 @@ public:
     }
   }
 
-private:
+ private:
   struct node {
     CGAL::Bbox_3 box;
     std::uint32_t first = 0, count = 0;  ///< count > 0: leaf items; else children first, first + 1
   };
 
-  static bool hits(const CGAL::Bbox_3& b, const vec3d& e, const vec3d& d, double t0, double t1, double margin) {
+  static bool hits(const CGAL::Bbox_3& b, const vec3d& e, const vec3d& d, double t0, double t1,
+                   double margin) {
     for (int k = 0; k < 3; ++k) {
       const double lo = b.min(k) - margin, hi = b.max(k) + margin;
       if (d[k] == 0) {
@@ -141,7 +144,8 @@ std::pair<vec3d, double> approximate(const P& p) {
   double r = 0;
   for (int k = 0; k < 3; ++k) {
     c[static_cast<std::size_t>(k)] = b.min(k) + 0.5 * (b.max(k) - b.min(k));
-    r = std::max(r, 0.5 * (b.max(k) - b.min(k)) + 0x1p-52 * std::fabs(c[static_cast<std::size_t>(k)]));
+    r = std::max(r,
+                 0.5 * (b.max(k) - b.min(k)) + 0x1p-52 * std::fabs(c[static_cast<std::size_t>(k)]));
   }
   return {c, r};
 }
@@ -201,8 +205,8 @@ tree_view<E> scaled_view(const tree_view<E>& v, int k) {
 /// True when the closed triangle t (oriented by n) is separated from the interior of u by the
 /// line of one of t's edges.
 template <class E>
-bool edge_separates(const std::array<typename E::Point_3, 3>& t, const std::array<typename E::Point_3, 3>& u,
-                    const typename E::Vector_3& n) {
+bool edge_separates(const std::array<typename E::Point_3, 3>& t,
+                    const std::array<typename E::Point_3, 3>& u, const typename E::Vector_3& n) {
   for (std::size_t e = 0; e < 3; ++e) {
     const auto& a = t[e];
     const auto& b = t[(e + 1) % 3];
@@ -252,12 +256,14 @@ std::vector<std::uint32_t> reference_order(const tree_view<E>& v, const viewpoin
 /// (4,1,1)/6 rotations) while that stays within max_rays, else centroids of a stride
 /// (max_rays 0: every centroid).
 template <class E>
-std::vector<std::pair<std::size_t, typename E::Point_3>> ray_samples(const tree_view<E>& v, std::size_t max_rays) {
+std::vector<std::pair<std::size_t, typename E::Point_3>> ray_samples(const tree_view<E>& v,
+                                                                     std::size_t max_rays) {
   using FT = typename E::FT;
   std::vector<std::pair<std::size_t, typename E::Point_3>> out;
   const std::size_t m = v.fragments.size();
   const bool four = max_rays > 0 && 4 * m <= max_rays;
-  const std::size_t stride = max_rays == 0 || four || m <= max_rays ? 1 : (m + max_rays - 1) / max_rays;
+  const std::size_t stride =
+      max_rays == 0 || four || m <= max_rays ? 1 : (m + max_rays - 1) / max_rays;
   for (std::size_t i = 0; i < m; i += stride) {
     if (!v.finite[i]) continue;
     const auto& f = v.fragments[i];
@@ -275,9 +281,11 @@ std::vector<std::pair<std::size_t, typename E::Point_3>> ray_samples(const tree_
 template <class E>
 viewpoint<E> rounded(const viewpoint<E>& vp) {
   viewpoint<E> out = vp;
-  out.eye = typename E::Point_3(CGAL::to_double(vp.eye.x()), CGAL::to_double(vp.eye.y()), CGAL::to_double(vp.eye.z()));
-  out.direction = typename E::Vector_3(CGAL::to_double(vp.direction.x()), CGAL::to_double(vp.direction.y()),
-                                       CGAL::to_double(vp.direction.z()));
+  out.eye = typename E::Point_3(CGAL::to_double(vp.eye.x()), CGAL::to_double(vp.eye.y()),
+                                CGAL::to_double(vp.eye.z()));
+  out.direction =
+      typename E::Vector_3(CGAL::to_double(vp.direction.x()), CGAL::to_double(vp.direction.y()),
+                           CGAL::to_double(vp.direction.z()));
   return out;
 }
 
@@ -287,7 +295,8 @@ template <class E, class K>
 tree_view<E> view_of(const exbsp::bsp_tree<K>& t, const exbsp::triangle_soup& soup) {
   tree_view<E> v;
   for (const auto& st : soup.triangles) {
-    typename tree_view<E>::triangle tri{exact_point<E>(soup.vertices[st.v[0]]), exact_point<E>(soup.vertices[st.v[1]]),
+    typename tree_view<E>::triangle tri{exact_point<E>(soup.vertices[st.v[0]]),
+                                        exact_point<E>(soup.vertices[st.v[1]]),
                                         exact_point<E>(soup.vertices[st.v[2]])};
     v.degenerate.push_back(CGAL::collinear(tri[0], tri[1], tri[2]) ? 1 : 0);
     v.sources.push_back(tri);
@@ -304,8 +313,10 @@ tree_view<E> view_of(const exbsp::bsp_tree<K>& t, const exbsp::triangle_soup& so
         tri[k] = f.v[k];
       } else {
         const double x = f.v[k].x(), y = f.v[k].y(), z = f.v[k].z();
-        if (std::isfinite(x) && std::isfinite(y) && std::isfinite(z)) tri[k] = exact_point<E>({x, y, z});
-        else ok = false;
+        if (std::isfinite(x) && std::isfinite(y) && std::isfinite(z))
+          tri[k] = exact_point<E>({x, y, z});
+        else
+          ok = false;
       }
     }
     v.fragments.push_back(tri);
@@ -316,7 +327,8 @@ tree_view<E> view_of(const exbsp::bsp_tree<K>& t, const exbsp::triangle_soup& so
     v.node_of.push_back(t.node_of_fragment(i));
   }
   for (const auto& n : t.nodes())
-    v.nodes.push_back({n.plane_source, n.first, n.count, n.negative, n.positive, n.parent, n.side_in_parent, n.depth});
+    v.nodes.push_back({n.plane_source, n.first, n.count, n.negative, n.positive, n.parent,
+                       n.side_in_parent, n.depth});
   v.stats = t.stats();
   return v;
 }
@@ -339,7 +351,8 @@ void check_source_planes(const tree_view<E>& v, check_report& r) {
       }
     const auto n1 = normal_of<E>(f), n2 = normal_of<E>(s);
     if (CGAL::cross_product(n1, n2) != CGAL::NULL_VECTOR || CGAL::sign(n1 * n2) != CGAL::POSITIVE)
-      r.fail("orientation", "fragment " + std::to_string(i) + " is not positively parallel to source " +
+      r.fail("orientation", "fragment " + std::to_string(i) +
+                                " is not positively parallel to source " +
                                 std::to_string(v.source[i]));
   }
 }
@@ -352,7 +365,8 @@ void check_tiling(const tree_view<E>& v, check_report& r, bool pairwise) {
   for (std::size_t s = 0; s < v.sources.size(); ++s) {
     const auto& frags = by_source[s];
     if (v.degenerate[s]) {
-      if (!frags.empty()) r.fail("structure", "degenerate source " + std::to_string(s) + " has fragments");
+      if (!frags.empty())
+        r.fail("structure", "degenerate source " + std::to_string(s) + " has fragments");
       continue;
     }
     if (frags.empty()) {
@@ -368,26 +382,32 @@ void check_tiling(const tree_view<E>& v, check_report& r, bool pairwise) {
     typename E::Vector_3 sum = CGAL::NULL_VECTOR;
     for (std::size_t i : frags) sum = sum + normal_of<E>(v.fragments[i]);
     if (sum != n)
-      r.fail("tiling_area", "normals of the " + std::to_string(frags.size()) + " fragments of source " +
-                                std::to_string(s) + " do not sum to its normal");
+      r.fail("tiling_area", "normals of the " + std::to_string(frags.size()) +
+                                " fragments of source " + std::to_string(s) +
+                                " do not sum to its normal");
     for (std::size_t i : frags) {
       bool inside = true;
       for (const auto& p : v.fragments[i])
         for (std::size_t e = 0; e < 3 && inside; ++e)
-          if (CGAL::sign(CGAL::cross_product(src[(e + 1) % 3] - src[e], p - src[e]) * n) == CGAL::NEGATIVE)
+          if (CGAL::sign(CGAL::cross_product(src[(e + 1) % 3] - src[e], p - src[e]) * n) ==
+              CGAL::NEGATIVE)
             inside = false;
-      if (!inside) r.fail("inside_source", "fragment " + std::to_string(i) + " leaves source " + std::to_string(s));
+      if (!inside)
+        r.fail("inside_source",
+               "fragment " + std::to_string(i) + " leaves source " + std::to_string(s));
     }
     if (!pairwise) continue;
     for (std::size_t a = 0; a < frags.size(); ++a)
       for (std::size_t b = a + 1; b < frags.size(); ++b) {
         const auto& fa = v.fragments[frags[a]];
         const auto& fb = v.fragments[frags[b]];
-        if (CGAL::sign(normal_of<E>(fa) * n) != CGAL::POSITIVE || CGAL::sign(normal_of<E>(fb) * n) != CGAL::POSITIVE)
+        if (CGAL::sign(normal_of<E>(fa) * n) != CGAL::POSITIVE ||
+            CGAL::sign(normal_of<E>(fb) * n) != CGAL::POSITIVE)
           continue;  // reported by check_source_planes
         if (!edge_separates<E>(fa, fb, n) && !edge_separates<E>(fb, fa, n))
-          r.fail("overlap", "fragments " + std::to_string(frags[a]) + " and " + std::to_string(frags[b]) +
-                                " of source " + std::to_string(s) + " overlap");
+          r.fail("overlap", "fragments " + std::to_string(frags[a]) + " and " +
+                                std::to_string(frags[b]) + " of source " + std::to_string(s) +
+                                " overlap");
       }
   }
 }
@@ -395,16 +415,19 @@ void check_tiling(const tree_view<E>& v, check_report& r, bool pairwise) {
 template <class E>
 void check_structure(const tree_view<E>& v, check_report& r) {
   const std::size_t N = v.nodes.size(), M = v.fragments.size();
-  if ((N == 0) != (M == 0)) r.fail("structure", std::to_string(N) + " nodes for " + std::to_string(M) + " fragments");
+  if ((N == 0) != (M == 0))
+    r.fail("structure", std::to_string(N) + " nodes for " + std::to_string(M) + " fragments");
   std::size_t expected_first = 0;
   for (std::size_t i = 0; i < N; ++i) {
     const auto& nd = v.nodes[i];
     const std::string at = "node " + std::to_string(i) + ": ";
-    if (nd.first != expected_first) r.fail("structure", at + "fragment range does not follow the previous node's");
+    if (nd.first != expected_first)
+      r.fail("structure", at + "fragment range does not follow the previous node's");
     if (nd.count == 0) r.fail("structure", at + "no fragment (its splitter must be stored there)");
     expected_first = nd.first + nd.count;
     if (i == 0) {
-      if (nd.parent != -1 || nd.depth != 1) r.fail("structure", at + "the root has a parent or depth != 1");
+      if (nd.parent != -1 || nd.depth != 1)
+        r.fail("structure", at + "the root has a parent or depth != 1");
     } else {
       if (nd.parent < 0 || static_cast<std::size_t>(nd.parent) >= N ||
           (nd.side_in_parent != 1 && nd.side_in_parent != -1)) {
@@ -417,19 +440,23 @@ void check_structure(const tree_view<E>& v, check_report& r) {
       if (nd.depth != p.depth + 1) r.fail("structure", at + "depth is not parent's + 1");
     }
     for (std::int32_t child : {nd.negative, nd.positive})
-      if (child >= 0 && (static_cast<std::size_t>(child) >= N ||
-                         v.nodes[static_cast<std::size_t>(child)].parent != static_cast<std::int32_t>(i)))
+      if (child >= 0 &&
+          (static_cast<std::size_t>(child) >= N ||
+           v.nodes[static_cast<std::size_t>(child)].parent != static_cast<std::int32_t>(i)))
         r.fail("structure", at + "child does not point back");
     if (nd.plane_source >= v.sources.size() || v.degenerate[nd.plane_source]) {
       r.fail("structure", at + "plane of a degenerate or missing source");
       continue;
     }
     bool splitter_here = false;
-    for (std::size_t k = nd.first; k < nd.first + nd.count && k < M; ++k) splitter_here |= v.source[k] == nd.plane_source;
-    if (!splitter_here) r.fail("structure", at + "no fragment of its plane's source is stored at it");
+    for (std::size_t k = nd.first; k < nd.first + nd.count && k < M; ++k)
+      splitter_here |= v.source[k] == nd.plane_source;
+    if (!splitter_here)
+      r.fail("structure", at + "no fragment of its plane's source is stored at it");
   }
   if (expected_first != M)
-    r.fail("structure", "node ranges cover " + std::to_string(expected_first) + " of " + std::to_string(M) + " fragments");
+    r.fail("structure", "node ranges cover " + std::to_string(expected_first) + " of " +
+                            std::to_string(M) + " fragments");
   // Every node reachable exactly once from the root.
   if (N) {
     std::vector<char> seen(N, 0);
@@ -446,7 +473,8 @@ void check_structure(const tree_view<E>& v, check_report& r) {
       for (std::int32_t c : {v.nodes[i].negative, v.nodes[i].positive})
         if (c >= 0 && static_cast<std::size_t>(c) < N) stack.push_back(c);
     }
-    if (reached != N) r.fail("structure", std::to_string(N - reached) + " nodes unreachable from the root");
+    if (reached != N)
+      r.fail("structure", std::to_string(N - reached) + " nodes unreachable from the root");
   }
   for (std::size_t i = 0; i < M; ++i) {
     const std::size_t n = v.node_of[i];
@@ -482,9 +510,12 @@ void check_node_planes(const tree_view<E>& v, check_report& r) {
         wrong |= o * side < 0;
         strictly |= o * side > 0;
       }
-      const std::string where = " the plane of ancestor node " + std::to_string(parent) + " (side " + std::to_string(side) + ")";
-      if (wrong && !crossed) r.fail("ancestor_side", "fragment " + std::to_string(i) + " crosses" + where);
-      if (!strictly && !lies_in) r.fail("ancestor_plane", "fragment " + std::to_string(i) + " lies in" + where);
+      const std::string where = " the plane of ancestor node " + std::to_string(parent) +
+                                " (side " + std::to_string(side) + ")";
+      if (wrong && !crossed)
+        r.fail("ancestor_side", "fragment " + std::to_string(i) + " crosses" + where);
+      if (!strictly && !lies_in)
+        r.fail("ancestor_plane", "fragment " + std::to_string(i) + " lies in" + where);
       crossed |= wrong;
       lies_in |= !strictly;
       at = parent;
@@ -493,8 +524,8 @@ void check_node_planes(const tree_view<E>& v, check_report& r) {
 }
 
 template <class E>
-void check_stats(const tree_view<E>& v, const std::string& expected_kernel, const std::string& expected_heuristic,
-                 check_report& r) {
+void check_stats(const tree_view<E>& v, const std::string& expected_kernel,
+                 const std::string& expected_heuristic, check_report& r) {
   const auto& s = v.stats;
   std::size_t degenerate = 0;
   for (char d : v.degenerate) degenerate += d ? 1 : 0;
@@ -503,24 +534,30 @@ void check_stats(const tree_view<E>& v, const std::string& expected_kernel, cons
   auto expect = [&](bool ok, const std::string& what) {
     if (!ok) r.fail("stats", what);
   };
-  expect(s.input_triangles == v.sources.size(),
-         "input_triangles " + std::to_string(s.input_triangles) + " != " + std::to_string(v.sources.size()));
-  expect(s.degenerate_input == degenerate,
-         "degenerate_input " + std::to_string(s.degenerate_input) + " != " + std::to_string(degenerate));
+  expect(s.input_triangles == v.sources.size(), "input_triangles " +
+                                                    std::to_string(s.input_triangles) +
+                                                    " != " + std::to_string(v.sources.size()));
+  expect(s.degenerate_input == degenerate, "degenerate_input " +
+                                               std::to_string(s.degenerate_input) +
+                                               " != " + std::to_string(degenerate));
   expect(s.fragments == v.fragments.size(), "fragments != stored fragments");
   expect(s.nodes == v.nodes.size(), "nodes != node array size");
-  expect(s.depth == depth, "depth " + std::to_string(s.depth) + " != longest path " + std::to_string(depth));
+  expect(s.depth == depth,
+         "depth " + std::to_string(s.depth) + " != longest path " + std::to_string(depth));
   const std::size_t base = s.input_triangles - std::min(s.input_triangles, s.degenerate_input);
   expect(s.fragments >= base + s.splits && s.fragments <= base + 2 * s.splits,
-         "fragments " + std::to_string(s.fragments) + " not in [kept + splits, kept + 2 splits] = [" +
-             std::to_string(base + s.splits) + ", " + std::to_string(base + 2 * s.splits) + "]");
+         "fragments " + std::to_string(s.fragments) +
+             " not in [kept + splits, kept + 2 splits] = [" + std::to_string(base + s.splits) +
+             ", " + std::to_string(base + 2 * s.splits) + "]");
   expect(s.kernel == expected_kernel, "kernel '" + s.kernel + "'");
-  expect(expected_heuristic.empty() || s.heuristic == expected_heuristic, "heuristic '" + s.heuristic + "'");
+  expect(expected_heuristic.empty() || s.heuristic == expected_heuristic,
+         "heuristic '" + s.heuristic + "'");
 }
 
 template <class E>
-order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp, const std::vector<std::uint32_t>& order,
-                                   std::size_t max_rays, check_report& r, bool prune) {
+order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp,
+                                   const std::vector<std::uint32_t>& order, std::size_t max_rays,
+                                   check_report& r, bool prune) {
   using FT = typename E::FT;
   order_tally tally;
   const std::size_t m = v.fragments.size();
@@ -549,7 +586,8 @@ order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp
     if (v.finite[i]) scene += boxes[i];
   double size = 0;
   for (int k = 0; k < 3; ++k)
-    size = std::max({size, scene.max(k) - scene.min(k), std::fabs(scene.min(k)), std::fabs(scene.max(k))});
+    size = std::max(
+        {size, scene.max(k) - scene.min(k), std::fabs(scene.min(k)), std::fabs(scene.max(k))});
   const double allowance = 1e-9 * size;
 
   std::vector<std::size_t> candidates;
@@ -570,29 +608,34 @@ order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp
     for (int cx = 0; cx < 2; ++cx)
       for (int cy = 0; cy < 2; ++cy)
         for (int cz = 0; cz < 2; ++cz) {
-          const double x = (cx ? scene.max(0) : scene.min(0)) - e[0], y = (cy ? scene.max(1) : scene.min(1)) - e[1],
+          const double x = (cx ? scene.max(0) : scene.min(0)) - e[0],
+                       y = (cy ? scene.max(1) : scene.min(1)) - e[1],
                        z = (cz ? scene.max(2) : scene.min(2)) - e[2];
           reach = std::max(reach, std::hypot(x, y, z));
         }
     const double T = (reach + std::sqrt(3.0) * ef) * (1 + 1e-12) / dn;
-    if (!prune || !(dn > 0) || !std::isfinite(T)) {  // the rounded direction says nothing: every fragment
+    if (!prune || !(dn > 0) ||
+        !std::isfinite(T)) {  // the rounded direction says nothing: every fragment
       for (std::size_t i = 0; i < m; ++i) candidates.push_back(i);
     } else {
       const double dmax = std::max({std::fabs(d[0]), std::fabs(d[1]), std::fabs(d[2])});
       const double margin = (ef + T * (ef + et) + T * dmax * 0x1p-51) * (1 + 1e-9) + allowance;
-      bvh.line_query(e, d, vp.is_eye ? 0.0 : -T, T, margin, [&](std::uint32_t i) { candidates.push_back(i); });
+      bvh.line_query(e, d, vp.is_eye ? 0.0 : -T, T, margin,
+                     [&](std::uint32_t i) { candidates.push_back(i); });
     }
     // Interval signs first: most candidates are rejected by two certain, different signs, so
     // that the exact predicate only runs where the ray passes close to an edge line.
     if (prune) {
-      const interval_point a = interval_of(from), b = interval_of(to);  // before: Gmpq's to_interval rounds itself
+      const interval_point a = interval_of(from),
+                           b = interval_of(to);  // before: Gmpq's to_interval rounds itself
       CGAL::Protect_FPU_rounding<true> upward;
       std::size_t kept = 0;
       for (std::size_t i : candidates) {
         if (!v.finite[i]) continue;
         bool maybe = true, pos = false, neg = false;
         for (std::size_t e = 0; e < 3 && maybe; ++e) {
-          const CGAL::Uncertain<CGAL::Sign> o = interval_orientation(a, b, corners[3 * i + e], corners[3 * i + (e + 1) % 3]);
+          const CGAL::Uncertain<CGAL::Sign> o =
+              interval_orientation(a, b, corners[3 * i + e], corners[3 * i + (e + 1) % 3]);
           if (!o.is_certain()) continue;
           const CGAL::Sign sg = o.make_certain();
           pos |= sg == CGAL::POSITIVE;
@@ -608,15 +651,18 @@ order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp
       const auto& f = v.fragments[i];
       const auto o0 = CGAL::orientation(from, to, f[0], f[1]);
       if (o0 == CGAL::COPLANAR) continue;
-      if (CGAL::orientation(from, to, f[1], f[2]) != o0 || CGAL::orientation(from, to, f[2], f[0]) != o0) continue;
+      if (CGAL::orientation(from, to, f[1], f[2]) != o0 ||
+          CGAL::orientation(from, to, f[2], f[0]) != o0)
+        continue;
       // The line crosses the interior of fragment i; where?
       const FT g_from = normals[i] * (from - f[0]), g_to = normals[i] * (to - f[0]);
-      if (g_from == g_to) continue;  // parallel (cannot happen with a strict crossing)
+      if (g_from == g_to) continue;           // parallel (cannot happen with a strict crossing)
       const FT t = g_from / (g_from - g_to);  // from + t (to - from) is on i's plane
       if (vp.is_eye && !(t > 0)) continue;    // behind (or at) the eye: not drawn over anything
       hits.emplace_back(t, i);
     }
-    std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::sort(hits.begin(), hits.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
     // A pair (nearer, farther) at different depths is misordered when the nearer is drawn first.
     for (std::size_t g = 0; g < hits.size();) {
       std::size_t h = g;
@@ -628,10 +674,11 @@ order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp
           const std::size_t near = hits[n].second;
           if (pos[near] > pos[far]) continue;
           ++tally.misordered;
-          r.fail("order", vp.what + ": fragment " + std::to_string(near) + " (face " + std::to_string(v.face[near]) +
-                              ") is in front of fragment " + std::to_string(far) + " (face " +
-                              std::to_string(v.face[far]) + ") on the ray through a point of fragment " +
-                              std::to_string(j) + " but is drawn before it");
+          r.fail("order", vp.what + ": fragment " + std::to_string(near) + " (face " +
+                              std::to_string(v.face[near]) + ") is in front of fragment " +
+                              std::to_string(far) + " (face " + std::to_string(v.face[far]) +
+                              ") on the ray through a point of fragment " + std::to_string(j) +
+                              " but is drawn before it");
         }
       }
       g = h;
@@ -665,15 +712,20 @@ std::vector<viewpoint<E>> standard_viewpoints(const tree_view<E>& v, std::uint64
     const auto& nd = v.nodes[rng.below(v.nodes.size())];
     const auto& p = v.sources[nd.plane_source];
     const int a = static_cast<int>(rng.below(5)) - 2, b = static_cast<int>(rng.below(5)) - 1;
-    out.push_back({true, p[0] + (p[1] - p[0]) * FT(a) + (p[2] - p[0]) * FT(b), {}, "eye on the plane of a node"});
+    out.push_back({true,
+                   p[0] + (p[1] - p[0]) * FT(a) + (p[2] - p[0]) * FT(b),
+                   {},
+                   "eye on the plane of a node"});
     out.push_back({false, CGAL::ORIGIN, p[1] - p[0], "direction parallel to a node's plane"});
   }
   if (!v.fragments.empty()) {
     const std::size_t i = rng.below(v.fragments.size());
-    if (v.finite[i]) out.push_back({true, v.fragments[i][rng.below(3)], {}, "eye at a fragment vertex"});
+    if (v.finite[i])
+      out.push_back({true, v.fragments[i][rng.below(3)], {}, "eye at a fragment vertex"});
   }
   if (!v.sources.empty())
-    out.push_back({true, v.sources[rng.below(v.sources.size())][rng.below(3)], {}, "eye at an input vertex"});
+    out.push_back(
+        {true, v.sources[rng.below(v.sources.size())][rng.below(3)], {}, "eye at an input vertex"});
   typename E::Vector_3 d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
   if (d == CGAL::NULL_VECTOR) d = typename E::Vector_3(0, 0, -1);
   out.push_back({false, CGAL::ORIGIN, d, "random direction"});
@@ -681,24 +733,27 @@ std::vector<viewpoint<E>> standard_viewpoints(const tree_view<E>& v, std::uint64
 }
 
 template <class K, class E>
-std::vector<std::uint32_t> tree_order(const exbsp::bsp_tree<K>& t, const viewpoint<E>& vp, bool back_to_front) {
+std::vector<std::uint32_t> tree_order(const exbsp::bsp_tree<K>& t, const viewpoint<E>& vp,
+                                      bool back_to_front) {
   if constexpr (std::is_same_v<K, E>) {
-    return vp.is_eye ? t.order_from_eye(vp.eye, back_to_front) : t.order_for_direction(vp.direction, back_to_front);
+    return vp.is_eye ? t.order_from_eye(vp.eye, back_to_front)
+                     : t.order_for_direction(vp.direction, back_to_front);
   } else {
     if (vp.is_eye)
       return t.order_from_eye(
-          typename K::Point_3(CGAL::to_double(vp.eye.x()), CGAL::to_double(vp.eye.y()), CGAL::to_double(vp.eye.z())),
+          typename K::Point_3(CGAL::to_double(vp.eye.x()), CGAL::to_double(vp.eye.y()),
+                              CGAL::to_double(vp.eye.z())),
           back_to_front);
-    return t.order_for_direction(typename K::Vector_3(CGAL::to_double(vp.direction.x()),
-                                                      CGAL::to_double(vp.direction.y()),
-                                                      CGAL::to_double(vp.direction.z())),
-                                 back_to_front);
+    return t.order_for_direction(
+        typename K::Vector_3(CGAL::to_double(vp.direction.x()), CGAL::to_double(vp.direction.y()),
+                             CGAL::to_double(vp.direction.z())),
+        back_to_front);
   }
 }
 
 template <class K, class E>
-void check_orders(const exbsp::bsp_tree<K>& t, const tree_view<E>& v, viewpoint<E> vp, std::size_t max_rays,
-                  check_report& r, int k) {
+void check_orders(const exbsp::bsp_tree<K>& t, const tree_view<E>& v, viewpoint<E> vp,
+                  std::size_t max_rays, check_report& r, int k) {
   if constexpr (!std::is_same_v<K, E>) vp = rounded(vp);
   const auto order = tree_order<K>(t, vp, true);
   auto reverse = tree_order<K>(t, vp, false);
@@ -710,18 +765,22 @@ void check_orders(const exbsp::bsp_tree<K>& t, const tree_view<E>& v, viewpoint<
     r.fail("structure", vp.what + ": the order is not a permutation of the fragments");
     return;
   }
-  if (order != reference_order(v, vp)) r.fail("traversal", vp.what + ": order differs from the contract's traversal");
+  if (order != reference_order(v, vp))
+    r.fail("traversal", vp.what + ": order differs from the contract's traversal");
   std::reverse(reverse.begin(), reverse.end());
-  if (reverse != order) r.fail("traversal", vp.what + ": front-to-back is not the reverse of back-to-front");
+  if (reverse != order)
+    r.fail("traversal", vp.what + ": front-to-back is not the reverse of back-to-front");
   check_order_along_rays(v, vp, order, max_rays, r);
 }
 
 template <class K>
-check_report check_tree(const exbsp::bsp_tree<K>& t, const exbsp::triangle_soup& soup, const check_options& o) {
+check_report check_tree(const exbsp::bsp_tree<K>& t, const exbsp::triangle_soup& soup,
+                        const check_options& o) {
   using E = exact_kernel_of<K>;
   check_report r;
   const tree_view<E> v0 = view_of<E>(t, soup);
-  if (v0.nonfinite) r.fail("nonfinite", std::to_string(v0.nonfinite) + " fragments with NaN/Inf coordinates");
+  if (v0.nonfinite)
+    r.fail("nonfinite", std::to_string(v0.nonfinite) + " fragments with NaN/Inf coordinates");
   check_structure(v0, r);
   check_stats(v0, exbsp::to_string(exbsp::kernel_traits<K>::id), o.heuristic, r);
   if (!r.broken.count("structure")) {
@@ -734,31 +793,35 @@ check_report check_tree(const exbsp::bsp_tree<K>& t, const exbsp::triangle_soup&
     if (vps.size() > o.viewpoints) vps.resize(o.viewpoints);
     for (const vec3d& e : o.eyes) vps.push_back({true, exact_point<E>(e), {}, "given eye"});
     for (const vec3d& d : o.directions)
-      vps.push_back({false, CGAL::ORIGIN, typename E::Vector_3(d[0], d[1], d[2]), "given direction"});
+      vps.push_back(
+          {false, CGAL::ORIGIN, typename E::Vector_3(d[0], d[1], d[2]), "given direction"});
     for (const auto& vp : vps) check_orders(t, v, vp, o.max_rays, r, k);
   }
   return r;
 }
 
 // Explicit instantiations: every CGAL kernel K with its exact kernel E = exact_kernel_of<K>.
-#define EXBSP_CHECKER_FOR_EXACT(E)                                                                                  \
-  template void check_structure<E>(const tree_view<E>&, check_report&);                                           \
-  template void check_source_planes<E>(const tree_view<E>&, check_report&);                                       \
-  template void check_tiling<E>(const tree_view<E>&, check_report&, bool);                                        \
-  template void check_node_planes<E>(const tree_view<E>&, check_report&);                                         \
-  template void check_stats<E>(const tree_view<E>&, const std::string&, const std::string&, check_report&);      \
-  template order_tally check_order_along_rays<E>(const tree_view<E>&, const viewpoint<E>&,                        \
-                                                 const std::vector<std::uint32_t>&, std::size_t, check_report&,  \
-                                                 bool);                                                          \
+#define EXBSP_CHECKER_FOR_EXACT(E)                                                               \
+  template void check_structure<E>(const tree_view<E>&, check_report&);                          \
+  template void check_source_planes<E>(const tree_view<E>&, check_report&);                      \
+  template void check_tiling<E>(const tree_view<E>&, check_report&, bool);                       \
+  template void check_node_planes<E>(const tree_view<E>&, check_report&);                        \
+  template void check_stats<E>(const tree_view<E>&, const std::string&, const std::string&,      \
+                               check_report&);                                                   \
+  template order_tally check_order_along_rays<E>(const tree_view<E>&, const viewpoint<E>&,       \
+                                                 const std::vector<std::uint32_t>&, std::size_t, \
+                                                 check_report&, bool);                           \
   template std::vector<viewpoint<E>> standard_viewpoints<E>(const tree_view<E>&, std::uint64_t);
-#define EXBSP_CHECKER_FOR_KERNEL(K)                                                                                 \
-  template tree_view<exact_kernel_of<K>> view_of<exact_kernel_of<K>, K>(const exbsp::bsp_tree<K>&,                \
-                                                                        const exbsp::triangle_soup&);             \
-  template std::vector<std::uint32_t> tree_order<K, exact_kernel_of<K>>(                                         \
-      const exbsp::bsp_tree<K>&, const viewpoint<exact_kernel_of<K>>&, bool);                                     \
-  template void check_orders<K, exact_kernel_of<K>>(const exbsp::bsp_tree<K>&, const tree_view<exact_kernel_of<K>>&, \
-                                                    viewpoint<exact_kernel_of<K>>, std::size_t, check_report&, int); \
-  template check_report check_tree<K>(const exbsp::bsp_tree<K>&, const exbsp::triangle_soup&, const check_options&);
+#define EXBSP_CHECKER_FOR_KERNEL(K)                                                           \
+  template tree_view<exact_kernel_of<K>> view_of<exact_kernel_of<K>, K>(                      \
+      const exbsp::bsp_tree<K>&, const exbsp::triangle_soup&);                                \
+  template std::vector<std::uint32_t> tree_order<K, exact_kernel_of<K>>(                      \
+      const exbsp::bsp_tree<K>&, const viewpoint<exact_kernel_of<K>>&, bool);                 \
+  template void check_orders<K, exact_kernel_of<K>>(                                          \
+      const exbsp::bsp_tree<K>&, const tree_view<exact_kernel_of<K>>&,                        \
+      viewpoint<exact_kernel_of<K>>, std::size_t, check_report&, int);                        \
+  template check_report check_tree<K>(const exbsp::bsp_tree<K>&, const exbsp::triangle_soup&, \
+                                      const check_options&);
 
 EXBSP_CHECKER_FOR_EXACT(exbsp::epeck_kernel)
 EXBSP_CHECKER_FOR_EXACT(exbsp::gmpq_kernel)

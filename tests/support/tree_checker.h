@@ -61,13 +61,13 @@ struct tree_view {
     std::uint32_t depth;
   };
   std::vector<triangle> fragments;
-  std::vector<char> finite;              ///< false: a coordinate was NaN/Inf (inexact kernels)
+  std::vector<char> finite;  ///< false: a coordinate was NaN/Inf (inexact kernels)
   std::vector<std::uint32_t> source, face;
-  std::vector<std::size_t> node_of;      ///< as the tree reports it (node_of_fragment)
+  std::vector<std::size_t> node_of;  ///< as the tree reports it (node_of_fragment)
   std::vector<node> nodes;
-  std::vector<triangle> sources;         ///< input triangles, exact doubles from the soup
+  std::vector<triangle> sources;  ///< input triangles, exact doubles from the soup
   std::vector<std::uint32_t> source_face;
-  std::vector<char> degenerate;          ///< exactly collinear input, computed here
+  std::vector<char> degenerate;  ///< exactly collinear input, computed here
   exbsp::build_stats stats;
   std::size_t nonfinite = 0;
 };
@@ -114,8 +114,8 @@ void check_node_planes(const tree_view<E>& v, check_report& r);
 
 /// Statistics against the tree and the input ("stats"). `expected_heuristic` empty: not checked.
 template <class E>
-void check_stats(const tree_view<E>& v, const std::string& expected_kernel, const std::string& expected_heuristic,
-                 check_report& r);
+void check_stats(const tree_view<E>& v, const std::string& expected_kernel,
+                 const std::string& expected_heuristic, check_report& r);
 
 /// An eye point or a direction of projection (from the eye into the scene).
 template <class E>
@@ -143,8 +143,9 @@ struct order_tally {
 /// fragment the ray crosses is ever missed, and interval signs reject most of them before the
 /// exact test (`prune` false: every fragment is a candidate, for testing the pruning).
 template <class E>
-order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp, const std::vector<std::uint32_t>& order,
-                                   std::size_t max_rays, check_report& r, bool prune = true);
+order_tally check_order_along_rays(const tree_view<E>& v, const viewpoint<E>& vp,
+                                   const std::vector<std::uint32_t>& order, std::size_t max_rays,
+                                   check_report& r, bool prune = true);
 
 /// Viewpoints for a view: a random eye, an eye exactly on a node's plane (outside its
 /// triangle), an eye at a fragment vertex (a split point: on several planes), an eye at an
@@ -155,26 +156,28 @@ std::vector<viewpoint<E>> standard_viewpoints(const tree_view<E>& v, std::uint64
 /// The tree's own order for a viewpoint; for inexact kernels the viewpoint's coordinates are
 /// rounded to double first.
 template <class K, class E>
-std::vector<std::uint32_t> tree_order(const exbsp::bsp_tree<K>& t, const viewpoint<E>& vp, bool back_to_front = true);
+std::vector<std::uint32_t> tree_order(const exbsp::bsp_tree<K>& t, const viewpoint<E>& vp,
+                                      bool back_to_front = true);
 
 /// All order checks for one viewpoint: a permutation, the contract's traversal, front-to-back
 /// is the exact reverse, and the exact ray check. `v` may be the tree's view scaled by 2^k
 /// (see check_tree); the tree itself is asked with the unscaled viewpoint.
 template <class K, class E>
-void check_orders(const exbsp::bsp_tree<K>& t, const tree_view<E>& v, viewpoint<E> vp, std::size_t max_rays,
-                  check_report& r, int k = 0);
+void check_orders(const exbsp::bsp_tree<K>& t, const tree_view<E>& v, viewpoint<E> vp,
+                  std::size_t max_rays, check_report& r, int k = 0);
 
 /// Options of a full check.
 struct check_options {
-  std::uint64_t seed = 1;        ///< viewpoints
-  std::size_t max_rays = 160;    ///< sample rays per viewpoint
-  std::size_t viewpoints = 6;    ///< at most this many of standard_viewpoints
-  std::string heuristic;         ///< expected in the stats (empty: not checked)
+  std::uint64_t seed = 1;               ///< viewpoints
+  std::size_t max_rays = 160;           ///< sample rays per viewpoint
+  std::size_t viewpoints = 6;           ///< at most this many of standard_viewpoints
+  std::string heuristic;                ///< expected in the stats (empty: not checked)
   std::vector<vec3d> eyes, directions;  ///< extra viewpoints, checked after the standard ones
 };
 
 /// Every invariant of tests/HARD_CASES.md for a built tree; the report says which broke.
 template <class K>
-check_report check_tree(const exbsp::bsp_tree<K>& t, const exbsp::triangle_soup& soup, const check_options& o);
+check_report check_tree(const exbsp::bsp_tree<K>& t, const exbsp::triangle_soup& soup,
+                        const check_options& o);
 
 }  // namespace exbsp_test
