@@ -5,7 +5,7 @@ import os
 
 import common
 from common import CAD, DEFAULT_KERNEL, HEURISTICS, INEXACT
-from report import accuracy_ratios, corpus_rows_by_heuristic, fragments_per_triangle, status_cell
+from report import accuracy_ratios, corpus_rows_by_heuristic, fragments_per_triangle, ok_wall, peers_by, status_cell
 
 COLORS = {"double": "#888888", "epick": "#4c72b0", "exact": "#c44e52", "epeck": "#dd8452", "gmpq": "#8172b2",
           "naive": "#dd8452", "min-split": "#55a868", "sampled": "#c44e52", "random": "#4c72b0"}
@@ -218,6 +218,40 @@ def render_frame_plot(plt, render, outdir):
     plt.close(fig)
 
 
+def peers_plot(plt, acc, peers, cfg, outdir):
+    """Per mesh: the default kernel's build time over double's, and each JavaScript BSP's over
+    the default kernel's (bars over 1: exbsp faster)."""
+    by = {(r["input"], r["kernel"]): r for r in acc}
+    meshes = [m for m in cfg["corpus_cad"] + cfg["corpus_organic"] if ok_wall(by.get((m, DEFAULT_KERNEL)))]
+    if not meshes or not peers:
+        return
+    pby = peers_by(peers)
+    tools = sorted({t for _, t in pby})
+    series = [(f"{DEFAULT_KERNEL} / double", COLORS[DEFAULT_KERNEL],
+               [ok_wall(by[(m, DEFAULT_KERNEL)]) / ok_wall(by.get((m, "double")))
+                if ok_wall(by.get((m, "double"))) else None for m in meshes])]
+    for t, color in zip(tools, ["#4c72b0", "#55a868", "#8172b2"]):
+        series.append((f"{t} / {DEFAULT_KERNEL}", color,
+                       [pby.get((m, t), {}).get("build_seconds", 0) / ok_wall(by[(m, DEFAULT_KERNEL)]) or None
+                        for m in meshes]))
+    width = 0.8 / len(series)
+    fig, ax = plt.subplots(figsize=(11, 4.5))
+    ax.set_yscale("log")
+    for i, (label, color, vals) in enumerate(series):
+        xs = [j + (i - (len(series) - 1) / 2) * width for j in range(len(meshes))]
+        ax.bar([x for x, v in zip(xs, vals) if v], [v for v in vals if v], width, label=label, color=color)
+    ax.axhline(1.0, color="black", linewidth=0.8)
+    ax.axhline(1.5, color="black", linestyle="--", linewidth=1, label=f"goal: {DEFAULT_KERNEL} / double ≤ 1.5×")
+    ax.set_xticks(range(len(meshes)))
+    ax.set_xticklabels(mesh_labels(meshes), rotation=40, ha="right", fontsize=8)
+    ax.set_ylabel("build time ratio (log; same machine, same run)")
+    ax.set_title(f"{DEFAULT_KERNEL} over double, and the JavaScript BSPs over {DEFAULT_KERNEL} (> 1: exbsp faster)")
+    ax.legend(fontsize=8, loc="upper left")
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "peers.png"), dpi=90)
+    plt.close(fig)
+
+
 def draw_all(data, cfg, outdir):
     import matplotlib
     matplotlib.use("Agg")
@@ -230,3 +264,4 @@ def draw_all(data, cfg, outdir):
     heuristic_sweep_plot(plt, data["sticks"], "sticks", outdir)
     heuristics_corpus_plot(plt, data["corpus"], data["accuracy"], cfg, outdir)
     render_frame_plot(plt, data["render"], outdir)
+    peers_plot(plt, data["accuracy"], data.get("peers", []), cfg, outdir)

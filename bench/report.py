@@ -544,30 +544,151 @@ def short_function(fn):
 # The whole report
 
 
-def goals_table(acc_sum, heur_sum, acc_rows):
+# Issue 10's goals for the default kernel: build time over double (median, worst), bytes per
+# fragment, refined_elephant on 2 cores, naive on the stacked input, faster than csg.js.
+GOAL_RATIO, GOAL_WORST, GOAL_BYTES, GOAL_ELEPHANT, GOAL_STACK = 1.5, 2.0, 120, 2.5, 60
+
+
+def ok_wall(r):
+    """The median wall time of a row that finished, else None."""
+    return r.get("build_seconds_median") if r and r.get("status", "ok") == "ok" else None
+
+
+def peers_by(peers):
+    """{(mesh name, tool): row} of the peers' JSON lines."""
+    return {(os.path.basename(r.get("mesh", "")).replace(".off", ""), r.get("tool")): r for r in peers
+            if r.get("tool")}
+
+
+def peer_tools(peers):
+    return sorted({r["tool"] for r in peers if r.get("tool")})
+
+
+def stacked_seconds(r):
+    """The default kernel's time on the stacked input: the timed round, else the counted build."""
+    if r.get("status", "ok") != "ok":
+        return None
+    return r.get("build_seconds_median") or r.get("counted_build_seconds")
+
+
+def goals_table(acc_sum, heur_sum, acc_rows, stacked=(), peers=(), cfg=None):
+    """The goal table at the top of the report (issue 10's goals first)."""
     goals = []
+    d = DEFAULT_KERNEL
     if acc_sum.get("cad_count"):
-        goals.append([f"`{DEFAULT_KERNEL}` (default) build within 1.5× of the double build (CAD corpus, sampled)",
+        goals.append([f"`{d}` build / `double` build, same heuristic (sampled), CAD corpus: median ≤ {GOAL_RATIO}×",
                       f"median {acc_sum['cad_median']:.2f}× wall ({acc_sum.get('cad_cpu_median') or 0:.2f}× CPU), "
                       f"{len(acc_sum['cad_within'])} of {acc_sum['cad_count']} meshes within",
-                      "met" if acc_sum["cad_median"] <= 1.5 else "not met"])
+                      "met" if acc_sum["cad_median"] <= GOAL_RATIO else "not met"])
+        worst_m, worst = acc_sum["cad_max"]
+        goals.append([f"… and worst ≤ {GOAL_WORST}×", f"{worst:.2f}× ({worst_m})",
+                      "met" if worst <= GOAL_WORST else "not met"])
+    bpf = [(r["input"], r["peak_heap_bytes_per_fragment"]) for r in acc_rows
+           if r["kernel"] == d and r.get("status", "ok") == "ok" and r.get("peak_heap_bytes_per_fragment")]
+    if bpf:
+        worst = max(bpf, key=lambda x: x[1])
+        goals.append([f"peak heap per stored fragment with `{d}` ≤ {GOAL_BYTES} B (every mesh)",
+                      f"median {common.median(b for _, b in bpf):.0f} B, largest {worst[1]:.0f} B ({worst[0]})",
+                      "met" if worst[1] <= GOAL_BYTES else "not met"])
+    elephant = next((r for r in acc_rows if r["input"] == "refined_elephant" and r["kernel"] == d), None)
+    if ok_wall(elephant):
+        t = ok_wall(elephant)
+        goals.append([f"refined_elephant (89k triangles), `{d}`, default heuristic, 2 cores: under {GOAL_ELEPHANT} s",
+                      f"{t:.2f} s wall, {elephant.get('cpu_seconds_median', 0):.2f} s CPU "
+                      f"({fmt_int(elephant['fragments'])} fragments)", "met" if t < GOAL_ELEPHANT else "not met"])
+    for r in stacked:
+        if r["kernel"] != d:
+            continue
+        t = stacked_seconds(r)
+        goals.append([f"naive on {fmt_int(r['triangles'])} stacked triangles (depth {fmt_int(r['triangles'])}), "
+                      f"`{d}`: under {GOAL_STACK} s",
+                      f"{t:.1f} s (depth {fmt_int(r.get('depth'))})" if t else status_cell(r) or "—",
+                      "met" if t and t < GOAL_STACK else "not met"])
+    if peers:
+        by = {(r["input"], r["kernel"]): r for r in acc_rows}
+        pby = peers_by(peers)
+        for tool in peer_tools(peers):
+            wins, total, losers = 0, 0, []
+            for m in CAD:
+                we, s = ok_wall(by.get((m, d))), pby.get((m, tool), {}).get("build_seconds")
+                if we and s:
+                    total += 1
+                    wins += we < s
+                    if we >= s:
+                        losers.append(m)
+            if total:
+                goals.append([f"`{d}` builds faster than {tool} on every CAD mesh",
+                              f"{wins} of {total}" + (f" (slower on {', '.join(losers)})" if losers else ""),
+                              "met" if wins == total else "not met"])
     if heur_sum.get("cad_best"):
         met = len(heur_sum["cad_met"]) == len(heur_sum["cad_best"])
         goals.append(["≤ 1.3 fragments per input triangle on CAD (best heuristic per mesh)",
                       f"{len(heur_sum['cad_met'])} of {len(heur_sum['cad_best'])} meshes; sampled geometric mean "
                       + (f"{heur_sum['sampled_geo']:.2f}" if heur_sum.get("sampled_geo") else "—"),
                       "met" if met else "not met"])
-    elephant = next((r for r in acc_rows if r["input"] == "refined_elephant" and r["kernel"] == DEFAULT_KERNEL), None)
-    if elephant and elephant["status"] == "ok":
-        t = elephant["build_seconds_median"]
-        cpu = elephant.get("cpu_seconds_median", 0)
-        status = "met" if t < 10 else (
-            f"not met in this run (cores shared); CPU time / 2 = {cpu / 2:.1f} s, under 10 s if both "
-            f"cores were free and the work split evenly" if cpu / 2 < 10 else "not met")
-        goals.append([f"refined_elephant (89k triangles) in under 10 s on 2 cores (`{DEFAULT_KERNEL}`, sampled)",
-                      f"{t:.1f} s wall, {cpu:.1f} s CPU over the build threads ({fmt_int(elephant['fragments'])} "
-                      "fragments)", status])
     return table(["goal", "measured", "status"], goals) if goals else "(no corpus data in this run)"
+
+
+def goals_per_mesh(acc_rows, peers):
+    """Per CAD mesh: the default kernel's time over double, its bytes per fragment and csg.js's
+    time over it."""
+    d = DEFAULT_KERNEL
+    by = {(r["input"], r["kernel"]): r for r in acc_rows}
+    pby = peers_by(peers)
+    tools = peer_tools(peers)
+    rows = []
+    for m in CAD:
+        e, x = by.get((m, d)), by.get((m, "double"))
+        if not e:
+            continue
+        we, wx = ok_wall(e), ok_wall(x)
+        row = [m, fmt_s(we), fmt_s(wx) if wx else (status_cell(x) if x else "—"),
+               fmt_ratio(we / wx if we and wx else None),
+               f"{e['peak_heap_bytes_per_fragment']:.0f}" if e.get("peak_heap_bytes_per_fragment") else "—"]
+        for t in tools:
+            s = pby.get((m, t), {}).get("build_seconds")
+            row.append(f"{s / we:.2f}×" if s and we else "—")
+        rows.append(row)
+    if not rows:
+        return ""
+    hdr = ["CAD mesh", f"{d} s", "double s", f"{d} / double", "B/fragment"] + [f"{t} / {d}" for t in tools]
+    return table(hdr, rows)
+
+
+def section_peers(acc_rows, peers, node, plot_rel):
+    """Section 6: csg.js and JSCAD built side by side with exbsp on the same meshes."""
+    lines = ["## 6. Peers: JavaScript BSPs with an epsilon (bench/peers)", ""]
+    if not peers:
+        lines.append("Skipped in this run: node/npm missing or bench/peers absent (bench/peers/README.md).")
+        return "\n".join(lines)
+    d = DEFAULT_KERNEL
+    by = {(r["input"], r["kernel"]): r for r in acc_rows}
+    pby = peers_by(peers)
+    tools = peer_tools(peers)
+    versions = ", ".join(sorted({f"{r['tool']} {r.get('version', '')}".strip() for r in peers if r.get("tool")}))
+    lines += [f"Tools: {versions}, run by Node {node or '(version not recorded)'} on the same machine in the "
+              "same run as section 1 (best of 3 builds each). They store convex polygons; `triangles` counts them "
+              "fan-triangulated, to compare with exbsp's stored triangles. Ratios over 1 mean exbsp is faster.",
+              ""]
+    hdr = ["mesh", f"{d} s", f"{d} fragments"]
+    for t in tools:
+        hdr += [f"{t} s", f"{t} triangles", f"{t} / {d}"]
+    rows = []
+    meshes = [m for m in CAD + ORGANIC if by.get((m, d))]
+    for m in meshes:
+        e = by[(m, d)]
+        we = ok_wall(e)
+        row = [m + ("" if m in CAD else "*"), fmt_s(we), fmt_int(e.get("fragments"))]
+        for t in tools:
+            r = pby.get((m, t), {})
+            s = r.get("build_seconds")
+            row += [fmt_s(s) if s else (r.get("error", "—")[:30] if r else "—"),
+                    fmt_int(r.get("pieces_triangulated")) if r.get("pieces_triangulated") is not None else "—",
+                    f"{s / we:.2f}×" if s and we else "—"]
+        rows.append(row)
+    lines.append(table(hdr, rows))
+    lines += ["", "\\* organic mesh.", "", f"![{d} and the JavaScript BSPs against double]({plot_rel}/peers.png)", ""]
+    return "\n".join(lines)
 
 
 METHOD_NOTES = [
@@ -613,10 +734,13 @@ def write(path, meta, cfg, data, plot_rel, command):
         "",
         "## Goals: where we stand",
         "",
-        goals_table(acc_sum, heur_sum, acc),
+        goals_table(acc_sum, heur_sum, acc, data.get("stacked", []), data.get("peers", []), cfg),
+        "",
+        goals_per_mesh(acc, data.get("peers", [])),
         "",
     ]
     text = "\n".join(head) + "\n" + acc_text + "\n" + heur_text + "\n" + section_render(data["render"], plot_rel) + \
-        "\n" + micro_text + "\n" + section_profile(data.get("profile")) + "\n\n" + "\n".join(METHOD_NOTES)
+        "\n" + micro_text + "\n" + section_profile(data.get("profile")) + "\n\n" + \
+        section_peers(acc, data.get("peers", []), data.get("node", ""), plot_rel) + "\n\n" + "\n".join(METHOD_NOTES)
     with open(path, "w") as f:
         f.write(text)

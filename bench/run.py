@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
 """Regenerates bench/RESULTS.md and bench/plots/*.png: the ONE command of the benchmarks.
 
-    bench/run.py                the full run (about 40 minutes on the 2-core reference machine)
+    bench/run.py                the full run (about 50 minutes on the 2-core reference machine)
     bench/run.py --quick        small inputs only (a few minutes), to check that everything runs;
                                 writes bench/out/quick/RESULTS.md and bench/out/quick/plots/ instead
     bench/run.py --report-only  rewrites the report and plots from the raw data of the last run
 
 It builds the bench targets in Release (build-bench/, -DEXBSP_BUILD_BENCH=ON), runs bench_sweep,
-bench_render, bench_micro and perf, keeps the raw JSON lines in bench/out/ (git-ignored) and writes
-the report. Every figure in the report comes from this run. This file runs the measurements;
+bench_render, bench_micro and perf, the naive heuristic on 100,000 stacked triangles (a tree of
+depth 100,000) and the JavaScript BSPs users would otherwise pick (bench/peers: csg.js and JSCAD,
+with Node; skipped with a message where node is missing), keeps the raw JSON lines in bench/out/
+(git-ignored) and writes the report. Every figure in the report comes from this run. This file runs the measurements;
 report.py writes the prose and tables, plots.py the plots, perf_profile.py reads the profiles,
 common.py holds what they share.
 """
@@ -52,6 +54,9 @@ FULL = {
     "render_frames": 5,
     "profile_mesh": "fandisk",
     "micro_min_time": "0.2",
+    "stack_n": 100000,            # naive on n stacked triangles: depth n (issue 10's goal: under 60 s)
+    "stack_epeck_cap": 120,       # Epeck needs minutes there: its counted build only, capped
+    "peers": True,                # csg.js and JSCAD (bench/peers, Node) on the corpus
 }
 QUICK = dict(FULL, **{
     "repeats": 1,
@@ -69,6 +74,8 @@ QUICK = dict(FULL, **{
     "render_frames": 2,
     "profile_mesh": "joint",
     "micro_min_time": "0.01",
+    "stack_n": 20000,
+    "stack_epeck_cap": 30,
 })
 
 
@@ -180,6 +187,43 @@ def stage_micro(cfg, out):
         log(f"warning: micro: {e}")
 
 
+def stacked_off(path, n):
+    """n parallel triangles at z = 0 .. n-1: naive builds a tree of depth n."""
+    with open(path, "w") as f:
+        f.write(f"OFF\n{3 * n} {n} 0\n")
+        for i in range(n):
+            f.write(f"0 0 {i}\n1 0 {i}\n0 1 {i}\n")
+        for i in range(n):
+            f.write(f"3 {3 * i} {3 * i + 1} {3 * i + 2}\n")
+
+
+def stage_stacked(cfg, out, outdir):
+    """Naive on cfg["stack_n"] stacked triangles with the default kernel and Epeck (one counted
+    build each; the default kernel also one timed round)."""
+    n = cfg["stack_n"]
+    path = os.path.join(outdir, f"stacked_{n}.off")
+    stacked_off(path, n)
+    sweep(dict(cfg, time_cap=600), out, "stacked", ["mesh:" + path], [DEFAULT_KERNEL, "epeck"], ["naive"], 1,
+          ["--max-fragments", str(n + 1), "--time-cap-for", f"epeck={cfg['stack_epeck_cap']}",
+           "--repeats-for", "epeck=0"], timeout=7200)
+
+
+def stage_peers(cfg, out):
+    """csg.js and JSCAD on the corpus (bench/peers/run.sh, which installs them with npm); their
+    JSON lines are copied to `out`."""
+    script = os.path.join(HERE, "peers", "run.sh")
+    produced = os.path.join(HERE, "out", "peers.jsonl")
+    if os.path.exists(produced):
+        os.remove(produced)
+    meshes = [mesh_path(m) for m in available(cfg["corpus_cad"] + cfg["corpus_organic"])]
+    try:
+        run(["sh", script] + meshes, timeout=3600)
+    except (OSError, subprocess.CalledProcessError, subprocess.TimeoutExpired) as e:
+        log(f"warning: peers: {e}")
+    if os.path.exists(produced):
+        os.replace(produced, out)
+
+
 PROFILE_KERNELS = [DEFAULT_KERNEL, "epeck", "double"]
 
 
@@ -213,7 +257,16 @@ def load_data(outdir):
         "render": load_jsonl(os.path.join(outdir, "render.jsonl")),
         "micro": json.load(open(micro)) if os.path.exists(micro) else None,
         "profile": profile,
+        "stacked": load_jsonl(os.path.join(outdir, "stacked.jsonl")),
+        "peers": load_jsonl(os.path.join(outdir, "peers.jsonl")),
+        "node": meta_node(outdir),
     }
+
+
+def meta_node(outdir):
+    """Node's version as recorded in the run's metadata (empty when node was missing)."""
+    meta = os.path.join(outdir, "meta.json")
+    return json.load(open(meta)).get("node", "") if os.path.exists(meta) else ""
 
 
 def main():
@@ -239,11 +292,16 @@ def main():
         if not args.no_build:
             build()
         meta = machine()
-        for name in ["accuracy.jsonl", "heuristics.jsonl", "render.jsonl", "micro.json", "profile.json"]:
+        for name in ["accuracy.jsonl", "heuristics.jsonl", "render.jsonl", "micro.json", "profile.json",
+                     "stacked.jsonl", "peers.jsonl"]:
             if os.path.exists(os.path.join(outdir, name)):
                 os.remove(os.path.join(outdir, name))
         stage_accuracy(cfg, os.path.join(outdir, "accuracy.jsonl"))
         stage_heuristics(cfg, os.path.join(outdir, "heuristics.jsonl"))
+        stage_stacked(cfg, os.path.join(outdir, "stacked.jsonl"), outdir)
+        if cfg.get("peers"):
+            stage_peers(cfg, os.path.join(outdir, "peers.jsonl"))
+            meta["node"] = capture(["node", "--version"])
         stage_render(cfg, os.path.join(outdir, "render.jsonl"), outdir)
         stage_micro(cfg, os.path.join(outdir, "micro.json"))
         json.dump(stage_profile(cfg, outdir), open(os.path.join(outdir, "profile.json"), "w"))

@@ -140,20 +140,53 @@ class Profile(unittest.TestCase):
         self.assertIn("perf did not run", report.section_profile({"mesh": "joint", "exact": {"error": "no perf"}}))
 
 
+STACKED = [build_row("stacked_1000", "exact", 12.0, 1000, label="stacked", heuristic="naive", triangles=1000),
+           build_row("stacked_1000", "epeck", None, None, status="time_cap", label="stacked", heuristic="naive",
+                     triangles=1000)]
+PEERS = [{"tool": "csg.js", "version": "1.0.1", "mesh": "/x/part.off", "build_seconds": 0.01,
+          "pieces_triangulated": 300},
+         {"tool": "csg.js", "version": "1.0.1", "mesh": "/x/blade.off", "build_seconds": 0.6,
+          "pieces_triangulated": 2000},
+         {"tool": "jscad", "version": "2.13.0", "mesh": "/x/part.off", "error": "out of memory"}]
+
+
+class Goals(unittest.TestCase):
+    def test_goal_table_states_issue_10s_goals(self):
+        _, acc_sum = report.section_accuracy(ACCURACY, CFG, "plots")
+        text = report.goals_table(acc_sum, {}, ACCURACY, STACKED, PEERS, CFG)
+        self.assertIn("median 1.50× wall", text)
+        self.assertIn("| … and worst ≤ 2.0× | 1.50× (part) | met |", text)
+        self.assertIn("median 900 B, largest 900 B", text)
+        self.assertIn("| naive on 1 000 stacked triangles (depth 1 000), `exact`: under 60 s | 12.0 s", text)
+        # csg.js: part 0.01 s < exact 0.015 s (exbsp slower), blade 0.6 s > 0.3 s.
+        self.assertIn("| `exact` builds faster than csg.js on every CAD mesh | 1 of 2 (slower on part) | not met |",
+                      text)
+        self.assertNotIn("faster than jscad", text)  # jscad has no time on any mesh
+
+    def test_per_mesh_table_and_peers_section(self):
+        per_mesh = report.goals_per_mesh(ACCURACY, PEERS)
+        self.assertIn("| part | 15.0 ms | 10.0 ms | 1.50× | 900 | 0.67× | — |", per_mesh)
+        text = report.section_peers(ACCURACY, PEERS, "v18", "plots")
+        self.assertIn("Node v18", text)
+        self.assertIn("out of memory", text)
+        self.assertIn("Skipped in this run", report.section_peers(ACCURACY, [], "", "plots"))
+
+
 class WholeReport(unittest.TestCase):
     def test_write_and_plot(self):
         meta = {"quick": True, "minutes": 1, "cpu": "cpu", "nproc": "2", "memory_gib": 1, "kernel": "Linux",
                 "compiler": "c++", "cgal": "5.5", "load_start": [1, 1, 1], "load_end": [2, 2, 2], "commit": "abc",
                 "dirty": False, "date": "today"}
         data = {"accuracy": ACCURACY, "soup": Heuristics().rows(), "sticks": [], "corpus": [], "render": [],
-                "micro": None, "profile": {}}
+                "micro": None, "profile": {}, "stacked": STACKED, "peers": PEERS, "node": "v18"}
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, "RESULTS.md")
             report.write(path, meta, CFG, data, "plots", "bench/run.py --quick")
             with open(path) as f:
                 text = f.read()
             self.assertIn("## Goals: where we stand", text)
-            self.assertIn("| `exact` (default) build within 1.5× of the double build", text)
+            self.assertIn("| `exact` build / `double` build, same heuristic (sampled), CAD corpus: median ≤ 1.5×", text)
+            self.assertIn("## 6. Peers", text)
             try:
                 import matplotlib  # noqa: F401
             except ImportError:
@@ -162,7 +195,7 @@ class WholeReport(unittest.TestCase):
             plots.draw_all(data, CFG, os.path.join(d, "plots"))
             self.assertEqual(sorted(os.listdir(os.path.join(d, "plots"))),
                              ["accuracy_defects.png", "accuracy_ratio.png", "heuristics_corpus.png",
-                              "heuristics_soup.png"])
+                              "heuristics_soup.png", "peers.png"])
 
 
 if __name__ == "__main__":
