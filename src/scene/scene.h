@@ -1,7 +1,7 @@
 // Scene files (DESIGN.md section 5): parsing, validation, view setup and geometry loading.
 //
 // Notation: every error names the scene file and the offending key as a JSON pointer
-// ("/meshes/0/color/1", "/projection/near"); see scene_error in mesh/errors.h. Mesh paths are
+// ("/meshes/0/color/1", "/projection/near"); see scene_error in core/errors.h. Mesh paths are
 // relative to the scene file's directory. A mesh transform is 16 numbers, row-major, acting on
 // column vectors (view/matrix.h); it is applied in double and the results are the exact input
 // of the BSP.

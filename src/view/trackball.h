@@ -29,7 +29,7 @@
 //   rotation (which the arcball's doubling avoids), and a full turn needs twice the drag.
 //   The rotation turns the scene as seen from the camera (in eye coordinates); orbit_camera()
 //   turns the camera the other way about the look-at point to get the same picture.
-// Precondition failures throw exbsp::usage_error (src/mesh/errors.h); nothing aborts.
+// Precondition failures throw exbsp::usage_error (src/core/errors.h); nothing aborts.
 #pragma once
 #include <array>
 #include <vector>
