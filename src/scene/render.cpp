@@ -94,7 +94,7 @@ std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(
         "orbit: a phigs camera is fixed (its projection is tied to its view reference frame); "
         "use eye/look_at/up, position/look/up, polar or pilot");
   const arcball ball(s.width, s.height, screen_y::down,
-                     s.trackball == "virtual" ? trackball_kind::virtual_ : trackball_kind::arcball);
+                     trackball_named(s.trackball).value_or(trackball_kind::arcball));
   const std::vector<quaternion> turns = ball.drag_path(points);
   const view::camera_basis b0 = view::look_at_basis(s.camera.eye, s.camera.look_at, s.camera.up);
   const view::vector3& d = s.projection.direction;
@@ -135,7 +135,7 @@ render_summary render_command(const render_request& request, std::ostream& log) 
                        ? scene::demo_scene()
                        : scene::load_scene(request.scene_path, &log, request.strict);
   if (!request.trackball.empty()) {
-    if (request.trackball != "arcball" && request.trackball != "virtual")
+    if (!trackball_named(request.trackball))
       throw usage_error("render: --trackball must be arcball or virtual, got " + request.trackball);
     s.trackball = request.trackball;
   }
