@@ -96,6 +96,14 @@ RC_GTEST_PROP(Quaternion, MatrixAgreesWithRotationAndIsOrthonormal, ()) {
   RC_ASSERT(h[15] == 1.0);
 }
 
+TEST(TrackballName, OnlyTheTwoNamesAreKnown) {
+  EXPECT_FALSE(exbsp::trackball_named(""));
+  EXPECT_FALSE(exbsp::trackball_named("Arcball"));  // names are case-sensitive, as JSON keys
+  EXPECT_FALSE(exbsp::trackball_named("virtual_"));
+  EXPECT_EQ(exbsp::trackball_named("arcball"), exbsp::trackball_kind::arcball);
+  EXPECT_EQ(exbsp::trackball_named("virtual"), exbsp::trackball_kind::virtual_);
+}
+
 TEST(Quaternion, QuarterTurnAboutZMapsXToY) {
   const quaternion q = exbsp::from_axis_angle({0, 0, 2}, pi / 2);
   const vec3d r = exbsp::rotate(q, {1, 0, 0});

@@ -28,6 +28,7 @@
 #include "core/version.h"
 #include "clip/section.h"
 #include "core/errors.h"
+#include "core/file_name.h"
 #include "mesh/gmp_memory.h"
 #include "mesh/mesh_io.h"
 #include "scene/clip_input.h"
@@ -310,12 +311,10 @@ int run_order(const build_cli& o, const std::string& eye, const std::string& dir
 int run_section(const std::string& mesh, const std::string& format, const std::string& plane_text,
                 const std::string& out_path) {
   const exbsp::section_plane plane = exbsp::cli::parse_plane(plane_text);
-  const auto ends_with = [&](const char* ext) {
-    const std::size_t n = std::strlen(ext);
-    return out_path.size() >= n && out_path.compare(out_path.size() - n, n, ext) == 0;
-  };
-  const bool off = ends_with(".off"), svg = ends_with(".svg");
-  if (!out_path.empty() && out_path != "-" && !off && !svg && !ends_with(".json"))
+  const bool off = exbsp::has_extension(out_path, ".off"),
+             svg = exbsp::has_extension(out_path, ".svg");
+  if (!out_path.empty() && out_path != "-" && !off && !svg &&
+      !exbsp::has_extension(out_path, ".json"))
     throw exbsp::usage_error("-o/--output: section writes .json, .off or .svg, not '" + out_path +
                              "'");
   const exbsp::triangle_soup soup = exbsp::cli::read_mesh_input(mesh, format, std::cin);
@@ -343,15 +342,6 @@ struct render_cli {
   bool strict = false, verbose = false, quiet = false;
 };
 
-bool is_scene_path(const std::string& path) {
-  const std::string ext = ".json";
-  if (path.size() < ext.size()) return false;
-  std::string tail = path.substr(path.size() - ext.size());
-  std::transform(tail.begin(), tail.end(), tail.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return tail == ext;
-}
-
 /// `exbsp render`: a scene file, a mesh (fitted view, scene::mesh_scene) or the demo; a
 /// progress line during long builds and a one-line summary on standard error.
 int run_render(const render_cli& r) {
@@ -365,7 +355,7 @@ int run_render(const render_cli& r) {
       r.max_fragments ? *r.max_fragments
                       : default_fragment_budget(r.kernel.empty() ? exbsp::build_options{}.kernel
                                                                  : exbsp::parse_kernel(r.kernel));
-  const bool mesh_input = !r.input.empty() && !is_scene_path(r.input);
+  const bool mesh_input = !r.input.empty() && !exbsp::has_extension(r.input, ".json");
   if (!mesh_input && !r.format.empty())
     throw exbsp::usage_error(
         "--format applies to a mesh input, not to " +

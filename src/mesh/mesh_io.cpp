@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "core/errors.h"
+#include "core/file_name.h"
 #include "mesh/reader_util.h"
 
 namespace exbsp {
@@ -56,20 +57,16 @@ std::string read_input_file(const std::string& path) {
 }
 
 mesh_format mesh_format_for_path(const std::string& path) {
-  const std::size_t slash = path.find_last_of('/');
-  const std::size_t dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+  const std::string ext = file_extension(path);
+  if (ext.empty())
     throw input_error(
         path, 0, std::string("no file extension; supported mesh formats: ") + supported_extensions);
-  std::string ext = path.substr(dot);
-  for (char& c : ext)
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  if (ext == ".off") return mesh_format::off;
-  if (ext == ".obj") return mesh_format::obj;
-  if (ext == ".ply") return mesh_format::ply;
-  if (ext == ".stl") return mesh_format::stl;
+  if (has_extension(path, ".off")) return mesh_format::off;
+  if (has_extension(path, ".obj")) return mesh_format::obj;
+  if (has_extension(path, ".ply")) return mesh_format::ply;
+  if (has_extension(path, ".stl")) return mesh_format::stl;
   throw input_error(path, 0,
-                    "unknown file extension " + mesh_detail::quote(path.substr(dot)) +
+                    "unknown file extension " + mesh_detail::quote(ext) +
                         "; supported mesh formats: " + supported_extensions);
 }
 

@@ -46,10 +46,7 @@ std::uint64_t parse_count(std::string_view token, const char* what, const std::s
     fail(file, line, std::string(what) + " " + quote(token) + " is not an integer");
   if (v < 0) fail(file, line, std::string(what) + " " + std::to_string(v) + " is negative");
   const auto count = static_cast<std::uint64_t>(v);
-  if (count > max_element_count)
-    fail(file, line,
-         std::string(what) + " " + std::to_string(count) + " exceeds the supported maximum " +
-             std::to_string(max_element_count));
+  check_element_count(count, what, file, line);
   return count;
 }
 

@@ -129,10 +129,7 @@ void check_elements(ply_header& header, const std::string& file) {
     if (e.name == "vertex") {
       if (vertex) fail(file, e.line, "second 'vertex' element");
       vertex = &e;
-      if (e.count > max_element_count)
-        fail(file, e.line,
-             "vertex count " + std::to_string(e.count) + " exceeds the supported maximum " +
-                 std::to_string(max_element_count));
+      check_element_count(e.count, "vertex count", file, e.line);
       const char* axes[] = {"x", "y", "z"};
       const ply_role roles[] = {ply_role::x, ply_role::y, ply_role::z};
       for (int a = 0; a < 3; ++a) {
@@ -148,10 +145,7 @@ void check_elements(ply_header& header, const std::string& file) {
     } else if (e.name == "face") {
       if (face) fail(file, e.line, "second 'face' element");
       face = &e;
-      if (e.count > max_element_count)
-        fail(file, e.line,
-             "face count " + std::to_string(e.count) + " exceeds the supported maximum " +
-                 std::to_string(max_element_count));
+      check_element_count(e.count, "face count", file, e.line);
       auto p = std::find_if(e.properties.begin(), e.properties.end(),
                             [](const ply_property& q) { return q.name == "vertex_indices"; });
       if (p == e.properties.end())

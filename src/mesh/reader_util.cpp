@@ -18,6 +18,14 @@ void fail(const std::string& file, std::size_t line, const std::string& what) {
   throw input_error(file, line, what);
 }
 
+void check_element_count(std::uint64_t count, const std::string& what, const std::string& file,
+                         std::size_t line) {
+  if (count > max_element_count)
+    fail(file, line,
+         what + " " + std::to_string(count) + " exceeds the supported maximum " +
+             std::to_string(max_element_count));
+}
+
 std::string quote(std::string_view token) {
   constexpr std::size_t max_shown = 40;
   static const char hex[] = "0123456789abcdef";

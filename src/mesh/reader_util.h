@@ -25,6 +25,11 @@ constexpr std::uint64_t max_element_count = 0xFFFFFFFFull;
 /// Throws input_error(file, line, what). Line 0 means "no line" (binary data, whole file).
 [[noreturn]] void fail(const std::string& file, std::size_t line, const std::string& what);
 
+/// Throws input_error(file, line, "WHAT COUNT exceeds the supported maximum ...") when the
+/// element count of a header (OFF, PLY) is above max_element_count.
+void check_element_count(std::uint64_t count, const std::string& what, const std::string& file,
+                         std::size_t line);
+
 /// `token` for an error message: in single quotes, at most 40 bytes, non-printable bytes
 /// written as \xNN, so binary garbage cannot corrupt a terminal.
 std::string quote(std::string_view token);

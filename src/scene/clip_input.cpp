@@ -2,7 +2,6 @@
 #include "scene/clip_input.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -12,6 +11,7 @@
 #include "clip/convex_region.h"
 #include "clip/liang_barsky.h"
 #include "core/errors.h"
+#include "core/file_name.h"
 #include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"
 #include "core/atomic_file.h"
@@ -384,16 +384,8 @@ std::string clip_svg(const clip_input& in, const json& result) {
 void clip_command(const std::string& input_path, const std::string& output_path,
                   const std::string& algorithm, bool verbose, std::ostream& out,
                   std::ostream& log) {
-  auto ends_with = [&](const char* ext) {
-    const std::string e(ext);
-    if (output_path.size() < e.size()) return false;
-    std::string tail = output_path.substr(output_path.size() - e.size());
-    std::transform(tail.begin(), tail.end(), tail.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return tail == e;
-  };
-  const bool svg = ends_with(".svg");
-  if (!output_path.empty() && !svg && !ends_with(".json"))
+  const bool svg = has_extension(output_path, ".svg");
+  if (!output_path.empty() && !svg && !has_extension(output_path, ".json"))
     throw usage_error("clip: the output file must end in .json or .svg: " + output_path);
   const clip_input in = load_clip_input(input_path);
   const json result = run_clip(in, algorithm, verbose ? &log : nullptr);

@@ -3,16 +3,15 @@
 // per-view stages per frame (notation in render.h).
 #include "scene/render.h"
 
-#include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string_view>
 
-#include "core/errors.h"
-#include "scene/demo_scene.h"
 #include "core/atomic_file.h"
+#include "core/errors.h"
+#include "core/file_name.h"
+#include "scene/demo_scene.h"
 #include "view/effects.h"
 #include "view/mesh_reject.h"
 #include "view/placement.h"
@@ -23,13 +22,6 @@
 namespace exbsp {
 
 namespace {
-
-bool ends_with_ci(const std::string& s, const std::string& suffix) {
-  if (s.size() < suffix.size()) return false;
-  return std::equal(suffix.rbegin(), suffix.rend(), s.rbegin(), [](char a, char b) {
-    return std::tolower(static_cast<unsigned char>(a)) == b;
-  });
-}
 
 std::string seconds_text(double s) {
   char buf[64];
@@ -102,7 +94,7 @@ std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(
         "orbit: a phigs camera is fixed (its projection is tied to its view reference frame); "
         "use eye/look_at/up, position/look/up, polar or pilot");
   const arcball ball(s.width, s.height, screen_y::down,
-                     s.trackball == "virtual" ? trackball_kind::virtual_ : trackball_kind::arcball);
+                     trackball_named(s.trackball).value_or(trackball_kind::arcball));
   const std::vector<quaternion> turns = ball.drag_path(points);
   const view::camera_basis b0 = view::look_at_basis(s.camera.eye, s.camera.look_at, s.camera.up);
   const view::vector3& d = s.projection.direction;
@@ -123,11 +115,11 @@ render_summary render_command(const render_request& request, std::ostream& log) 
   const std::string out =
       request.output_path.empty() ? std::string("exbsp.png") : request.output_path;
   view::output_kind kind;
-  if (out == "-" || ends_with_ci(out, ".png")) {
+  if (out == "-" || has_extension(out, ".png")) {
     kind = view::output_kind::png;
-  } else if (ends_with_ci(out, ".svg")) {
+  } else if (has_extension(out, ".svg")) {
     kind = view::output_kind::svg;
-  } else if (ends_with_ci(out, ".pdf")) {
+  } else if (has_extension(out, ".pdf")) {
     kind = view::output_kind::pdf;
   } else {
     throw usage_error("render: the output file must end in .png, .svg or .pdf: " + out);
@@ -143,7 +135,7 @@ render_summary render_command(const render_request& request, std::ostream& log) 
                        ? scene::demo_scene()
                        : scene::load_scene(request.scene_path, &log, request.strict);
   if (!request.trackball.empty()) {
-    if (request.trackball != "arcball" && request.trackball != "virtual")
+    if (!trackball_named(request.trackball))
       throw usage_error("render: --trackball must be arcball or virtual, got " + request.trackball);
     s.trackball = request.trackball;
   }

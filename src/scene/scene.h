@@ -1,7 +1,7 @@
 // Scene files (DESIGN.md section 5): parsing, validation, view setup and geometry loading.
 //
 // Notation: every error names the scene file and the offending key as a JSON pointer
-// ("/meshes/0/color/1", "/projection/near"); see scene_error in mesh/errors.h. Mesh paths are
+// ("/meshes/0/color/1", "/projection/near"); see scene_error in core/errors.h. Mesh paths are
 // relative to the scene file's directory. A mesh transform is 16 numbers, row-major, acting on
 // column vectors (view/matrix.h); it is applied in double and the results are the exact input
 // of the BSP.
@@ -53,21 +53,10 @@
 // pieces enter the BSP as the nearest doubles of their exact points, like every other input.
 //
 // Effects: "effects": {NAME: true | false | {PARAM: value, ...}}; NAME from
-// view::effect_catalog(), whose entry also reads the parameters (view/<effect>.h); `true` or
-// {} takes every default; an unknown NAME or PARAM, or a bad value, is a scene_error naming
-// /effects/NAME or /effects/NAME/PARAM. Parameters and defaults:
-//   backface_culling  (none)
-//   lighting          direction [0,0,1] (towards the light, not zero), intensity 0.8 (>= 0),
-//                     ambient 0.2 (>= 0), two_sided true
-//   fog               mode "linear" (start = near, end = far; 0 <= start < end) or "exp"
-//                     (density > 0, default ln(255)/far: 1/255 visibility at the far plane);
-//                     color = the background; a linear end beyond far is warned about
-//   depth_of_field    focal_length (> 0, required), aperture (lens diameter > 0) or f_number
-//                     (> 0; aperture = focal_length / f_number), exactly one of them,
-//                     focus_distance (> focal_length, required), samples 32 (2..1024);
-//                     perspective and frustum projections only
-//   antialias         samples 4 (1..8: N x N sub-pixels; N times the
-//                     viewport must stay within max_viewport_side)
+// view::effect_catalog() (backface_culling, lighting, fog, depth_of_field, antialias), whose
+// entry also reads the parameters: each effect's parameters and defaults are documented once,
+// at its reader in view/<effect>.h. `true` or {} takes every default; an unknown NAME or
+// PARAM, or a bad value, is a scene_error naming /effects/NAME or /effects/NAME/PARAM.
 //
 // Vector output: "svg": {"mode": "visible" | "painter", "edges": "none" | "visible" |
 // "visible+hidden", "crease_deg": (0, 180]} (view/vector_drawing.h; SVG and PDF), default

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "view/trackball.h"
 #include "view/transforms.h"
 
 namespace exbsp::scene::detail {
@@ -443,7 +444,7 @@ void parse_trackball(const reader& r, const json& doc, scene& s) {
   const json* t = r.optional(doc, "trackball");
   if (!t) return;
   const std::string v = t->is_string() ? t->get<std::string>() : std::string();
-  if (v != "arcball" && v != "virtual")
+  if (!trackball_named(v))
     r.fail("/trackball",
            "must be \"arcball\" (Shoemake, the default) or \"virtual\" (the classic virtual "
            "trackball)");

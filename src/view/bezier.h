@@ -11,7 +11,7 @@
 //
 // Every operation here is iterative (no recursion) and works for any degree (n = 300 and far
 // beyond: the Bernstein weights are computed without forming C(n,i), so nothing overflows).
-// Precondition failures throw exbsp::usage_error (src/mesh/errors.h); nothing aborts.
+// Precondition failures throw exbsp::usage_error (src/core/errors.h); nothing aborts.
 #pragma once
 #include <array>
 #include <cstddef>

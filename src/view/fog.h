@@ -40,8 +40,10 @@ rgb8 fog_color(const fog_shading& fog, rgb8 base, double d);
 /// shader: fog_color at each sample's eye distance; the background takes the fog colour.
 std::string fog_stage(frame& f);
 
-/// "fog" parameters into out.fog (defaults from the scene's near, far and background; warns
-/// when a linear fog ends beyond the far plane); scene_error names the bad key.
+/// "fog" parameters into out.fog; scene_error names the bad key. Parameters and defaults:
+/// mode "linear" (start = near, end = far; 0 <= start < end) or "exp" (density > 0, default
+/// ln(255)/far: 1/255 visibility at the far plane); color = the scene's background. A linear
+/// end beyond the far plane is warned about.
 void parse_fog_parameters(const reader& r, const json& params, const std::string& key,
                           const effect_scene& scene, effect_settings& out);
 

@@ -169,6 +169,12 @@ quaternion virtual_trackball_rotation(const vec3d& p, const vec3d& q) {
   return normalize({1.0 + c, axis[0], axis[1], axis[2]});
 }
 
+std::optional<trackball_kind> trackball_named(const std::string& name) {
+  if (name == "arcball") return trackball_kind::arcball;
+  if (name == "virtual") return trackball_kind::virtual_;
+  return std::nullopt;
+}
+
 arcball::arcball(double width, double height, screen_y y_axis, trackball_kind kind)
     : arcball(width, height, y_axis) {
   kind_ = kind;

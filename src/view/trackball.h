@@ -29,9 +29,11 @@
 //   rotation (which the arcball's doubling avoids), and a full turn needs twice the drag.
 //   The rotation turns the scene as seen from the camera (in eye coordinates); orbit_camera()
 //   turns the camera the other way about the look-at point to get the same picture.
-// Precondition failures throw exbsp::usage_error (src/mesh/errors.h); nothing aborts.
+// Precondition failures throw exbsp::usage_error (src/core/errors.h); nothing aborts.
 #pragma once
 #include <array>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace exbsp {
@@ -104,6 +106,10 @@ enum class trackball_kind {
   arcball,  ///< Shoemake: twice the arc (path independent; the default)
   virtual_  ///< classic virtual trackball: the arc itself (follows the cursor)
 };
+
+/// The trackball a scene's "trackball" or --trackball names: "arcball" or "virtual";
+/// nothing for any other name.
+std::optional<trackball_kind> trackball_named(const std::string& name);
 
 /// Direction of the screen y axis.
 enum class screen_y {

@@ -717,16 +717,27 @@ drawing_placement placement_of(const frame& f) {
   return {v.image_width, v.image_height, v.place_x, v.place_y, f.background};
 }
 
+namespace {
+
+/// A drawing of the frame's viewport with nothing on it: its size, background (the sample
+/// shader's when a screen effect installed one) and placement in the image.
+vector_drawing empty_drawing(const frame& f) {
+  vector_drawing d;
+  d.width = f.view.vp.width;
+  d.height = f.view.vp.height;
+  d.background = f.shader ? f.shader->background : f.background;
+  d.placement = placement_of(f);
+  return d;
+}
+
+}  // namespace
+
 vector_drawing visible_drawing(const frame& f) {
   const vector_options& opt = f.vector;
   if (!(opt.crease_deg > 0 && opt.crease_deg <= 180))
     throw usage_error("svg: crease_deg must be in (0, 180], got " + std::to_string(opt.crease_deg));
   const viewport& vp = f.view.vp;
-  vector_drawing d;
-  d.width = vp.width;
-  d.height = vp.height;
-  d.background = f.shader ? f.shader->background : f.background;
-  d.placement = placement_of(f);
+  vector_drawing d = empty_drawing(f);
   tiled_coverage coverage(static_cast<long long>(vp.width) * grid_per_pixel,
                           static_cast<long long>(vp.height) * grid_per_pixel);
   std::unordered_map<std::uint32_t, face_accumulator> faces;
@@ -854,11 +865,7 @@ vector_drawing visible_drawing(const frame& f) {
 
 vector_drawing painter_drawing(const frame& f) {
   const viewport& vp = f.view.vp;
-  vector_drawing d;
-  d.width = vp.width;
-  d.height = vp.height;
-  d.background = f.shader ? f.shader->background : f.background;
-  d.placement = placement_of(f);
+  vector_drawing d = empty_drawing(f);
   d.painter = true;
   std::size_t next_line = 0;
   for (std::size_t k = 0; k <= f.polygons.size(); ++k) {

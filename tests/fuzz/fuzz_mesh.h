@@ -7,14 +7,14 @@
 //   - faces are kept in file order and none is dropped: the face ids of the triangles run
 //     0, 0, ..., 1, ..., face_count - 1 without a gap (a face of k vertices gives k - 2 >= 1
 //     triangles), and there are no triangles when face_count is 0;
-//   - round trip: the soup written as OFF (triangles as faces, coordinates with 17
+//   - round trip: the soup written as OFF (support/inputs.h off_text: triangles as faces,
+//   coordinates with 17
 //     significant digits, which identify a double uniquely) reads back with bit-identical
 //     coordinates and the same triangles. This checks the exact number parsing of the OFF
 //     reader on every double the other readers produce (binary floats, denormals, -0).
 #pragma once
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <string>
 #include <string_view>
@@ -22,6 +22,7 @@
 #include "fuzz_check.h"
 #include "mesh/mesh_io.h"
 #include "mesh/soup.h"
+#include "support/inputs.h"
 
 namespace exbsp::fuzz {
 
@@ -42,25 +43,9 @@ inline void check_soup(const triangle_soup& soup, const std::string& name) {
 
 inline bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-/// The soup as an OFF file: one triangle per face, coordinates with %.17g.
-inline std::string to_off(const triangle_soup& soup) {
-  std::string out = "OFF\n" + std::to_string(soup.vertices.size()) + " " +
-                    std::to_string(soup.triangles.size()) + " 0\n";
-  char buffer[128];
-  for (const vec3d& p : soup.vertices) {
-    std::snprintf(buffer, sizeof buffer, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
-    out += buffer;
-  }
-  for (const soup_triangle& t : soup.triangles) {
-    std::snprintf(buffer, sizeof buffer, "3 %u %u %u\n", static_cast<unsigned>(t.v[0]),
-                  static_cast<unsigned>(t.v[1]), static_cast<unsigned>(t.v[2]));
-    out += buffer;
-  }
-  return out;
-}
-
 inline void check_off_round_trip(const triangle_soup& soup) {
-  const triangle_soup back = read_mesh_data(to_off(soup), mesh_format::off, "round-trip.off");
+  const triangle_soup back =
+      read_mesh_data(exbsp_test::off_text(soup), mesh_format::off, "round-trip.off");
   require(back.vertices.size() == soup.vertices.size(), "round trip keeps the vertex count");
   require(back.triangles.size() == soup.triangles.size(), "round trip keeps the triangle count");
   for (std::size_t i = 0; i < soup.vertices.size(); ++i)
