@@ -237,10 +237,20 @@ def peers_plot(plt, acc, peers, cfg, outdir):
     width = 0.8 / len(series)
     fig, ax = plt.subplots(figsize=(11, 4.5))
     ax.set_yscale("log")
+    ax.set_ylim(0.08, 8)
     for i, (label, color, vals) in enumerate(series):
         xs = [j + (i - (len(series) - 1) / 2) * width for j in range(len(meshes))]
         ax.bar([x for x, v in zip(xs, vals) if v], [v for v in vals if v], width, label=label, color=color)
+        for x, m, v in zip(xs, meshes, vals):
+            if not v:  # double's row, or the tool's error, says why
+                why = (f"double {short_reason(by.get((m, 'double')))}" if i == 0
+                       else pby.get((m, label.split(" / ")[0]), {}).get("error", "not run")[:24])
+                mark_missing(ax, x, why, color)
     ax.axhline(1.0, color="black", linewidth=0.8)
+    ticks = [0.1, 0.2, 0.5, 1, 1.5, 2, 5]
+    ax.set_yticks(ticks)
+    ax.set_yticklabels([f"{t:g}×" for t in ticks])
+    ax.minorticks_off()
     ax.axhline(1.5, color="black", linestyle="--", linewidth=1, label=f"goal: {DEFAULT_KERNEL} / double ≤ 1.5×")
     ax.set_xticks(range(len(meshes)))
     ax.set_xticklabels(mesh_labels(meshes), rotation=40, ha="right", fontsize=8)
