@@ -135,8 +135,14 @@ class basic_bsp_tree {
   struct build_context;
   template <class PushChild>
   void grow_node(work&& w, subtree& part, build_context& ctx, PushChild&& push_child);
-  /// Appends a grown subtree (its refs already remapped to pool_) to nodes_.
-  void append_subtree(subtree& part);
+  /// Replaces a grown subtree's pieces by copies of the fragments its nodes hold, node by node
+  /// (dead split parents dropped), and frees its refs.
+  void collect_fragments(subtree& part) const;
+  /// Appends a collected subtree's fragments to fragments_ and frees them; returns where they
+  /// start.
+  std::uint32_t append_fragments(subtree& part);
+  /// Appends a grown subtree's nodes, whose fragments start at fragment_base, to nodes_.
+  void append_subtree(subtree& part, std::uint32_t fragment_base);
   /// The fragment a ref names: a pool_ index, or one of `part`'s own pieces.
   const fragment& resolve(const subtree& part, std::uint32_t ref) const {
     return (ref & local_ref) ? part.pieces[ref & ~local_ref] : pool_[ref];
@@ -168,8 +174,7 @@ class basic_bsp_tree {
                               std::uint32_t depth) const;
 
   G geom_;
-  std::vector<fragment> pool_;                 ///< build time only: every fragment made, by index
-  std::vector<std::uint32_t> node_fragments_;  ///< build time only: pool indices, node by node
+  std::vector<fragment> pool_;  ///< build time only: inputs and top pieces, by index
   std::vector<fragment> fragments_;
   std::vector<node> nodes_;
   build_stats stats_;
