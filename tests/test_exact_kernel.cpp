@@ -204,7 +204,7 @@ TEST(ExactKernel, on_and_one_ulp_off_a_plane_at_scales_beyond_the_float_range) {
 }
 
 TEST(ExactKernel, points_beyond_many_chunks_keep_their_values_as_the_table_grows) {
-  // 8,000 separate triangles (24,000 vertices: chunks of 1,024 points, the chunk table
+  // 8,000 separate triangles (24,000 vertices: chunks of 256 points, the chunk table
   // doubles from 16), each crossed by the plane x = 1/4: the split points fill further
   // chunks, and every earlier point keeps its exact value.
   std::vector<std::array<vec3d, 3>> tris;

@@ -152,11 +152,20 @@ const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane)
   return *exact_planes_.emplace(plane, std::move(made)).first->second;  // the first one stays
 }
 
+const exact_geometry::exact_value* exact_geometry::value_of(std::uint32_t id,
+                                                            exact_value& vertex) const {
+  if (id >= inputs_) return find_exact(id);
+  for (int j = 0; j < 3; ++j) vertex.x[j] = at(id).c[j];  // exact: a double is dyadic
+  return &vertex;
+}
+
 const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) const {
-  // Iterative over the points x depends on (their ids are smaller: a point is made after its
-  // endpoints), so a long chain of nested split points cannot overflow the stack.
+  // Iterative over the constructed points x depends on (their ids are smaller: a point is
+  // made after its endpoints), so a long chain of nested split points cannot overflow the
+  // stack. Input vertices are not memoised: their doubles are their exact values.
   if (const exact_value* known = find_exact(x)) return *known;
   std::vector<std::uint32_t> stack{x};
+  exact_value vp, vq;
   while (!stack.empty()) {
     const std::uint32_t id = stack.back();
     if (find_exact(id)) {
@@ -164,24 +173,20 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
       continue;
     }
     const point& pt = at(id);
-    auto made = std::make_unique<exact_value>();
-    if (pt.p == none) {
-      for (int j = 0; j < 3; ++j) made->x[j] = pt.c[j];  // exact: a double is a dyadic rational
-    } else {
-      const exact_value* ep = find_exact(pt.p);
-      const exact_value* eq = find_exact(pt.q);
-      if (!ep || !eq) {
-        if (!ep) stack.push_back(pt.p);
-        if (!eq) stack.push_back(pt.q);
-        continue;
-      }
-      // x = (fp q - fq p) / (fp - fq), fp = n.p - d, fq = n.q - d.
-      const exact_plane& pl = plane_of(pt.plane);
-      const mpq_class fp = pl.n[0] * ep->x[0] + pl.n[1] * ep->x[1] + pl.n[2] * ep->x[2] - pl.d;
-      const mpq_class fq = pl.n[0] * eq->x[0] + pl.n[1] * eq->x[1] + pl.n[2] * eq->x[2] - pl.d;
-      const mpq_class den = fp - fq;
-      for (int j = 0; j < 3; ++j) made->x[j] = (fp * eq->x[j] - fq * ep->x[j]) / den;
+    const exact_value* ep = value_of(pt.p, vp);
+    const exact_value* eq = value_of(pt.q, vq);
+    if (!ep || !eq) {
+      if (!ep) stack.push_back(pt.p);
+      if (!eq) stack.push_back(pt.q);
+      continue;
     }
+    // x = (fp q - fq p) / (fp - fq), fp = n.p - d, fq = n.q - d.
+    auto made = std::make_unique<exact_value>();
+    const exact_plane& pl = plane_of(pt.plane);
+    const mpq_class fp = pl.n[0] * ep->x[0] + pl.n[1] * ep->x[1] + pl.n[2] * ep->x[2] - pl.d;
+    const mpq_class fq = pl.n[0] * eq->x[0] + pl.n[1] * eq->x[1] + pl.n[2] * eq->x[2] - pl.d;
+    const mpq_class den = fp - fq;
+    for (int j = 0; j < 3; ++j) made->x[j] = (fp * eq->x[j] - fq * ep->x[j]) / den;
     {
       // Another thread may have made the same value meanwhile: the first one stays.
       const std::lock_guard<std::mutex> lock(exact_mutex_);
@@ -355,8 +360,9 @@ fragment_d exact_geometry::to_double(const fragment& f) const {
 }
 
 void exact_geometry::visit_exact(const fragment& f, const exact_visitor& visit) const {
+  exact_value vertex;
   for (int k = 0; k < 3; ++k) {
-    const exact_value& e = exact_of(f.v[k]);
+    const exact_value& e = f.v[k] < inputs_ ? *value_of(f.v[k], vertex) : exact_of(f.v[k]);
     for (int j = 0; j < 3; ++j) visit(k, j, e.x[j].get_mpq_t());
   }
 }

@@ -122,7 +122,7 @@ class exact_geometry {
   /// Points live in chunks of chunk_size, found through a table of chunk pointers that
   /// doubles when full; a table once published is never changed in the slots in use nor
   /// freed before the geometry, so other threads may read through any table they loaded.
-  static constexpr unsigned chunk_bits = 10;      ///< 40 KB per chunk
+  static constexpr unsigned chunk_bits = 8;       ///< 10 KB per chunk
   static constexpr unsigned max_point_bits = 28;  ///< 2^28 points (10 GB) at most
   static constexpr std::uint32_t chunk_size = 1u << chunk_bits;
   static constexpr std::uint32_t block = 64;
@@ -149,7 +149,11 @@ class exact_geometry {
   }
   int point_sign_slow(std::uint32_t plane, std::uint32_t x, int& budget) const;
   int exact_sign(std::uint32_t plane, std::uint32_t x) const;
+  /// The memoised exact value of constructed point x (made on first use).
   const exact_value& exact_of(std::uint32_t x) const;
+  /// An input vertex's exact value, written into `vertex`, or a constructed point's memoised
+  /// value (nullptr until made).
+  const exact_value* value_of(std::uint32_t id, exact_value& vertex) const;
   const exact_plane& plane_of(std::uint32_t plane) const;
   std::uint32_t construct(std::uint32_t plane, std::uint32_t p, std::uint32_t q, scratch& sc);
   /// Sets the certified centre and radius of constructed point id from its p, q and plane.
