@@ -66,7 +66,6 @@ exact_geometry::~exact_geometry() = default;
 
 exact_geometry::filter_plane exact_geometry::make_filter_plane(const fast_plane_core& p) {
   filter_plane f;
-  f.a = p.a;
   f.n = p.n;
   for (int k = 0; k < 3; ++k)
     f.coef[k] = p.valid ? round_up_to_float(p.coef[k]) : std::numeric_limits<float>::infinity();
@@ -125,6 +124,7 @@ bool exact_geometry::add_source(const triangle_soup& soup, std::uint32_t i, frag
                                E::Point_3(c[0], c[1], c[2])))
     return false;
   fast_[i] = make_filter_plane(make_fast_plane(a, b, c));
+  fast_[i].a = &at(st.v[0]).c;
   out = {st.v, i, st.face};
   return true;
 }
@@ -244,7 +244,7 @@ void exact_geometry::approximate(std::uint32_t id) {
   // [t_lo, t_hi] below holds the true t; the rest is the spread of p and q and rounding.
   double vp, ep, vq, eq;
   bool certified = false;
-  if (fast_eval(fast_[plane], pp.c, pp.r, vp, ep) && fast_eval(fast_[plane], pq.c, pq.r, vq, eq) &&
+  if (filter(plane, pp.c, pp.r, vp, ep) && filter(plane, pq.c, pq.r, vq, eq) &&
       std::fabs(vp) > ep && std::fabs(vq) > eq && (vp > 0) != (vq > 0)) {
     const double alpha = std::fabs(vp), beta = std::fabs(vq);
     const double t = alpha / (alpha + beta);
@@ -308,7 +308,7 @@ void exact_geometry::split(std::uint32_t plane, const fragment& f, const split_p
 
 int exact_geometry::side_of_eye(std::uint32_t plane, const vec3d& eye) const {
   double v, bound;
-  if (fast_eval(fast_[plane], eye, 0, v, bound)) {
+  if (filter(plane, eye, 0, v, bound)) {
     if (v > bound) return 1;
     if (v < -bound) return -1;
   }
