@@ -33,14 +33,18 @@ class basic_bsp_tree {
 
   /// A node: the plane of input triangle `plane_source`, its coplanar fragments
   /// fragments()[first, first+count) in list order, children (-1: none), parent and the
-  /// side (+1/-1) of the parent's plane it lies on, and its depth (root: 1).
+  /// side (+1/-1) of the parent's plane it lies on, and its depth (root: 1). 28 bytes: the
+  /// side and the depth share one word (a deeper tree is a limit_error).
   struct node {
-    std::uint32_t plane_source;
-    std::uint32_t first, count;
+    node() : side_in_parent(0), depth(1) {}
+    static constexpr std::uint32_t max_depth = (1u << 30) - 1;
+    std::uint32_t plane_source = 0;
+    std::uint32_t first = 0, count = 0;
     std::int32_t negative = -1, positive = -1, parent = -1;
-    std::int32_t side_in_parent = 0;
-    std::uint32_t depth = 1;
+    std::int32_t side_in_parent : 2;
+    std::uint32_t depth : 30;
   };
+  static_assert(sizeof(node) == 28, "a node is seven 32-bit words");
 
   /// Builds the tree. Throws usage_error (unknown heuristic, non-finite coordinates),
   /// limit_error (options.max_fragments exceeded).

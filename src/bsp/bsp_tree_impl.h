@@ -243,6 +243,8 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
   nd.first = static_cast<std::uint32_t>(part.node_fragments.size());
   nd.parent = w.parent;
   nd.side_in_parent = w.side;
+  if (w.depth > node::max_depth)
+    throw limit_error("bsp build: the tree is deeper than " + std::to_string(node::max_depth));
   nd.depth = w.depth;
   if (w.parent >= 0)
     (w.side > 0 ? part.nodes[w.parent].positive : part.nodes[w.parent].negative) = id;
