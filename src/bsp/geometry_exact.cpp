@@ -95,7 +95,7 @@ void exact_geometry::grow_chunks(std::uint32_t end) {
 const exact_geometry::exact_value* exact_geometry::find_exact(std::uint32_t id) const {
   const std::lock_guard<std::mutex> lock(exact_mutex_);
   const auto it = exact_values_.find(id);
-  return it == exact_values_.end() ? nullptr : it->second.get();
+  return it == exact_values_.end() ? nullptr : &it->second;
 }
 
 void exact_geometry::claim_block(scratch& sc) {
@@ -133,9 +133,9 @@ const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane)
   {
     const std::lock_guard<std::mutex> lock(exact_mutex_);
     const auto it = exact_planes_.find(plane);
-    if (it != exact_planes_.end()) return *it->second;
+    if (it != exact_planes_.end()) return it->second;
   }
-  auto made = std::make_unique<exact_plane>();
+  exact_plane made;
   std::array<std::array<mpq_class, 3>, 3> v;
   for (int k = 0; k < 3; ++k)
     for (int j = 0; j < 3; ++j) v[k][j] = at(sources_[plane][k]).c[j];
@@ -144,12 +144,12 @@ const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane)
     e1[j] = v[1][j] - v[0][j];
     e2[j] = v[2][j] - v[0][j];
   }
-  made->n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-  made->n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-  made->n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-  made->d = made->n[0] * v[0][0] + made->n[1] * v[0][1] + made->n[2] * v[0][2];
+  made.n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  made.n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  made.n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  made.d = made.n[0] * v[0][0] + made.n[1] * v[0][1] + made.n[2] * v[0][2];
   const std::lock_guard<std::mutex> lock(exact_mutex_);
-  return *exact_planes_.emplace(plane, std::move(made)).first->second;  // the first one stays
+  return exact_planes_.emplace(plane, std::move(made)).first->second;  // the first one stays
 }
 
 const exact_geometry::exact_value* exact_geometry::value_of(std::uint32_t id,
@@ -181,12 +181,12 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
       continue;
     }
     // x = (fp q - fq p) / (fp - fq), fp = n.p - d, fq = n.q - d.
-    auto made = std::make_unique<exact_value>();
+    exact_value made;
     const exact_plane& pl = plane_of(pt.plane);
     const mpq_class fp = pl.n[0] * ep->x[0] + pl.n[1] * ep->x[1] + pl.n[2] * ep->x[2] - pl.d;
     const mpq_class fq = pl.n[0] * eq->x[0] + pl.n[1] * eq->x[1] + pl.n[2] * eq->x[2] - pl.d;
     const mpq_class den = fp - fq;
-    for (int j = 0; j < 3; ++j) made->x[j] = (fp * eq->x[j] - fq * ep->x[j]) / den;
+    for (int j = 0; j < 3; ++j) made.x[j] = (fp * eq->x[j] - fq * ep->x[j]) / den;
     {
       // Another thread may have made the same value meanwhile: the first one stays.
       const std::lock_guard<std::mutex> lock(exact_mutex_);

@@ -142,7 +142,7 @@ class exact_geometry {
   static constexpr unsigned chunk_bits = 8;       ///< 10 KB per chunk
   static constexpr unsigned max_point_bits = 28;  ///< 2^28 points (10 GB) at most
   static constexpr std::uint32_t chunk_size = 1u << chunk_bits;
-  static constexpr std::uint32_t block = 64;
+  static constexpr std::uint32_t block = 16;
 
   const point& at(std::uint32_t id) const {
     return chunk_table_.load(std::memory_order_acquire)[id >> chunk_bits][id & (chunk_size - 1)];
@@ -183,8 +183,9 @@ class exact_geometry {
   /// rather than 8 bytes in every point and triangle.
   const exact_value* find_exact(std::uint32_t id) const;
   mutable std::mutex exact_mutex_;
-  mutable std::unordered_map<std::uint32_t, std::unique_ptr<const exact_value>> exact_values_;
-  mutable std::unordered_map<std::uint32_t, std::unique_ptr<const exact_plane>> exact_planes_;
+  /// (Node-based maps: a value's address never changes, so references to it stay valid.)
+  mutable std::unordered_map<std::uint32_t, const exact_value> exact_values_;
+  mutable std::unordered_map<std::uint32_t, const exact_plane> exact_planes_;
   std::atomic<point**> chunk_table_{nullptr};
   std::vector<std::unique_ptr<point*[]>> chunk_tables_;  ///< every table made (the last in use)
   std::vector<std::unique_ptr<point[]>> chunks_;         ///< guarded by claim_mutex_
