@@ -128,8 +128,15 @@ class basic_bsp_tree {
     std::uint64_t key;  ///< path key: root 1, children mix64(2 key + (side > 0))
   };
   /// Nodes, fragment refs and pieces of one independently grown subtree.
+  /// A grown subtree's node waiting for the merge: what append_subtree cannot derive (16
+  /// bytes rather than 28: first, parent, side and depth follow from counts and children).
+  struct parked_node {
+    std::uint32_t plane_source, count;
+    std::int32_t negative, positive;
+  };
   struct subtree {
     std::vector<node> nodes;
+    std::vector<parked_node> parked;
     std::vector<std::uint32_t> node_fragments;
     std::vector<fragment> pieces;
     std::int32_t root_parent = -1;
@@ -145,7 +152,9 @@ class basic_bsp_tree {
   /// Appends a collected subtree's fragments to fragments_ and frees them; returns where they
   /// start.
   std::uint32_t append_fragments(subtree& part);
-  /// Appends a grown subtree's nodes, whose fragments start at fragment_base, to nodes_.
+  /// Replaces a grown subtree's nodes by parked ones.
+  static void park_nodes(subtree& part);
+  /// Appends a parked subtree's nodes, whose fragments start at fragment_base, to nodes_.
   void append_subtree(subtree& part, std::uint32_t fragment_base);
   /// The fragment a ref names: a pool_ index, or one of `part`'s own pieces.
   const fragment& resolve(const subtree& part, std::uint32_t ref) const {

@@ -133,6 +133,7 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   for (work& w : queue)
     for (std::uint32_t& ref : w.list) ref = remap(ref, top_base);
   collect_fragments(top);
+  park_nodes(top);
   append_subtree(top, append_fragments(top));
 
   std::vector<work> frontier(std::make_move_iterator(queue.begin()),
@@ -159,7 +160,7 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
       // The part waits for the merge holding only its live fragments and nodes, without
       // growth slack.
       collect_fragments(part);
-      part.nodes.shrink_to_fit();
+      park_nodes(part);
       part.scratch = {};
     });
   }
@@ -170,7 +171,7 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   std::size_t fragment_total = fragments_.size(), node_total = nodes_.size();
   for (const subtree& part : parts) {
     fragment_total += part.pieces.size();
-    node_total += part.nodes.size();
+    node_total += part.parked.size();
   }
   std::vector<fragment>().swap(pool_);  // every part holds copies of the fragments it uses
   fragments_.reserve(fragment_total);
@@ -207,25 +208,53 @@ std::uint32_t basic_bsp_tree<G>::append_fragments(subtree& part) {
 }
 
 template <class G>
+void basic_bsp_tree<G>::park_nodes(subtree& part) {
+  part.parked.reserve(part.nodes.size());
+  for (const node& nd : part.nodes)
+    part.parked.push_back({nd.plane_source, nd.count, nd.negative, nd.positive});
+  std::vector<node>().swap(part.nodes);
+}
+
+template <class G>
 void basic_bsp_tree<G>::append_subtree(subtree& part, std::uint32_t fragment_base) {
-  const auto node_base = static_cast<std::int32_t>(nodes_.size());
-  for (node nd : part.nodes) {
-    nd.first += fragment_base;
-    if (nd.negative >= 0) nd.negative += node_base;
-    if (nd.positive >= 0) nd.positive += node_base;
-    if (nd.parent >= 0) {
-      nd.parent += node_base;
-    } else if (part.root_parent >= 0) {  // the part's root hangs below a node built earlier
-      nd.parent = part.root_parent;
-      nd.side_in_parent = part.root_side;
-      node& parent = nodes_[part.root_parent];
-      (part.root_side > 0 ? parent.positive : parent.negative) =
-          static_cast<std::int32_t>(nodes_.size());
-    }
-    stats_.depth = std::max<std::size_t>(stats_.depth, nd.depth);
+  const std::size_t node_base = nodes_.size();
+  std::uint32_t first = fragment_base;
+  const auto global = [&](std::int32_t local) {
+    return local < 0 ? -1 : static_cast<std::int32_t>(node_base) + local;
+  };
+  for (const parked_node& p : part.parked) {
+    node nd;
+    nd.plane_source = p.plane_source;
+    nd.first = first;
+    nd.count = p.count;
+    first += p.count;
+    nd.negative = global(p.negative);
+    nd.positive = global(p.positive);
     nodes_.push_back(nd);
   }
-  std::vector<node>().swap(part.nodes);
+  std::vector<parked_node>().swap(part.parked);
+  if (nodes_.size() == node_base) return;
+  if (part.root_parent >= 0) {  // the part's root hangs below a node built earlier
+    node& root = nodes_[node_base];
+    node& parent = nodes_[static_cast<std::size_t>(part.root_parent)];
+    root.parent = part.root_parent;
+    root.side_in_parent = part.root_side;
+    root.depth = parent.depth + 1;
+    (part.root_side > 0 ? parent.positive : parent.negative) = static_cast<std::int32_t>(node_base);
+  }
+  // Parents, sides and depths from the children links: a node comes before its children.
+  for (std::size_t k = node_base; k < nodes_.size(); ++k) {
+    const node& nd = nodes_[k];
+    for (const auto& [child, side] :
+         {std::pair<std::int32_t, int>{nd.negative, -1}, {nd.positive, +1}}) {
+      if (child < 0) continue;
+      node& c = nodes_[static_cast<std::size_t>(child)];
+      c.parent = static_cast<std::int32_t>(k);
+      c.side_in_parent = side;
+      c.depth = nd.depth + 1;
+    }
+    stats_.depth = std::max<std::size_t>(stats_.depth, nd.depth);
+  }
 }
 
 template <class G>
