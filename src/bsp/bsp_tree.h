@@ -127,13 +127,14 @@ class basic_bsp_tree {
     std::uint32_t depth;
     std::uint64_t key;  ///< path key: root 1, children mix64(2 key + (side > 0))
   };
-  /// Nodes, fragment refs and pieces of one independently grown subtree.
   /// A grown subtree's node waiting for the merge: what append_subtree cannot derive (16
   /// bytes rather than 28: first, parent, side and depth follow from counts and children).
   struct parked_node {
     std::uint32_t plane_source, count;
     std::int32_t negative, positive;
   };
+  /// Nodes, fragment refs and pieces of one independently grown subtree; once grown, its
+  /// parked nodes and (collect_fragments) the fragments they hold.
   struct subtree {
     std::vector<node> nodes;
     std::vector<parked_node> parked;

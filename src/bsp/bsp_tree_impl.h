@@ -165,9 +165,10 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
     });
   }
   failure.rethrow();
-  // Merge in frontier order. Memory: the fragments first, each part's pieces freed as soon as
-  // its fragments are copied, then the nodes; both final arrays are reserved exactly, so the
-  // peak holds no growth slack and no second copy of every fragment or node.
+  // Merge in frontier order. Memory: the fragments first, each part's freed as soon as they
+  // are copied, then the nodes; both final arrays are reserved exactly. The peak (the node
+  // step) holds the final fragments, the final nodes and the parked ones: no growth slack, no
+  // dead split parents, no refs.
   std::size_t fragment_total = fragments_.size(), node_total = nodes_.size();
   for (const subtree& part : parts) {
     fragment_total += part.pieces.size();
