@@ -165,6 +165,72 @@ TEST(ExactKernel, shared_split_points_are_made_once) {
   EXPECT_EQ(common.size(), 3u);  // the two shared vertices and the one shared split point
 }
 
+// --- the compact representation: float radii, float filter coefficients, chunked points ----
+
+/// The triangles scaled by s (a power of two: exact).
+std::array<vec3d, 3> scaled(std::array<vec3d, 3> t, double s) {
+  for (auto& v : t)
+    for (double& x : v) x *= s;
+  return t;
+}
+
+TEST(ExactKernel, on_and_one_ulp_off_a_plane_at_scales_beyond_the_float_range) {
+  // The same crossing as above at scales where a split point's radius underflows a float
+  // (2^-140: rounded up to the smallest float), exceeds it (2^200: stored as infinity), and
+  // where the input planes leave the filter's range (2^300: infinite coefficients). Every
+  // sign must still be the exact one, for points and for view directions.
+  for (const double scale : {std::ldexp(1.0, -140), std::ldexp(1.0, 200), std::ldexp(1.0, 300)})
+    for (const double y0 : {0.5, std::nextafter(0.5, 1.0), std::nextafter(0.5, 0.0)}) {
+      const auto plane = scaled(plane_y(y0), scale);
+      geometry_fixture g(soup_of({scaled(fragment_triangle, scale), scaled(cutter, scale), plane,
+                                  scaled(through_edge, scale)}));
+      const auto pieces = g.split(g.fragments[0], 1);
+      int checked = 0;
+      for (const auto& p : pieces)
+        for (int k = 0; k < 3; ++k) {
+          const auto exact = g.geom.to_exact(p)[static_cast<std::size_t>(k)];
+          const int s = g.geom.sign(2, p, k);
+          EXPECT_EQ(s, reference_sign(plane, exact)) << scale << " " << y0;
+          EXPECT_EQ(g.geom.sign(3, p, k), reference_sign(scaled(through_edge, scale), exact))
+              << scale << " " << y0;
+          checked += s == (y0 == 0.5 ? 0 : (y0 > 0.5 ? -1 : 1));
+        }
+      EXPECT_GT(checked, 0) << scale << " " << y0;
+      // Plane 2's normal is +y (times scale^2): the direction (0, -1, 0) looks along it.
+      EXPECT_EQ(g.geom.side_of_direction(2, {0, -1, 0}), 1) << scale;
+      EXPECT_EQ(g.geom.side_of_direction(2, {1, 0, 0}), 0) << scale;
+      EXPECT_EQ(g.geom.side_of_eye(2, {0, y0 * scale, 0}), 0) << scale;
+    }
+}
+
+TEST(ExactKernel, points_beyond_many_chunks_keep_their_values_as_the_table_grows) {
+  // 8,000 separate triangles (24,000 vertices: chunks of 256 points, the chunk table
+  // doubles from 16), each crossed by the plane x = 1/4: the split points fill further
+  // chunks, and every earlier point keeps its exact value.
+  std::vector<std::array<vec3d, 3>> tris;
+  const int n = 8000;
+  for (int i = 0; i < n; ++i) {
+    std::array<vec3d, 3> t = fragment_triangle;
+    for (auto& v : t) v[2] = i;
+    tris.push_back(t);
+  }
+  tris.push_back(cutter);
+  geometry_fixture g(soup_of(tris));
+  std::vector<exact_geometry::fragment> pieces;
+  for (int i = 0; i < n; ++i)
+    for (const auto& p : g.split(g.fragments[static_cast<std::size_t>(i)], n)) pieces.push_back(p);
+  for (std::size_t i = 0; i < pieces.size(); i += 97) {
+    const auto exact = g.geom.to_exact(pieces[i]);
+    for (int k = 0; k < 3; ++k) {
+      const auto& x = exact[static_cast<std::size_t>(k)];
+      EXPECT_EQ(x[2], std::to_string(pieces[i].source));
+      EXPECT_EQ(g.geom.sign(static_cast<std::uint32_t>(n), pieces[i], k),
+                reference_sign(cutter, x));
+    }
+  }
+  EXPECT_GT(g.geom.points_memory(), std::size_t{24000 + 2 * n} * 40);
+}
+
 // --- exact = gmpq = epeck --------------------------------------------------------------------
 
 void expect_exact_equals(exbsp::kernel_id other, const exbsp::triangle_soup& soup,

@@ -33,14 +33,18 @@ class basic_bsp_tree {
 
   /// A node: the plane of input triangle `plane_source`, its coplanar fragments
   /// fragments()[first, first+count) in list order, children (-1: none), parent and the
-  /// side (+1/-1) of the parent's plane it lies on, and its depth (root: 1).
+  /// side (+1/-1) of the parent's plane it lies on, and its depth (root: 1). 28 bytes: the
+  /// side and the depth share one word (a deeper tree is a limit_error).
   struct node {
-    std::uint32_t plane_source;
-    std::uint32_t first, count;
+    node() : side_in_parent(0), depth(1) {}
+    static constexpr std::uint32_t max_depth = (1u << 30) - 1;
+    std::uint32_t plane_source = 0;
+    std::uint32_t first = 0, count = 0;
     std::int32_t negative = -1, positive = -1, parent = -1;
-    std::int32_t side_in_parent = 0;
-    std::uint32_t depth = 1;
+    std::int32_t side_in_parent : 2;
+    std::uint32_t depth : 30;
   };
+  static_assert(sizeof(node) == 28, "a node is seven 32-bit words");
 
   /// Builds the tree. Throws usage_error (unknown heuristic, non-finite coordinates),
   /// limit_error (options.max_fragments exceeded).
@@ -123,9 +127,17 @@ class basic_bsp_tree {
     std::uint32_t depth;
     std::uint64_t key;  ///< path key: root 1, children mix64(2 key + (side > 0))
   };
-  /// Nodes, fragment refs and pieces of one independently grown subtree.
+  /// A grown subtree's node waiting for the merge: what append_subtree cannot derive (16
+  /// bytes rather than 28: first, parent, side and depth follow from counts and children).
+  struct parked_node {
+    std::uint32_t plane_source, count;
+    std::int32_t negative, positive;
+  };
+  /// Nodes, fragment refs and pieces of one independently grown subtree; once grown, its
+  /// parked nodes and (collect_fragments) the fragments they hold.
   struct subtree {
     std::vector<node> nodes;
+    std::vector<parked_node> parked;
     std::vector<std::uint32_t> node_fragments;
     std::vector<fragment> pieces;
     std::int32_t root_parent = -1;
@@ -135,8 +147,16 @@ class basic_bsp_tree {
   struct build_context;
   template <class PushChild>
   void grow_node(work&& w, subtree& part, build_context& ctx, PushChild&& push_child);
-  /// Appends a grown subtree (its refs already remapped to pool_) to nodes_.
-  void append_subtree(subtree& part);
+  /// Replaces a grown subtree's pieces by copies of the fragments its nodes hold, node by node
+  /// (dead split parents dropped), and frees its refs.
+  void collect_fragments(subtree& part) const;
+  /// Appends a collected subtree's fragments to fragments_ and frees them; returns where they
+  /// start.
+  std::uint32_t append_fragments(subtree& part);
+  /// Replaces a grown subtree's nodes by parked ones.
+  static void park_nodes(subtree& part);
+  /// Appends a parked subtree's nodes, whose fragments start at fragment_base, to nodes_.
+  void append_subtree(subtree& part, std::uint32_t fragment_base);
   /// The fragment a ref names: a pool_ index, or one of `part`'s own pieces.
   const fragment& resolve(const subtree& part, std::uint32_t ref) const {
     return (ref & local_ref) ? part.pieces[ref & ~local_ref] : pool_[ref];
@@ -168,8 +188,7 @@ class basic_bsp_tree {
                               std::uint32_t depth) const;
 
   G geom_;
-  std::vector<fragment> pool_;                 ///< build time only: every fragment made, by index
-  std::vector<std::uint32_t> node_fragments_;  ///< build time only: pool indices, node by node
+  std::vector<fragment> pool_;  ///< build time only: inputs and top pieces, by index
   std::vector<fragment> fragments_;
   std::vector<node> nodes_;
   build_stats stats_;

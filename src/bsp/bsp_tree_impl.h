@@ -89,8 +89,9 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
                           " has a non-finite coordinate");
 
   // Input triangles; the exactly degenerate (collinear) ones are skipped and counted.
-  // Fragments live in pool_ (split parents stay there, dead, until the build ends); work
-  // lists hold indices, so moving a list down the tree moves 4 bytes per fragment.
+  // Fragments live in pool_ (inputs, then the top levels' pieces) and in each subtree's
+  // pieces (split parents stay there, dead, until the merge); work lists hold refs, so moving
+  // a list down the tree moves 4 bytes per fragment.
   pool_.reserve(soup.triangles.size());
   std::vector<std::uint32_t> root_list;
   root_list.reserve(soup.triangles.size());
@@ -122,15 +123,18 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   }
   // Top pieces join the shared read-only pool; refs to them become plain pool indices.
   const auto top_base = static_cast<std::uint32_t>(pool_.size());
+  pool_.reserve(pool_.size() + top.pieces.size());
   for (fragment& f : top.pieces) pool_.push_back(std::move(f));
-  top.pieces.clear();
+  std::vector<fragment>().swap(top.pieces);
   const auto remap = [](std::uint32_t ref, std::uint32_t base) {
     return (ref & local_ref) ? base + (ref & ~local_ref) : ref;
   };
   for (std::uint32_t& ref : top.node_fragments) ref = remap(ref, top_base);
   for (work& w : queue)
     for (std::uint32_t& ref : w.list) ref = remap(ref, top_base);
-  append_subtree(top);
+  collect_fragments(top);
+  park_nodes(top);
+  append_subtree(top, append_fragments(top));
 
   std::vector<work> frontier(std::make_move_iterator(queue.begin()),
                              std::make_move_iterator(queue.end()));
@@ -153,39 +157,30 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
         grow_node(std::move(w), part, ctx,
                   [&](work&& child) { stack.push_back(std::move(child)); });
       }
+      // The part waits for the merge holding only its live fragments and nodes, without
+      // growth slack.
+      collect_fragments(part);
+      park_nodes(part);
+      part.scratch = {};
     });
   }
   failure.rethrow();
-  std::size_t pieces = pool_.size();
-  for (const subtree& part : parts) pieces += part.pieces.size();
-  pool_.reserve(pieces);  // one reallocation, not a doubling per part
-  for (subtree& part : parts) {
-    const auto base = static_cast<std::uint32_t>(pool_.size());
-    for (fragment& f : part.pieces) pool_.push_back(std::move(f));
-    std::vector<fragment>().swap(part.pieces);  // freed as soon as merged
-    for (std::uint32_t& ref : part.node_fragments) ref = remap(ref, base);
-    append_subtree(part);
+  // Merge in frontier order. Memory: the fragments first, each part's freed as soon as they
+  // are copied, then the nodes; both final arrays are reserved exactly. The peak (the node
+  // step) holds the final fragments, the final nodes and the parked ones: no growth slack, no
+  // dead split parents, no refs.
+  std::size_t fragment_total = fragments_.size(), node_total = nodes_.size();
+  for (const subtree& part : parts) {
+    fragment_total += part.pieces.size();
+    node_total += part.parked.size();
   }
-
-  // Fragments in node order, in place: each moves to its final slot by following cycles of
-  // the permutation, and the dead split parents fall off the end, so no second array of
-  // every fragment is held at the peak.
-  {
-    constexpr std::uint32_t dead = ~0u;
-    const std::size_t live = node_fragments_.size();
-    std::vector<std::uint32_t> target(pool_.size(), dead);
-    for (std::size_t k = 0; k < live; ++k)
-      target[node_fragments_[k]] = static_cast<std::uint32_t>(k);
-    std::vector<std::uint32_t>().swap(node_fragments_);
-    for (std::size_t i = 0; i < pool_.size(); ++i)
-      while (target[i] != dead && target[i] != i) {
-        const std::uint32_t j = target[i];
-        std::swap(pool_[i], pool_[j]);
-        std::swap(target[i], target[j]);
-      }
-    pool_.resize(live);
-    fragments_ = std::move(pool_);
-  }
+  std::vector<fragment>().swap(pool_);  // every part holds copies of the fragments it uses
+  fragments_.reserve(fragment_total);
+  std::vector<std::uint32_t> fragment_bases;
+  fragment_bases.reserve(parts.size());
+  for (subtree& part : parts) fragment_bases.push_back(append_fragments(part));
+  nodes_.reserve(node_total);
+  for (std::size_t i = 0; i < parts.size(); ++i) append_subtree(parts[i], fragment_bases[i]);
   stats_.splits = ctx.splits.load();
   stats_.fragments = fragments_.size();
   stats_.nodes = nodes_.size();
@@ -197,29 +192,70 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
 }
 
 template <class G>
-void basic_bsp_tree<G>::append_subtree(subtree& part) {
-  const auto node_base = static_cast<std::int32_t>(nodes_.size());
-  const auto fragment_base = static_cast<std::uint32_t>(node_fragments_.size());
-  node_fragments_.insert(node_fragments_.end(), part.node_fragments.begin(),
-                         part.node_fragments.end());
-  for (node nd : part.nodes) {
-    nd.first += fragment_base;
-    if (nd.negative >= 0) nd.negative += node_base;
-    if (nd.positive >= 0) nd.positive += node_base;
-    if (nd.parent >= 0) {
-      nd.parent += node_base;
-    } else if (part.root_parent >= 0) {  // the part's root hangs below a node built earlier
-      nd.parent = part.root_parent;
-      nd.side_in_parent = part.root_side;
-      node& parent = nodes_[part.root_parent];
-      (part.root_side > 0 ? parent.positive : parent.negative) =
-          static_cast<std::int32_t>(nodes_.size());
-    }
-    stats_.depth = std::max<std::size_t>(stats_.depth, nd.depth);
+void basic_bsp_tree<G>::collect_fragments(subtree& part) const {
+  std::vector<fragment> live;
+  live.reserve(part.node_fragments.size());
+  for (std::uint32_t ref : part.node_fragments) live.push_back(resolve(part, ref));
+  part.pieces = std::move(live);
+  std::vector<std::uint32_t>().swap(part.node_fragments);
+}
+
+template <class G>
+std::uint32_t basic_bsp_tree<G>::append_fragments(subtree& part) {
+  const auto base = static_cast<std::uint32_t>(fragments_.size());
+  fragments_.insert(fragments_.end(), part.pieces.begin(), part.pieces.end());
+  std::vector<fragment>().swap(part.pieces);
+  return base;
+}
+
+template <class G>
+void basic_bsp_tree<G>::park_nodes(subtree& part) {
+  part.parked.reserve(part.nodes.size());
+  for (const node& nd : part.nodes)
+    part.parked.push_back({nd.plane_source, nd.count, nd.negative, nd.positive});
+  std::vector<node>().swap(part.nodes);
+}
+
+template <class G>
+void basic_bsp_tree<G>::append_subtree(subtree& part, std::uint32_t fragment_base) {
+  const std::size_t node_base = nodes_.size();
+  std::uint32_t first = fragment_base;
+  const auto global = [&](std::int32_t local) {
+    return local < 0 ? -1 : static_cast<std::int32_t>(node_base) + local;
+  };
+  for (const parked_node& p : part.parked) {
+    node nd;
+    nd.plane_source = p.plane_source;
+    nd.first = first;
+    nd.count = p.count;
+    first += p.count;
+    nd.negative = global(p.negative);
+    nd.positive = global(p.positive);
     nodes_.push_back(nd);
   }
-  part.nodes.clear();
-  part.node_fragments.clear();
+  std::vector<parked_node>().swap(part.parked);
+  if (nodes_.size() == node_base) return;
+  if (part.root_parent >= 0) {  // the part's root hangs below a node built earlier
+    node& root = nodes_[node_base];
+    node& parent = nodes_[static_cast<std::size_t>(part.root_parent)];
+    root.parent = part.root_parent;
+    root.side_in_parent = part.root_side;
+    root.depth = parent.depth + 1;
+    (part.root_side > 0 ? parent.positive : parent.negative) = static_cast<std::int32_t>(node_base);
+  }
+  // Parents, sides and depths from the children links: a node comes before its children.
+  for (std::size_t k = node_base; k < nodes_.size(); ++k) {
+    const node& nd = nodes_[k];
+    for (const auto& [child, side] :
+         {std::pair<std::int32_t, int>{nd.negative, -1}, {nd.positive, +1}}) {
+      if (child < 0) continue;
+      node& c = nodes_[static_cast<std::size_t>(child)];
+      c.parent = static_cast<std::int32_t>(k);
+      c.side_in_parent = side;
+      c.depth = nd.depth + 1;
+    }
+    stats_.depth = std::max<std::size_t>(stats_.depth, nd.depth);
+  }
 }
 
 template <class G>
@@ -237,6 +273,8 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
   nd.first = static_cast<std::uint32_t>(part.node_fragments.size());
   nd.parent = w.parent;
   nd.side_in_parent = w.side;
+  if (w.depth > node::max_depth)
+    throw limit_error("bsp build: the tree is deeper than " + std::to_string(node::max_depth));
   nd.depth = w.depth;
   if (w.parent >= 0)
     (w.side > 0 ? part.nodes[w.parent].positive : part.nodes[w.parent].negative) = id;

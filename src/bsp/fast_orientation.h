@@ -66,9 +66,10 @@ inline fast_plane make_fast_plane(const vec3d& a, const vec3d& b, const vec3d& c
 /// Evaluates f(x) = orientation value of a point x known to lie within `radius` (max norm)
 /// of the double point `point` (radius 0: x is exactly `point`): writes the double value v
 /// and a bound such that |f(x) - v| <= bound. Returns false when the magnitudes leave the
-/// range where the bound holds (the caller must then compute exactly).
-inline bool fast_eval(const fast_plane_core& p, const vec3d& point, double radius, double& v,
-                      double& bound) {
+/// range where the bound holds (the caller must then compute exactly). Plane: fast_plane_core
+/// or a type with the same members (valid, a, n, coef, spread) holding bounds at least as large.
+template <class Plane>
+inline bool fast_eval(const Plane& p, const vec3d& point, double radius, double& v, double& bound) {
   constexpr double u = 1.1102230246251565e-16;
   if (!p.valid) return false;
   // The plane's magnitudes were checked once (make_fast_plane). Here a difference q_k is exact

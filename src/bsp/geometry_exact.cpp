@@ -31,6 +31,15 @@ constexpr double u = 1.1102230246251565e-16;
 
 int sign_of(const mpq_class& q) { return sgn(q); }
 
+/// The smallest float >= x (x >= 0; +inf beyond the float range): a radius or error bound
+/// stored in 4 bytes stays a bound.
+float round_up_to_float(double x) {
+  if (!(x <= FLT_MAX)) return std::numeric_limits<float>::infinity();  // NaN too
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
 /// Distance from x to the next double away from zero (an upper bound on the rounding error
 /// of a round-to-nearest result x, with room to spare).
 double ulp_of(double x) {
@@ -40,30 +49,53 @@ double ulp_of(double x) {
 }  // namespace
 
 exact_geometry::exact_geometry(const triangle_soup& soup)
-    : sources_(soup.triangles.size()),
-      fast_(soup.triangles.size()),
-      exact_planes_(soup.triangles.size()),
-      chunks_(std::size_t{1} << (max_point_bits - chunk_bits)) {
+    : sources_(soup.triangles.size()), fast_(soup.triangles.size()) {
   if (soup.vertices.size() >= (std::size_t{1} << (max_point_bits - 1)))
     throw limit_error("bsp build: too many vertices for the exact kernel's point table");
   // Input vertices are points 0 .. V-1, exactly their doubles.
-  scratch sc;
-  for (std::size_t i = 0; i < soup.vertices.size(); ++i) {
-    const std::uint32_t id = allocate(sc);
-    at(id).c = soup.vertices[i];
-  }
   inputs_ = static_cast<std::uint32_t>(soup.vertices.size());
-  for (auto& p : exact_planes_) p.store(nullptr, std::memory_order_relaxed);
+  {
+    const std::lock_guard<std::mutex> lock(claim_mutex_);
+    grow_chunks(inputs_);
+    claimed_ = inputs_;
+  }
+  for (std::uint32_t i = 0; i < inputs_; ++i) at(i).c = soup.vertices[i];
 }
 
-exact_geometry::~exact_geometry() {
-  for (auto& p : exact_planes_) delete p.load(std::memory_order_relaxed);
+exact_geometry::~exact_geometry() = default;
+
+exact_geometry::filter_plane exact_geometry::make_filter_plane(const fast_plane_core& p) {
+  filter_plane f;
+  f.n = p.n;
+  for (int k = 0; k < 3; ++k)
+    f.coef[k] = p.valid ? round_up_to_float(p.coef[k]) : std::numeric_limits<float>::infinity();
+  f.spread = p.valid ? round_up_to_float(p.spread) : std::numeric_limits<float>::infinity();
+  return f;
+}
+
+void exact_geometry::grow_chunks(std::uint32_t end) {
+  const std::size_t needed = (std::size_t{end} + chunk_size - 1) >> chunk_bits;
+  if (needed == 0) return;
+  if (needed > table_size_) {
+    // A larger table, published after its slots are copied; the old one stays readable.
+    const std::size_t size = std::max({needed, 2 * table_size_, std::size_t{16}});
+    std::unique_ptr<point*[]> table(new point*[size]());
+    for (std::size_t c = 0; c < chunks_.size(); ++c) table[c] = chunks_[c].get();
+    chunk_table_.store(table.get(), std::memory_order_release);
+    chunk_tables_.push_back(std::move(table));
+    table_size_ = size;
+  }
+  point** table = chunk_tables_.back().get();
+  while (chunks_.size() < needed) {
+    chunks_.emplace_back(new point[chunk_size]);
+    table[chunks_.size() - 1] = chunks_.back().get();
+  }
 }
 
 const exact_geometry::exact_value* exact_geometry::find_exact(std::uint32_t id) const {
   const std::lock_guard<std::mutex> lock(exact_mutex_);
   const auto it = exact_values_.find(id);
-  return it == exact_values_.end() ? nullptr : it->second.get();
+  return it == exact_values_.end() ? nullptr : &it->second;
 }
 
 void exact_geometry::claim_block(scratch& sc) {
@@ -73,8 +105,7 @@ void exact_geometry::claim_block(scratch& sc) {
   sc.next = claimed_;
   sc.end = claimed_ + block;
   claimed_ += block;
-  for (std::uint32_t c = sc.next >> chunk_bits; c <= (sc.end - 1) >> chunk_bits; ++c)
-    if (!chunks_[c]) chunks_[c].reset(new point[chunk_size]);
+  grow_chunks(claimed_);
 }
 
 std::uint32_t exact_geometry::allocate(scratch& sc) {
@@ -92,14 +123,19 @@ bool exact_geometry::add_source(const triangle_soup& soup, std::uint32_t i, frag
   if (E().collinear_3_object()(E::Point_3(a[0], a[1], a[2]), E::Point_3(b[0], b[1], b[2]),
                                E::Point_3(c[0], c[1], c[2])))
     return false;
-  fast_[i] = make_fast_plane(a, b, c);
+  fast_[i] = make_filter_plane(make_fast_plane(a, b, c));
+  fast_[i].a = &at(st.v[0]).c;
   out = {st.v, i, st.face};
   return true;
 }
 
 const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane) const {
-  if (const exact_plane* p = exact_planes_[plane].load(std::memory_order_acquire)) return *p;
-  auto made = std::make_unique<exact_plane>();
+  {
+    const std::lock_guard<std::mutex> lock(exact_mutex_);
+    const auto it = exact_planes_.find(plane);
+    if (it != exact_planes_.end()) return it->second;
+  }
+  exact_plane made;
   std::array<std::array<mpq_class, 3>, 3> v;
   for (int k = 0; k < 3; ++k)
     for (int j = 0; j < 3; ++j) v[k][j] = at(sources_[plane][k]).c[j];
@@ -108,21 +144,28 @@ const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane)
     e1[j] = v[1][j] - v[0][j];
     e2[j] = v[2][j] - v[0][j];
   }
-  made->n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-  made->n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-  made->n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-  made->d = made->n[0] * v[0][0] + made->n[1] * v[0][1] + made->n[2] * v[0][2];
-  const exact_plane* expected = nullptr;
-  if (exact_planes_[plane].compare_exchange_strong(expected, made.get(), std::memory_order_acq_rel))
-    return *made.release();
-  return *expected;  // another thread made the same plane first
+  made.n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  made.n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  made.n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  made.d = made.n[0] * v[0][0] + made.n[1] * v[0][1] + made.n[2] * v[0][2];
+  const std::lock_guard<std::mutex> lock(exact_mutex_);
+  return exact_planes_.emplace(plane, std::move(made)).first->second;  // the first one stays
+}
+
+const exact_geometry::exact_value* exact_geometry::value_of(std::uint32_t id,
+                                                            exact_value& vertex) const {
+  if (id >= inputs_) return find_exact(id);
+  for (int j = 0; j < 3; ++j) vertex.x[j] = at(id).c[j];  // exact: a double is dyadic
+  return &vertex;
 }
 
 const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) const {
-  // Iterative over the points x depends on (their ids are smaller: a point is made after its
-  // endpoints), so a long chain of nested split points cannot overflow the stack.
+  // Iterative over the constructed points x depends on (their ids are smaller: a point is
+  // made after its endpoints), so a long chain of nested split points cannot overflow the
+  // stack. Input vertices are not memoised: their doubles are their exact values.
   if (const exact_value* known = find_exact(x)) return *known;
   std::vector<std::uint32_t> stack{x};
+  exact_value vp, vq;
   while (!stack.empty()) {
     const std::uint32_t id = stack.back();
     if (find_exact(id)) {
@@ -130,24 +173,20 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
       continue;
     }
     const point& pt = at(id);
-    auto made = std::make_unique<exact_value>();
-    if (pt.p == none) {
-      for (int j = 0; j < 3; ++j) made->x[j] = pt.c[j];  // exact: a double is a dyadic rational
-    } else {
-      const exact_value* ep = find_exact(pt.p);
-      const exact_value* eq = find_exact(pt.q);
-      if (!ep || !eq) {
-        if (!ep) stack.push_back(pt.p);
-        if (!eq) stack.push_back(pt.q);
-        continue;
-      }
-      // x = (fp q - fq p) / (fp - fq), fp = n.p - d, fq = n.q - d.
-      const exact_plane& pl = plane_of(pt.plane);
-      const mpq_class fp = pl.n[0] * ep->x[0] + pl.n[1] * ep->x[1] + pl.n[2] * ep->x[2] - pl.d;
-      const mpq_class fq = pl.n[0] * eq->x[0] + pl.n[1] * eq->x[1] + pl.n[2] * eq->x[2] - pl.d;
-      const mpq_class den = fp - fq;
-      for (int j = 0; j < 3; ++j) made->x[j] = (fp * eq->x[j] - fq * ep->x[j]) / den;
+    const exact_value* ep = value_of(pt.p, vp);
+    const exact_value* eq = value_of(pt.q, vq);
+    if (!ep || !eq) {
+      if (!ep) stack.push_back(pt.p);
+      if (!eq) stack.push_back(pt.q);
+      continue;
     }
+    // x = (fp q - fq p) / (fp - fq), fp = n.p - d, fq = n.q - d.
+    exact_value made;
+    const exact_plane& pl = plane_of(pt.plane);
+    const mpq_class fp = pl.n[0] * ep->x[0] + pl.n[1] * ep->x[1] + pl.n[2] * ep->x[2] - pl.d;
+    const mpq_class fq = pl.n[0] * eq->x[0] + pl.n[1] * eq->x[1] + pl.n[2] * eq->x[2] - pl.d;
+    const mpq_class den = fp - fq;
+    for (int j = 0; j < 3; ++j) made.x[j] = (fp * eq->x[j] - fq * ep->x[j]) / den;
     {
       // Another thread may have made the same value meanwhile: the first one stays.
       const std::lock_guard<std::mutex> lock(exact_mutex_);
@@ -205,7 +244,7 @@ void exact_geometry::approximate(std::uint32_t id) {
   // [t_lo, t_hi] below holds the true t; the rest is the spread of p and q and rounding.
   double vp, ep, vq, eq;
   bool certified = false;
-  if (fast_eval(fast_[plane], pp.c, pp.r, vp, ep) && fast_eval(fast_[plane], pq.c, pq.r, vq, eq) &&
+  if (filter(plane, pp.c, pp.r, vp, ep) && filter(plane, pq.c, pq.r, vq, eq) &&
       std::fabs(vp) > ep && std::fabs(vq) > eq && (vp > 0) != (vq > 0)) {
     const double alpha = std::fabs(vp), beta = std::fabs(vq);
     const double t = alpha / (alpha + beta);
@@ -221,8 +260,9 @@ void exact_geometry::approximate(std::uint32_t id) {
                            4 * u * (std::fabs(pp.c[k]) + std::fabs(diff));
         r = std::max(r, err);
       }
-      x.r = r * (1 + 16 * u) + DBL_MIN;
-      certified = std::isfinite(x.r) && x.r <= 1e80;
+      r = r * (1 + 16 * u) + DBL_MIN;
+      certified = std::isfinite(r) && r <= 1e80;
+      x.r = round_up_to_float(r);
     }
   }
   if (!certified) {
@@ -233,7 +273,7 @@ void exact_geometry::approximate(std::uint32_t id) {
       x.c[k] = rational_to_double(e.x[k].get_mpq_t());
       r = std::max(r, ulp_of(x.c[k]));
     }
-    x.r = r;
+    x.r = round_up_to_float(r);
   }
 }
 
@@ -267,8 +307,11 @@ void exact_geometry::split(std::uint32_t plane, const fragment& f, const split_p
 }
 
 int exact_geometry::side_of_eye(std::uint32_t plane, const vec3d& eye) const {
-  const int s = fast_sign(fast_[plane], eye, 0);
-  if (s != 2) return s;
+  double v, bound;
+  if (filter(plane, eye, 0, v, bound)) {
+    if (v > bound) return 1;
+    if (v < -bound) return -1;
+  }
   using E = CGAL::Epick;
   const auto& src = sources_[plane];
   const auto P = [&](const vec3d& v) { return E::Point_3(v[0], v[1], v[2]); };
@@ -278,16 +321,15 @@ int exact_geometry::side_of_eye(std::uint32_t plane, const vec3d& eye) const {
 
 int exact_geometry::side_of_direction(std::uint32_t plane, const vec3d& d) const {
   // sign(n . (-d)): the double normal's error bound first, exact rationals when too close.
-  const fast_plane_core& fp = fast_[plane];
-  if (fp.valid) {
-    const double v = -(fp.n[0] * d[0] + fp.n[1] * d[1] + fp.n[2] * d[2]);
-    double bound = 0;
-    for (int k = 0; k < 3; ++k) bound += fp.coef[k] * std::fabs(d[k]);
-    bound = bound * (1 + 8 * u) + 1e-290;
-    if (std::isfinite(v) && std::isfinite(bound)) {
-      if (v > bound) return 1;
-      if (v < -bound) return -1;
-    }
+  // A plane the filter cannot bound has infinite coefficients: the bound is not finite.
+  const filter_plane& fp = fast_[plane];
+  const double v = -(fp.n[0] * d[0] + fp.n[1] * d[1] + fp.n[2] * d[2]);
+  double bound = 0;
+  for (int k = 0; k < 3; ++k) bound += fp.coef[k] * std::fabs(d[k]);
+  bound = bound * (1 + 8 * u) + 1e-290;
+  if (std::isfinite(v) && std::isfinite(bound)) {
+    if (v > bound) return 1;
+    if (v < -bound) return -1;
   }
   const exact_plane& pl = plane_of(plane);
   return -sign_of(pl.n[0] * mpq_class(d[0]) + pl.n[1] * mpq_class(d[1]) +
@@ -318,16 +360,17 @@ fragment_d exact_geometry::to_double(const fragment& f) const {
 }
 
 void exact_geometry::visit_exact(const fragment& f, const exact_visitor& visit) const {
+  exact_value vertex;
   for (int k = 0; k < 3; ++k) {
-    const exact_value& e = exact_of(f.v[k]);
+    const exact_value& e = f.v[k] < inputs_ ? *value_of(f.v[k], vertex) : exact_of(f.v[k]);
     for (int j = 0; j < 3; ++j) visit(k, j, e.x[j].get_mpq_t());
   }
 }
 
 std::size_t exact_geometry::points_memory() const {
-  std::size_t chunks = 0;
-  for (const auto& c : chunks_) chunks += c ? 1 : 0;
-  return chunks * chunk_size * sizeof(point) + chunks_.size() * sizeof(chunks_[0]);
+  std::size_t tables = 0;
+  for (std::size_t size = 16; size <= table_size_; size *= 2) tables += size * sizeof(point*);
+  return chunks_.size() * (chunk_size * sizeof(point) + sizeof(chunks_[0])) + tables;
 }
 
 }  // namespace exbsp

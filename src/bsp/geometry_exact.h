@@ -5,8 +5,9 @@
 // where the plane P of an input triangle meets the segment between points p and q (which
 // lie strictly on opposite sides of P). Points live in one table shared by all fragments; a
 // fragment is three point ids, its source triangle and its face id (20 bytes). Each point
-// caches a double centre c and a certified radius r: the exact point lies within r of c in
-// the max norm (r = 0 for input vertices). Side of point x against plane Q, in order:
+// (40 bytes) caches a double centre c and a certified radius r, a float rounded up: the exact
+// point lies within r of c in the max norm (r = 0 for input vertices). Side of point x
+// against plane Q, in order:
 //   1. filter: the double orientation of c with an error bound that covers r (fast_sign);
 //   2. structure: x = SEG(p, q, Q) lies on Q; otherwise, when p and q are not strictly on
 //      opposite sides of Q, x (strictly between them) takes their sign (both 0: 0) — the
@@ -20,6 +21,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <unordered_map>
@@ -105,46 +107,89 @@ class exact_geometry {
   struct exact_plane;
   struct point {
     vec3d c{};
-    double r = 0;
+    float r = 0;                                     ///< rounded up (round_up_to_float)
     std::uint32_t p = none, q = none, plane = none;  ///< SEG(p, q, plane); none: input vertex
   };
-  static constexpr unsigned chunk_bits = 13;
-  static constexpr unsigned max_point_bits = 28;  ///< 2^28 points (15 GB of them) at most
+  /// What the filter keeps of an input triangle's plane (48 bytes rather than 88):
+  /// fast_orientation.h's fast_plane_core with the error coefficients rounded up to floats
+  /// and the point a found through a pointer to the triangle's first vertex in the point table
+  /// (measured: 1-2% of build time; looking a up through sources_ and the table cost 4%). A
+  /// plane the filter cannot bound has infinite coefficients, so it never certifies.
+  struct filter_plane {
+    const vec3d* a = nullptr;  ///< the first vertex's centre (chunks never move)
+    vec3d n{};
+    std::array<float, 3> coef{float_infinity, float_infinity, float_infinity};
+    float spread = float_infinity;
+  };
+  static constexpr float float_infinity = std::numeric_limits<float>::infinity();
+  /// fast_eval's plane (a, n, coef, spread).
+  struct filter_view {
+    static constexpr bool valid = true;
+    const vec3d& a;
+    const vec3d& n;
+    const std::array<float, 3>& coef;
+    float spread;
+  };
+  static filter_plane make_filter_plane(const fast_plane_core& p);
+  /// fast_eval against the plane of input triangle `plane`.
+  bool filter(std::uint32_t plane, const vec3d& x, double radius, double& v, double& bound) const {
+    const filter_plane& f = fast_[plane];
+    return fast_eval(filter_view{*f.a, f.n, f.coef, f.spread}, x, radius, v, bound);
+  }
+  /// Points live in chunks of chunk_size, found through a table of chunk pointers that
+  /// doubles when full; a table once published is never changed in the slots in use nor
+  /// freed before the geometry, so other threads may read through any table they loaded.
+  static constexpr unsigned chunk_bits = 8;       ///< 10 KB per chunk
+  static constexpr unsigned max_point_bits = 28;  ///< 2^28 points (10 GB) at most
   static constexpr std::uint32_t chunk_size = 1u << chunk_bits;
-  static constexpr std::uint32_t block = 512;
+  static constexpr std::uint32_t block = 16;
 
   const point& at(std::uint32_t id) const {
-    return chunks_[id >> chunk_bits][id & (chunk_size - 1)];
+    return chunk_table_.load(std::memory_order_acquire)[id >> chunk_bits][id & (chunk_size - 1)];
   }
-  point& at(std::uint32_t id) { return chunks_[id >> chunk_bits][id & (chunk_size - 1)]; }
+  point& at(std::uint32_t id) {
+    return chunk_table_.load(std::memory_order_acquire)[id >> chunk_bits][id & (chunk_size - 1)];
+  }
   std::uint32_t allocate(scratch& sc);
   void claim_block(scratch& sc);
+  /// Makes the chunks of ids below end (caller holds claim_mutex_).
+  void grow_chunks(std::uint32_t end);
 
   int point_sign(std::uint32_t plane, std::uint32_t x, int& budget) const {
     const point& pt = at(x);
-    const int s = fast_sign(fast_[plane], pt.c, pt.r);  // the core filter: no shared-vertex test
-    if (s != 2) {
-      return s;
+    double v, bound;  // the core filter (fast_sign without the shared-vertex test)
+    if (filter(plane, pt.c, pt.r, v, bound)) {
+      if (v > bound) return 1;
+      if (v < -bound) return -1;
     }
     return point_sign_slow(plane, x, budget);
   }
   int point_sign_slow(std::uint32_t plane, std::uint32_t x, int& budget) const;
   int exact_sign(std::uint32_t plane, std::uint32_t x) const;
+  /// The memoised exact value of constructed point x (made on first use).
   const exact_value& exact_of(std::uint32_t x) const;
+  /// An input vertex's exact value, written into `vertex`, or a constructed point's memoised
+  /// value (nullptr until made).
+  const exact_value* value_of(std::uint32_t id, exact_value& vertex) const;
   const exact_plane& plane_of(std::uint32_t plane) const;
   std::uint32_t construct(std::uint32_t plane, std::uint32_t p, std::uint32_t q, scratch& sc);
   /// Sets the certified centre and radius of constructed point id from its p, q and plane.
   void approximate(std::uint32_t id);
 
   std::vector<std::array<std::uint32_t, 3>> sources_;  ///< input vertex ids (= point ids)
-  std::vector<fast_plane_core> fast_;
-  mutable std::vector<std::atomic<const exact_plane*>> exact_planes_;
-  /// Exact values of the few points that needed one (and of output points), by point id:
-  /// rare during a build, so a locked map rather than 8 bytes in every point.
+  std::vector<filter_plane> fast_;
+  /// Exact values of the few points that needed one (and of output points), by point id, and
+  /// exact planes of the triangles that needed one: rare during a build, so locked maps
+  /// rather than 8 bytes in every point and triangle.
   const exact_value* find_exact(std::uint32_t id) const;
   mutable std::mutex exact_mutex_;
-  mutable std::unordered_map<std::uint32_t, std::unique_ptr<const exact_value>> exact_values_;
-  std::vector<std::unique_ptr<point[]>> chunks_;  ///< sized once: never reallocated
+  /// (Node-based maps: a value's address never changes, so references to it stay valid.)
+  mutable std::unordered_map<std::uint32_t, const exact_value> exact_values_;
+  mutable std::unordered_map<std::uint32_t, const exact_plane> exact_planes_;
+  std::atomic<point**> chunk_table_{nullptr};
+  std::vector<std::unique_ptr<point*[]>> chunk_tables_;  ///< every table made (the last in use)
+  std::vector<std::unique_ptr<point[]>> chunks_;         ///< guarded by claim_mutex_
+  std::size_t table_size_ = 0;                           ///< guarded by claim_mutex_
   std::mutex claim_mutex_;
   std::uint32_t claimed_ = 0;  ///< ids below this are claimed (guarded by claim_mutex_)
   std::uint32_t inputs_ = 0;

@@ -65,9 +65,11 @@ void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& 
   const std::uint64_t capacity = (std::uint64_t{1} << max_point_bits) - 2 * block - inputs_;
   const auto constructed = static_cast<std::uint32_t>(in.count("points", 12, capacity));
   const std::uint32_t total = inputs_ + constructed;
-  for (std::uint32_t c = 0; total && c <= (total - 1) >> chunk_bits; ++c)
-    if (!chunks_[c]) chunks_[c].reset(new point[chunk_size]);
-  claimed_ = std::max(claimed_, total);
+  {
+    const std::lock_guard<std::mutex> lock(claim_mutex_);
+    grow_chunks(total);
+    claimed_ = std::max(claimed_, total);
+  }
   for (std::uint32_t id = inputs_; id < total; ++id) {
     const std::size_t where = in.offset();
     const std::uint32_t p = in.u32("points"), q = in.u32("points"), plane = in.u32("points");

@@ -83,6 +83,8 @@ basic_bsp_tree<G>::basic_bsp_tree(const tree_file::common_part& common, tree_fil
       in.fail_at(at, field,
                  "no fragment of the node lies in triangle " + std::to_string(nd.plane_source));
     if (i > 0 && nd.parent < 0) in.fail_at(at, field, "not a child of an earlier node");
+    if (nd.parent >= 0 && nodes_[nd.parent].depth == node::max_depth)
+      in.fail_at(at, field, "deeper than " + std::to_string(node::max_depth));
     nd.depth = nd.parent < 0 ? 1 : nodes_[nd.parent].depth + 1;
     for (const auto& [child, side] :
          {std::pair<std::int32_t, int>{nd.negative, -1}, {nd.positive, +1}}) {
