@@ -63,6 +63,13 @@ class exact_geometry {
 
   bool add_source(const triangle_soup& soup, std::uint32_t i, fragment& out);
 
+  /// For batched side tests (bsp/batch_classify.h): a point's certified centre and radius
+  /// (its exact position lies within the radius, max norm) and a plane's filter.
+  static constexpr bool has_centres = true;
+  const vec3d& centre(std::uint32_t id) const { return at(id).c; }
+  double radius(std::uint32_t id) const { return at(id).r; }
+  const fast_plane_core& filter(std::uint32_t plane) const { return fast_[plane]; }
+
   int sign(std::uint32_t plane, const fragment& f, int k) const {
     int budget = 32;
     return point_sign(plane, f.v[k], budget);
