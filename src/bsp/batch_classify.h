@@ -122,6 +122,43 @@ std::vector<list_block> make_blocks(const std::vector<std::uint32_t>& list, cons
   return blocks;
 }
 
+/// Input triangles found to lie in one plane, as classes (union-find over source ids): a
+/// fragment whose source is in the class of the node plane's source lies in that plane, so it
+/// is coplanar without a side test. Classes are learnt during the build from side tests that
+/// found a fragment exactly in a plane (mostly on CAD meshes, whose flat faces are made of
+/// many triangles: every such test is an exact zero, the slowest kind). Empty until the
+/// first one is learnt.
+class coplanar_sources {
+ public:
+  /// Whether sources a and b are known to lie in one plane (read only: safe in parallel).
+  bool same(std::uint32_t a, std::uint32_t b) const {
+    if (parent_.empty()) return false;
+    while (parent_[a] != a) a = parent_[a];
+    while (parent_[b] != b) b = parent_[b];
+    return a == b;
+  }
+  /// Records that sources a and b (of `sources` in all) lie in one plane.
+  void join(std::uint32_t a, std::uint32_t b, std::size_t sources) {
+    if (parent_.empty()) {
+      parent_.resize(sources);
+      for (std::size_t i = 0; i < sources; ++i) parent_[i] = static_cast<std::uint32_t>(i);
+    }
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::uint32_t find(std::uint32_t a) {
+    while (parent_[a] != a) {
+      parent_[a] = parent_[parent_[a]];  // path halving
+      a = parent_[a];
+    }
+    return a;
+  }
+  std::vector<std::uint32_t> parent_;
+};
+
 /// Counts of a candidate plane over part of a sample.
 struct side_counts {
   long long splits = 0, positive = 0, negative = 0;
@@ -159,7 +196,7 @@ class sample_batch {
   /// Adds the classifications of sample fragments [k0, k1) against plane `plane` (static
   /// filter sp) to `out`; a fragment of the plane's own source is coplanar.
   void count(const G& geom, std::uint32_t plane, const static_plane& sp, std::size_t k0,
-             std::size_t k1, side_counts& out) {
+             std::size_t k1, side_counts& out, coplanar_sources& classes, std::size_t sources) {
     const std::size_t t0 = 3 * k0, t1 = 3 * k1;
     double* __restrict code = code_.data();
     if (sp.valid) {
@@ -191,11 +228,13 @@ class sample_batch {
         splits += sum != 3 && sum != -3;
         continue;
       }
+      if (classes.same(source_[k], plane)) continue;  // in the plane: coplanar
       // Not certified: the exact predicate (the third one only when the first two agree).
       std::array<int, 3> sg{static_cast<int>(c0), static_cast<int>(c1), static_cast<int>(c2)};
       for (int t = 0; t < 2; ++t)
         if (sg[t] == 0) sg[t] = geom.sign(plane, *fragments_[k], t);
       if (sg[2] == 0 && sg[0] * sg[1] >= 0) sg[2] = geom.sign(plane, *fragments_[k], 2);
+      if (sg[0] == 0 && sg[1] == 0 && sg[2] == 0) classes.join(source_[k], plane, sources);
       switch (classify_signs(sg)) {
         case classification::straddling:
           ++splits;

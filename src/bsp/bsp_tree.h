@@ -140,6 +140,7 @@ class basic_bsp_tree {
     static_plane plane;                             ///< the node plane's static filter
     static_plane sample_plane;                      ///< the current candidate's static filter
     std::uint32_t sample_plane_source = ~0u;
+    detail::coplanar_sources classes;  ///< sources found in one plane, by this subtree
   };
   struct build_context;
   template <class PushChild>

@@ -45,6 +45,7 @@ struct basic_bsp_tree<G>::build_context {
   /// Bounding box of the input vertices: it holds every exact point of the build (static
   /// filters of batch_classify.h).
   vec3d lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  std::size_t sources = 0;  ///< input triangles (source ids are below)
   std::chrono::steady_clock::time_point start;
   std::atomic<std::size_t> total_fragments{0}, splits{0}, placed{0}, nodes{0};
   std::mutex progress_mutex;
@@ -113,6 +114,7 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   // Heuristic seeds come from each node's path key, not from a creation counter, and the
   // frontier size is fixed, so the tree is the same for any number of threads.
   build_context ctx(options, heuristic, start);
+  ctx.sources = soup.triangles.size();
   for (const vec3d& v : soup.vertices)
     for (int k = 0; k < 3; ++k) {
       ctx.lo[k] = std::min(ctx.lo[k], v[k]);
@@ -273,9 +275,15 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
     std::array<int, 3> sj{};
     if constexpr (batched) {
       const static_plane& sp = part.plane;
-      for (int k = 0; k < 3; ++k) {
+      for (int k = 0; k < 3; ++k)
         sj[k] = sp.valid ? static_sign(sp, geom_.centre(f.v[k]), geom_.radius(f.v[k])) : 0;
-        if (sj[k] == 0) sj[k] = geom_.sign(plane_source, f, k);
+      if (sj[0] == 0 || sj[1] == 0 || sj[2] == 0) {
+        if (part.classes.same(f.source, plane_source)) {  // in the plane (batch_classify.h)
+          part.signs[j] = {0, 0, 0};
+          return;
+        }
+        for (int k = 0; k < 3; ++k)
+          if (sj[k] == 0) sj[k] = geom_.sign(plane_source, f, k);
       }
     } else {
       sj = signs_against(plane_source, f);
@@ -419,7 +427,7 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
             part.sample_plane = make_static_plane(geom_.filter(plane), ctx.lo, ctx.hi);
             part.sample_plane_source = plane;
           }
-          part.sample.count(geom_, plane, part.sample_plane, k0, k1, c);
+          part.sample.count(geom_, plane, part.sample_plane, k0, k1, c, part.classes, ctx.sources);
         };
         return detail::choose_sampled_counts(n, count, o, node_key, 64);
       } else {
