@@ -154,13 +154,13 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   std::vector<subtree> parts(frontier.size());
   detail::parallel_failure failure;
   const long long count = static_cast<long long>(frontier.size());
-  // Few fragments left: one thread. Such a build takes milliseconds, and waking a second
-  // thread, then waiting at the end for the slowest part, cost more than it saved (measured
-  // on 2 busy cores: part 3.0 ms on one thread, 11.7 ms on two; blade 41 ms against 62 ms).
+  // Few fragments left (options.parallel_min_fragments): one thread. Such a build takes
+  // milliseconds, and waking a second thread, then waiting at the end for the slowest part,
+  // cost more than it saved (measured on 2 busy cores: part 3.0 ms on one thread, 11.7 ms on
+  // two; blade 41 ms against 62 ms).
   std::size_t pending = 0;
   for (const work& w : frontier) pending += w.list.size();
-  constexpr std::size_t parallel_min_fragments = 20000;
-#pragma omp parallel for schedule(dynamic, 1) if (pending >= parallel_min_fragments) \
+#pragma omp parallel for schedule(dynamic, 1) if (pending >= options.parallel_min_fragments) \
     num_threads(detail::threads_for(options.threads))
   for (long long i = 0; i < count; ++i) {
     failure.run([&] {
