@@ -16,6 +16,7 @@
 #include <array>
 #include <cstdint>
 #include <type_traits>
+#include <unordered_map>
 #include <vector>
 
 #include "bsp/fast_orientation.h"
@@ -232,8 +233,8 @@ class sample_batch {
       // Not certified: the exact predicate (the third one only when the first two agree).
       std::array<int, 3> sg{static_cast<int>(c0), static_cast<int>(c1), static_cast<int>(c2)};
       for (int t = 0; t < 2; ++t)
-        if (sg[t] == 0) sg[t] = geom.sign(plane, *fragments_[k], t);
-      if (sg[2] == 0 && sg[0] * sg[1] >= 0) sg[2] = geom.sign(plane, *fragments_[k], 2);
+        if (sg[t] == 0) sg[t] = exact_sign(geom, plane, *fragments_[k], t);
+      if (sg[2] == 0 && sg[0] * sg[1] >= 0) sg[2] = exact_sign(geom, plane, *fragments_[k], 2);
       if (sg[0] == 0 && sg[1] == 0 && sg[2] == 0) classes.join(source_[k], plane, sources);
       switch (classify_signs(sg)) {
         case classification::straddling:
@@ -255,6 +256,20 @@ class sample_batch {
   }
 
  private:
+  /// G::sign of point t of f against `plane`, remembered: the lists of neighbouring nodes
+  /// share most fragments and candidate planes (below 16 fragments every fragment is a
+  /// candidate), so the same slow questions recur level after level.
+  int exact_sign(const G& geom, std::uint32_t plane, const fragment& f, int t) {
+    const std::uint64_t key = std::uint64_t{f.v[t]} << 32 | plane;
+    const auto found = memo_.find(key);
+    if (found != memo_.end()) return found->second;
+    const int s = geom.sign(plane, f, t);
+    if (memo_.size() >= memo_limit) memo_.clear();
+    memo_.emplace(key, static_cast<std::int8_t>(s));
+    return s;
+  }
+  static constexpr std::size_t memo_limit = std::size_t{1} << 12;  ///< about 200 KB
+  std::unordered_map<std::uint64_t, std::int8_t> memo_;
   std::vector<double> x_, y_, z_, r_;
   std::vector<double> code_;  ///< per point: +1 / -1 certified, 0 not
   std::vector<std::uint32_t> source_;

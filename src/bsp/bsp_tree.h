@@ -141,6 +141,14 @@ class basic_bsp_tree {
     static_plane sample_plane;                      ///< the current candidate's static filter
     std::uint32_t sample_plane_source = ~0u;
     detail::coplanar_sources classes;  ///< sources found in one plane, by this subtree
+    /// Frees the build scratch above (signs .. classes) once the subtree is grown.
+    void release_scratch() {
+      signs = {};
+      block_signs = {};
+      tasks = {};
+      sample = {};
+      classes = {};
+    }
   };
   struct build_context;
   template <class PushChild>

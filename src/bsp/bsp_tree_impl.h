@@ -136,6 +136,7 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
     queue.pop_front();
     grow_node(std::move(w), top, ctx, [&](work&& child) { queue.push_back(std::move(child)); });
   }
+  top.release_scratch();
   // Top pieces join the shared read-only pool; refs to them become plain pool indices.
   const auto top_base = static_cast<std::uint32_t>(pool_.size());
   for (fragment& f : top.pieces) pool_.push_back(std::move(f));
@@ -176,6 +177,7 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
         grow_node(std::move(w), part, ctx,
                   [&](work&& child) { stack.push_back(std::move(child)); });
       }
+      part.release_scratch();  // freed as soon as the part is grown
     });
   }
   failure.rethrow();
