@@ -438,7 +438,7 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
           }
           part.sample.count(geom_, plane, part.sample_plane, k0, k1, c, part.classes, ctx.sources);
         };
-        return detail::choose_sampled_counts(n, count, o, node_key, 64);
+        return detail::choose_sampled_counts(n, count, o, node_key, 16);
       } else {
         return detail::choose_sampled(n, cls, o, node_key);
       }
