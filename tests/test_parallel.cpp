@@ -34,6 +34,7 @@ using exbsp::vec3d;
 /// (support/observable.h), for two eyes and a direction.
 std::string observable(const triangle_soup& soup, build_options o, unsigned threads) {
   o.threads = threads;
+  o.parallel_min_fragments = 0;  // these inputs are small: build their subtrees in parallel
   return exbsp_test::observable(exbsp::bsp::build(soup, o),
                                 {vec3d{-3, 40, 25}, vec3d{7.5, 7.5, 7.5}, vec3d{0.3, -1, 0.2}});
 }

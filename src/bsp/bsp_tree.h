@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bsp/batch_classify.h"
 #include "bsp/engine.h"
 #include "bsp/split_pattern.h"
 #include "bsp/tree_file.h"
@@ -126,6 +127,7 @@ class basic_bsp_tree {
     std::int32_t side;
     std::uint32_t depth;
     std::uint64_t key;  ///< path key: root 1, children mix64(2 key + (side > 0))
+    std::vector<detail::list_block> blocks;  ///< G::has_centres: runs of list with their boxes
   };
   /// A grown subtree's node waiting for the merge: what append_subtree cannot derive (16
   /// bytes rather than 28: first, parent, side and depth follow from counts and children).
@@ -143,6 +145,22 @@ class basic_bsp_tree {
     std::int32_t root_parent = -1;
     std::int32_t root_side = 0;
     typename G::scratch scratch;
+    std::vector<std::array<std::int8_t, 3>> signs;  ///< per list position, reused node to node
+    std::vector<std::int8_t> block_signs;           ///< per list block, reused node to node
+    std::vector<std::uint32_t> tasks;               ///< blocks to test fragment by fragment
+    detail::sample_batch<G> sample;                 ///< the sampled heuristic's gathered sample
+    static_plane plane;                             ///< the node plane's static filter
+    static_plane sample_plane;                      ///< the current candidate's static filter
+    std::uint32_t sample_plane_source = ~0u;
+    detail::coplanar_sources classes;  ///< sources found in one plane, by this subtree
+    /// Frees the build scratch above (signs .. classes) once the subtree is grown.
+    void release_scratch() {
+      signs = {};
+      block_signs = {};
+      tasks = {};
+      sample = {};
+      classes = {};
+    }
   };
   struct build_context;
   template <class PushChild>
@@ -183,7 +201,7 @@ class basic_bsp_tree {
   }
 
   /// The list position of the splitter (heuristics.h).
-  std::size_t choose_splitter(const std::vector<std::uint32_t>& list, const subtree& part,
+  std::size_t choose_splitter(const std::vector<std::uint32_t>& list, subtree& part,
                               const build_context& ctx, std::uint64_t node_key,
                               std::uint32_t depth) const;
 

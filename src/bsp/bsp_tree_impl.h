@@ -42,6 +42,10 @@ struct basic_bsp_tree<G>::build_context {
       : options(o), heuristic(h), start(t) {}
   const build_options& options;
   detail::heuristic_id heuristic;
+  /// Bounding box of the input vertices: it holds every exact point of the build (static
+  /// filters of batch_classify.h).
+  vec3d lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  std::size_t sources = 0;  ///< input triangles (source ids are below)
   std::chrono::steady_clock::time_point start;
   std::atomic<std::size_t> total_fragments{0}, splits{0}, placed{0}, nodes{0};
   std::mutex progress_mutex;
@@ -111,9 +115,21 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   // Heuristic seeds come from each node's path key, not from a creation counter, and the
   // frontier size is fixed, so the tree is the same for any number of threads.
   build_context ctx(options, heuristic, start);
+  ctx.sources = soup.triangles.size();
+  for (const vec3d& v : soup.vertices)
+    for (int k = 0; k < 3; ++k) {
+      ctx.lo[k] = std::min(ctx.lo[k], v[k]);
+      ctx.hi[k] = std::max(ctx.hi[k], v[k]);
+    }
   ctx.check_limit(root_list.size());
   std::deque<work> queue;
-  if (!root_list.empty()) queue.push_back({std::move(root_list), -1, 0, 1, 1});
+  if (!root_list.empty()) {
+    std::vector<detail::list_block> blocks;
+    if constexpr (detail::has_centres<G>::value)
+      blocks = detail::make_blocks(
+          root_list, [&](std::uint32_t ref) { return detail::fragment_box(geom_, pool_[ref]); });
+    queue.push_back({std::move(root_list), -1, 0, 1, 1, std::move(blocks)});
+  }
   subtree top;
   constexpr std::size_t frontier_size = 16;
   while (!queue.empty() && queue.size() < frontier_size) {
@@ -121,6 +137,7 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
     queue.pop_front();
     grow_node(std::move(w), top, ctx, [&](work&& child) { queue.push_back(std::move(child)); });
   }
+  top.release_scratch();
   // Top pieces join the shared read-only pool; refs to them become plain pool indices.
   const auto top_base = static_cast<std::uint32_t>(pool_.size());
   pool_.reserve(pool_.size() + top.pieces.size());
@@ -142,7 +159,14 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   std::vector<subtree> parts(frontier.size());
   detail::parallel_failure failure;
   const long long count = static_cast<long long>(frontier.size());
-#pragma omp parallel for schedule(dynamic, 1) num_threads(detail::threads_for(options.threads))
+  // Few fragments left (options.parallel_min_fragments): one thread. Such a build takes
+  // milliseconds, and waking a second thread, then waiting at the end for the slowest part,
+  // cost more than it saved (measured on 2 busy cores: part 3.0 ms on one thread, 11.7 ms on
+  // two; blade 41 ms against 62 ms).
+  std::size_t pending = 0;
+  for (const work& w : frontier) pending += w.list.size();
+#pragma omp parallel for schedule(dynamic, 1) if (pending >= options.parallel_min_fragments) \
+    num_threads(detail::threads_for(options.threads))
   for (long long i = 0; i < count; ++i) {
     failure.run([&] {
       subtree& part = parts[static_cast<std::size_t>(i)];
@@ -158,7 +182,8 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
                   [&](work&& child) { stack.push_back(std::move(child)); });
       }
       // The part waits for the merge holding only its live fragments and nodes, without
-      // growth slack.
+      // growth slack; its build scratch is freed first.
+      part.release_scratch();
       collect_fragments(part);
       park_nodes(part);
       part.scratch = {};
@@ -280,42 +305,93 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
     (w.side > 0 ? part.nodes[w.parent].positive : part.nodes[w.parent].negative) = id;
 
   // Side tests first (in parallel for very long lists: they dominate degenerate trees), then
-  // the sequential, order-keeping distribution with the exact splits.
+  // the sequential, order-keeping distribution with the exact splits. With G::has_centres the
+  // list comes in blocks (batch_classify.h): a block certified on one side moves whole, the
+  // others are tested fragment by fragment with the static filter first.
+  constexpr bool batched = detail::has_centres<G>::value;
   const std::size_t n = w.list.size();
-  std::vector<std::array<std::int8_t, 3>> signs(n);
-  const long long nn = static_cast<long long>(n);
-  detail::parallel_failure failure;
-#pragma omp parallel for schedule(static) if (n > 65536) \
-    num_threads(detail::threads_for(options.threads))
-  for (long long jj = 0; jj < nn; ++jj) {
-    failure.run([&] {
-      const auto j = static_cast<std::size_t>(jj);
-      // A fragment lies exactly in its source's plane: coplanar by construction. (Exact
-      // kernels would find the same; rounded ones could not, and would loop forever.)
-      const fragment& f = fragment_at(w.list[j]);
-      if (f.source == plane_source) {
-        signs[j] = {0, 0, 0};
-        return;
+  part.signs.resize(n);
+  const auto test_fragment = [&](std::size_t j) {
+    // A fragment lies exactly in its source's plane: coplanar by construction. (Exact
+    // kernels would find the same; rounded ones could not, and would loop forever.)
+    const fragment& f = fragment_at(w.list[j]);
+    if (f.source == plane_source) {
+      part.signs[j] = {0, 0, 0};
+      return;
+    }
+    std::array<int, 3> sj{};
+    if constexpr (batched) {
+      const static_plane& sp = part.plane;
+      for (int k = 0; k < 3; ++k)
+        sj[k] = sp.valid ? static_sign(sp, geom_.centre(f.v[k]), geom_.radius(f.v[k])) : 0;
+      if (sj[0] == 0 || sj[1] == 0 || sj[2] == 0) {
+        if (part.classes.same(f.source, plane_source)) {  // in the plane (batch_classify.h)
+          part.signs[j] = {0, 0, 0};
+          return;
+        }
+        for (int k = 0; k < 3; ++k)
+          if (sj[k] == 0) sj[k] = geom_.sign(plane_source, f, k);
       }
-      const std::array<int, 3> sj = signs_against(plane_source, f);
-      signs[j] = {static_cast<std::int8_t>(sj[0]), static_cast<std::int8_t>(sj[1]),
-                  static_cast<std::int8_t>(sj[2])};
+    } else {
+      sj = signs_against(plane_source, f);
+    }
+    part.signs[j] = {static_cast<std::int8_t>(sj[0]), static_cast<std::int8_t>(sj[1]),
+                     static_cast<std::int8_t>(sj[2])};
+  };
+  // Tasks: with blocks, the blocks not certified whole (their box tested here, cheaply, so
+  // that the threads start only when many fragments need testing); otherwise every fragment.
+  std::vector<std::uint32_t>& tasks = part.tasks;
+  tasks.clear();
+  std::size_t tested = n;
+  if constexpr (batched) {
+    const fast_plane_core filter = geom_.filter(plane_source);
+    part.plane = make_static_plane(filter, ctx.lo, ctx.hi);
+    part.block_signs.resize(w.blocks.size());
+    tested = 0;
+    for (std::size_t b = 0; b < w.blocks.size(); ++b) {
+      const int s = detail::box_sign(filter, w.blocks[b].box);
+      part.block_signs[b] = static_cast<std::int8_t>(s);
+      if (s == 0) {
+        tasks.push_back(static_cast<std::uint32_t>(b));
+        tested += w.blocks[b].count;
+      }
+    }
+  }
+  const long long nt = static_cast<long long>(batched ? tasks.size() : n);
+  detail::parallel_failure failure;
+#pragma omp parallel for schedule(static) if (tested > 65536) \
+    num_threads(detail::threads_for(options.threads))
+  for (long long tt = 0; tt < nt; ++tt) {
+    failure.run([&] {
+      const auto t = static_cast<std::size_t>(tt);
+      if constexpr (batched) {
+        const detail::list_block& b = w.blocks[tasks[t]];
+        for (std::size_t j = b.begin; j < b.begin + b.count; ++j) test_fragment(j);
+      } else {
+        test_fragment(t);
+      }
     });
   }
   failure.rethrow();
-  std::vector<std::uint32_t> negative, positive;
-  for (std::size_t j = 0; j < n; ++j) {
+  detail::block_list_builder negative, positive;
+  const auto distribute = [&](std::size_t j) {
     const std::uint32_t ref = w.list[j];
-    const std::array<int, 3> s{signs[j][0], signs[j][1], signs[j][2]};
+    const std::array<int, 3> s{part.signs[j][0], part.signs[j][1], part.signs[j][2]};
+    const auto box_of = [&](const fragment& f) {
+      if constexpr (batched)
+        return detail::fragment_box(geom_, f);
+      else
+        return detail::point_box{};
+    };
     switch (classify_signs(s)) {
       case classification::coplanar:
         part.node_fragments.push_back(ref);
         break;
       case classification::positive:
-        positive.push_back(ref);
+        positive.add(ref, box_of(fragment_at(ref)));
         break;
       case classification::negative:
-        negative.push_back(ref);
+        negative.add(ref, box_of(fragment_at(ref)));
         break;
       case classification::straddling: {
         const split_pattern pattern = make_split_pattern(s);
@@ -325,12 +401,26 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
         ctx.check_limit(static_cast<std::size_t>(pattern.pieces - 1));
         for (int k = 0; k < pattern.pieces; ++k) {
           (pattern.side[k] > 0 ? positive : negative)
-              .push_back(local_ref | static_cast<std::uint32_t>(part.pieces.size()));
+              .add(local_ref | static_cast<std::uint32_t>(part.pieces.size()), box_of(pieces[k]));
           part.pieces.push_back(pieces[k]);
         }
         break;
       }
     }
+  };
+  if constexpr (batched) {
+    for (std::size_t t = 0; t < w.blocks.size(); ++t) {
+      const detail::list_block& b = w.blocks[t];
+      if (part.block_signs[t] != 0) {
+        (part.block_signs[t] > 0 ? positive : negative).add_block(&w.list[b.begin], b);
+      } else {
+        for (std::size_t j = b.begin; j < b.begin + b.count; ++j) distribute(j);
+      }
+    }
+    positive.close();
+    negative.close();
+  } else {
+    for (std::size_t j = 0; j < n; ++j) distribute(j);
   }
   nd.count = static_cast<std::uint32_t>(part.node_fragments.size() - nd.first);
   part.nodes.push_back(nd);
@@ -338,10 +428,14 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
   const std::uint32_t depth = w.depth;
   w.list.clear();
   w.list.shrink_to_fit();
-  if (!positive.empty())
-    push_child({std::move(positive), id, +1, depth + 1, detail::mix64(key * 2 + 1)});
-  if (!negative.empty())
-    push_child({std::move(negative), id, -1, depth + 1, detail::mix64(key * 2)});
+  w.blocks.clear();
+  w.blocks.shrink_to_fit();
+  if (!positive.list.empty())
+    push_child({std::move(positive.list), id, +1, depth + 1, detail::mix64(key * 2 + 1),
+                batched ? std::move(positive.blocks) : std::vector<detail::list_block>{}});
+  if (!negative.list.empty())
+    push_child({std::move(negative.list), id, -1, depth + 1, detail::mix64(key * 2),
+                batched ? std::move(negative.blocks) : std::vector<detail::list_block>{}});
 
   const std::size_t placed = ctx.placed.fetch_add(nd.count, std::memory_order_relaxed) + nd.count;
   const std::size_t nodes = ctx.nodes.fetch_add(1, std::memory_order_relaxed) + 1;
@@ -350,7 +444,7 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
 
 template <class G>
 std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>& list,
-                                               const subtree& part, const build_context& ctx,
+                                               subtree& part, const build_context& ctx,
                                                std::uint64_t node_key, std::uint32_t depth) const {
   const std::size_t n = list.size();
   if (n <= 1) return 0;
@@ -368,7 +462,25 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
     case detail::heuristic_min_split:
       return detail::choose_min_split(n, cls, o.threads);
     case detail::heuristic_sampled:
-      return detail::choose_sampled(n, cls, o, node_key);
+      if constexpr (detail::has_centres<G>::value) {
+        // The sample gathered once, then swept by each candidate's static filter.
+        const std::size_t m = detail::sample_size(n, o.sampled_samples);
+        part.sample.gather(geom_, m, [&](std::size_t k) -> const fragment& {
+          return resolve(part, list[detail::sample_position(k, n, m)]);
+        });
+        const auto count = [&](std::size_t i, std::size_t k0, std::size_t k1,
+                               detail::side_counts& c) {
+          const std::uint32_t plane = resolve(part, list[i]).source;
+          if (k0 == 0 || part.sample_plane_source != plane) {
+            part.sample_plane = make_static_plane(geom_.filter(plane), ctx.lo, ctx.hi);
+            part.sample_plane_source = plane;
+          }
+          part.sample.count(geom_, plane, part.sample_plane, k0, k1, c, part.classes, ctx.sources);
+        };
+        return detail::choose_sampled_counts(n, count, o, node_key, 16);
+      } else {
+        return detail::choose_sampled(n, cls, o, node_key);
+      }
     case detail::heuristic_random:
       return detail::choose_random(n, o.seed, node_key);
     case detail::heuristic_custom: {

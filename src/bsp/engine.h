@@ -84,6 +84,10 @@ struct build_options {
   std::uint64_t seed = 0;         ///< for randomised heuristics; same seed, same tree
   std::size_t max_fragments = 0;  ///< 0: no limit; otherwise throw limit_error beyond it
   unsigned threads = 0;           ///< worker threads for candidate evaluation (0: all cores)
+  /// Fewer fragments than this pending below the top levels: the subtrees are built on the
+  /// calling thread (threads only slow a build of milliseconds). 0: always in parallel.
+  /// Never changes the tree.
+  std::size_t parallel_min_fragments = 20000;
   /// The sampled heuristic: up to `sampled_candidates` seeded candidates per node, each scored
   /// on an evenly spaced sample of at most `sampled_samples` fragments by
   /// sampled_split_weight * splits + |positive - negative|; lowest score wins.

@@ -8,6 +8,8 @@
 // would void the bound) the caller falls back to the exact predicate. The answer, when
 // given, is therefore identical to the exact one: this is a pure speed-up.
 #pragma once
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "mesh/soup.h"
@@ -103,6 +105,72 @@ inline int fast_sign(const fast_plane& p, const vec3d& point, double radius = 0)
   if (s != 2) return s;
   if (radius == 0 && (point == p.a || point == p.b || point == p.c)) return 0;
   return 2;
+}
+
+/// A plane's filter with one static error bound for every point of a bounding box: all exact
+/// points of a build lie in the convex hull of the input, hence in its bounding box [lo, hi],
+/// and a point's centre c lies within its radius r of its exact position. With
+/// Q_k >= |x_k - a_k| over the box, fast_eval's bound at c is at most b0 + r b1 (both rounded
+/// up here), so a side test is v = n . (c - a) and one comparison |v| > b0 + r b1: no per-point
+/// error term. Where that fails, fast_sign (tighter) and the exact predicate follow.
+struct static_plane {
+  vec3d a{}, n{};
+  double b0 = 0, b1 = 0;
+  bool valid = false;
+};
+
+/// The static filter of plane p over the box [lo, hi] (which must hold every exact point the
+/// filter is asked about). Invalid (every test falls back) when p is, or when the box reaches
+/// past 1e80, where v could overflow.
+inline static_plane make_static_plane(const fast_plane_core& p, const vec3d& lo, const vec3d& hi) {
+  constexpr double u = 1.1102230246251565e-16;
+  static_plane s;
+  if (!p.valid) return s;
+  double sum_qc = 0, sum_c = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (!(std::fabs(lo[k]) <= 1e80 && std::fabs(hi[k]) <= 1e80)) return s;
+    // |x_k - a_k| <= Q_k for x in the box; rounded up by the factor.
+    const double q = std::max(hi[k] - p.a[k], p.a[k] - lo[k]) * (1 + 4 * u);
+    sum_qc += p.coef[k] * q;
+    sum_c += p.coef[k];
+  }
+  // fast_eval: bound = (coef . |q^| + r spread)(1 + 8u) + 1e-290, |q^_k| <= (Q_k + r)(1 + u).
+  // The extra (1 + 16u) covers the rounding of these sums and of b0 + r b1 at the test.
+  s.b0 = (sum_qc * (1 + u) * (1 + 8 * u) + 1e-290) * (1 + 16 * u);
+  s.b1 = (sum_c * (1 + u) + p.spread) * (1 + 8 * u) * (1 + 16 * u);
+  s.a = p.a;
+  s.n = p.n;
+  s.valid = std::isfinite(s.b0) && std::isfinite(s.b1);
+  return s;
+}
+
+/// Sign of f at the exact point within r of centre c, by the static filter: -1 or +1 when
+/// certified, 0 when not (the caller must then ask fast_sign or the exact predicate).
+/// Precondition: s.valid, and the exact point lies in the box s was made for.
+inline int static_sign(const static_plane& s, const vec3d& c, double r) {
+  const double v = s.n[0] * (c[0] - s.a[0]) + s.n[1] * (c[1] - s.a[1]) + s.n[2] * (c[2] - s.a[2]);
+  const double t = s.b0 + r * s.b1;
+  return (v > t) - (v < -t);
+}
+
+/// Sign of f over a whole box: every point x with lo_k - r <= x_k <= hi_k + r. -1 or +1 when
+/// every such point is certified strictly on that side, 0 otherwise (not known, or the box
+/// touches or crosses the plane). The box's centre m and half-widths R (rounded up) feed
+/// fast_eval's bound: f(x) = f(m) + N . (x - m) with |N_k| <= |n_k| + coef_k.
+inline int fast_box_sign(const fast_plane_core& p, const vec3d& lo, const vec3d& hi, double r) {
+  constexpr double u = 1.1102230246251565e-16;
+  if (!p.valid) return 0;
+  double v = 0, bound = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double m = 0.5 * lo[k] + 0.5 * hi[k];
+    const double half = (std::max(hi[k] - m, m - lo[k]) + r) * (1 + 4 * u) + DBL_MIN;
+    const double q = m - p.a[k];
+    v += p.n[k] * q;
+    bound += p.coef[k] * std::fabs(q) + (std::fabs(p.n[k]) + p.coef[k]) * half;
+  }
+  bound = bound * (1 + 16 * u) + 1e-290;
+  if (!(std::fabs(v) < HUGE_VAL && bound < HUGE_VAL)) return 0;
+  return (v > bound) - (v < -bound);
 }
 
 }  // namespace exbsp

@@ -200,7 +200,16 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
 int exact_geometry::exact_sign(std::uint32_t plane, std::uint32_t x) const {
   const exact_plane& pl = plane_of(plane);
   const exact_value& v = exact_of(x);
-  return sign_of(pl.n[0] * v.x[0] + pl.n[1] * v.x[1] + pl.n[2] * v.x[2] - pl.d);
+  // sign(n . x - d) as one fraction A / B, B > 0, in integers: mpq_class would reduce every
+  // product and sum by a gcd, which dominated this test on large coordinates.
+  mpz_class a = -pl.d.get_num(), b = pl.d.get_den(), t;
+  for (int j = 0; j < 3; ++j) {
+    const mpz_class den = pl.n[j].get_den() * v.x[j].get_den();  // > 0
+    t = pl.n[j].get_num() * v.x[j].get_num();
+    a = a * den + t * b;
+    b *= den;
+  }
+  return sgn(a);
 }
 
 int exact_geometry::point_sign_slow(std::uint32_t plane, std::uint32_t x, int& budget) const {

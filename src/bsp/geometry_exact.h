@@ -19,6 +19,7 @@
 // the construction is what makes most exact answers free.
 #pragma once
 #include <array>
+#include <cmath>
 #include <atomic>
 #include <cstdint>
 #include <limits>
@@ -64,6 +65,25 @@ class exact_geometry {
   exact_geometry& operator=(const exact_geometry&) = delete;
 
   bool add_source(const triangle_soup& soup, std::uint32_t i, fragment& out);
+
+  /// For batched side tests (bsp/batch_classify.h): a point's certified centre and radius
+  /// (its exact position lies within the radius, max norm) and a plane's filter.
+  static constexpr bool has_centres = true;
+  const vec3d& centre(std::uint32_t id) const { return at(id).c; }
+  double radius(std::uint32_t id) const { return at(id).r; }
+  /// The filter is stored compactly (filter_plane: a by pointer, float bounds rounded up);
+  /// this widens it back to fast_plane_core, whose bounds are then at least as large.
+  fast_plane_core filter(std::uint32_t plane) const {
+    const filter_plane& f = fast_[plane];
+    fast_plane_core p;
+    p.a = *f.a;
+    p.n = f.n;
+    for (int k = 0; k < 3; ++k) p.coef[k] = f.coef[k];
+    p.spread = f.spread;
+    p.valid = std::isfinite(f.spread) && std::isfinite(f.coef[0]) && std::isfinite(f.coef[1]) &&
+              std::isfinite(f.coef[2]);
+    return p;
+  }
 
   int sign(std::uint32_t plane, const fragment& f, int k) const {
     int budget = 32;

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "bsp/batch_classify.h"
 #include "bsp/engine.h"
 #include "bsp/parallel.h"
 #include "bsp/split_pattern.h"
@@ -123,9 +124,15 @@ inline std::size_t sample_position(std::size_t k, std::size_t n, std::size_t m) 
 // classic BSP compilers); lowest score wins, ties to the earliest candidate. C, S, W are
 // build_options::sampled_candidates, sampled_samples, sampled_split_weight (16, 512, 8).
 // A candidate stops early once its splits alone cannot beat the best score.
-template <class Classify>
-std::size_t choose_sampled(std::size_t n, const Classify& cls, const build_options& o,
-                           std::uint64_t node_key) {
+//
+// count(i, k0, k1, counts) adds the classifications of sample entries [k0, k1) (entry k is
+// list position sample_position(k, n, m)) against candidate i's plane. Entries are counted in
+// chunks of `chunk`, the early stop checked between chunks: a candidate that stops has
+// W * splits >= the best score, so it could not have won with more entries counted, and the
+// choice does not depend on the chunk size.
+template <class Count>
+std::size_t choose_sampled_counts(std::size_t n, const Count& count, const build_options& o,
+                                  std::uint64_t node_key, std::size_t chunk) {
   const std::vector<std::size_t> candidates =
       sampled_candidate_positions(n, std::max(1u, o.sampled_candidates), o.seed, node_key);
   const std::size_t m = sample_size(n, o.sampled_samples);
@@ -133,30 +140,41 @@ std::size_t choose_sampled(std::size_t n, const Classify& cls, const build_optio
   std::size_t best = candidates.front();
   long long best_score = std::numeric_limits<long long>::max();
   for (std::size_t i : candidates) {
-    long long splits = 0, pos = 0, neg = 0, score = 0;
-    for (std::size_t k = 0; k < m && score < best_score; ++k) {
-      switch (cls(i, sample_position(k, n, m))) {
-        case classification::straddling:
-          ++splits;
-          break;
-        case classification::positive:
-          ++pos;
-          break;
-        case classification::negative:
-          ++neg;
-          break;
-        case classification::coplanar:
-          break;  // the candidate itself, or in its plane
-      }
-      score = weight * splits;
-    }
-    score = weight * splits + std::llabs(pos - neg);
+    side_counts c;
+    for (std::size_t k = 0; k < m && weight * c.splits < best_score; k += chunk)
+      count(i, k, std::min(m, k + chunk), c);
+    const long long score = weight * c.splits + std::llabs(c.positive - c.negative);
     if (score < best_score) {
       best_score = score;
       best = i;
     }
   }
   return best;
+}
+
+/// choose_sampled_counts with cls(i, j) for each entry.
+template <class Classify>
+std::size_t choose_sampled(std::size_t n, const Classify& cls, const build_options& o,
+                           std::uint64_t node_key) {
+  const std::size_t m = sample_size(n, o.sampled_samples);
+  const auto count = [&](std::size_t i, std::size_t k0, std::size_t k1, side_counts& c) {
+    for (std::size_t k = k0; k < k1; ++k) {
+      switch (cls(i, sample_position(k, n, m))) {
+        case classification::straddling:
+          ++c.splits;
+          break;
+        case classification::positive:
+          ++c.positive;
+          break;
+        case classification::negative:
+          ++c.negative;
+          break;
+        case classification::coplanar:
+          break;  // the candidate itself, or in its plane
+      }
+    }
+  };
+  return choose_sampled_counts(n, count, o, node_key, 1);
 }
 
 /// random: one position drawn with the seed and the node's path key.

@@ -1,0 +1,280 @@
+// Batched side tests for geometries whose points carry a certified double centre and radius
+// (G::has_centres: exbsp's exact geometry). Private to src/bsp (used by bsp_tree_impl.h).
+//
+// Notation: a point x has centre c and radius r (x lies within r of c, max norm); a plane's
+// static filter (fast_orientation.h, static_plane) certifies sign f(x) with one dot product
+// and one comparison. Two uses:
+//   - the sampled heuristic's sample: its fragments' centres gathered once per node into flat
+//     arrays (sample_batch), then each candidate plane sweeps them in a tight loop;
+//   - list blocks: a node's list is cut into runs of at most block_size fragments, each with
+//     the bounding box of its points (point_box); a run whose box is certified strictly on one
+//     side of the plane moves to that child whole, without a test per fragment.
+// Whatever the filters cannot certify goes to G::sign, the exact predicate, so every answer is
+// the exact one: the tree is the same as without batching.
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <type_traits>
+#include <unordered_map>
+#include <vector>
+
+#include "bsp/fast_orientation.h"
+#include "bsp/split_pattern.h"
+
+namespace exbsp {
+namespace detail {
+
+/// Whether geometry G offers centre(id), radius(id) and filter(plane).
+template <class G, class = void>
+struct has_centres : std::false_type {};
+template <class G>
+struct has_centres<G, std::enable_if_t<G::has_centres>> : std::true_type {};
+
+/// Bounding box of a set of points: centres within [lo, hi], radii at most r, so every exact
+/// point lies within [lo - r, hi + r]. Empty: lo > hi.
+struct point_box {
+  vec3d lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  double r = 0;
+  void add(const vec3d& c, double radius) {
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], c[k]);
+      hi[k] = std::max(hi[k], c[k]);
+    }
+    r = std::max(r, radius);
+  }
+  void add(const point_box& b) {
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], b.lo[k]);
+      hi[k] = std::max(hi[k], b.hi[k]);
+    }
+    r = std::max(r, b.r);
+  }
+};
+
+/// The box of fragment f's three points.
+template <class G>
+point_box fragment_box(const G& geom, const typename G::fragment& f) {
+  point_box b;
+  for (std::uint32_t id : f.v) b.add(geom.centre(id), geom.radius(id));
+  return b;
+}
+
+/// Side of a whole box against plane p: -1 or +1 when every point in it is certified strictly
+/// on that side, 0 otherwise.
+inline int box_sign(const fast_plane_core& p, const point_box& b) {
+  return fast_box_sign(p, b.lo, b.hi, b.r);
+}
+
+/// A run of a node's list: positions [begin, begin + count) and the box of their points.
+struct list_block {
+  std::uint32_t begin = 0, count = 0;
+  point_box box;
+};
+/// The longest run (a block's box grows with it, so longer runs are certified less often).
+constexpr std::uint32_t block_size = 64;
+
+/// A child list under construction: fragment refs, and its blocks. Fragments added one by one
+/// join an open block; a whole block of the parent joins as a block of its own.
+class block_list_builder {
+ public:
+  /// Appends one fragment ref with its box.
+  void add(std::uint32_t ref, const point_box& box) {
+    if (!open_) {
+      open_block_ = {static_cast<std::uint32_t>(list.size()), 0, box};
+      open_ = true;
+    } else {
+      open_block_.box.add(box);
+    }
+    list.push_back(ref);
+    if (++open_block_.count == block_size) close();
+  }
+  /// Appends a whole block: `count` refs and their box.
+  void add_block(const std::uint32_t* refs, const list_block& b) {
+    close();
+    list_block nb = b;
+    nb.begin = static_cast<std::uint32_t>(list.size());
+    list.insert(list.end(), refs, refs + b.count);
+    blocks.push_back(nb);
+  }
+  void close() {
+    if (open_) blocks.push_back(open_block_);
+    open_ = false;
+  }
+  std::vector<std::uint32_t> list;
+  std::vector<list_block> blocks;
+
+ private:
+  list_block open_block_;
+  bool open_ = false;
+};
+
+/// Blocks for a list of refs in order, boxes from `box_of(ref)`.
+template <class BoxOf>
+std::vector<list_block> make_blocks(const std::vector<std::uint32_t>& list, const BoxOf& box_of) {
+  std::vector<list_block> blocks;
+  for (std::size_t b = 0; b < list.size(); b += block_size) {
+    list_block blk;
+    blk.begin = static_cast<std::uint32_t>(b);
+    blk.count = static_cast<std::uint32_t>(std::min<std::size_t>(block_size, list.size() - b));
+    for (std::size_t j = b; j < b + blk.count; ++j) blk.box.add(box_of(list[j]));
+    blocks.push_back(blk);
+  }
+  return blocks;
+}
+
+/// Input triangles found to lie in one plane, as classes (union-find over source ids): a
+/// fragment whose source is in the class of the node plane's source lies in that plane, so it
+/// is coplanar without a side test. Classes are learnt during the build from side tests that
+/// found a fragment exactly in a plane (mostly on CAD meshes, whose flat faces are made of
+/// many triangles: every such test is an exact zero, the slowest kind). Empty until the
+/// first one is learnt.
+class coplanar_sources {
+ public:
+  /// Whether sources a and b are known to lie in one plane (read only: safe in parallel).
+  bool same(std::uint32_t a, std::uint32_t b) const {
+    if (parent_.empty()) return false;
+    while (parent_[a] != a) a = parent_[a];
+    while (parent_[b] != b) b = parent_[b];
+    return a == b;
+  }
+  /// Records that sources a and b (of `sources` in all) lie in one plane.
+  void join(std::uint32_t a, std::uint32_t b, std::size_t sources) {
+    if (parent_.empty()) {
+      parent_.resize(sources);
+      for (std::size_t i = 0; i < sources; ++i) parent_[i] = static_cast<std::uint32_t>(i);
+    }
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::uint32_t find(std::uint32_t a) {
+    while (parent_[a] != a) {
+      parent_[a] = parent_[parent_[a]];  // path halving
+      a = parent_[a];
+    }
+    return a;
+  }
+  std::vector<std::uint32_t> parent_;
+};
+
+/// Counts of a candidate plane over part of a sample.
+struct side_counts {
+  long long splits = 0, positive = 0, negative = 0;
+};
+
+/// The sampled heuristic's sample of one node, gathered: per sample fragment its source and
+/// its three points' centres and radii in flat arrays (3 entries per fragment).
+template <class G>
+class sample_batch {
+ public:
+  using fragment = typename G::fragment;
+  /// Gathers fragments fragment_at(k), k = 0..m-1.
+  template <class FragmentAt>
+  void gather(const G& geom, std::size_t m, const FragmentAt& fragment_at) {
+    x_.resize(3 * m);
+    y_.resize(3 * m);
+    z_.resize(3 * m);
+    r_.resize(3 * m);
+    code_.resize(3 * m);
+    source_.resize(m);
+    fragments_.resize(m);
+    for (std::size_t k = 0; k < m; ++k) {
+      const fragment& f = fragment_at(k);
+      fragments_[k] = &f;
+      source_[k] = f.source;
+      for (int t = 0; t < 3; ++t) {
+        const vec3d& c = geom.centre(f.v[t]);
+        x_[3 * k + t] = c[0];
+        y_[3 * k + t] = c[1];
+        z_[3 * k + t] = c[2];
+        r_[3 * k + t] = geom.radius(f.v[t]);
+      }
+    }
+  }
+  /// Adds the classifications of sample fragments [k0, k1) against plane `plane` (static
+  /// filter sp) to `out`; a fragment of the plane's own source is coplanar.
+  void count(const G& geom, std::uint32_t plane, const static_plane& sp, std::size_t k0,
+             std::size_t k1, side_counts& out, coplanar_sources& classes, std::size_t sources) {
+    const std::size_t t0 = 3 * k0, t1 = 3 * k1;
+    double* __restrict code = code_.data();
+    if (sp.valid) {
+      const double a0 = sp.a[0], a1 = sp.a[1], a2 = sp.a[2];
+      const double n0 = sp.n[0], n1 = sp.n[1], n2 = sp.n[2];
+      const double b0 = sp.b0, b1 = sp.b1;
+      const double* __restrict x = x_.data();
+      const double* __restrict y = y_.data();
+      const double* __restrict z = z_.data();
+      const double* __restrict r = r_.data();
+      // static_sign over the flat arrays, written so that the compiler vectorises it (hence
+      // the codes as doubles: +1, -1 certified, 0 not).
+      for (std::size_t t = t0; t < t1; ++t) {
+        const double v = n0 * (x[t] - a0) + n1 * (y[t] - a1) + n2 * (z[t] - a2);
+        const double bound = b0 + r[t] * b1;
+        code[t] = (v > bound ? 1.0 : 0.0) - (v < -bound ? 1.0 : 0.0);
+      }
+    } else {
+      std::fill(code + t0, code + t1, 0.0);
+    }
+    long long splits = 0, positive = 0, negative = 0;
+    for (std::size_t k = k0; k < k1; ++k) {
+      if (source_[k] == plane) continue;  // coplanar by construction
+      const double c0 = code[3 * k], c1 = code[3 * k + 1], c2 = code[3 * k + 2];
+      if (c0 != 0 && c1 != 0 && c2 != 0) {  // all certified: +-1 each
+        const double sum = c0 + c1 + c2;
+        positive += sum == 3;
+        negative += sum == -3;
+        splits += sum != 3 && sum != -3;
+        continue;
+      }
+      if (classes.same(source_[k], plane)) continue;  // in the plane: coplanar
+      // Not certified: the exact predicate (the third one only when the first two agree).
+      std::array<int, 3> sg{static_cast<int>(c0), static_cast<int>(c1), static_cast<int>(c2)};
+      for (int t = 0; t < 2; ++t)
+        if (sg[t] == 0) sg[t] = exact_sign(geom, plane, *fragments_[k], t);
+      if (sg[2] == 0 && sg[0] * sg[1] >= 0) sg[2] = exact_sign(geom, plane, *fragments_[k], 2);
+      if (sg[0] == 0 && sg[1] == 0 && sg[2] == 0) classes.join(source_[k], plane, sources);
+      switch (classify_signs(sg)) {
+        case classification::straddling:
+          ++splits;
+          break;
+        case classification::positive:
+          ++positive;
+          break;
+        case classification::negative:
+          ++negative;
+          break;
+        case classification::coplanar:
+          break;
+      }
+    }
+    out.splits += splits;
+    out.positive += positive;
+    out.negative += negative;
+  }
+
+ private:
+  /// G::sign of point t of f against `plane`, remembered: the lists of neighbouring nodes
+  /// share most fragments and candidate planes (below 16 fragments every fragment is a
+  /// candidate), so the same slow questions recur level after level.
+  int exact_sign(const G& geom, std::uint32_t plane, const fragment& f, int t) {
+    const std::uint64_t key = std::uint64_t{f.v[t]} << 32 | plane;
+    const auto found = memo_.find(key);
+    if (found != memo_.end()) return found->second;
+    const int s = geom.sign(plane, f, t);
+    if (memo_.size() >= memo_limit) memo_.clear();
+    memo_.emplace(key, static_cast<std::int8_t>(s));
+    return s;
+  }
+  static constexpr std::size_t memo_limit = std::size_t{1} << 12;  ///< about 200 KB
+  std::unordered_map<std::uint64_t, std::int8_t> memo_;
+  std::vector<double> x_, y_, z_, r_;
+  std::vector<double> code_;  ///< per point: +1 / -1 certified, 0 not
+  std::vector<std::uint32_t> source_;
+  std::vector<const fragment*> fragments_;
+};
+
+}  // namespace detail
+}  // namespace exbsp

@@ -1,0 +1,110 @@
+// The exact build's batched side tests (src/bsp/batch_classify.h, fast_orientation.h): the
+// static plane filter and the box filter on points built to sit exactly on a plane and one ulp
+// off it (they may only say "not known" there, never a wrong sign), the learnt coplanar
+// classes, and the tree they build on a stack where whole blocks move at once.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+
+#include "bsp/batch_classify.h"
+#include "bsp/engine.h"
+#include "bsp/kernel_gmpq.h"
+
+namespace {
+
+using exbsp::vec3d;
+
+/// Exact orientation of d against the plane (a, b, c), in rationals.
+int exact_orientation(const vec3d& a, const vec3d& b, const vec3d& c, const vec3d& d) {
+  using GK = exbsp::gmpq_kernel;
+  const auto P = [](const vec3d& v) { return GK::Point_3(v[0], v[1], v[2]); };
+  return static_cast<int>(CGAL::orientation(P(a), P(b), P(c), P(d)));
+}
+
+// A tilted plane through three points with inexact coordinates, and points on a line across
+// it: exactly on it (a vertex and a dyadic point of the plane), and one ulp either side.
+const vec3d pa{0.1, 0.2, 0.3}, pb{1.7, -0.4, 0.9}, pc{-0.6, 1.3, 2.1};
+
+TEST(BatchClassify, static_filter_is_silent_on_the_plane_and_right_one_ulp_off) {
+  const exbsp::fast_plane plane = exbsp::make_fast_plane(pa, pb, pc);
+  const exbsp::static_plane sp = exbsp::make_static_plane(plane, {-2, -2, -2}, {3, 3, 3});
+  ASSERT_TRUE(sp.valid);
+  // On the plane: the vertices; must not be certified as either side.
+  for (const vec3d& v : {pa, pb, pc}) EXPECT_EQ(exbsp::static_sign(sp, v, 0), 0);
+  int certified = 0;
+  for (const vec3d& base : {pa, pb, pc, vec3d{0.5, 0.5, 1.0}, vec3d{-1.5, 2.5, -0.25}})
+    for (int k = 0; k < 3; ++k)
+      for (const double toward : {-1e300, 1e300})
+        for (int steps : {1, 2, 1000, 1000000}) {
+          vec3d p = base;
+          for (int s = 0; s < steps && s < 4; ++s) p[k] = std::nextafter(p[k], toward);
+          if (steps > 4) p[k] += (toward > 0 ? 1 : -1) * steps * 1e-12;
+          const int exact = exact_orientation(pa, pb, pc, p);
+          const int s = exbsp::static_sign(sp, p, 0);
+          if (s != 0) {
+            EXPECT_EQ(s, exact) << k << " " << steps;
+            ++certified;
+          }
+        }
+  EXPECT_GT(certified, 0);  // far enough off, the filter answers
+  // A point far off: certified, also with a radius, which must widen the bound.
+  const vec3d far{2.5, 2.5, 2.5};
+  const int exact = exact_orientation(pa, pb, pc, far);
+  EXPECT_EQ(exbsp::static_sign(sp, far, 0), exact);
+  EXPECT_EQ(exbsp::static_sign(sp, far, 1e3), 0);
+}
+
+TEST(BatchClassify, box_filter_never_certifies_a_box_that_touches_or_crosses_the_plane) {
+  const exbsp::fast_plane plane = exbsp::make_fast_plane(pa, pb, pc);
+  // A box around a vertex of the plane, one as thin as a point, one just beside it.
+  EXPECT_EQ(exbsp::fast_box_sign(plane, pa, pa, 0), 0);
+  EXPECT_EQ(exbsp::fast_box_sign(plane, {0, 0, 0}, {0.2, 0.4, 0.6}, 0), 0);
+  // A box off the plane: its sign is every corner's exact sign.
+  const vec3d lo{2, 2, 2}, hi{2.5, 2.25, 3};
+  const int s = exbsp::fast_box_sign(plane, lo, hi, 0);
+  ASSERT_NE(s, 0);
+  for (int corner = 0; corner < 8; ++corner) {
+    const vec3d p{corner & 1 ? hi[0] : lo[0], corner & 2 ? hi[1] : lo[1],
+                  corner & 4 ? hi[2] : lo[2]};
+    EXPECT_EQ(exact_orientation(pa, pb, pc, p), s) << corner;
+  }
+  // A radius that reaches the plane makes it unknown.
+  EXPECT_EQ(exbsp::fast_box_sign(plane, lo, hi, 10), 0);
+}
+
+TEST(BatchClassify, coplanar_classes_join_transitively_and_start_empty) {
+  exbsp::detail::coplanar_sources classes;
+  EXPECT_FALSE(classes.same(1, 2));
+  classes.join(1, 2, 6);
+  classes.join(4, 2, 6);
+  EXPECT_TRUE(classes.same(1, 4));
+  EXPECT_TRUE(classes.same(4, 4));
+  EXPECT_FALSE(classes.same(0, 1));
+  EXPECT_FALSE(classes.same(3, 5));
+}
+
+TEST(BatchClassify, naive_on_a_stack_of_coplanar_layers_matches_gmpq) {
+  // Layers of parallel triangles, several per plane (coplanar classes), in an order that
+  // mixes layers so that blocks hold fragments on both sides of most planes.
+  exbsp::triangle_soup soup;
+  for (int i = 0; i < 300; ++i) {
+    const double z = static_cast<double>((i * 37) % 50) * 0.1;
+    const double x = static_cast<double>(i % 3);
+    soup.add_triangle({x, 0, z}, {x + 1, 0, z + 0.01 * (i % 2)}, {x, 1, z});
+  }
+  for (const char* h : {"naive", "sampled"}) {
+    exbsp::build_options exact, gmpq;
+    exact.heuristic = gmpq.heuristic = h;
+    gmpq.kernel = exbsp::kernel_id::gmpq;
+    const exbsp::bsp a = exbsp::bsp::build(soup, exact);
+    const exbsp::bsp b = exbsp::bsp::build(soup, gmpq);
+    EXPECT_EQ(a.stats().fragments, b.stats().fragments) << h;
+    EXPECT_EQ(a.stats().splits, b.stats().splits) << h;
+    EXPECT_EQ(a.stats().nodes, b.stats().nodes) << h;
+    EXPECT_EQ(a.stats().depth, b.stats().depth) << h;
+    EXPECT_EQ(a.order_from_eye({0.3, 0.2, -2}), b.order_from_eye({0.3, 0.2, -2})) << h;
+  }
+}
+
+}  // namespace
