@@ -248,6 +248,31 @@ RC_GTEST_PROP(TreeFile, generated_soups_round_trip_for_every_kernel, ()) {
   }
 }
 
+/// A saved tree without the two measurements of its build (stats.peak_rss_bytes at bytes
+/// 72..79, stats.build_seconds at 88..95: docs/tree-file.md) and the CRC that covers them.
+std::string without_measurements(const std::string& bytes) {
+  return bytes.substr(0, 72) + bytes.substr(80, 8) + bytes.substr(96, bytes.size() - 4 - 96);
+}
+
+TEST(TreeFile, the_same_tree_saves_to_the_same_bytes_for_any_thread_count) {
+  // Threads claim point ids in blocks, in an order that depends on timing; the file numbers
+  // constructed points by first use, so it must not depend on it.
+  const exbsp::triangle_soup soup = exbsp_test::make_random_soup(600, 7);
+  std::string one;
+  for (unsigned threads : {1u, 2u, 4u, 2u, 4u}) {
+    exbsp::build_options o;
+    o.threads = threads;
+    o.parallel_min_fragments = 0;  // the subtrees in parallel even for this small input
+    const std::string bytes = without_measurements(bsp::build(soup, o).serialize());
+    if (one.empty()) {
+      one = bytes;
+      ASSERT_GT(bsp::build(soup, o).stats().splits, 100u) << "the soup must make split points";
+    } else {
+      EXPECT_EQ(bytes, one) << threads << " threads";
+    }
+  }
+}
+
 TEST(TreeFile, corpus_meshes_round_trip_with_the_exact_kernel) {
   for (const char* name : {"fandisk.off", "anchor.off", "couplingdown.off", "cross.off"}) {
     const std::string path = exbsp_test::corpus_dir() + name;

@@ -13,25 +13,37 @@ namespace exbsp {
 
 void exact_geometry::write_fragments(tree_file::writer& out,
                                      const std::vector<fragment>& fragments) const {
-  // The constructed points in use: the fragments' vertices and, transitively, the endpoints of
-  // their segments. Endpoints have smaller ids (a point is made after them), so one pass
-  // downwards closes the set. Unused slots of claimed blocks are left out.
-  std::vector<char> used(claimed_, 0);
-  for (const fragment& f : fragments)
-    for (std::uint32_t id : f.v) used[id] = 1;
-  for (std::uint32_t id = claimed_; id-- > inputs_;) {
-    if (!used[id]) continue;
-    const point& pt = at(id);
-    used[pt.p] = used[pt.q] = 1;
-  }
+  // The constructed points in use, numbered by first use: fragments in order, each point
+  // after its endpoints (post-order). Point ids are claimed in an order that depends on thread
+  // timing, but which points exist and how they are built does not, so this numbering makes
+  // the file the same for every thread count and run. Explicit stack: nesting may be deep.
   std::vector<std::uint32_t> renumbered(claimed_, none);
-  std::uint32_t next = 0;
-  for (; next < inputs_; ++next) renumbered[next] = next;
-  for (std::uint32_t id = inputs_; id < claimed_; ++id)
-    if (used[id]) renumbered[id] = next++;
-  out.u64(next - inputs_);
-  for (std::uint32_t id = inputs_; id < claimed_; ++id) {
-    if (!used[id]) continue;
+  for (std::uint32_t id = 0; id < inputs_; ++id) renumbered[id] = id;
+  std::vector<std::uint32_t> file_order;  // constructed ids, in file order
+  std::vector<std::uint32_t> stack;
+  for (const fragment& f : fragments)
+    for (std::uint32_t root : f.v) {
+      stack.push_back(root);
+      while (!stack.empty()) {
+        const std::uint32_t id = stack.back();
+        if (renumbered[id] != none) {
+          stack.pop_back();
+          continue;
+        }
+        const point& pt = at(id);
+        const bool ready = renumbered[pt.p] != none && renumbered[pt.q] != none;
+        if (!ready) {
+          if (renumbered[pt.q] == none) stack.push_back(pt.q);
+          if (renumbered[pt.p] == none) stack.push_back(pt.p);  // p is numbered before q
+          continue;
+        }
+        stack.pop_back();
+        renumbered[id] = inputs_ + static_cast<std::uint32_t>(file_order.size());
+        file_order.push_back(id);
+      }
+    }
+  out.u64(file_order.size());
+  for (std::uint32_t id : file_order) {
     const point& pt = at(id);
     out.u32(renumbered[pt.p]);
     out.u32(renumbered[pt.q]);
