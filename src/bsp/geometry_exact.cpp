@@ -1,6 +1,7 @@
 // exbsp's exact geometry: point table, certified approximations, exact fallback.
 // Notation: see geometry_exact.h. u = 2^-53 (unit roundoff).
 #include "bsp/geometry_exact.h"
+#include "bsp/parallel.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gmpxx.h>
@@ -349,18 +350,30 @@ void exact_geometry::prepare_output(const std::vector<fragment>& fragments) cons
   std::call_once(output_once_, [&] {
     rounded_.assign(claimed_, vec3d{});
     std::vector<char> done(claimed_, 0);
+    std::vector<std::uint32_t> constructed;  // constructed points in use, by first use
     for (const fragment& f : fragments)
       for (std::uint32_t id : f.v) {
         if (done[id]) continue;
         done[id] = 1;
         const point& pt = at(id);
-        if (pt.p == none) {
+        if (pt.p == none)
           rounded_[id] = {pt.c[0] + 0.0, pt.c[1] + 0.0, pt.c[2] + 0.0};  // -0 prints as the exact 0
-          continue;
-        }
+        else
+          constructed.push_back(id);
+      }
+    // The exact values and their roundings are independent point by point: in parallel on
+    // all cores (exact_of is thread-safe; a value two threads both need may be made twice,
+    // the first one kept). Each thread writes only its own points' entries of rounded_.
+    detail::parallel_failure failure;
+    const auto n = static_cast<long long>(constructed.size());
+#pragma omp parallel for schedule(dynamic, 64) if (n >= 1024)
+    for (long long i = 0; i < n; ++i)
+      failure.run([&] {
+        const std::uint32_t id = constructed[static_cast<std::size_t>(i)];
         const exact_value& e = exact_of(id);
         for (int k = 0; k < 3; ++k) rounded_[id][k] = rational_to_double(e.x[k].get_mpq_t());
-      }
+      });
+    failure.rethrow();
   });
 }
 
