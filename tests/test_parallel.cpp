@@ -8,7 +8,8 @@
 //   - the side tests of lists over 65536 fragments;
 //   - the exact kernel's shared tables: lazily made exact planes (compare-exchange), exact
 //     values of points (a locked map), point ids claimed in blocks;
-//   - an exception (the fragment limit) thrown inside a parallel region and rethrown outside.
+//   - an exception (the fragment limit) thrown inside a parallel region and rethrown outside;
+//   - the exact kernel's first rounding of its points to doubles (fragments_double).
 //
 // Inputs are small enough for ThreadSanitizer's slowdown (5-15x).
 #include <gtest/gtest.h>
@@ -104,6 +105,27 @@ TEST(ParallelBuild, exact_planes_and_values_are_made_concurrently) {
     o.heuristic = h;
     o.seed = 1;
     expect_same_for_1_2_and_4_threads(soup, o, h);
+  }
+}
+
+TEST(ParallelBuild, the_first_rounding_of_exact_points_runs_in_parallel_and_rounds_as_epeck) {
+  // fragments_double() of the exact kernel computes the exact values of its constructed
+  // points on all cores (over 1024 points): the same bits as Epeck's correctly rounded output.
+  const triangle_soup soup = exbsp_test::make_random_soup(1500, 5);
+  build_options o;
+  o.threads = 2;
+  const exbsp::bsp exact = exbsp::bsp::build(soup, o);
+  ASSERT_GT(exact.stats().splits, 1024u) << "too few constructed points for the parallel loop";
+  o.kernel = kernel_id::epeck;
+  const exbsp::bsp epeck = exbsp::bsp::build(soup, o);
+  const std::vector<exbsp::fragment_d> a = exact.fragments_double(), b = epeck.fragments_double();
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].face, b[i].face) << i;
+    for (int v = 0; v < 3; ++v)
+      for (int k = 0; k < 3; ++k)
+        ASSERT_EQ(std::signbit(a[i].v[v][k]), std::signbit(b[i].v[v][k])) << i;
+    ASSERT_EQ(a[i].v, b[i].v) << "fragment " << i;
   }
 }
 
