@@ -5,7 +5,8 @@ import os
 
 import common
 from common import CAD, DEFAULT_KERNEL, HEURISTICS, INEXACT
-from report import accuracy_ratios, corpus_rows_by_heuristic, fragments_per_triangle, ok_wall, peers_by, status_cell
+from report import (accuracy_ratios, corpus_rows_by_heuristic, fragments_per_triangle, ok_wall, peer_ratios,
+                    peer_tools, peers_by, status_cell)
 
 COLORS = {"double": "#888888", "epick": "#4c72b0", "exact": "#c44e52", "epeck": "#dd8452", "gmpq": "#8172b2",
           "naive": "#dd8452", "min-split": "#55a868", "sampled": "#c44e52", "random": "#4c72b0"}
@@ -226,14 +227,11 @@ def peers_plot(plt, acc, peers, cfg, outdir):
     if not meshes or not peers:
         return
     pby = peers_by(peers)
-    tools = sorted({t for _, t in pby})
+    over_double, ratios = accuracy_ratios(acc), peer_ratios(acc, peers)
     series = [(f"{DEFAULT_KERNEL} / double", COLORS[DEFAULT_KERNEL],
-               [ok_wall(by[(m, DEFAULT_KERNEL)]) / ok_wall(by.get((m, "double")))
-                if ok_wall(by.get((m, "double"))) else None for m in meshes])]
-    for t, color in zip(tools, ["#4c72b0", "#55a868", "#8172b2"]):
-        series.append((f"{t} / {DEFAULT_KERNEL}", color,
-                       [pby.get((m, t), {}).get("build_seconds", 0) / ok_wall(by[(m, DEFAULT_KERNEL)]) or None
-                        for m in meshes]))
+               [over_double[m].get(DEFAULT_KERNEL) for m in meshes])]
+    for t, color in zip(peer_tools(peers), ["#4c72b0", "#55a868", "#8172b2"]):
+        series.append((f"{t} / {DEFAULT_KERNEL}", color, [ratios.get((m, t)) for m in meshes]))
     width = 0.8 / len(series)
     fig, ax = plt.subplots(figsize=(11, 4.5))
     ax.set_yscale("log")

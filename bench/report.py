@@ -564,6 +564,18 @@ def peer_tools(peers):
     return sorted({r["tool"] for r in peers if r.get("tool")})
 
 
+def peer_ratios(acc_rows, peers):
+    """{(mesh, tool): the tool's build time / the default kernel's} where both finished
+    (over 1: exbsp faster)."""
+    wall = {r["input"]: ok_wall(r) for r in acc_rows if r["kernel"] == DEFAULT_KERNEL}
+    out = {}
+    for (m, tool), r in peers_by(peers).items():
+        s, we = r.get("build_seconds"), wall.get(m)
+        if s and we:
+            out[(m, tool)] = s / we
+    return out
+
+
 def stacked_seconds(r):
     """The default kernel's time on the stacked input: the timed round, else the counted build."""
     if r.get("status", "ok") != "ok":
@@ -571,7 +583,7 @@ def stacked_seconds(r):
     return r.get("build_seconds_median") or r.get("counted_build_seconds")
 
 
-def goals_table(acc_sum, heur_sum, acc_rows, stacked=(), peers=(), cfg=None):
+def goals_table(acc_sum, heur_sum, acc_rows, stacked=(), peers=()):
     """The goal table at the top of the report (issue 10's goals first)."""
     goals = []
     d = DEFAULT_KERNEL
@@ -604,22 +616,15 @@ def goals_table(acc_sum, heur_sum, acc_rows, stacked=(), peers=(), cfg=None):
                       f"`{d}`: under {GOAL_STACK} s",
                       f"{t:.1f} s (depth {fmt_int(r.get('depth'))})" if t else status_cell(r) or "—",
                       "met" if t and t < GOAL_STACK else "not met"])
-    if peers:
-        by = {(r["input"], r["kernel"]): r for r in acc_rows}
-        pby = peers_by(peers)
-        for tool in peer_tools(peers):
-            wins, total, losers = 0, 0, []
-            for m in CAD:
-                we, s = ok_wall(by.get((m, d))), pby.get((m, tool), {}).get("build_seconds")
-                if we and s:
-                    total += 1
-                    wins += we < s
-                    if we >= s:
-                        losers.append(m)
-            if total:
-                goals.append([f"`{d}` builds faster than {tool} on every CAD mesh",
-                              f"{wins} of {total}" + (f" (slower on {', '.join(losers)})" if losers else ""),
-                              "met" if wins == total else "not met"])
+    ratios = peer_ratios(acc_rows, peers)
+    for tool in peer_tools(peers):
+        measured = [(m, ratios[(m, tool)]) for m in CAD if (m, tool) in ratios]
+        losers = [m for m, ratio in measured if ratio <= 1]
+        if measured:
+            goals.append([f"`{d}` builds faster than {tool} on every CAD mesh",
+                          f"{len(measured) - len(losers)} of {len(measured)}"
+                          + (f" (slower on {', '.join(losers)})" if losers else ""),
+                          "met" if not losers else "not met"])
     if heur_sum.get("cad_best"):
         met = len(heur_sum["cad_met"]) == len(heur_sum["cad_best"])
         goals.append(["≤ 1.3 fragments per input triangle on CAD (best heuristic per mesh)",
@@ -634,20 +639,19 @@ def goals_per_mesh(acc_rows, peers):
     time over it."""
     d = DEFAULT_KERNEL
     by = {(r["input"], r["kernel"]): r for r in acc_rows}
-    pby = peers_by(peers)
+    over_double = accuracy_ratios(acc_rows)
+    ratios = peer_ratios(acc_rows, peers)
     tools = peer_tools(peers)
     rows = []
     for m in CAD:
         e, x = by.get((m, d)), by.get((m, "double"))
         if not e:
             continue
-        we, wx = ok_wall(e), ok_wall(x)
-        row = [m, fmt_s(we), fmt_s(wx) if wx else (status_cell(x) if x else "—"),
-               fmt_ratio(we / wx if we and wx else None),
+        wx = ok_wall(x)
+        row = [m, fmt_s(ok_wall(e)), fmt_s(wx) if wx else (status_cell(x) if x else "—"),
+               fmt_ratio(over_double[m].get(d)),
                f"{e['peak_heap_bytes_per_fragment']:.0f}" if e.get("peak_heap_bytes_per_fragment") else "—"]
-        for t in tools:
-            s = pby.get((m, t), {}).get("build_seconds")
-            row.append(f"{s / we:.2f}×" if s and we else "—")
+        row += [f"{ratios[(m, t)]:.2f}×" if (m, t) in ratios else "—" for t in tools]
         rows.append(row)
     if not rows:
         return ""
@@ -664,6 +668,7 @@ def section_peers(acc_rows, peers, node, plot_rel):
     d = DEFAULT_KERNEL
     by = {(r["input"], r["kernel"]): r for r in acc_rows}
     pby = peers_by(peers)
+    ratios = peer_ratios(acc_rows, peers)
     tools = peer_tools(peers)
     versions = ", ".join(sorted({f"{r['tool']} {r.get('version', '')}".strip() for r in peers if r.get("tool")}))
     lines += [f"Tools: {versions}, run by Node {node or '(version not recorded)'} on the same machine in the "
@@ -677,14 +682,13 @@ def section_peers(acc_rows, peers, node, plot_rel):
     meshes = [m for m in CAD + ORGANIC if by.get((m, d))]
     for m in meshes:
         e = by[(m, d)]
-        we = ok_wall(e)
-        row = [m + ("" if m in CAD else "*"), fmt_s(we), fmt_int(e.get("fragments"))]
+        row = [m + ("" if m in CAD else "*"), fmt_s(ok_wall(e)), fmt_int(e.get("fragments"))]
         for t in tools:
             r = pby.get((m, t), {})
             s = r.get("build_seconds")
             row += [fmt_s(s) if s else (r.get("error", "—")[:30] if r else "—"),
                     fmt_int(r.get("pieces_triangulated")) if r.get("pieces_triangulated") is not None else "—",
-                    f"{s / we:.2f}×" if s and we else "—"]
+                    f"{ratios[(m, t)]:.2f}×" if (m, t) in ratios else "—"]
         rows.append(row)
     lines.append(table(hdr, rows))
     lines += ["", "\\* organic mesh.", "", f"![{d} and the JavaScript BSPs against double]({plot_rel}/peers.png)", ""]
@@ -734,7 +738,7 @@ def write(path, meta, cfg, data, plot_rel, command):
         "",
         "## Goals: where we stand",
         "",
-        goals_table(acc_sum, heur_sum, acc, data.get("stacked", []), data.get("peers", []), cfg),
+        goals_table(acc_sum, heur_sum, acc, data.get("stacked", []), data.get("peers", [])),
         "",
         goals_per_mesh(acc, data.get("peers", [])),
         "",

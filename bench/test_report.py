@@ -153,7 +153,7 @@ PEERS = [{"tool": "csg.js", "version": "1.0.1", "mesh": "/x/part.off", "build_se
 class Goals(unittest.TestCase):
     def test_goal_table_states_issue_10s_goals(self):
         _, acc_sum = report.section_accuracy(ACCURACY, CFG, "plots")
-        text = report.goals_table(acc_sum, {}, ACCURACY, STACKED, PEERS, CFG)
+        text = report.goals_table(acc_sum, {}, ACCURACY, STACKED, PEERS)
         self.assertIn("median 1.50× wall", text)
         self.assertIn("| … and worst ≤ 2.0× | 1.50× (part) | met |", text)
         self.assertIn("median 900 B, largest 900 B", text)
