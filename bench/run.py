@@ -259,14 +259,7 @@ def load_data(outdir):
         "profile": profile,
         "stacked": load_jsonl(os.path.join(outdir, "stacked.jsonl")),
         "peers": load_jsonl(os.path.join(outdir, "peers.jsonl")),
-        "node": meta_node(outdir),
     }
-
-
-def meta_node(outdir):
-    """Node's version as recorded in the run's metadata (empty when node was missing)."""
-    meta = os.path.join(outdir, "meta.json")
-    return json.load(open(meta)).get("node", "") if os.path.exists(meta) else ""
 
 
 def main():
@@ -312,6 +305,7 @@ def main():
         json.dump(meta, open(meta_json, "w"))
     meta = json.load(open(meta_json))
     data = load_data(outdir)
+    data["node"] = meta.get("node", "")  # Node's version (empty when node was missing)
     plots.draw_all(data, cfg, plotdir)
     report.write(report_path, meta, cfg, data, "plots", "bench/run.py --quick" if args.quick else "bench/run.py")
     log(f"wrote {os.path.relpath(report_path, REPO)} and {os.path.relpath(plotdir, REPO)}/ "
