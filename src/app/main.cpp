@@ -172,7 +172,7 @@ void add_build_options(CLI::App* cmd, build_cli& o) {
          "number type: exact (exbsp's own exact points, default), epeck (CGAL lazy exact), "
          "gmpq (plain exact rationals), epick (exact predicates, rounded splits), "
          "double (plain double)")
-      ->check(CLI::IsMember({"exact", "epeck", "gmpq", "epick", "double"}))
+      ->check(CLI::IsMember(exbsp::kernel_names()))
       ->capture_default_str();
   cmd->add_option("--heuristic", o.heuristic,
                   "splitter choice: naive (first triangle), min-split (fewest straddlers), "
@@ -472,7 +472,7 @@ int main(int argc, char** argv) {
       ->add_option("--kernel", r.kernel,
                    "BSP kernel (default exact); epeck, gmpq; epick and double only to see what "
                    "rounding does")
-      ->check(CLI::IsMember({"exact", "epeck", "gmpq", "epick", "double"}));
+      ->check(CLI::IsMember(exbsp::kernel_names()));
   render->add_option("--max-fragments", r.max_fragments, max_fragments_help())->check(not_negative);
   render->add_flag("--strict", r.strict, "unknown scene keys are errors (exit 2), not warnings");
   render->add_flag("-v,--verbose", r.verbose,

@@ -27,9 +27,22 @@ std::string to_string(kernel_id k) {
   return "unknown";
 }
 
+namespace {
+constexpr kernel_id all_kernels[] = {kernel_id::exact, kernel_id::epeck, kernel_id::gmpq,
+                                     kernel_id::epick, kernel_id::double_};
+}  // namespace
+
+const std::vector<std::string>& kernel_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (kernel_id k : all_kernels) out.push_back(to_string(k));
+    return out;
+  }();
+  return names;
+}
+
 kernel_id parse_kernel(const std::string& name) {
-  for (kernel_id k :
-       {kernel_id::exact, kernel_id::epeck, kernel_id::epick, kernel_id::double_, kernel_id::gmpq})
+  for (kernel_id k : all_kernels)
     if (to_string(k) == name) return k;
   throw usage_error("unknown kernel '" + name + "' (expected exact, epeck, gmpq, epick or double)");
 }

@@ -34,6 +34,8 @@ enum class kernel_id {
 
 /// "exact", "epeck", "epick", "double", "gmpq".
 std::string to_string(kernel_id k);
+/// Every kernel's name, the default first: "exact", "epeck", "gmpq", "epick", "double".
+const std::vector<std::string>& kernel_names();
 /// Parses a kernel name; throws usage_error for an unknown name.
 kernel_id parse_kernel(const std::string& name);
 /// True for kernels whose constructions are exact (exact, epeck, gmpq).

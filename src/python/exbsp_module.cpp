@@ -317,7 +317,7 @@ PYBIND11_MODULE(exbsp, m) {
   m.attr("__version__") = exbsp::version_string;
   m.attr("version") = exbsp::version_string;
   m.attr("HEURISTICS") = py::tuple(py::cast(exbsp::heuristic_names()));
-  m.attr("KERNELS") = py::make_tuple("exact", "epeck", "gmpq", "epick", "double");
+  m.attr("KERNELS") = py::tuple(py::cast(exbsp::kernel_names()));
   m.attr("DEFAULT_HEURISTIC") = exbsp::default_heuristic();
 
   // Exception classes; the translator keeps them alive for the module's lifetime.
