@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <random>
 #include <set>
 
 #include "bsp/geometry_exact.h"
@@ -201,6 +202,89 @@ TEST(ExactKernel, on_and_one_ulp_off_a_plane_at_scales_beyond_the_float_range) {
       EXPECT_EQ(g.geom.side_of_direction(2, {1, 0, 0}), 0) << scale;
       EXPECT_EQ(g.geom.side_of_eye(2, {0, y0 * scale, 0}), 0) << scale;
     }
+}
+
+TEST(ExactKernel, nested_split_points_of_mixed_exponents_lie_exactly_on_their_planes) {
+  // Exact values are homogeneous integers X / w with only common twos removed; an input
+  // vertex whose coordinates have very different exponents (2^-1000 beside 3 and 2^900)
+  // must enter exactly, and points split from split points (the diagonal pieces) must still
+  // lie exactly on every plane that made them and on the fragment's own plane.
+  const double tiny = std::ldexp(1.0, -1000), huge = std::ldexp(1.0, 900);
+  const std::array<vec3d, 3> fragment{{{tiny, 3, -huge}, {-1, tiny, huge}, {2, -2, tiny}}};
+  const std::array<vec3d, 3> cut_a{{{0.375, -5, -5}, {0.375, 5, -5}, {0.375, 0, 5}}};
+  const std::array<vec3d, 3> cut_b{{{-5, 0.625, -5}, {5, 0.625, -5}, {0, 0.625, 5}}};
+  const std::array<vec3d, 3> cut_c{{{-5, -5, 0.125}, {5, -5, 0.125}, {0, 5, 0.125}}};
+  geometry_fixture g(soup_of({fragment, cut_a, cut_b, cut_c}));
+  const std::array<std::array<vec3d, 3>, 4> planes{fragment, cut_a, cut_b, cut_c};
+  std::vector<exact_geometry::fragment> pieces{g.fragments[0]};
+  std::set<std::uint32_t> cut_by;  // planes that made some point of the pieces
+  for (std::uint32_t plane = 1; plane <= 3; ++plane) {
+    std::vector<exact_geometry::fragment> next;
+    for (const auto& f : pieces) {
+      const std::array<int, 3> s{g.geom.sign(plane, f, 0), g.geom.sign(plane, f, 1),
+                                 g.geom.sign(plane, f, 2)};
+      if (exbsp::classify_signs(s) != exbsp::classification::straddling) {
+        next.push_back(f);
+        continue;
+      }
+      cut_by.insert(plane);
+      for (const auto& p : g.split(f, plane)) next.push_back(p);
+    }
+    pieces = next;
+  }
+  EXPECT_EQ(cut_by.size(), 3u);
+  std::size_t on_cuts = 0;
+  for (const auto& p : pieces)
+    for (int k = 0; k < 3; ++k) {
+      const auto exact = g.geom.to_exact(p)[static_cast<std::size_t>(k)];
+      EXPECT_EQ(reference_sign(fragment, exact), 0) << exact[0] << " " << exact[1];
+      for (std::uint32_t plane = 1; plane <= 3; ++plane) {
+        const int s = reference_sign(planes[plane], exact);
+        EXPECT_EQ(g.geom.sign(plane, p, k), s) << plane;
+        on_cuts += s == 0;
+      }
+    }
+  EXPECT_GT(on_cuts, 6u);
+}
+
+TEST(ExactKernel, quotient_to_double_rounds_like_the_reduced_rational) {
+  // quotient_to_double(num, den) on unreduced fractions must give rational_to_double's
+  // correctly rounded double: midpoints (ties to even), values near and below the smallest
+  // normal double (where a double has fewer bits), signs, zero, and large common factors.
+  std::vector<std::pair<mpz_class, mpz_class>> cases;
+  const mpz_class two53 = mpz_class(1) << 53;
+  cases.push_back({two53 + 1, 1});             // a midpoint: ties to even (down)
+  cases.push_back({two53 + 3, 1});             // a midpoint: ties to even (up)
+  cases.push_back({-(two53 + 1) * 6, 6});      // the same, negative and unreduced
+  cases.push_back({0, 12345});                 // zero
+  cases.push_back({1, mpz_class(1) << 1022});  // the smallest normal
+  cases.push_back({3, mpz_class(1) << 1024});  // below it: subnormal
+  cases.push_back({(mpz_class(1) << 52) + 1, mpz_class(1) << 1074});  // just below DBL_MIN
+  cases.push_back({1, mpz_class(1) << 1075});  // half the smallest subnormal: ties to 0
+  cases.push_back({3, mpz_class(1) << 1076});  // three quarters of it: rounds up
+  cases.push_back({1, 3});
+  std::mt19937_64 rng(20261124);
+  for (int i = 0; i < 2000; ++i) {
+    mpz_class num, den, common;
+    const auto random_bits = [&](int bits) {
+      mpz_class z = 0;
+      for (int b = 0; b < bits; b += 64) z = (z << 64) + mpz_class(std::to_string(rng()));
+      return z;
+    };
+    num = random_bits(64 + static_cast<int>(rng() % 2000));
+    den = random_bits(64 + static_cast<int>(rng() % 2000)) + 1;
+    common = random_bits(64 + static_cast<int>(rng() % 200)) + 1;
+    if (rng() % 2) num = -num;
+    cases.push_back({num * common, den * common});
+  }
+  for (const auto& [num, den] : cases) {
+    mpq_class q(num, den);
+    q.canonicalize();
+    const double want = exbsp::rational_to_double(q.get_mpq_t());
+    const double got = exbsp::quotient_to_double(num.get_mpz_t(), den.get_mpz_t());
+    EXPECT_EQ(std::signbit(got), std::signbit(want)) << num << "/" << den;
+    EXPECT_EQ(got, want) << num << "/" << den;
+  }
 }
 
 TEST(ExactKernel, points_beyond_many_chunks_keep_their_values_as_the_table_grows) {

@@ -28,6 +28,10 @@ std::array<std::array<std::string, 3>, 3> exact_text(VisitExact&& visit_exact) {
 /// The double nearest to q (round to nearest, ties to even), via MPFR.
 double rational_to_double(mpq_srcptr q);
 
+/// The double nearest to num / den (den > 0; the fraction need not be reduced), rounded
+/// like rational_to_double, without the gcd a canonical mpq would cost.
+double quotient_to_double(mpz_srcptr num, mpz_srcptr den);
+
 /// Peak resident set size of this process in bytes (Linux VmHWM), 0 when unknown.
 std::size_t peak_rss_bytes();
 

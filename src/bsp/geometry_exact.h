@@ -12,9 +12,10 @@
 //   2. structure: x = SEG(p, q, Q) lies on Q; otherwise, when p and q are not strictly on
 //      opposite sides of Q, x (strictly between them) takes their sign (both 0: 0) — the
 //      structural zeros (a split point on an edge that Q contains) cost no arithmetic;
-//   3. exact: the point's exact rational value (GMP, computed once and memoised, iteratively
-//      over the points it depends on) against Q's exact plane.
-// Rational "p/q" strings and correctly rounded doubles are produced once per point, at output.
+//   3. exact: the point's exact value against Q's exact plane, in integers (GMP): a point is
+//      X / w in homogeneous integer coordinates, unreduced but for common twos, computed once
+//      and memoised, iteratively over the points it depends on.
+// Reduced "p/q" strings and correctly rounded doubles are produced once per point, at output.
 // Hand-written rather than a CGAL kernel because no CGAL kernel offers (2): the structure of
 // the construction is what makes most exact answers free.
 #pragma once
