@@ -38,6 +38,27 @@ constexpr double u = 1.1102230246251565e-16;
 
 int sign_of(const mpq_class& q) { return sgn(q); }
 
+/// The coordinates of `count` double points as integers over one power of two: point i is
+/// (out[3i], out[3i+1], out[3i+2]) / 2^shift, exactly (a double is m 2^e with an integer m).
+/// Returns shift, the smallest that makes every coordinate an integer (0 when all are).
+mp_bitcnt_t to_integers(const vec3d* points, int count, mpz_class* out) {
+  std::array<int, 9> e{};
+  std::array<double, 9> m{};
+  int shift = 0;
+  for (int i = 0; i < 3 * count; ++i) {
+    const double c = points[i / 3][i % 3];
+    if (c == 0) continue;
+    m[i] = std::ldexp(std::frexp(c, &e[i]), 53);  // an integer below 2^53, exactly
+    e[i] -= 53;
+    shift = std::max(shift, -e[i]);
+  }
+  for (int i = 0; i < 3 * count; ++i) {
+    out[i] = m[i];
+    if (m[i] != 0) mpz_mul_2exp(out[i].get_mpz_t(), out[i].get_mpz_t(), e[i] + shift);
+  }
+  return static_cast<mp_bitcnt_t>(shift);
+}
+
 /// Divides x[0..2] and w by their largest common power of two (cheap, unlike a gcd; it keeps
 /// the dyadic input's scale factors from piling up along nested constructions).
 void remove_common_twos(std::array<mpz_class, 3>& x, mpz_class& w) {
@@ -153,25 +174,23 @@ const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane)
     const auto it = exact_planes_.find(plane);
     if (it != exact_planes_.end()) return it->second;
   }
-  // The plane in rationals (once per plane: rare), then scaled to integers by the least
-  // common denominator of its four coefficients (a positive factor: signs are unchanged).
-  std::array<std::array<mpq_class, 3>, 3> v;
-  for (int k = 0; k < 3; ++k)
-    for (int j = 0; j < 3; ++j) v[k][j] = at(sources_[plane][k]).c[j];
-  std::array<mpq_class, 3> e1, e2, n;
+  // The vertices as integers A, B, C over 2^s: with N = (B-A)x(C-A), the orientation is
+  // sign(N.(x 2^s - A)) = sign((N 2^s).x - N.A), all integers.
+  const std::array<vec3d, 3> corners{at(sources_[plane][0]).c, at(sources_[plane][1]).c,
+                                     at(sources_[plane][2]).c};
+  std::array<mpz_class, 9> v;
+  const mp_bitcnt_t shift = to_integers(corners.data(), 3, v.data());
+  std::array<mpz_class, 3> e1, e2;
   for (int j = 0; j < 3; ++j) {
-    e1[j] = v[1][j] - v[0][j];
-    e2[j] = v[2][j] - v[0][j];
+    e1[j] = v[3 + j] - v[j];
+    e2[j] = v[6 + j] - v[j];
   }
-  n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-  n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-  n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-  const mpq_class d = n[0] * v[0][0] + n[1] * v[0][1] + n[2] * v[0][2];
-  mpz_class scale = d.get_den();
-  for (const mpq_class& c : n) mpz_lcm(scale.get_mpz_t(), scale.get_mpz_t(), c.get_den_mpz_t());
   exact_plane made;
-  for (int j = 0; j < 3; ++j) made.n[j] = n[j].get_num() * (scale / n[j].get_den());
-  made.d = d.get_num() * (scale / d.get_den());
+  made.n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  made.n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  made.n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  made.d = made.n[0] * v[0] + made.n[1] * v[1] + made.n[2] * v[2];
+  for (mpz_class& c : made.n) mpz_mul_2exp(c.get_mpz_t(), c.get_mpz_t(), shift);
   const std::lock_guard<std::mutex> lock(exact_mutex_);
   return exact_planes_.emplace(plane, std::move(made)).first->second;  // the first one stays
 }
@@ -179,23 +198,9 @@ const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane)
 const exact_geometry::exact_value* exact_geometry::value_of(std::uint32_t id,
                                                             exact_value& vertex) const {
   if (id >= inputs_) return find_exact(id);
-  // A double is m 2^e with an integer m: the vertex is X / 2^s with s the largest -e (or 0).
-  const vec3d& c = at(id).c;
-  std::array<int, 3> e{};
-  std::array<double, 3> m{};
-  int s = 0;
-  for (int j = 0; j < 3; ++j) {
-    if (c[j] == 0) continue;
-    m[j] = std::ldexp(std::frexp(c[j], &e[j]), 53);  // an integer below 2^53, exactly
-    e[j] -= 53;
-    s = std::max(s, -e[j]);
-  }
-  for (int j = 0; j < 3; ++j) {
-    vertex.x[j] = m[j];
-    if (c[j] != 0) mpz_mul_2exp(vertex.x[j].get_mpz_t(), vertex.x[j].get_mpz_t(), e[j] + s);
-  }
   vertex.w = 1;
-  mpz_mul_2exp(vertex.w.get_mpz_t(), vertex.w.get_mpz_t(), s);
+  mpz_mul_2exp(vertex.w.get_mpz_t(), vertex.w.get_mpz_t(),
+               to_integers(&at(id).c, 1, vertex.x.data()));
   return &vertex;
 }
 
