@@ -672,7 +672,7 @@ def section_peers(acc_rows, peers, node, plot_rel):
     tools = peer_tools(peers)
     versions = ", ".join(sorted({f"{r['tool']} {r.get('version', '')}".strip() for r in peers if r.get("tool")}))
     lines += [f"Tools: {versions}, run by Node {node or '(version not recorded)'} on the same machine in the "
-              "same run as section 1 (best of 3 builds each). They store convex polygons; `triangles` counts them "
+              "same run as section 1 (each: one untimed warm-up build, then the median of 3 timed builds, as for exbsp). They store convex polygons; `triangles` counts them "
               "fan-triangulated, to compare with exbsp's stored triangles. Ratios over 1 mean exbsp is faster.",
               ""]
     hdr = ["mesh", f"{d} s", f"{d} fragments"]

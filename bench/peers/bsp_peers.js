@@ -217,9 +217,18 @@ function version_of(pkg) {
 // ---------------------------------------------------------------------------------------------
 // Worker: one (tool, mesh) pair.
 
+// The same protocol as exbsp's side of the comparison (bench/run.py: one counted build, then
+// the median of the timed rounds): one untimed warm-up build, which also lets V8 compile the
+// hot code, then `repeat` timed builds; the medians are reported, the best wall time beside.
 function run_pair({ tool, triangles, repeat }) {
   const t = TOOLS[tool];
-  let best = Infinity, best_cpu = Infinity, tree = null;
+  const median = (xs) => {
+    const s = [...xs].sort((a, b) => a - b);
+    const h = s.length >> 1;
+    return s.length % 2 ? s[h] : (s[h - 1] + s[h]) / 2;
+  };
+  const walls = [], cpus = [];
+  let tree = t.build(t.setup(triangles));  // warm-up, untimed
   for (let r = 0; r < repeat; r++) {
     const polys = t.setup(triangles);
     tree = null;
@@ -228,11 +237,12 @@ function run_pair({ tool, triangles, repeat }) {
     tree = t.build(polys);
     const t1 = process.hrtime.bigint();
     const c1 = process.cpuUsage(c0);
-    best = Math.min(best, Number(t1 - t0) / 1e9);
-    best_cpu = Math.min(best_cpu, (c1.user + c1.system) / 1e6);
+    walls.push(Number(t1 - t0) / 1e9);
+    cpus.push((c1.user + c1.system) / 1e6);
   }
   const [pieces, pieces_triangulated] = t.count(tree);
-  return { build_seconds: best, build_cpu_seconds: best_cpu, pieces, pieces_triangulated };
+  return { build_seconds: median(walls), build_cpu_seconds: median(cpus),
+    build_seconds_best: Math.min(...walls), pieces, pieces_triangulated };
 }
 
 if (!isMainThread) {
