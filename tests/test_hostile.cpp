@@ -173,6 +173,38 @@ TEST_F(Hostile, writer_refuses_an_empty_name_and_a_directory) {
   EXPECT_EQ(exbsp::pending_temporary_files(), 0);
 }
 
+TEST_F(Hostile, streamed_writer_keeps_pieces_in_order_and_a_failing_producer_leaves_nothing) {
+  // write_file_atomically with a producer (the order document streams through it): the pieces
+  // arrive in order; when the producer throws midway, after some pieces were written, the
+  // existing file is untouched, no temporary file is left and the exception passes on.
+  const fs::path out = dir / "out.json";
+  exbsp::write_file_atomically(out.string(), [](const exbsp::output_sink& sink) {
+    for (int i = 0; i < 1000; ++i) sink(std::to_string(i) + ",");
+  });
+  std::string want;
+  for (int i = 0; i < 1000; ++i) want += std::to_string(i) + ",";
+  EXPECT_EQ(read_file(out), want);
+  struct producer_failed {};
+  EXPECT_THROW(exbsp::write_file_atomically(out.string(),
+                                            [](const exbsp::output_sink& sink) {
+                                              sink(std::string(1 << 20, 'x'));
+                                              sink("more");
+                                              throw producer_failed{};
+                                            }),
+               producer_failed);
+  EXPECT_EQ(read_file(out), want);
+  EXPECT_EQ(file_names(), std::vector<std::string>{"out.json"});
+  EXPECT_EQ(exbsp::pending_temporary_files(), 0);
+  // The same for a new file: nothing appears.
+  EXPECT_THROW(exbsp::write_file_atomically((dir / "new.json").string(),
+                                            [](const exbsp::output_sink& sink) {
+                                              sink("partial");
+                                              throw std::runtime_error("stop");
+                                            }),
+               std::runtime_error);
+  EXPECT_EQ(file_names(), std::vector<std::string>{"out.json"});
+}
+
 TEST_F(Hostile, writer_ignores_a_planted_symlink_at_the_old_predictable_temporary_name) {
   write_file(dir / "victim", "precious");
   const fs::path out = dir / "out.json";

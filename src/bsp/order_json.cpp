@@ -5,11 +5,12 @@
 
 namespace exbsp {
 
-std::string order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const vec3d& where,
-                       bool use_eye) {
+void order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const vec3d& where,
+                bool use_eye, const output_sink& sink) {
   const bool exact = is_exact(tree.kernel());
+  constexpr std::size_t piece = std::size_t{1} << 20;
   std::string out;
-  out.reserve(order.size() * (exact ? 400 : 200) + 64);
+  out.reserve(piece + 4096);
   out += use_eye ? "{\"eye\": " : "{\"direction\": ";
   json_text::append_point(out, where);
   out += ",\n \"kernel\": \"" + to_string(tree.kernel()) + "\", \"heuristic\": \"" +
@@ -33,9 +34,13 @@ std::string order_json(const bsp& tree, const std::vector<std::uint32_t>& order,
       out += "]";
     }
     out += "}";
+    if (out.size() >= piece) {
+      sink(out);
+      out.clear();
+    }
   }
   out += "\n ]}\n";
-  return out;
+  sink(out);
 }
 
 }  // namespace exbsp

@@ -110,19 +110,29 @@ int write_all(int fd, std::string_view bytes) {
   return 0;
 }
 
+using producer = std::function<void(const output_sink&)>;
+
 // Non-regular targets ("-", devices, FIFOs): written in place, nothing to replace.
-void write_directly(const std::string& path, std::string_view bytes) {
+void write_directly(const std::string& path, const producer& produce) {
   if (path == "-") {
     std::fflush(stdout);  // keep the order of anything printed through stdio before
-    if (const int err = write_all(STDOUT_FILENO, bytes))
-      fail("(standard output)", "write failed", err);
+    produce([](std::string_view bytes) {
+      if (const int err = write_all(STDOUT_FILENO, bytes))
+        fail("(standard output)", "write failed", err);
+    });
     return;
   }
   const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
   if (fd < 0) fail(path, "cannot open", errno);
-  const int err = write_all(fd, bytes);
+  try {
+    produce([&](std::string_view bytes) {
+      if (const int err = write_all(fd, bytes)) fail(path, "write failed", err);
+    });
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
   ::close(fd);
-  if (err) fail(path, "write failed", err);
 }
 
 std::string random_letters(std::size_t n) {
@@ -149,8 +159,12 @@ int pending_temporary_files() {
 }
 
 void write_file_atomically(const std::string& path, std::string_view bytes) {
+  write_file_atomically(path, [&](const output_sink& sink) { sink(bytes); });
+}
+
+void write_file_atomically(const std::string& path, const producer& produce) {
   if (path.empty()) throw output_error("(empty file name)", "cannot write output: empty file name");
-  if (path == "-") return write_directly(path, bytes);
+  if (path == "-") return write_directly(path, produce);
 
   // What is there now: nothing, a regular file (maybe through a symlink), or something else.
   std::string target = path;
@@ -159,7 +173,7 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
   if (::stat(path.c_str(), &existing) == 0) {
     exists = true;
     if (S_ISDIR(existing.st_mode)) fail(path, "it is a directory");
-    if (!S_ISREG(existing.st_mode)) return write_directly(path, bytes);
+    if (!S_ISREG(existing.st_mode)) return write_directly(path, produce);
     struct stat link {};
     if (::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
       // Replace the file the link points to and keep the link.
@@ -191,13 +205,27 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
     }
   }
   if (fd < 0) fail(path, "cannot create a temporary file in " + dir, EEXIST);
+  bool discarded = false;  // the temporary file is gone (discard ran)
   const auto discard = [&](const char* what, int err) {
     if (fd >= 0) ::close(fd);
+    fd = -1;
     ::unlink(tmp.c_str());
     unregister_pending(slot);
+    discarded = true;
     fail(path, what, err);
   };
-  if (const int err = write_all(fd, bytes)) discard("write failed", err);
+  try {
+    produce([&](std::string_view bytes) {
+      if (const int err = write_all(fd, bytes)) discard("write failed", err);
+    });
+  } catch (...) {
+    if (!discarded) {  // the producer failed: nothing of it may stay
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      unregister_pending(slot);
+    }
+    throw;
+  }
   if (exists) {
     // Keep the replaced file's owner (only root may give it away; failure is harmless) and mode.
     if (::fchown(fd, existing.st_uid, existing.st_gid) != 0) { /* not permitted: keep ours */

@@ -5,6 +5,7 @@
 // over the target. A failed or interrupted run never leaves a partial, truncated or
 // clobbered file. It lives in exbsp_core, below every other module.
 #pragma once
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -22,6 +23,16 @@ namespace exbsp {
 /// Throws output_error naming `path` (empty name, missing directory, a directory, permission,
 /// disk full, ...); any existing file at `path` is then left untouched.
 void write_file_atomically(const std::string& path, std::string_view bytes);
+
+/// Receives an output's bytes piece by piece.
+using output_sink = std::function<void(std::string_view)>;
+
+/// The same for output made in pieces: `produce(sink)` passes the bytes to `sink` in order, so
+/// a large output (a whole order document) is never held in memory at once. The same rules;
+/// if `produce` throws, the temporary file is removed and the exception passes on (for "-"
+/// and non-regular targets, the pieces written so far stay written).
+void write_file_atomically(const std::string& path,
+                           const std::function<void(const output_sink&)>& produce);
 
 /// Number of temporary output files currently being written (registered for removal on a
 /// signal). For tests: 0 whenever no write_file_atomically call is running.
