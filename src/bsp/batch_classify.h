@@ -16,7 +16,6 @@
 #include <array>
 #include <cstdint>
 #include <type_traits>
-#include <unordered_map>
 #include <vector>
 
 #include "bsp/fast_orientation.h"
@@ -165,6 +164,69 @@ struct side_counts {
   long long splits = 0, positive = 0, negative = 0;
 };
 
+/// Exact signs of (point, plane) pairs already asked, in a set-associative table of 64-bit
+/// words (point id, plane id and sign packed in one word; a set is `ways` consecutive words,
+/// newest first). Hand-written rather than a std::unordered_map: the map allocated a node per
+/// entry and held about 200 KB per subtree builder even on tiny meshes; this costs 8 bytes a
+/// slot, starts empty and doubles while it holds more entries than slots, up to max_slots;
+/// then the oldest entry of a full set makes room. A forgotten answer is merely asked again,
+/// so eviction never changes a result. (Measured, pinion / anchor_dense / fandisk: 5%, 3%, 5%
+/// more exact questions than a table that never forgets, where the map asked 0%, 3%, 4% more
+/// and 2 ways would ask 9%; build time 3-7% lower than with the map.)
+class sign_cache {
+ public:
+  static constexpr int unknown = 2;
+  /// The sign remembered for point `id` against `plane`, or `unknown`.
+  int find(std::uint32_t id, std::uint32_t plane) const {
+    if (slots_.empty()) return unknown;
+    const std::uint64_t key = key_of(id, plane);
+    const std::uint64_t* set = &slots_[set_of(key)];
+    for (std::size_t k = 0; k < ways; ++k)
+      if ((set[k] >> 2) == key) return static_cast<int>(set[k] & 3) - 1;
+    return unknown;
+  }
+  /// Remembers sign s (-1, 0 or +1) of point `id` against `plane` (not known to be held).
+  void insert(std::uint32_t id, std::uint32_t plane, int s) {
+    if (id >= max_id) return;  // not representable: not remembered
+    if (slots_.empty()) slots_.assign(initial_slots, empty);
+    place(key_of(id, plane) << 2 | static_cast<std::uint64_t>(s + 1));
+    if (++entries_ > slots_.size() && slots_.size() < max_slots) grow();
+  }
+  /// Bytes held.
+  std::size_t memory() const { return slots_.capacity() * sizeof(std::uint64_t); }
+
+ private:
+  static constexpr std::uint64_t empty = ~std::uint64_t{0};  ///< its id bits are >= max_id
+  static constexpr std::uint32_t max_id = 1u << 29;
+  static constexpr std::size_t ways = 8;              ///< one 64-byte cache line a set
+  static constexpr std::size_t initial_slots = 256;   ///< 2 KB
+  static constexpr std::size_t max_slots = 1u << 14;  ///< 128 KB
+  static std::uint64_t key_of(std::uint32_t id, std::uint32_t plane) {
+    return std::uint64_t{id} << 32 | plane;
+  }
+  /// First slot of key's set (slots_.size() is a power of two, at least `ways`).
+  std::size_t set_of(std::uint64_t key) const {
+    const std::uint64_t h = (key ^ key >> 29) * 0x9e3779b97f4a7c15ULL;
+    return static_cast<std::size_t>(h >> 32) & (slots_.size() - ways);
+  }
+  /// Puts word first in its set; the set's oldest entry, if any, is forgotten.
+  void place(std::uint64_t word) {
+    std::uint64_t* set = &slots_[set_of(word >> 2)];
+    for (std::size_t k = ways - 1; k > 0; --k) set[k] = set[k - 1];
+    set[0] = word;
+  }
+  void grow() {
+    std::vector<std::uint64_t> old(slots_.size() * 2, empty);
+    old.swap(slots_);
+    // Each set's oldest first, so that the newest stay in front.
+    for (std::size_t k = 0; k < old.size(); k += ways)
+      for (std::size_t j = k + ways; j-- > k;)
+        if (old[j] != empty) place(old[j]);
+  }
+  std::vector<std::uint64_t> slots_;
+  std::size_t entries_ = 0;  ///< inserted so far (at least the entries held)
+};
+
 /// The sampled heuristic's sample of one node, gathered: per sample fragment its source and
 /// its three points' centres and radii in flat arrays (3 entries per fragment).
 template <class G>
@@ -260,16 +322,13 @@ class sample_batch {
   /// share most fragments and candidate planes (below 16 fragments every fragment is a
   /// candidate), so the same slow questions recur level after level.
   int exact_sign(const G& geom, std::uint32_t plane, const fragment& f, int t) {
-    const std::uint64_t key = std::uint64_t{f.v[t]} << 32 | plane;
-    const auto found = memo_.find(key);
-    if (found != memo_.end()) return found->second;
-    const int s = geom.sign(plane, f, t);
-    if (memo_.size() >= memo_limit) memo_.clear();
-    memo_.emplace(key, static_cast<std::int8_t>(s));
+    int s = memo_.find(f.v[t], plane);
+    if (s != sign_cache::unknown) return s;
+    s = geom.sign(plane, f, t);
+    memo_.insert(f.v[t], plane, s);
     return s;
   }
-  static constexpr std::size_t memo_limit = std::size_t{1} << 12;  ///< about 200 KB
-  std::unordered_map<std::uint64_t, std::int8_t> memo_;
+  sign_cache memo_;
   std::vector<double> x_, y_, z_, r_;
   std::vector<double> code_;  ///< per point: +1 / -1 certified, 0 not
   std::vector<std::uint32_t> source_;
