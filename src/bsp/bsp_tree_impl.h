@@ -455,6 +455,10 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
     return other.source == candidate.source ? classification::coplanar
                                             : classify(candidate.source, other);
   };
+  // Whether list[i] and list[j] come from one input triangle (so lie in one plane).
+  const auto same_source = [&](std::size_t i, std::size_t j) {
+    return resolve(part, list[i]).source == resolve(part, list[j]).source;
+  };
   const build_options& o = ctx.options;
   switch (ctx.heuristic) {
     case detail::heuristic_naive:
@@ -477,9 +481,13 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
           }
           part.sample.count(geom_, plane, part.sample_plane, k0, k1, c, part.classes, ctx.sources);
         };
-        return detail::choose_sampled_counts(n, count, o, node_key, 16);
+        const auto same_plane = [&](std::size_t i, std::size_t j) {
+          return same_source(i, j) ||
+                 part.classes.same(resolve(part, list[i]).source, resolve(part, list[j]).source);
+        };
+        return detail::choose_sampled_counts(n, count, same_plane, o, node_key, 16);
       } else {
-        return detail::choose_sampled(n, cls, o, node_key);
+        return detail::choose_sampled(n, cls, same_source, o, node_key);
       }
     case detail::heuristic_random:
       return detail::choose_random(n, o.seed, node_key);
