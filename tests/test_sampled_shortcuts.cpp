@@ -31,8 +31,7 @@ build_options reference_of(build_options o) {
   o.score_candidates = exbsp::candidate_set::sampled;
   const long long w = o.sampled_split_weight;
   o.score = [w](const exbsp::candidate_score_input& in) {
-    const long long d =
-        static_cast<long long>(in.positive) - static_cast<long long>(in.negative);
+    const long long d = static_cast<long long>(in.positive) - static_cast<long long>(in.negative);
     return static_cast<double>(w * static_cast<long long>(in.straddling) + std::llabs(d));
   };
   return o;
@@ -44,8 +43,8 @@ const std::vector<vec3d>& eyes() {
 }
 
 /// The exact sampled tree equals the shortcut-free reference (exact kernel) and gmpq's
-/// sampled tree (unless with_gmpq is false), observably (tree statistics, node planes, order from several eyes); returns
-/// whether both hold.
+/// sampled tree (unless with_gmpq is false), observably (tree statistics, node planes, order from
+/// several eyes); returns whether both hold.
 bool expect_same_as_reference(const triangle_soup& soup, build_options o, const std::string& what,
                               bool with_gmpq = true) {
   o.heuristic = "sampled";
@@ -105,17 +104,16 @@ TEST(SampledShortcuts, fans_of_coplanar_candidates_give_the_reference_tree) {
           expect_same_as_reference(soup, o,
                                    std::to_string(per_fan) + "x" + std::to_string(fans) + "+" +
                                        std::to_string(uprights) + " c" +
-                                       std::to_string(candidates) + " s" +
-                                       std::to_string(samples) + " seed " +
-                                       std::to_string(seed));
+                                       std::to_string(candidates) + " s" + std::to_string(samples) +
+                                       " seed " + std::to_string(seed));
         }
   }
 }
 
 RC_GTEST_PROP(SampledShortcuts, every_generator_gives_the_reference_tree, ()) {
-  const soup_case c = *rc::gen::oneOf(
-      exbsp_test::any_small_soup(), exbsp_test::coplanar_stack(), exbsp_test::vertex_on_plane(),
-      exbsp_test::near_coplanar(), exbsp_test::slivers(), exbsp_test::mesh_like());
+  const soup_case c = *rc::gen::oneOf(exbsp_test::any_small_soup(), exbsp_test::coplanar_stack(),
+                                      exbsp_test::vertex_on_plane(), exbsp_test::near_coplanar(),
+                                      exbsp_test::slivers(), exbsp_test::mesh_like());
   build_options o;
   o.seed = *rc::gen::arbitrary<std::uint64_t>();
   o.sampled_candidates = static_cast<unsigned>(*rc::gen::inRange(1, 20));
@@ -168,9 +166,15 @@ RC_GTEST_PROP(SampledShortcuts, skipping_repeated_planes_keeps_the_choice, ()) {
   const auto same_group = [&](std::size_t i, std::size_t j) { return group[i] == group[j]; };
   const auto never = [](std::size_t, std::size_t) { return false; };
   const std::uint64_t key = *rc::gen::arbitrary<std::uint64_t>();
-  for (const std::size_t chunk : {1u, 16u})
-    RC_ASSERT(exbsp::detail::choose_sampled_counts(n, count, same_group, o, key, chunk) ==
-              exbsp::detail::choose_sampled_counts(n, count, never, o, key, chunk));
+  const auto ignore = [](std::size_t) {};
+  for (const std::size_t chunk : {1u, 16u}) {
+    std::size_t last_best = n;
+    const std::size_t chosen = exbsp::detail::choose_sampled_counts(
+        n, count, same_group, o, key, chunk, [&](std::size_t i) { last_best = i; });
+    RC_ASSERT(chosen == last_best);  // on_best reports the winner last
+    RC_ASSERT(chosen ==
+              exbsp::detail::choose_sampled_counts(n, count, never, o, key, chunk, ignore));
+  }
 }
 
 }  // namespace

@@ -241,6 +241,7 @@ class sample_batch {
     z_.resize(3 * m);
     r_.resize(3 * m);
     code_.resize(3 * m);
+    best_code_.resize(3 * m);
     source_.resize(m);
     fragments_.resize(m);
     for (std::size_t k = 0; k < m; ++k) {
@@ -257,11 +258,12 @@ class sample_batch {
     }
   }
   /// Adds the classifications of sample fragments [k0, k1) against plane `plane` (static
-  /// filter sp) to `out`; a fragment of the plane's own source is coplanar.
+  /// filter sp) to `out`; a fragment of the plane's own source is coplanar. Leaves the
+  /// exact signs of their points in the current codes (unknown_code where not asked).
   void count(const G& geom, std::uint32_t plane, const static_plane& sp, std::size_t k0,
              std::size_t k1, side_counts& out, coplanar_sources& classes, std::size_t sources) {
     const std::size_t t0 = 3 * k0, t1 = 3 * k1;
-    double* __restrict code = code_.data();
+    std::int8_t* __restrict code = code_.data();
     if (sp.valid) {
       const double a0 = sp.a[0], a1 = sp.a[1], a2 = sp.a[2];
       const double n0 = sp.n[0], n1 = sp.n[1], n2 = sp.n[2];
@@ -270,34 +272,45 @@ class sample_batch {
       const double* __restrict y = y_.data();
       const double* __restrict z = z_.data();
       const double* __restrict r = r_.data();
-      // static_sign over the flat arrays, written so that the compiler vectorises it (hence
-      // the codes as doubles: +1, -1 certified, 0 not).
+      // static_sign over the flat arrays, written so that the compiler vectorises it (codes:
+      // +1, -1 certified, 0 not).
       for (std::size_t t = t0; t < t1; ++t) {
         const double v = n0 * (x[t] - a0) + n1 * (y[t] - a1) + n2 * (z[t] - a2);
         const double bound = b0 + r[t] * b1;
-        code[t] = (v > bound ? 1.0 : 0.0) - (v < -bound ? 1.0 : 0.0);
+        code[t] = static_cast<std::int8_t>((v > bound) - (v < -bound));
       }
     } else {
-      std::fill(code + t0, code + t1, 0.0);
+      std::fill(code + t0, code + t1, std::int8_t{0});
     }
     long long splits = 0, positive = 0, negative = 0;
     for (std::size_t k = k0; k < k1; ++k) {
-      if (source_[k] == plane) continue;  // coplanar by construction
-      const double c0 = code[3 * k], c1 = code[3 * k + 1], c2 = code[3 * k + 2];
+      std::int8_t* ck = code + 3 * k;
+      if (source_[k] == plane) {  // coplanar by construction
+        ck[0] = ck[1] = ck[2] = 0;
+        continue;
+      }
+      const int c0 = ck[0], c1 = ck[1], c2 = ck[2];
       if (c0 != 0 && c1 != 0 && c2 != 0) {  // all certified: +-1 each
-        const double sum = c0 + c1 + c2;
+        const int sum = c0 + c1 + c2;
         positive += sum == 3;
         negative += sum == -3;
         splits += sum != 3 && sum != -3;
         continue;
       }
-      if (classes.same(source_[k], plane)) continue;  // in the plane: coplanar
+      if (classes.same(source_[k], plane)) {  // in the plane: coplanar
+        ck[0] = ck[1] = ck[2] = 0;
+        continue;
+      }
       // Not certified: the exact predicate (the third one only when the first two agree).
-      std::array<int, 3> sg{static_cast<int>(c0), static_cast<int>(c1), static_cast<int>(c2)};
+      std::array<int, 3> sg{c0, c1, c2};
       for (int t = 0; t < 2; ++t)
         if (sg[t] == 0) sg[t] = exact_sign(geom, plane, *fragments_[k], t);
-      if (sg[2] == 0 && sg[0] * sg[1] >= 0) sg[2] = exact_sign(geom, plane, *fragments_[k], 2);
+      const bool third = sg[2] != 0 || sg[0] * sg[1] >= 0;
+      if (sg[2] == 0 && third) sg[2] = exact_sign(geom, plane, *fragments_[k], 2);
       if (sg[0] == 0 && sg[1] == 0 && sg[2] == 0) classes.join(source_[k], plane, sources);
+      ck[0] = static_cast<std::int8_t>(sg[0]);
+      ck[1] = static_cast<std::int8_t>(sg[1]);
+      ck[2] = third ? static_cast<std::int8_t>(sg[2]) : unknown_code;
       switch (classify_signs(sg)) {
         case classification::straddling:
           ++splits;
@@ -317,6 +330,15 @@ class sample_batch {
     out.negative += negative;
   }
 
+  /// A code left by count for a point whose sign was not needed (the third point of a
+  /// fragment whose first two straddle the plane).
+  static constexpr std::int8_t unknown_code = 2;
+  /// Keeps the codes of the candidate just counted (when the sample is the node's whole list
+  /// and the candidate was counted over all of it, its exact signs per list position).
+  void keep_best() { code_.swap(best_code_); }
+  /// The codes kept by the last keep_best(): 3 per sample fragment.
+  const std::int8_t* best_codes() const { return best_code_.data(); }
+
  private:
   /// G::sign of point t of f against `plane`, remembered: the lists of neighbouring nodes
   /// share most fragments and candidate planes (below 16 fragments every fragment is a
@@ -330,7 +352,8 @@ class sample_batch {
   }
   sign_cache memo_;
   std::vector<double> x_, y_, z_, r_;
-  std::vector<double> code_;  ///< per point: +1 / -1 certified, 0 not
+  std::vector<std::int8_t> code_;       ///< per point: +1 / -1 certified, 0 not; then exact signs
+  std::vector<std::int8_t> best_code_;  ///< the codes kept by keep_best
   std::vector<std::uint32_t> source_;
   std::vector<const fragment*> fragments_;
 };

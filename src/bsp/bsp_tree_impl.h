@@ -321,6 +321,15 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
     }
     std::array<int, 3> sj{};
     if constexpr (batched) {
+      if (part.sample_signs) {  // the sampled heuristic's signs (choose_splitter)
+        const std::int8_t* c = part.sample.best_codes() + 3 * j;
+        for (int k = 0; k < 3; ++k)
+          sj[k] =
+              c[k] == detail::sample_batch<G>::unknown_code ? geom_.sign(plane_source, f, k) : c[k];
+        part.signs[j] = {static_cast<std::int8_t>(sj[0]), static_cast<std::int8_t>(sj[1]),
+                         static_cast<std::int8_t>(sj[2])};
+        return;
+      }
       const static_plane& sp = part.plane;
       for (int k = 0; k < 3; ++k)
         sj[k] = sp.valid ? static_sign(sp, geom_.centre(f.v[k]), geom_.radius(f.v[k])) : 0;
@@ -447,6 +456,7 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
                                                subtree& part, const build_context& ctx,
                                                std::uint64_t node_key, std::uint32_t depth) const {
   const std::size_t n = list.size();
+  part.sample_signs = false;
   if (n <= 1) return 0;
   // cls(i, j): list[j] against list[i]'s plane; the same source is coplanar by construction.
   const auto cls = [&](std::size_t i, std::size_t j) {
@@ -485,7 +495,12 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
           return same_source(i, j) ||
                  part.classes.same(resolve(part, list[i]).source, resolve(part, list[j]).source);
         };
-        return detail::choose_sampled_counts(n, count, same_plane, o, node_key, 16);
+        const std::size_t best = detail::choose_sampled_counts(
+            n, count, same_plane, o, node_key, 16, [&](std::size_t) { part.sample.keep_best(); });
+        // A sample of the whole list (sample_position(k, n, n) = k): the winner's kept codes
+        // are its exact signs by list position, for grow_node's partition.
+        part.sample_signs = m == n;
+        return best;
       } else {
         return detail::choose_sampled(n, cls, same_source, o, node_key);
       }

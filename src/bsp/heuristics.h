@@ -138,10 +138,14 @@ inline std::size_t sample_position(std::size_t k, std::size_t n, std::size_t m) 
 // and coplanar fragments, so splits and |positive - negative|, hence the score, are equal.
 // The earlier candidate was scored first, so the best score is already at most that score,
 // and the later one, which needs a strictly lower score to win, cannot.
-template <class Count, class SamePlane>
+//
+// on_best(i) is called when candidate i becomes the best so far, right after its last count:
+// the winner was counted over the whole sample (a candidate that stopped early has a score of
+// at least the best one, so never becomes the best).
+template <class Count, class SamePlane, class OnBest>
 std::size_t choose_sampled_counts(std::size_t n, const Count& count, const SamePlane& same_plane,
-                                  const build_options& o, std::uint64_t node_key,
-                                  std::size_t chunk) {
+                                  const build_options& o, std::uint64_t node_key, std::size_t chunk,
+                                  const OnBest& on_best) {
   const std::vector<std::size_t> candidates =
       sampled_candidate_positions(n, std::max(1u, o.sampled_candidates), o.seed, node_key);
   const std::size_t m = sample_size(n, o.sampled_samples);
@@ -160,6 +164,7 @@ std::size_t choose_sampled_counts(std::size_t n, const Count& count, const SameP
     if (score < best_score) {
       best_score = score;
       best = i;
+      on_best(i);
     }
   }
   return best;
@@ -187,7 +192,7 @@ std::size_t choose_sampled(std::size_t n, const Classify& cls, const SamePlane& 
       }
     }
   };
-  return choose_sampled_counts(n, count, same_plane, o, node_key, 1);
+  return choose_sampled_counts(n, count, same_plane, o, node_key, 1, [](std::size_t) {});
 }
 
 /// random: one position drawn with the seed and the node's path key.
