@@ -392,15 +392,21 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
       else
         return detail::point_box{};
     };
+    // The box of list position j, from the sample's arrays when they hold the whole list.
+    const auto box_at = [&](std::size_t j) {
+      if constexpr (batched)
+        if (part.sample_signs) return part.sample.box(j);
+      return box_of(fragment_at(w.list[j]));
+    };
     switch (classify_signs(s)) {
       case classification::coplanar:
         part.node_fragments.push_back(ref);
         break;
       case classification::positive:
-        positive.add(ref, box_of(fragment_at(ref)));
+        positive.add(ref, box_at(j));
         break;
       case classification::negative:
-        negative.add(ref, box_of(fragment_at(ref)));
+        negative.add(ref, box_at(j));
         break;
       case classification::straddling: {
         const split_pattern pattern = make_split_pattern(s);
