@@ -172,7 +172,7 @@ struct side_counts {
 /// then the oldest entry of a full set makes room. A forgotten answer is merely asked again,
 /// so eviction never changes a result. (Measured, pinion / anchor_dense / fandisk: 5%, 3%, 5%
 /// more exact questions than a table that never forgets, where the map asked 0%, 3%, 4% more
-/// and 2 ways would ask 9%; build time 3-7% lower than with the map.)
+/// and 2 ways up to 9%; build time 3-7% lower than with the map.)
 class sign_cache {
  public:
   static constexpr int unknown = 2;
