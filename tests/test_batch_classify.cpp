@@ -84,6 +84,44 @@ TEST(BatchClassify, coplanar_classes_join_transitively_and_start_empty) {
   EXPECT_FALSE(classes.same(3, 5));
 }
 
+TEST(BatchClassify, sign_cache_answers_right_or_unknown_and_starts_empty) {
+  exbsp::detail::sign_cache cache;
+  constexpr int unknown = exbsp::detail::sign_cache::unknown;
+  EXPECT_EQ(cache.find(0, 0), unknown);
+  EXPECT_EQ(cache.memory(), 0u);  // nothing allocated until the first answer
+  // Keys that differ only in the point or only in the plane, with every sign.
+  cache.insert(0, 0, -1);
+  cache.insert(1, 0, 0);
+  cache.insert(0, 1, 1);
+  EXPECT_EQ(cache.find(0, 0), -1);
+  EXPECT_EQ(cache.find(1, 0), 0);
+  EXPECT_EQ(cache.find(0, 1), 1);
+  EXPECT_EQ(cache.find(1, 1), unknown);
+  // Ids beyond what a word packs, and the largest plane id, are never confused.
+  cache.insert(1u << 29, 0, 1);
+  EXPECT_EQ(cache.find(1u << 29, 0), unknown);
+  cache.insert(5, ~0u, -1);
+  EXPECT_EQ(cache.find(5, ~0u), -1);
+  EXPECT_EQ(cache.find(5, 0), unknown);
+  // Many more answers than the table holds at most: every answer it still gives is the
+  // one inserted, and the most recent ones are still there.
+  const auto sign_of = [](std::uint32_t id, std::uint32_t plane) {
+    return static_cast<int>((std::uint64_t{id} * 2654435761u + plane) % 3) - 1;
+  };
+  std::size_t kept = 0;
+  for (std::uint32_t id = 10; id < 40010; ++id) cache.insert(id, id % 97, sign_of(id, id % 97));
+  for (std::uint32_t id = 10; id < 40010; ++id) {
+    const int s = cache.find(id, id % 97);
+    if (s == unknown) continue;
+    EXPECT_EQ(s, sign_of(id, id % 97)) << id;
+    ++kept;
+  }
+  EXPECT_GT(kept, 8000u);
+  EXPECT_LT(kept, 40000u);  // bounded: it forgot some
+  EXPECT_NE(cache.find(40009, 40009 % 97), unknown);
+  EXPECT_LE(cache.memory(), 256u << 10);
+}
+
 TEST(BatchClassify, naive_on_a_stack_of_coplanar_layers_matches_gmpq) {
   // Layers of parallel triangles, several per plane (coplanar classes), in an order that
   // mixes layers so that blocks hold fragments on both sides of most planes.

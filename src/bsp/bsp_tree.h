@@ -152,6 +152,8 @@ class basic_bsp_tree {
     static_plane plane;                             ///< the node plane's static filter
     static_plane sample_plane;                      ///< the current candidate's static filter
     std::uint32_t sample_plane_source = ~0u;
+    /// Whether sample.best_codes() hold the exact signs of the node's list against its plane.
+    bool sample_signs = false;
     detail::coplanar_sources classes;  ///< sources found in one plane, by this subtree
     /// Frees the build scratch above (signs .. classes) once the subtree is grown.
     void release_scratch() {

@@ -321,6 +321,15 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
     }
     std::array<int, 3> sj{};
     if constexpr (batched) {
+      if (part.sample_signs) {  // the sampled heuristic's signs (choose_splitter)
+        const std::int8_t* c = part.sample.best_codes() + 3 * j;
+        for (int k = 0; k < 3; ++k)
+          sj[k] =
+              c[k] == detail::sample_batch<G>::unknown_code ? geom_.sign(plane_source, f, k) : c[k];
+        part.signs[j] = {static_cast<std::int8_t>(sj[0]), static_cast<std::int8_t>(sj[1]),
+                         static_cast<std::int8_t>(sj[2])};
+        return;
+      }
       const static_plane& sp = part.plane;
       for (int k = 0; k < 3; ++k)
         sj[k] = sp.valid ? static_sign(sp, geom_.centre(f.v[k]), geom_.radius(f.v[k])) : 0;
@@ -383,15 +392,21 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
       else
         return detail::point_box{};
     };
+    // The box of list position j, from the sample's arrays when they hold the whole list.
+    const auto box_at = [&](std::size_t j) {
+      if constexpr (batched)
+        if (part.sample_signs) return part.sample.box(j);
+      return box_of(fragment_at(w.list[j]));
+    };
     switch (classify_signs(s)) {
       case classification::coplanar:
         part.node_fragments.push_back(ref);
         break;
       case classification::positive:
-        positive.add(ref, box_of(fragment_at(ref)));
+        positive.add(ref, box_at(j));
         break;
       case classification::negative:
-        negative.add(ref, box_of(fragment_at(ref)));
+        negative.add(ref, box_at(j));
         break;
       case classification::straddling: {
         const split_pattern pattern = make_split_pattern(s);
@@ -447,6 +462,7 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
                                                subtree& part, const build_context& ctx,
                                                std::uint64_t node_key, std::uint32_t depth) const {
   const std::size_t n = list.size();
+  part.sample_signs = false;
   if (n <= 1) return 0;
   // cls(i, j): list[j] against list[i]'s plane; the same source is coplanar by construction.
   const auto cls = [&](std::size_t i, std::size_t j) {
@@ -454,6 +470,10 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
     const fragment& other = resolve(part, list[j]);
     return other.source == candidate.source ? classification::coplanar
                                             : classify(candidate.source, other);
+  };
+  // Whether list[i] and list[j] come from one input triangle (so lie in one plane).
+  const auto same_source = [&](std::size_t i, std::size_t j) {
+    return resolve(part, list[i]).source == resolve(part, list[j]).source;
   };
   const build_options& o = ctx.options;
   switch (ctx.heuristic) {
@@ -477,9 +497,18 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
           }
           part.sample.count(geom_, plane, part.sample_plane, k0, k1, c, part.classes, ctx.sources);
         };
-        return detail::choose_sampled_counts(n, count, o, node_key, 16);
+        const auto same_plane = [&](std::size_t i, std::size_t j) {
+          return same_source(i, j) ||
+                 part.classes.same(resolve(part, list[i]).source, resolve(part, list[j]).source);
+        };
+        const std::size_t best = detail::choose_sampled_counts(
+            n, count, same_plane, o, node_key, 16, [&](std::size_t) { part.sample.keep_best(); });
+        // A sample of the whole list (sample_position(k, n, n) = k): the winner's kept codes
+        // are its exact signs by list position, for grow_node's partition.
+        part.sample_signs = m == n;
+        return best;
       } else {
-        return detail::choose_sampled(n, cls, o, node_key);
+        return detail::choose_sampled(n, cls, same_source, o, node_key);
       }
     case detail::heuristic_random:
       return detail::choose_random(n, o.seed, node_key);
