@@ -76,12 +76,20 @@ TEST(BatchClassify, box_filter_never_certifies_a_box_that_touches_or_crosses_the
 TEST(BatchClassify, coplanar_classes_join_transitively_and_start_empty) {
   exbsp::detail::coplanar_sources classes;
   EXPECT_FALSE(classes.same(1, 2));
+  EXPECT_NE(classes.root(1), classes.root(2));  // every source its own class
+  const std::uint32_t root_of_1_before = classes.root(1);
   classes.join(1, 2, 6);
   classes.join(4, 2, 6);
   EXPECT_TRUE(classes.same(1, 4));
   EXPECT_TRUE(classes.same(4, 4));
   EXPECT_FALSE(classes.same(0, 1));
   EXPECT_FALSE(classes.same(3, 5));
+  // Roots name the classes, and a root read before a join still names a member's class.
+  EXPECT_EQ(classes.root(1), classes.root(4));
+  EXPECT_EQ(classes.root(2), classes.root(4));
+  EXPECT_NE(classes.root(0), classes.root(1));
+  EXPECT_NE(classes.root(3), classes.root(5));
+  EXPECT_TRUE(classes.same(root_of_1_before, 4));
 }
 
 TEST(BatchClassify, sign_cache_answers_right_or_unknown_and_starts_empty) {

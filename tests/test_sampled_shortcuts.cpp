@@ -163,17 +163,17 @@ RC_GTEST_PROP(SampledShortcuts, skipping_repeated_planes_keeps_the_choice, ()) {
       c.splits += x == 3;
     }
   };
-  const auto same_group = [&](std::size_t i, std::size_t j) { return group[i] == group[j]; };
-  const auto never = [](std::size_t, std::size_t) { return false; };
+  const auto group_key = [&](std::size_t i) { return std::uint64_t(group[i]); };
+  const auto own_key = [](std::size_t i) { return std::uint64_t(i); };  // no two alike
   const std::uint64_t key = *rc::gen::arbitrary<std::uint64_t>();
   const auto ignore = [](std::size_t) {};
   for (const std::size_t chunk : {1u, 16u}) {
     std::size_t last_best = n;
     const std::size_t chosen = exbsp::detail::choose_sampled_counts(
-        n, count, same_group, o, key, chunk, [&](std::size_t i) { last_best = i; });
+        n, count, group_key, o, key, chunk, [&](std::size_t i) { last_best = i; });
     RC_ASSERT(chosen == last_best);  // on_best reports the winner last
     RC_ASSERT(chosen ==
-              exbsp::detail::choose_sampled_counts(n, count, never, o, key, chunk, ignore));
+              exbsp::detail::choose_sampled_counts(n, count, own_key, o, key, chunk, ignore));
   }
 }
 

@@ -137,6 +137,14 @@ class coplanar_sources {
     while (parent_[b] != b) b = parent_[b];
     return a == b;
   }
+  /// The class of source a, named by one of its members (a itself until a is joined). Two
+  /// sources with the same root lie in one plane (read only: safe in parallel). Roots only
+  /// merge, so equal roots read at different times still mean one plane.
+  std::uint32_t root(std::uint32_t a) const {
+    if (parent_.empty()) return a;
+    while (parent_[a] != a) a = parent_[a];
+    return a;
+  }
   /// Records that sources a and b (of `sources` in all) lie in one plane.
   void join(std::uint32_t a, std::uint32_t b, std::size_t sources) {
     if (parent_.empty()) {

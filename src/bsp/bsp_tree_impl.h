@@ -477,9 +477,10 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
     return other.source == candidate.source ? classification::coplanar
                                             : classify(candidate.source, other);
   };
-  // Whether list[i] and list[j] come from one input triangle (so lie in one plane).
-  const auto same_source = [&](std::size_t i, std::size_t j) {
-    return resolve(part, list[i]).source == resolve(part, list[j]).source;
+  // A plane list[i] lies in (choose_sampled_counts' plane_key): its source triangle's, or for
+  // the exact kernel the root of the sources known coplanar with it (batch_classify.h).
+  const auto source_key = [&](std::size_t i) -> std::uint64_t {
+    return resolve(part, list[i]).source;
   };
   const build_options& o = ctx.options;
   switch (ctx.heuristic) {
@@ -503,18 +504,17 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
           }
           part.sample.count(geom_, plane, part.sample_plane, k0, k1, c, part.classes, ctx.sources);
         };
-        const auto same_plane = [&](std::size_t i, std::size_t j) {
-          return same_source(i, j) ||
-                 part.classes.same(resolve(part, list[i]).source, resolve(part, list[j]).source);
+        const auto plane_key = [&](std::size_t i) -> std::uint64_t {
+          return part.classes.root(resolve(part, list[i]).source);
         };
         const std::size_t best = detail::choose_sampled_counts(
-            n, count, same_plane, o, node_key, 16, [&](std::size_t) { part.sample.keep_best(); });
+            n, count, plane_key, o, node_key, 16, [&](std::size_t) { part.sample.keep_best(); });
         // A sample of the whole list (sample_position(k, n, n) = k): the winner's kept codes
         // are its exact signs by list position, for grow_node's partition.
         part.sample_signs = m == n;
         return best;
       } else {
-        return detail::choose_sampled(n, cls, same_source, o, node_key);
+        return detail::choose_sampled(n, cls, source_key, o, node_key);
       }
     case detail::heuristic_random:
       return detail::choose_random(n, o.seed, node_key);
