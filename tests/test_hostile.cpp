@@ -4,6 +4,7 @@
 // child) under an address-space limit (RLIMIT_AS); they are skipped under AddressSanitizer,
 // which reserves terabytes of shadow address space and cannot run under such a limit.
 #include <gmp.h>
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -312,6 +313,50 @@ TEST_F(Hostile, sigterm_during_a_write_removes_the_temporary_file_and_kills_the_
 }
 
 // ---- 3. memory exhaustion: exit 3, never abort ---------------------------------------------
+
+TEST(GmpMemory, a_failure_the_reserve_absorbs_completes_the_call_and_is_reported_after_it) {
+  // GMP cannot be trusted to leave a number consistent when its allocation throws (mpz_mul
+  // records the new size first: a destructor then frees a pointer it does not own, and glibc
+  // aborts). So the first failure spends the reserve and the call completes; check_gmp_memory
+  // then throws from C++; rearm_gmp_memory_reserve makes a new reserve once memory is free.
+  if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    exbsp::install_gmp_memory_functions();
+    struct rlimit cap {
+      std::size_t{256} << 20, std::size_t{256} << 20
+    };
+    ::setrlimit(RLIMIT_AS, &cap);
+    std::vector<void*> ballast;  // fill the address space up to the cap
+    for (void* p; (p = std::malloc(std::size_t{64} << 10)) != nullptr;) ballast.push_back(p);
+    int code = 1;
+    try {
+      exbsp::check_gmp_memory();  // not exhausted yet
+      mpz_class x = 3;
+      mpz_mul_2exp(x.get_mpz_t(), x.get_mpz_t(), 4000000);  // 500 KB: only the reserve has it
+      const mpz_class y = x * 5;                            // and a product into a new number
+      code = 2;
+      if (mpz_sizeinbase(y.get_mpz_t(), 2) < 4000000) ::_exit(3);
+      exbsp::check_gmp_memory();  // must throw now
+    } catch (const std::bad_alloc&) {
+      code = code == 2 ? 42 : 4;  // 4: threw from inside GMP rather than after the call
+    }
+    for (void* p : ballast) std::free(p);
+    exbsp::rearm_gmp_memory_reserve();
+    try {
+      exbsp::check_gmp_memory();
+    } catch (const std::bad_alloc&) {
+      code = 5;  // memory is free again: no longer exhausted
+    }
+    ::_exit(code);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal "
+                                 << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 42);
+}
 
 TEST(GmpMemory, an_allocation_failure_throws_bad_alloc) {
   if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";

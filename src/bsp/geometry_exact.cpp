@@ -13,6 +13,7 @@
 
 #include "bsp/exact_output.h"
 #include "core/errors.h"
+#include "mesh/gmp_memory.h"
 
 namespace exbsp {
 
@@ -93,6 +94,7 @@ exact_geometry::exact_geometry(const triangle_soup& soup)
     throw limit_error("bsp build: too many vertices for the exact kernel's point table");
   // Input vertices are points 0 .. V-1, exactly their doubles.
   inputs_ = static_cast<std::uint32_t>(soup.vertices.size());
+  rearm_gmp_memory_reserve();  // memory a failed build held may be free again
   {
     const std::lock_guard<std::mutex> lock(claim_mutex_);
     grow_chunks(inputs_);
@@ -191,6 +193,7 @@ const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane)
   made.n[2] = e1[0] * e2[1] - e1[1] * e2[0];
   made.d = made.n[0] * v[0] + made.n[1] * v[1] + made.n[2] * v[2];
   for (mpz_class& c : made.n) mpz_mul_2exp(c.get_mpz_t(), c.get_mpz_t(), shift);
+  check_gmp_memory();  // GMP ran out of memory above (gmp_memory.h): stop here, consistent
   const std::lock_guard<std::mutex> lock(exact_mutex_);
   return exact_planes_.emplace(plane, std::move(made)).first->second;  // the first one stays
 }
@@ -242,6 +245,7 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
       made.w = -made.w;
     }
     remove_common_twos(made.x, made.w);
+    check_gmp_memory();
     {
       // Another thread may have made the same value meanwhile: the first one stays.
       const std::lock_guard<std::mutex> lock(exact_mutex_);
@@ -262,6 +266,7 @@ int exact_geometry::exact_sign(std::uint32_t plane, std::uint32_t x) const {
     mpz_mul(t.get_mpz_t(), pl.n[j].get_mpz_t(), v.x[j].get_mpz_t());
     a -= t;
   }
+  check_gmp_memory();
   return -sgn(a);
 }
 
@@ -335,6 +340,7 @@ void exact_geometry::approximate(std::uint32_t id) {
       x.c[k] = quotient_to_double(e.x[k].get_mpz_t(), e.w.get_mpz_t());
       r = std::max(r, ulp_of(x.c[k]));
     }
+    check_gmp_memory();
     x.r = round_up_to_float(r);
   }
 }
@@ -425,6 +431,7 @@ void exact_geometry::prepare_output(const std::vector<fragment>& fragments) cons
         const exact_value& e = exact_of(id);
         for (int k = 0; k < 3; ++k)
           rounded_[id][k] = quotient_to_double(e.x[k].get_mpz_t(), e.w.get_mpz_t());
+        check_gmp_memory();
       });
     failure.rethrow();
   });
@@ -443,6 +450,7 @@ void exact_geometry::visit_exact(const fragment& f, const exact_visitor& visit) 
       mpq_set_num(q.get_mpq_t(), e.x[j].get_mpz_t());
       mpq_set_den(q.get_mpq_t(), e.w.get_mpz_t());
       q.canonicalize();  // the visitor gets reduced rationals
+      check_gmp_memory();
       visit(k, j, q.get_mpq_t());
     }
   }

@@ -6,6 +6,7 @@
 
 #include <gmp.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <mutex>
 #include <new>
@@ -14,14 +15,38 @@ namespace exbsp {
 
 namespace {
 
+// The reserve. An exception thrown out of a GMP function can leave the number being written
+// unusable: GMP 6.2's mpz_mul, for one, records the new size of its destination before
+// asking for the memory, so when the allocation throws, the destination's destructor frees
+// a pointer it does not own and glibc aborts ("free(): invalid pointer"; seen with exbsp's
+// exact kernel under a 200 MB address-space cap). So the first failure does not throw: it
+// frees the reserve, retries, and marks memory exhausted; the caller's next check
+// (check_gmp_memory, in C++ code between GMP calls) throws std::bad_alloc, with every
+// number in a consistent state. Only a failure after the reserve is spent throws from GMP.
+constexpr std::size_t reserve_bytes = std::size_t{1} << 20;  // one exact value takes kilobytes
+std::atomic<void*> reserve{nullptr};
+std::atomic<bool> exhausted{false};
+std::atomic<bool> installed{false};
+
+/// Frees the reserve (once) and marks memory exhausted; false when it was already spent.
+bool spend_reserve() {
+  void* r = reserve.exchange(nullptr);
+  if (!r) return false;
+  std::free(r);
+  exhausted.store(true);
+  return true;
+}
+
 void* throwing_allocate(std::size_t size) {
   void* p = std::malloc(size ? size : 1);
+  if (!p && spend_reserve()) p = std::malloc(size ? size : 1);
   if (!p) throw std::bad_alloc();
   return p;
 }
 
 void* throwing_reallocate(void* old, std::size_t /*old_size*/, std::size_t new_size) {
   void* p = std::realloc(old, new_size ? new_size : 1);
+  if (!p && spend_reserve()) p = std::realloc(old, new_size ? new_size : 1);
   if (!p) throw std::bad_alloc();
   return p;
 }
@@ -30,7 +55,25 @@ void release(void* p, std::size_t /*size*/) { std::free(p); }
 
 }  // namespace
 
+void rearm_gmp_memory_reserve() {
+  if (!installed.load() || reserve.load()) return;
+  void* r = std::malloc(reserve_bytes);  // address space only: never written, so never resident
+  if (!r) return;                        // still short of memory: the next check throws
+  void* expected = nullptr;
+  if (!reserve.compare_exchange_strong(expected, r)) {
+    std::free(r);
+    return;
+  }
+  exhausted.store(false);
+}
+
+void check_gmp_memory() {
+  if (exhausted.load(std::memory_order_relaxed)) throw std::bad_alloc();
+}
+
 void install_gmp_memory_functions() {
+  installed.store(true);
+  rearm_gmp_memory_reserve();
   mp_set_memory_functions(throwing_allocate, throwing_reallocate, release);
   // An exception from GMP often unwinds through glibc's own C frames (pthread_once, which
   // std::call_once and CGAL's lazy kernel use). Their personality routine dlopen()s

@@ -14,6 +14,17 @@ namespace exbsp {
 /// exception crossing pthread_once aborts when memory is exhausted.
 /// Caveat: GMP is C, so the exception unwinds through C frames; GMP's own objects being built
 /// at that moment leak, which is acceptable when the program is out of memory anyway.
+/// An exception from inside GMP can also leave the number being written unusable, so the
+/// first failure is absorbed by a 1 MB reserve of address space instead (gmp_memory.cpp):
+/// the call completes and check_gmp_memory then throws from C++.
 void install_gmp_memory_functions();
+
+/// Throws std::bad_alloc when the reserve has been spent (memory ran out inside GMP). Call it
+/// between GMP calls, where every number is consistent (exbsp's exact kernel does).
+void check_gmp_memory();
+
+/// Makes a new reserve after memory was freed (each exact build starts with it), and clears
+/// the exhausted mark once there is one. Does nothing before install_gmp_memory_functions.
+void rearm_gmp_memory_reserve();
 
 }  // namespace exbsp
