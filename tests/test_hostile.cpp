@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <new>
 #include <sstream>
 #include <string>
@@ -314,75 +315,75 @@ TEST_F(Hostile, sigterm_during_a_write_removes_the_temporary_file_and_kills_the_
 
 // ---- 3. memory exhaustion: exit 3, never abort ---------------------------------------------
 
+/// Runs `body` in a forked child with exbsp's GMP memory functions installed and the address
+/// space capped at `cap_mb` MB; the child's exit status is body's result (-1: killed).
+int capped_child_status(std::size_t cap_mb, const std::function<int()>& body) {
+  const pid_t child = ::fork();
+  if (child < 0) return -2;
+  if (child == 0) {
+    exbsp::install_gmp_memory_functions();
+    struct rlimit cap {
+      cap_mb << 20, cap_mb << 20
+    };
+    ::setrlimit(RLIMIT_AS, &cap);
+    ::_exit(body());
+  }
+  int status = 0;
+  if (::waitpid(child, &status, 0) != child || !WIFEXITED(status)) return -1;
+  return WEXITSTATUS(status);
+}
+
 TEST(GmpMemory, a_failure_the_reserve_absorbs_completes_the_call_and_is_reported_after_it) {
   // GMP cannot be trusted to leave a number consistent when its allocation throws (mpz_mul
   // records the new size first: a destructor then frees a pointer it does not own, and glibc
   // aborts). So the first failure spends the reserve and the call completes; check_gmp_memory
   // then throws from C++; rearm_gmp_memory_reserve makes a new reserve once memory is free.
   if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
-  const pid_t child = ::fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    exbsp::install_gmp_memory_functions();
-    struct rlimit cap {
-      std::size_t{256} << 20, std::size_t{256} << 20
-    };
-    ::setrlimit(RLIMIT_AS, &cap);
-    std::vector<void*> ballast;  // fill the address space up to the cap
-    for (void* p; (p = std::malloc(std::size_t{64} << 10)) != nullptr;) ballast.push_back(p);
-    int code = 1;
-    try {
-      exbsp::check_gmp_memory();  // not exhausted yet
-      mpz_class x = 3;
-      mpz_mul_2exp(x.get_mpz_t(), x.get_mpz_t(), 4000000);  // 500 KB: only the reserve has it
-      const mpz_class y = x * 5;                            // and a product into a new number
-      code = 2;
-      if (mpz_sizeinbase(y.get_mpz_t(), 2) < 4000000) ::_exit(3);
-      exbsp::check_gmp_memory();  // must throw now
-    } catch (const std::bad_alloc&) {
-      code = code == 2 ? 42 : 4;  // 4: threw from inside GMP rather than after the call
-    }
-    for (void* p : ballast) std::free(p);
-    exbsp::rearm_gmp_memory_reserve();
-    try {
-      exbsp::check_gmp_memory();
-    } catch (const std::bad_alloc&) {
-      code = 5;  // memory is free again: no longer exhausted
-    }
-    ::_exit(code);
-  }
-  int status = 0;
-  ASSERT_EQ(::waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal "
-                                 << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-  EXPECT_EQ(WEXITSTATUS(status), 42);
+  EXPECT_EQ(capped_child_status(
+                256,
+                [] {
+                  std::vector<void*> ballast;  // fill the address space up to the cap
+                  for (void* p; (p = std::malloc(std::size_t{64} << 10)) != nullptr;)
+                    ballast.push_back(p);
+                  int code = 1;
+                  try {
+                    exbsp::check_gmp_memory();  // not exhausted yet
+                    mpz_class x = 3;
+                    // 500 KB: only the reserve has it; then a product into a new number
+                    mpz_mul_2exp(x.get_mpz_t(), x.get_mpz_t(), 4000000);
+                    const mpz_class y = x * 5;
+                    code = 2;
+                    if (mpz_sizeinbase(y.get_mpz_t(), 2) < 4000000) return 3;
+                    exbsp::check_gmp_memory();  // must throw now
+                  } catch (const std::bad_alloc&) {
+                    code = code == 2 ? 42 : 4;  // 4: threw from inside GMP, not after the call
+                  }
+                  for (void* p : ballast) std::free(p);
+                  exbsp::rearm_gmp_memory_reserve();
+                  try {
+                    exbsp::check_gmp_memory();
+                  } catch (const std::bad_alloc&) {
+                    code = 5;  // memory is free again: no longer exhausted
+                  }
+                  return code;
+                }),
+            42);
 }
 
 TEST(GmpMemory, an_allocation_failure_throws_bad_alloc) {
   if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
-  const pid_t child = ::fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    exbsp::install_gmp_memory_functions();
-    struct rlimit cap {
-      std::size_t{512} << 20, std::size_t{512} << 20
-    };
-    ::setrlimit(RLIMIT_AS, &cap);
-    int code = 1;
-    try {
-      mpz_t z;
-      mpz_init2(z, mp_bitcnt_t{1} << 34);  // 2 GB: beyond the cap
-      mpz_clear(z);
-    } catch (const std::bad_alloc&) {
-      code = 42;
-    }
-    ::_exit(code);
-  }
-  int status = 0;
-  ASSERT_EQ(::waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal "
-                                 << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-  EXPECT_EQ(WEXITSTATUS(status), 42);
+  EXPECT_EQ(capped_child_status(512,
+                                [] {
+                                  try {
+                                    mpz_t z;
+                                    mpz_init2(z, mp_bitcnt_t{1} << 34);  // 2 GB: beyond the cap
+                                    mpz_clear(z);
+                                  } catch (const std::bad_alloc&) {
+                                    return 42;
+                                  }
+                                  return 1;
+                                }),
+            42);
 }
 
 class MemoryCap : public Hostile, public ::testing::WithParamInterface<const char*> {};
