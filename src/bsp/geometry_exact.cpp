@@ -26,9 +26,8 @@ struct exact_geometry::exact_value {
   mpz_class w;
 };
 /// Plane of an input triangle (a, b, c) in integers: f(x) = n.x - d is a positive multiple of
-/// the orientation (a, b, c, x), the normal (b-a)x(c-a) and the offset scaled by the least
-/// common denominator. So for a point X / w (w > 0), orientation(a, b, c, X / w) =
-/// sign(n.X - d w).
+/// the orientation determinant (a, b, c, x) (plane_of: the vertices as integers over one
+/// power of two). So for a point X / w (w > 0), orientation(a, b, c, X / w) = sign(n.X - d w).
 struct exact_geometry::exact_plane {
   std::array<mpz_class, 3> n;
   mpz_class d;
