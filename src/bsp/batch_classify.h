@@ -131,12 +131,7 @@ std::vector<list_block> make_blocks(const std::vector<std::uint32_t>& list, cons
 class coplanar_sources {
  public:
   /// Whether sources a and b are known to lie in one plane (read only: safe in parallel).
-  bool same(std::uint32_t a, std::uint32_t b) const {
-    if (parent_.empty()) return false;
-    while (parent_[a] != a) a = parent_[a];
-    while (parent_[b] != b) b = parent_[b];
-    return a == b;
-  }
+  bool same(std::uint32_t a, std::uint32_t b) const { return root(a) == root(b); }
   /// The class of source a, named by one of its members (a itself until a is joined). Two
   /// sources with the same root lie in one plane (read only: safe in parallel). Roots only
   /// merge, so equal roots read at different times still mean one plane.
@@ -170,6 +165,12 @@ class coplanar_sources {
 /// Counts of a candidate plane over part of a sample.
 struct side_counts {
   long long splits = 0, positive = 0, negative = 0;
+  /// Counts one fragment classified c (a coplanar one counts nowhere).
+  void add(classification c) {
+    splits += c == classification::straddling;
+    positive += c == classification::positive;
+    negative += c == classification::negative;
+  }
 };
 
 /// Exact signs of (point, plane) pairs already asked, in a set-associative table of 64-bit
@@ -320,19 +321,7 @@ class sample_batch {
       ck[0] = static_cast<std::int8_t>(sg[0]);
       ck[1] = static_cast<std::int8_t>(sg[1]);
       ck[2] = third ? static_cast<std::int8_t>(sg[2]) : unknown_code;
-      switch (classify_signs(sg)) {
-        case classification::straddling:
-          ++splits;
-          break;
-        case classification::positive:
-          ++positive;
-          break;
-        case classification::negative:
-          ++negative;
-          break;
-        case classification::coplanar:
-          break;
-      }
+      out.add(classify_signs(sg));
     }
     out.splits += splits;
     out.positive += positive;

@@ -179,21 +179,7 @@ std::size_t choose_sampled(std::size_t n, const Classify& cls, const PlaneKey& p
                            const build_options& o, std::uint64_t node_key) {
   const std::size_t m = sample_size(n, o.sampled_samples);
   const auto count = [&](std::size_t i, std::size_t k0, std::size_t k1, side_counts& c) {
-    for (std::size_t k = k0; k < k1; ++k) {
-      switch (cls(i, sample_position(k, n, m))) {
-        case classification::straddling:
-          ++c.splits;
-          break;
-        case classification::positive:
-          ++c.positive;
-          break;
-        case classification::negative:
-          ++c.negative;
-          break;
-        case classification::coplanar:
-          break;  // the candidate itself, or in its plane
-      }
-    }
+    for (std::size_t k = k0; k < k1; ++k) c.add(cls(i, sample_position(k, n, m)));
   };
   return choose_sampled_counts(n, count, plane_key, o, node_key, 1, [](std::size_t) {});
 }
