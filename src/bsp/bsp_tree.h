@@ -149,9 +149,8 @@ class basic_bsp_tree {
     std::vector<std::int8_t> block_signs;           ///< per list block, reused node to node
     std::vector<std::uint32_t> tasks;               ///< blocks to test fragment by fragment
     detail::sample_batch<G> sample;                 ///< the sampled heuristic's gathered sample
-    static_plane plane;                             ///< the node plane's static filter
-    static_plane sample_plane;                      ///< the current candidate's static filter
-    std::uint32_t sample_plane_source = ~0u;
+    static_plane static_filter;  ///< of input plane static_filter_source (static_filter_of)
+    std::uint32_t static_filter_source = ~0u;
     /// Whether sample.best_codes() hold the exact signs of the node's list against its plane.
     bool sample_signs = false;
     detail::coplanar_sources classes;  ///< sources found in one plane, by this subtree
@@ -202,6 +201,10 @@ class basic_bsp_tree {
     return out;
   }
 
+  /// The static filter (fast_orientation.h) of input plane `plane` over the input's box, kept
+  /// in `part` for the last plane asked: a node's plane was mostly just a candidate's.
+  const static_plane& static_filter_of(subtree& part, const build_context& ctx,
+                                       std::uint32_t plane) const;
   /// The list position of the splitter (heuristics.h).
   std::size_t choose_splitter(const std::vector<std::uint32_t>& list, subtree& part,
                               const build_context& ctx, std::uint64_t node_key,

@@ -326,20 +326,18 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
         for (int k = 0; k < 3; ++k)
           sj[k] =
               c[k] == detail::sample_batch<G>::unknown_code ? geom_.sign(plane_source, f, k) : c[k];
-        part.signs[j] = {static_cast<std::int8_t>(sj[0]), static_cast<std::int8_t>(sj[1]),
-                         static_cast<std::int8_t>(sj[2])};
-        return;
-      }
-      const static_plane& sp = part.plane;
-      for (int k = 0; k < 3; ++k)
-        sj[k] = sp.valid ? static_sign(sp, geom_.centre(f.v[k]), geom_.radius(f.v[k])) : 0;
-      if (sj[0] == 0 || sj[1] == 0 || sj[2] == 0) {
-        if (part.classes.same(f.source, plane_source)) {  // in the plane (batch_classify.h)
-          part.signs[j] = {0, 0, 0};
-          return;
-        }
+      } else {
+        const static_plane& sp = part.static_filter;
         for (int k = 0; k < 3; ++k)
-          if (sj[k] == 0) sj[k] = geom_.sign(plane_source, f, k);
+          sj[k] = sp.valid ? static_sign(sp, geom_.centre(f.v[k]), geom_.radius(f.v[k])) : 0;
+        if (sj[0] == 0 || sj[1] == 0 || sj[2] == 0) {
+          if (part.classes.same(f.source, plane_source)) {  // in the plane (batch_classify.h)
+            part.signs[j] = {0, 0, 0};
+            return;
+          }
+          for (int k = 0; k < 3; ++k)
+            if (sj[k] == 0) sj[k] = geom_.sign(plane_source, f, k);
+        }
       }
     } else {
       sj = signs_against(plane_source, f);
@@ -354,7 +352,7 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
   std::size_t tested = n;
   if constexpr (batched) {
     const fast_plane_core filter = geom_.filter(plane_source);
-    part.plane = make_static_plane(filter, ctx.lo, ctx.hi);
+    static_filter_of(part, ctx, plane_source);  // read by test_fragment
     part.block_signs.resize(w.blocks.size());
     tested = 0;
     for (std::size_t b = 0; b < w.blocks.size(); ++b) {
@@ -464,6 +462,18 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
 }
 
 template <class G>
+const static_plane& basic_bsp_tree<G>::static_filter_of(subtree& part, const build_context& ctx,
+                                                        std::uint32_t plane) const {
+  if constexpr (detail::has_centres<G>::value) {  // the only geometries with filters
+    if (part.static_filter_source != plane) {
+      part.static_filter = make_static_plane(geom_.filter(plane), ctx.lo, ctx.hi);
+      part.static_filter_source = plane;
+    }
+  }
+  return part.static_filter;
+}
+
+template <class G>
 std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>& list,
                                                subtree& part, const build_context& ctx,
                                                std::uint64_t node_key, std::uint32_t depth) const {
@@ -477,8 +487,8 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
     return other.source == candidate.source ? classification::coplanar
                                             : classify(candidate.source, other);
   };
-  // A plane list[i] lies in (choose_sampled_counts' plane_key): its source triangle's, or for
-  // the exact kernel the root of the sources known coplanar with it (batch_classify.h).
+  // A plane list[i] lies in (choose_sampled_counts' plane_key): its source triangle's. (The
+  // exact kernel's branch below keys by coplanar class instead.)
   const auto source_key = [&](std::size_t i) -> std::uint64_t {
     return resolve(part, list[i]).source;
   };
@@ -498,11 +508,8 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
         const auto count = [&](std::size_t i, std::size_t k0, std::size_t k1,
                                detail::side_counts& c) {
           const std::uint32_t plane = resolve(part, list[i]).source;
-          if (k0 == 0 || part.sample_plane_source != plane) {
-            part.sample_plane = make_static_plane(geom_.filter(plane), ctx.lo, ctx.hi);
-            part.sample_plane_source = plane;
-          }
-          part.sample.count(geom_, plane, part.sample_plane, k0, k1, c, part.classes, ctx.sources);
+          part.sample.count(geom_, plane, static_filter_of(part, ctx, plane), k0, k1, c,
+                            part.classes, ctx.sources);
         };
         const auto plane_key = [&](std::size_t i) -> std::uint64_t {
           return part.classes.root(resolve(part, list[i]).source);
