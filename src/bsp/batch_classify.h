@@ -237,7 +237,12 @@ class sign_cache {
 };
 
 /// The sampled heuristic's sample of one node, gathered: per sample fragment its source and
-/// its three points' centres and radii in flat arrays (3 entries per fragment).
+/// its three points, each point once (neighbouring fragments share most of their points) with
+/// its centre and radius in flat arrays. Points get local indices in order of first use, so
+/// the points of sample fragments [0, k) are the local points [0, upto(k)), and a candidate
+/// counted in chunks from k = 0 filters each point once, when its first fragment is reached.
+/// (Measured against one entry per fragment corner: pinion, anchor_dense, joint; see the
+/// commit that made the change.)
 template <class G>
 class sample_batch {
  public:
@@ -245,33 +250,53 @@ class sample_batch {
   /// Gathers fragments fragment_at(k), k = 0..m-1.
   template <class FragmentAt>
   void gather(const G& geom, std::size_t m, const FragmentAt& fragment_at) {
-    x_.resize(3 * m);
-    y_.resize(3 * m);
-    z_.resize(3 * m);
-    r_.resize(3 * m);
-    code_.resize(3 * m);
-    best_code_.resize(3 * m);
+    // Local index of a point id: open addressing on a table of at least 4m slots (the 3m
+    // corners' points fill at most three quarters), hand-written because it is cleared at
+    // every node and holds only indices into ids_ (4 bytes a slot).
+    std::size_t size = 16;
+    while (size < 4 * m) size *= 2;
+    table_.assign(size, empty);
+    const std::size_t mask = size - 1;
+    ids_.clear();
+    x_.clear();
+    y_.clear();
+    z_.clear();
+    r_.clear();
+    slot_.resize(3 * m);
     source_.resize(m);
-    fragments_.resize(m);
+    upto_.resize(m + 1);
+    upto_[0] = 0;
     for (std::size_t k = 0; k < m; ++k) {
       const fragment& f = fragment_at(k);
-      fragments_[k] = &f;
       source_[k] = f.source;
       for (int t = 0; t < 3; ++t) {
-        const vec3d& c = geom.centre(f.v[t]);
-        x_[3 * k + t] = c[0];
-        y_[3 * k + t] = c[1];
-        z_[3 * k + t] = c[2];
-        r_[3 * k + t] = geom.radius(f.v[t]);
+        const std::uint32_t id = f.v[t];
+        std::size_t h =
+            static_cast<std::size_t>((std::uint64_t{id} * 0x9e3779b97f4a7c15ULL) >> 32) & mask;
+        while (table_[h] != empty && ids_[table_[h]] != id) h = (h + 1) & mask;
+        if (table_[h] == empty) {
+          table_[h] = static_cast<std::uint32_t>(ids_.size());
+          ids_.push_back(id);
+          const vec3d& c = geom.centre(id);
+          x_.push_back(c[0]);
+          y_.push_back(c[1]);
+          z_.push_back(c[2]);
+          r_.push_back(geom.radius(id));
+        }
+        slot_[3 * k + t] = table_[h];
       }
+      upto_[k + 1] = static_cast<std::uint32_t>(ids_.size());
     }
+    code_.resize(ids_.size());
+    best_code_.resize(ids_.size());
   }
   /// Adds the classifications of sample fragments [k0, k1) against plane `plane` (static
-  /// filter sp) to `out`; a fragment of the plane's own source is coplanar. Leaves the
-  /// exact signs of their points in the current codes (unknown_code where not asked).
+  /// filter sp) to `out`; a fragment of the plane's own source is coplanar. Call for one
+  /// candidate with consecutive ranges from k0 = 0: the points first used in the range get
+  /// their codes here, and exact signs found are kept in the codes for the fragments after.
   void count(const G& geom, std::uint32_t plane, const static_plane& sp, std::size_t k0,
              std::size_t k1, side_counts& out, coplanar_sources& classes, std::size_t sources) {
-    const std::size_t t0 = 3 * k0, t1 = 3 * k1;
+    const std::size_t p0 = upto_[k0], p1 = upto_[k1];
     std::int8_t* __restrict code = code_.data();
     if (sp.valid) {
       const double a0 = sp.a[0], a1 = sp.a[1], a2 = sp.a[2];
@@ -284,43 +309,45 @@ class sample_batch {
       // static_sign over the flat arrays (codes: +1, -1 certified, 0 not). With SSE2 the
       // compiler vectorises this loop when it stores doubles, not int8; measured as fast
       // either way (pinion, anchor_dense), so int8, 8 times smaller.
-      for (std::size_t t = t0; t < t1; ++t) {
-        const double v = n0 * (x[t] - a0) + n1 * (y[t] - a1) + n2 * (z[t] - a2);
-        const double bound = b0 + r[t] * b1;
-        code[t] = static_cast<std::int8_t>((v > bound) - (v < -bound));
+      for (std::size_t p = p0; p < p1; ++p) {
+        const double v = n0 * (x[p] - a0) + n1 * (y[p] - a1) + n2 * (z[p] - a2);
+        const double bound = b0 + r[p] * b1;
+        code[p] = static_cast<std::int8_t>((v > bound) - (v < -bound));
       }
     } else {
-      std::fill(code + t0, code + t1, std::int8_t{0});
+      std::fill(code + p0, code + p1, std::int8_t{0});
     }
+    const std::uint32_t* __restrict slot = slot_.data();
     long long splits = 0, positive = 0, negative = 0;
     for (std::size_t k = k0; k < k1; ++k) {
-      std::int8_t* ck = code + 3 * k;
-      if (source_[k] == plane) {  // coplanar by construction
-        ck[0] = ck[1] = ck[2] = 0;
-        continue;
-      }
-      const int c0 = ck[0], c1 = ck[1], c2 = ck[2];
-      if (c0 != 0 && c1 != 0 && c2 != 0) {  // all certified: +-1 each
+      const std::uint32_t* sk = slot + 3 * k;
+      const int c0 = code[sk[0]], c1 = code[sk[1]], c2 = code[sk[2]];
+      if (c0 & c1 & c2 & 1) {  // all certified or known: +-1 each
         const int sum = c0 + c1 + c2;
         positive += sum == 3;
         negative += sum == -3;
         splits += sum != 3 && sum != -3;
         continue;
       }
-      if (classes.same(source_[k], plane)) {  // in the plane: coplanar
-        ck[0] = ck[1] = ck[2] = 0;
+      if (source_[k] == plane || classes.same(source_[k], plane)) {  // in the plane: coplanar
+        code[sk[0]] = code[sk[1]] = code[sk[2]] = zero_code;
         continue;
       }
-      // Not certified: the exact predicate (the third one only when the first two agree).
-      std::array<int, 3> sg{c0, c1, c2};
-      for (int t = 0; t < 2; ++t)
-        if (sg[t] == 0) sg[t] = exact_sign(geom, plane, *fragments_[k], t);
-      const bool third = sg[2] != 0 || sg[0] * sg[1] >= 0;
-      if (sg[2] == 0 && third) sg[2] = exact_sign(geom, plane, *fragments_[k], 2);
+      // Not all known: the exact predicate (the third point only when the first two do not
+      // straddle), kept in the codes.
+      std::array<int, 3> sg{};
+      const auto sign_at = [&](int t) {
+        const int c = code[sk[t]];
+        if (c & 1) return c;
+        if (c == zero_code) return 0;
+        const int s = exact_sign(geom, plane, ids_[sk[t]]);
+        code[sk[t]] = s == 0 ? zero_code : static_cast<std::int8_t>(s);
+        return s;
+      };
+      sg[0] = sign_at(0);
+      sg[1] = sign_at(1);
+      if (sg[0] * sg[1] >= 0 || c2 & 1 || c2 == zero_code) sg[2] = sign_at(2);
       if (sg[0] == 0 && sg[1] == 0 && sg[2] == 0) classes.join(source_[k], plane, sources);
-      ck[0] = static_cast<std::int8_t>(sg[0]);
-      ck[1] = static_cast<std::int8_t>(sg[1]);
-      ck[2] = third ? static_cast<std::int8_t>(sg[2]) : unknown_code;
       out.add(classify_signs(sg));
     }
     out.splits += splits;
@@ -328,38 +355,53 @@ class sample_batch {
     out.negative += negative;
   }
 
-  /// A code left by count for a point whose sign was not needed (the third point of a
-  /// fragment whose first two straddle the plane).
-  static constexpr std::int8_t unknown_code = 2;
+  /// best_sign's answer for a point whose sign was not needed (the third point of a fragment
+  /// whose first two straddle the plane).
+  static constexpr int unknown_code = 2;
   /// The box of sample fragment k's points (fragment_box of it, from the gathered arrays).
   point_box box(std::size_t k) const {
     point_box b;
-    for (std::size_t t = 3 * k; t < 3 * k + 3; ++t) b.add({x_[t], y_[t], z_[t]}, r_[t]);
+    for (std::size_t t = 3 * k; t < 3 * k + 3; ++t) {
+      const std::uint32_t p = slot_[t];
+      b.add({x_[p], y_[p], z_[p]}, r_[p]);
+    }
     return b;
   }
   /// Keeps the codes of the candidate just counted (when the sample is the node's whole list
-  /// and the candidate was counted over all of it, its exact signs per list position).
+  /// and the candidate was counted over all of it, its exact signs per point).
   void keep_best() { code_.swap(best_code_); }
-  /// The codes kept by the last keep_best(): 3 per sample fragment.
-  const std::int8_t* best_codes() const { return best_code_.data(); }
+  /// The sign kept by the last keep_best() for point t of sample fragment k: -1, 0, +1, or
+  /// unknown_code where it was not needed.
+  int best_sign(std::size_t k, int t) const {
+    const int c = best_code_[slot_[3 * k + static_cast<std::size_t>(t)]];
+    if (c & 1) return c;
+    return c == zero_code ? 0 : unknown_code;
+  }
 
  private:
-  /// G::sign of point t of f against `plane`, remembered: the lists of neighbouring nodes
-  /// share most fragments and candidate planes (below 16 fragments every fragment is a
-  /// candidate), so the same slow questions recur level after level.
-  int exact_sign(const G& geom, std::uint32_t plane, const fragment& f, int t) {
-    int s = memo_.find(f.v[t], plane);
+  /// A point's code: +1 or -1 (certified by the filter or exact), zero_code (exactly in the
+  /// plane) or 0 (not known).
+  static constexpr std::int8_t zero_code = 2;
+  static constexpr std::uint32_t empty = ~0u;
+  /// G::point_sign_of point `id` against `plane`, remembered: the lists of neighbouring nodes share
+  /// most points and candidate planes (below 16 fragments every fragment is a candidate), so
+  /// the same slow questions recur level after level.
+  int exact_sign(const G& geom, std::uint32_t plane, std::uint32_t id) {
+    int s = memo_.find(id, plane);
     if (s != sign_cache::unknown) return s;
-    s = geom.sign(plane, f, t);
-    memo_.insert(f.v[t], plane, s);
+    s = geom.point_sign_of(plane, id);
+    memo_.insert(id, plane, s);
     return s;
   }
   sign_cache memo_;
+  std::vector<std::uint32_t> table_;  ///< gather's hash table: local indices, or empty
+  std::vector<std::uint32_t> ids_;    ///< per local point: its id
   std::vector<double> x_, y_, z_, r_;
-  std::vector<std::int8_t> code_;       ///< per point: +1 / -1 certified, 0 not; then exact signs
+  std::vector<std::int8_t> code_;       ///< per local point, for the candidate being counted
   std::vector<std::int8_t> best_code_;  ///< the codes kept by keep_best
+  std::vector<std::uint32_t> slot_;     ///< per fragment corner (3 per fragment): local point
+  std::vector<std::uint32_t> upto_;     ///< upto_[k]: local points used by fragments [0, k)
   std::vector<std::uint32_t> source_;
-  std::vector<const fragment*> fragments_;
 };
 
 }  // namespace detail

@@ -151,7 +151,7 @@ class basic_bsp_tree {
     detail::sample_batch<G> sample;                 ///< the sampled heuristic's gathered sample
     static_plane static_filter;  ///< of input plane static_filter_source (static_filter_of)
     std::uint32_t static_filter_source = ~0u;
-    /// Whether sample.best_codes() hold the exact signs of the node's list against its plane.
+    /// Whether sample.best_sign() gives the exact signs of the node's list against its plane.
     bool sample_signs = false;
     detail::coplanar_sources classes;  ///< sources found in one plane, by this subtree
     /// Frees the build scratch above (signs .. classes) once the subtree is grown.

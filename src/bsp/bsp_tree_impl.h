@@ -322,10 +322,11 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
     std::array<int, 3> sj{};
     if constexpr (batched) {
       if (part.sample_signs) {  // the sampled heuristic's signs (choose_splitter)
-        const std::int8_t* c = part.sample.best_codes() + 3 * j;
-        for (int k = 0; k < 3; ++k)
-          sj[k] =
-              c[k] == detail::sample_batch<G>::unknown_code ? geom_.sign(plane_source, f, k) : c[k];
+        for (int k = 0; k < 3; ++k) {
+          sj[k] = part.sample.best_sign(j, k);
+          if (sj[k] == detail::sample_batch<G>::unknown_code)
+            sj[k] = geom_.sign(plane_source, f, k);
+        }
       } else {
         const static_plane& sp = part.static_filter;
         for (int k = 0; k < 3; ++k)

@@ -87,8 +87,12 @@ class exact_geometry {
   }
 
   int sign(std::uint32_t plane, const fragment& f, int k) const {
+    return point_sign_of(plane, f.v[k]);
+  }
+  /// The exact sign of point `id` against the plane of input triangle `plane`.
+  int point_sign_of(std::uint32_t plane, std::uint32_t id) const {
     int budget = 32;
-    return point_sign(plane, f.v[k], budget);
+    return point_sign(plane, id, budget);
   }
   void split(std::uint32_t plane, const fragment& f, const split_pattern& pat,
              std::array<fragment, 3>& out, scratch& sc);
