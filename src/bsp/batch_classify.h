@@ -334,19 +334,14 @@ class sample_batch {
         continue;
       }
       // Not all known: the exact predicate (the third point only when the first two do not
-      // straddle), kept in the codes.
+      // straddle), kept in the codes. Known codes are read here; only unknown ones call out.
       std::array<int, 3> sg{};
-      const auto sign_at = [&](int t) {
-        const int c = code[sk[t]];
-        if (c & 1) return c;
-        if (c == zero_code) return 0;
-        const int s = exact_sign(geom, plane, ids_[sk[t]]);
-        code[sk[t]] = s == 0 ? zero_code : static_cast<std::int8_t>(s);
-        return s;
-      };
-      sg[0] = sign_at(0);
-      sg[1] = sign_at(1);
-      if (sg[0] * sg[1] >= 0 || c2 & 1 || c2 == zero_code) sg[2] = sign_at(2);
+      sg[0] = (c0 & 1) ? c0 : c0 == zero_code ? 0 : ask(geom, plane, sk[0], code);
+      sg[1] = (c1 & 1) ? c1 : c1 == zero_code ? 0 : ask(geom, plane, sk[1], code);
+      if (c2 & 1)
+        sg[2] = c2;
+      else if (c2 != zero_code && sg[0] * sg[1] >= 0)
+        sg[2] = ask(geom, plane, sk[2], code);
       if (sg[0] == 0 && sg[1] == 0 && sg[2] == 0) classes.join(source_[k], plane, sources);
       out.add(classify_signs(sg));
     }
@@ -383,6 +378,14 @@ class sample_batch {
   /// plane) or 0 (not known).
   static constexpr std::int8_t zero_code = 2;
   static constexpr std::uint32_t empty = ~0u;
+  /// The exact sign of local point p against `plane`, kept in its code (code: count's
+  /// restrict pointer to code_, through which every access goes).
+  [[gnu::noinline]] int ask(const G& geom, std::uint32_t plane, std::uint32_t p,
+                            std::int8_t* code) {
+    const int s = exact_sign(geom, plane, ids_[p]);
+    code[p] = s == 0 ? zero_code : static_cast<std::int8_t>(s);
+    return s;
+  }
   /// G::point_sign_of point `id` against `plane`, remembered: the lists of neighbouring nodes share
   /// most points and candidate planes (below 16 fragments every fragment is a candidate), so
   /// the same slow questions recur level after level.
