@@ -4,8 +4,10 @@
 // classes, and the tree they build on a stack where whole blocks move at once.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include "bsp/batch_classify.h"
 #include "bsp/engine.h"
@@ -128,6 +130,48 @@ TEST(BatchClassify, sign_cache_answers_right_or_unknown_and_starts_empty) {
   EXPECT_LT(kept, 40000u);  // bounded: it forgot some
   EXPECT_NE(cache.find(40009, 40009 % 97), unknown);
   EXPECT_LE(cache.memory(), 256u << 10);
+}
+
+TEST(BatchClassify, lane_masks_mark_exactly_the_all_known_fragments_and_their_side) {
+  using exbsp::detail::lane_masks;
+  // Every code the sampled count uses: -1, +1 known; 0 not known; 2 exactly in the plane.
+  const std::int8_t codes[4] = {-1, 0, 1, 2};
+  // What a fragment with codes (x, y, z) is, written out.
+  const auto expect = [](int x, int y, int z, unsigned& known, unsigned& pos, unsigned& neg,
+                         int j) {
+    const auto is_known = [](int v) { return v == 1 || v == -1; };
+    if (!is_known(x) || !is_known(y) || !is_known(z)) return;
+    known |= 1u << j;
+    if (x == 1 && y == 1 && z == 1) pos |= 1u << j;
+    if (x == -1 && y == -1 && z == -1) neg |= 1u << j;
+  };
+  // All 64 code triples, 16 lanes at a time, and every length 0..16 of a partial group, with
+  // the lanes beyond the length filled with known codes that must be ignored.
+  std::vector<std::array<std::int8_t, 3>> triples;
+  for (std::int8_t x : codes)
+    for (std::int8_t y : codes)
+      for (std::int8_t z : codes) triples.push_back({x, y, z});
+  for (std::size_t start = 0; start < triples.size(); start += 16)
+    for (std::size_t len = 0; len <= 16; ++len) {
+      alignas(16) std::int8_t a[16], b[16], c[16];
+      unsigned known = 0, pos = 0, neg = 0;
+      for (std::size_t j = 0; j < 16; ++j) {
+        const auto& t = triples[(start + j) % triples.size()];
+        a[j] = j < len ? t[0] : 1;
+        b[j] = j < len ? t[1] : 1;
+        c[j] = j < len ? t[2] : 1;
+        if (j < len) expect(t[0], t[1], t[2], known, pos, neg, static_cast<int>(j));
+      }
+      const lane_masks s = exbsp::detail::classify_lanes_scalar(a, b, c, len);
+      EXPECT_EQ(s.known, known) << start << " " << len;
+      EXPECT_EQ(s.positive, pos) << start << " " << len;
+      EXPECT_EQ(s.negative, neg) << start << " " << len;
+      const lane_masks v = exbsp::detail::classify_lanes(a, b, c, len);
+      EXPECT_EQ(v.known, known) << start << " " << len;
+      EXPECT_EQ(v.positive, pos) << start << " " << len;
+      EXPECT_EQ(v.negative, neg) << start << " " << len;
+      EXPECT_EQ(exbsp::detail::popcount16(known), __builtin_popcount(known));
+    }
 }
 
 TEST(BatchClassify, naive_on_a_stack_of_coplanar_layers_matches_gmpq) {
