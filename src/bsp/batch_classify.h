@@ -323,10 +323,6 @@ class sample_batch {
     table_.assign(size, empty);
     const std::size_t mask = size - 1;
     ids_.clear();
-    x_.clear();
-    y_.clear();
-    z_.clear();
-    r_.clear();
     slot_.resize(3 * m);
     source_.resize(m);
     upto_.resize(m + 1);
@@ -342,25 +338,34 @@ class sample_batch {
         if (table_[h] == empty) {
           table_[h] = static_cast<std::uint32_t>(ids_.size());
           ids_.push_back(id);
-          const vec3d& c = geom.centre(id);
-          x_.push_back(c[0]);
-          y_.push_back(c[1]);
-          z_.push_back(c[2]);
-          r_.push_back(geom.radius(id));
         }
         slot_[3 * k + t] = table_[h];
       }
       upto_[k + 1] = static_cast<std::uint32_t>(ids_.size());
     }
+    // Sized once the points are known (no growth slack: the root's sample is the largest).
+    const std::size_t u = ids_.size();
+    x_.resize(u);
+    y_.resize(u);
+    z_.resize(u);
+    r_.resize(u);
+    for (std::size_t p = 0; p < u; ++p) {
+      const vec3d& c = geom.centre(ids_[p]);
+      x_[p] = c[0];
+      y_[p] = c[1];
+      z_[p] = c[2];
+      r_[p] = geom.radius(ids_[p]);
+    }
     code_.resize(ids_.size());
     best_code_.resize(ids_.size());
   }
   /// Adds the classifications of sample fragments [k0, k1) against plane `plane` (static
-  /// filter sp) to `out`; a fragment of the plane's own source is coplanar. Call for one
-  /// candidate with consecutive ranges from k0 = 0: the points first used in the range get
-  /// their codes here, and exact signs found are kept in the codes for the fragments after.
-  void count(const G& geom, std::uint32_t plane, const static_plane& sp, std::size_t k0,
-             std::size_t k1, side_counts& out, coplanar_sources& classes, std::size_t sources) {
+  /// filter sp, made from G::filter fp) to `out`; a fragment of the plane's own source is coplanar.
+  /// Call for one candidate with consecutive ranges from k0 = 0: the points first used in the range
+  /// get their codes here, and exact signs found are kept in the codes for the fragments after.
+  void count(const G& geom, std::uint32_t plane, const static_plane& sp, const fast_plane_core& fp,
+             std::size_t k0, std::size_t k1, side_counts& out, coplanar_sources& classes,
+             std::size_t sources) {
     const std::size_t p0 = upto_[k0], p1 = upto_[k1];
     std::int8_t* __restrict code = code_.data();
     if (sp.valid) {
@@ -416,12 +421,12 @@ class sample_batch {
         // straddle), kept in the codes. Known codes are read here; only unknown ones call out.
         const int c0 = code[sk[0]], c1 = code[sk[1]], c2 = code[sk[2]];
         std::array<int, 3> sg{};
-        sg[0] = (c0 & 1) ? c0 : c0 == zero_code ? 0 : ask(geom, plane, sk[0], code);
-        sg[1] = (c1 & 1) ? c1 : c1 == zero_code ? 0 : ask(geom, plane, sk[1], code);
+        sg[0] = (c0 & 1) ? c0 : c0 == zero_code ? 0 : ask(geom, plane, fp, sk[0], code);
+        sg[1] = (c1 & 1) ? c1 : c1 == zero_code ? 0 : ask(geom, plane, fp, sk[1], code);
         if (c2 & 1)
           sg[2] = c2;
         else if (c2 != zero_code && sg[0] * sg[1] >= 0)
-          sg[2] = ask(geom, plane, sk[2], code);
+          sg[2] = ask(geom, plane, fp, sk[2], code);
         if (sg[0] == 0 && sg[1] == 0 && sg[2] == 0) classes.join(source_[k], plane, sources);
         out.add(classify_signs(sg));
       }
@@ -461,19 +466,19 @@ class sample_batch {
   static constexpr std::uint32_t empty = ~0u;
   /// The exact sign of local point p against `plane`, kept in its code (code: count's
   /// restrict pointer to code_, through which every access goes).
-  [[gnu::noinline]] int ask(const G& geom, std::uint32_t plane, std::uint32_t p,
-                            std::int8_t* code) {
-    const int s = exact_sign(geom, plane, ids_[p]);
+  [[gnu::noinline]] int ask(const G& geom, std::uint32_t plane, const fast_plane_core& fp,
+                            std::uint32_t p, std::int8_t* code) {
+    const int s = exact_sign(geom, plane, fp, ids_[p]);
     code[p] = s == 0 ? zero_code : static_cast<std::int8_t>(s);
     return s;
   }
   /// G::point_sign_of point `id` against `plane`, remembered: the lists of neighbouring nodes share
   /// most points and candidate planes (below 16 fragments every fragment is a candidate), so
   /// the same slow questions recur level after level.
-  int exact_sign(const G& geom, std::uint32_t plane, std::uint32_t id) {
+  int exact_sign(const G& geom, std::uint32_t plane, const fast_plane_core& fp, std::uint32_t id) {
     int s = memo_.find(id, plane);
     if (s != sign_cache::unknown) return s;
-    s = geom.point_sign_of(plane, id);
+    s = geom.point_sign_of(plane, fp, id);
     memo_.insert(id, plane, s);
     return s;
   }

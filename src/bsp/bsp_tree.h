@@ -149,18 +149,30 @@ class basic_bsp_tree {
     std::vector<std::int8_t> block_signs;           ///< per list block, reused node to node
     std::vector<std::uint32_t> tasks;               ///< blocks to test fragment by fragment
     detail::sample_batch<G> sample;                 ///< the sampled heuristic's gathered sample
-    static_plane static_filter;  ///< of input plane static_filter_source (static_filter_of)
+    /// G::filter of one input plane (made from its vertices).
+    struct plane_filters {
+      std::uint32_t source = ~0u;
+      fast_plane_core core;
+    };
+    static_plane static_filter;    ///< of input plane static_filter_source (static_filter_of)
+    fast_plane_core plane_filter;  ///< G::filter of that plane, from which static_filter is made
     std::uint32_t static_filter_source = ~0u;
+    /// Filters made recently, by source modulo its size (static_filter_of): small nodes ask
+    /// the same planes again, since every fragment of a list of at most 16 is a candidate.
+    std::vector<plane_filters> recent_filters;
     /// Whether sample.best_sign() gives the exact signs of the node's list against its plane.
     bool sample_signs = false;
     detail::coplanar_sources classes;  ///< sources found in one plane, by this subtree
     /// Frees the build scratch above (signs .. classes) once the subtree is grown.
     void release_scratch() {
-      signs = {};
-      block_signs = {};
-      tasks = {};
-      sample = {};
-      classes = {};
+      // Assigning a value-initialised object, not `= {}`: for a vector, `= {}` is the
+      // initializer-list assignment, which empties it but keeps its memory.
+      signs = decltype(signs)();
+      block_signs = decltype(block_signs)();
+      tasks = decltype(tasks)();
+      sample = decltype(sample)();
+      classes = decltype(classes)();
+      recent_filters = decltype(recent_filters)();
     }
   };
   struct build_context;

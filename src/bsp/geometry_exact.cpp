@@ -87,8 +87,7 @@ double ulp_of(double x) {
 }
 }  // namespace
 
-exact_geometry::exact_geometry(const triangle_soup& soup)
-    : sources_(soup.triangles.size()), fast_(soup.triangles.size()) {
+exact_geometry::exact_geometry(const triangle_soup& soup) : sources_(soup.triangles.size()) {
   if (soup.vertices.size() >= (std::size_t{1} << (max_point_bits - 1)))
     throw limit_error("bsp build: too many vertices for the exact kernel's point table");
   // Input vertices are points 0 .. V-1, exactly their doubles.
@@ -103,15 +102,6 @@ exact_geometry::exact_geometry(const triangle_soup& soup)
 }
 
 exact_geometry::~exact_geometry() = default;
-
-exact_geometry::filter_plane exact_geometry::make_filter_plane(const fast_plane_core& p) {
-  filter_plane f;
-  f.n = p.n;
-  for (int k = 0; k < 3; ++k)
-    f.coef[k] = p.valid ? round_up_to_float(p.coef[k]) : std::numeric_limits<float>::infinity();
-  f.spread = p.valid ? round_up_to_float(p.spread) : std::numeric_limits<float>::infinity();
-  return f;
-}
 
 void exact_geometry::grow_chunks(std::uint32_t end) {
   const std::size_t needed = (std::size_t{end} + chunk_size - 1) >> chunk_bits;
@@ -163,8 +153,6 @@ bool exact_geometry::add_source(const triangle_soup& soup, std::uint32_t i, frag
   if (E().collinear_3_object()(E::Point_3(a[0], a[1], a[2]), E::Point_3(b[0], b[1], b[2]),
                                E::Point_3(c[0], c[1], c[2])))
     return false;
-  fast_[i] = make_filter_plane(make_fast_plane(a, b, c));
-  fast_[i].a = &at(st.v[0]).c;
   out = {st.v, i, st.face};
   return true;
 }
@@ -269,7 +257,8 @@ int exact_geometry::exact_sign(std::uint32_t plane, std::uint32_t x) const {
   return -sgn(a);
 }
 
-int exact_geometry::point_sign_slow(std::uint32_t plane, std::uint32_t x, int& budget) const {
+int exact_geometry::point_sign_slow(std::uint32_t plane, const fast_plane_core& fp, std::uint32_t x,
+                                    int& budget) const {
   const point& pt = at(x);
   if (pt.p == none) {
     // An input vertex: 0 when it is one of the plane's own vertices (adjacent mesh triangles),
@@ -288,8 +277,8 @@ int exact_geometry::point_sign_slow(std::uint32_t plane, std::uint32_t x, int& b
   }
   if (budget > 0) {
     --budget;
-    const int sp = point_sign(plane, pt.p, budget);
-    const int sq = point_sign(plane, pt.q, budget);
+    const int sp = point_sign(plane, fp, pt.p, budget);
+    const int sq = point_sign(plane, fp, pt.q, budget);
     if (sp * sq >= 0) {
       // x lies strictly between p and q: not strictly opposite, they decide.
       counters_.structural.fetch_add(1, std::memory_order_relaxed);
@@ -310,7 +299,8 @@ void exact_geometry::approximate(std::uint32_t id) {
   // [t_lo, t_hi] below holds the true t; the rest is the spread of p and q and rounding.
   double vp, ep, vq, eq;
   bool certified = false;
-  if (filter(plane, pp.c, pp.r, vp, ep) && filter(plane, pq.c, pq.r, vq, eq) &&
+  const fast_plane_core fp = filter(plane);
+  if (fast_eval(fp, pp.c, pp.r, vp, ep) && fast_eval(fp, pq.c, pq.r, vq, eq) &&
       std::fabs(vp) > ep && std::fabs(vq) > eq && (vp > 0) != (vq > 0)) {
     const double alpha = std::fabs(vp), beta = std::fabs(vq);
     const double t = alpha / (alpha + beta);
@@ -388,13 +378,12 @@ int exact_geometry::side_of_eye(std::uint32_t plane, const vec3d& eye) const {
 
 int exact_geometry::side_of_direction(std::uint32_t plane, const vec3d& d) const {
   // sign(n . (-d)): the double normal's error bound first, exact rationals when too close.
-  // A plane the filter cannot bound has infinite coefficients: the bound is not finite.
-  const filter_plane& fp = fast_[plane];
+  const fast_plane_core fp = filter(plane);
   const double v = -(fp.n[0] * d[0] + fp.n[1] * d[1] + fp.n[2] * d[2]);
   double bound = 0;
   for (int k = 0; k < 3; ++k) bound += fp.coef[k] * std::fabs(d[k]);
   bound = bound * (1 + 8 * u) + 1e-290;
-  if (std::isfinite(v) && std::isfinite(bound)) {
+  if (fp.valid && std::isfinite(v) && std::isfinite(bound)) {
     if (v > bound) return 1;
     if (v < -bound) return -1;
   }

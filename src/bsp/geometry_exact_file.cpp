@@ -96,10 +96,8 @@ void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& 
     x.plane = plane;
     // Exact signs (filter, structure, GMP): p and q strictly on opposite sides, so the
     // point's exact value (fp q - fq p) / (fp - fq) has a non-zero denominator.
-    int budget = 32;
-    const int sp = point_sign(plane, p, budget);
-    budget = 32;
-    const int sq = point_sign(plane, q, budget);
+    const int sp = point_sign_of(plane, p);
+    const int sq = point_sign_of(plane, q);
     if (sp * sq >= 0)
       in.fail_at(where, field,
                  "the segment between points " + std::to_string(p) + " and " + std::to_string(q) +
