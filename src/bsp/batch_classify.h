@@ -476,6 +476,7 @@ class sample_batch {
   /// most points and candidate planes (below 16 fragments every fragment is a candidate), so
   /// the same slow questions recur level after level.
   int exact_sign(const G& geom, std::uint32_t plane, const fast_plane_core& fp, std::uint32_t id) {
+    if (geom.is_vertex_of(plane, id)) return 0;
     int s = memo_.find(id, plane);
     if (s != sign_cache::unknown) return s;
     s = geom.point_sign_of(plane, fp, id);

@@ -190,6 +190,9 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
     });
   }
   failure.rethrow();
+  // The side tests are done: the exact values they memoised go before the merge (output
+  // makes again those it needs).
+  if constexpr (detail::has_centres<G>::value) geom_.forget_exact_values();
   // Merge in frontier order. Memory: the fragments first, each part's freed as soon as they
   // are copied, then the nodes; both final arrays are reserved exactly. The peak (the node
   // step) holds the final fragments, the final nodes and the parked ones: no growth slack, no

@@ -185,6 +185,12 @@ const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane)
   return exact_planes_.emplace(plane, std::move(made)).first->second;  // the first one stays
 }
 
+void exact_geometry::forget_exact_values() {
+  const std::lock_guard<std::mutex> lock(exact_mutex_);
+  decltype(exact_values_)().swap(exact_values_);  // swap: clear() keeps the bucket array
+  decltype(exact_planes_)().swap(exact_planes_);
+}
+
 const exact_geometry::exact_value* exact_geometry::value_of(std::uint32_t id,
                                                             exact_value& vertex) const {
   if (id >= inputs_) return find_exact(id);

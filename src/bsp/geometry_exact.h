@@ -91,6 +91,12 @@ class exact_geometry {
   int sign(std::uint32_t plane, const fast_plane_core& fp, const fragment& f, int k) const {
     return point_sign_of(plane, fp, f.v[k]);
   }
+  /// Whether point `id` is one of the vertices of input triangle `plane` (so lies in its
+  /// plane): one 12-byte load.
+  bool is_vertex_of(std::uint32_t plane, std::uint32_t id) const {
+    const std::array<std::uint32_t, 3>& s = sources_[plane];
+    return id == s[0] || id == s[1] || id == s[2];
+  }
   /// The exact sign of point `id` against the plane of input triangle `plane`.
   int point_sign_of(std::uint32_t plane, std::uint32_t id) const {
     return point_sign_of(plane, filter(plane), id);
@@ -124,6 +130,10 @@ class exact_geometry {
   void write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments) const;
   void read_fragments(tree_file::reader& in, const triangle_soup& soup,
                       const std::vector<char>& usable, std::vector<fragment>& fragments);
+  /// Frees the exact values and planes memoised so far (the build calls it once its side
+  /// tests are done, before its peak step: output makes the values it needs again).
+  /// Precondition: no other thread uses the geometry.
+  void forget_exact_values();
   /// Bytes held by the point table (for the memory benchmark).
   std::size_t points_memory() const;
 
