@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Regenerates bench/RESULTS.md and bench/plots/*.png: the ONE command of the benchmarks.
 
-    bench/run.py                the full run (10-16 minutes on the 2-core reference machine, 2026-11-24)
+    bench/run.py                the full run (10-17 minutes on the 2-core reference machine, 2026-11-24)
     bench/run.py --quick        small inputs only (a few minutes), to check that everything runs;
                                 writes bench/out/quick/RESULTS.md and bench/out/quick/plots/ instead
     bench/run.py --report-only  rewrites the report and plots from the raw data of the last run
