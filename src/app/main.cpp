@@ -45,8 +45,9 @@ using exbsp::vec3d;
 /// included, per kernel. Epeck and gmpq: about 1,000 measured (naive heuristic on 128 + 128
 /// sticks: 2.1 M fragments in 2.1 GB), rounded up for the heavier gmpq numbers. exact (and the
 /// double-based inexact kernels): the whole command's peak resident set per fragment on
-/// refined_elephant (254,565 fragments), measured with /usr/bin/time: build 239 bytes, order
-/// 375 (its document is streamed, not held), render 636. The largest is the budget.
+/// refined_elephant (254,565 fragments), measured with /usr/bin/time (2026-11-24): build 218
+/// bytes, order 358 (its document is streamed, not held), render 620. The budget is the
+/// largest, rounded up.
 std::uint64_t bytes_per_fragment(exbsp::kernel_id kernel) {
   return kernel == exbsp::kernel_id::epeck || kernel == exbsp::kernel_id::gmpq ? 1300 : 640;
 }
