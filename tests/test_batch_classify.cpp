@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <random>
 #include <vector>
 
 #include "bsp/batch_classify.h"
@@ -172,6 +175,142 @@ TEST(BatchClassify, lane_masks_mark_exactly_the_all_known_fragments_and_their_si
       EXPECT_EQ(v.negative, neg) << start << " " << len;
       EXPECT_EQ(exbsp::detail::popcount16(known), __builtin_popcount(known));
     }
+}
+
+// A stand-in geometry for sample_batch: points of a small integer lattice (so a plane's exact
+// sign is an integer determinant), each with a radius that makes the filter unsure near the
+// plane, and input triangles on those points, many in the lattice's layers z = const (so
+// fragments share points and lie in one another's planes).
+struct lattice_geometry {
+  static constexpr bool has_centres = true;
+  struct fragment {
+    std::array<std::uint32_t, 3> v;
+    std::uint32_t source;
+  };
+  std::vector<vec3d> points;
+  std::vector<double> radii;
+  std::vector<std::array<std::uint32_t, 3>> sources;
+  const vec3d& centre(std::uint32_t id) const { return points[id]; }
+  double radius(std::uint32_t id) const { return radii[id]; }
+  exbsp::fast_plane_core filter(std::uint32_t plane) const {
+    const auto& s = sources[plane];
+    return exbsp::make_fast_plane(points[s[0]], points[s[1]], points[s[2]]);
+  }
+  bool is_vertex_of(std::uint32_t plane, std::uint32_t id) const {
+    const auto& s = sources[plane];
+    return id == s[0] || id == s[1] || id == s[2];
+  }
+  /// The exact sign, in integers (the lattice's coordinates are small integers).
+  int exact(std::uint32_t plane, std::uint32_t id) const {
+    const auto& s = sources[plane];
+    std::array<long long, 3> e1{}, e2{}, q{};
+    for (int k = 0; k < 3; ++k) {
+      e1[k] = std::llround(points[s[1]][k] - points[s[0]][k]);
+      e2[k] = std::llround(points[s[2]][k] - points[s[0]][k]);
+      q[k] = std::llround(points[id][k] - points[s[0]][k]);
+    }
+    const long long v = (e1[1] * e2[2] - e1[2] * e2[1]) * q[0] +
+                        (e1[2] * e2[0] - e1[0] * e2[2]) * q[1] +
+                        (e1[0] * e2[1] - e1[1] * e2[0]) * q[2];
+    return (v > 0) - (v < 0);
+  }
+  int point_sign_of(std::uint32_t plane, const exbsp::fast_plane_core&, std::uint32_t id) const {
+    return exact(plane, id);
+  }
+};
+
+TEST(BatchClassify, sampled_counts_and_kept_signs_equal_the_exact_signs_point_by_point) {
+  // sample_batch gathers each point once and keeps signs per point; against every candidate it
+  // must count what the exact signs of each fragment's three points say, for chunks of 16
+  // with the early stop of choose_sampled_counts, and the winner's kept signs must be exact.
+  using G = lattice_geometry;
+  std::mt19937 rng(7);
+  std::size_t counted = 0, kept = 0;
+  for (int round = 0; round < 300; ++round) {
+    G g;
+    constexpr int R = 2;  // the lattice [-2, 2]^3
+    for (int x = -R; x <= R; ++x)
+      for (int y = -R; y <= R; ++y)
+        for (int z = -R; z <= R; ++z) {
+          g.points.push_back({double(x), double(y), double(z)});
+          const unsigned r = rng() % 3;  // exact, a little unsure, very unsure
+          g.radii.push_back(r == 0 ? 0.0 : r == 1 ? 0.3 : 2.5);
+        }
+    const auto lattice = [&](int x, int y, int z) {
+      return static_cast<std::uint32_t>(((x + R) * (2 * R + 1) + (y + R)) * (2 * R + 1) + (z + R));
+    };
+    const std::size_t wanted = 5 + rng() % 60;
+    while (g.sources.size() < wanted) {
+      std::array<std::uint32_t, 3> t{};
+      const bool layer = rng() % 2 == 0;  // in a plane z = const, shared by many sources
+      const int z = static_cast<int>(rng() % 3) - 1;
+      for (auto& v : t)
+        v = layer ? lattice(static_cast<int>(rng() % 5) - R, static_cast<int>(rng() % 5) - R, z)
+                  : static_cast<std::uint32_t>(rng() % g.points.size());
+      const vec3d &a = g.points[t[0]], &b = g.points[t[1]], &c = g.points[t[2]];
+      const vec3d e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+          e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      if (e1[1] * e2[2] - e1[2] * e2[1] == 0 && e1[2] * e2[0] - e1[0] * e2[2] == 0 &&
+          e1[0] * e2[1] - e1[1] * e2[0] == 0)
+        continue;  // collinear: not a source
+      g.sources.push_back(t);
+    }
+    std::vector<G::fragment> list;
+    for (std::uint32_t s = 0; s < g.sources.size(); ++s) list.push_back({g.sources[s], s});
+    std::shuffle(list.begin(), list.end(), rng);
+    const std::size_t n = list.size();
+    const std::size_t m = rng() % 3 == 0 ? n : 1 + rng() % n;  // the whole list, or a sample
+    const auto entry = [&](std::size_t k) -> const G::fragment& {
+      return list[k * n / m];  // heuristics.h's sample_position
+    };
+    exbsp::detail::sample_batch<G> sample;
+    exbsp::detail::coplanar_sources classes;
+    sample.gather(g, m, entry);
+    const vec3d lo{-R, -R, -R}, hi{R, R, R};
+    const long long weight = rng() % 10;
+    long long best_score = std::numeric_limits<long long>::max();
+    std::uint32_t best_plane = ~0u;
+    const std::size_t candidates = 1 + rng() % std::min<std::size_t>(n, 20);
+    for (std::size_t i = 0; i < candidates; ++i) {
+      const std::uint32_t plane = list[i].source;
+      const exbsp::fast_plane_core fp = g.filter(plane);
+      const exbsp::static_plane sp = exbsp::make_static_plane(fp, lo, hi);
+      exbsp::detail::side_counts got, want;
+      std::size_t end = 0;
+      for (std::size_t k = 0; k < m && weight * got.splits < best_score; k += 16) {
+        end = std::min(m, k + 16);
+        sample.count(g, plane, sp, fp, k, end, got, classes, g.sources.size());
+      }
+      for (std::size_t k = 0; k < end; ++k) {
+        const G::fragment& f = entry(k);
+        std::array<int, 3> s{};
+        for (int t = 0; t < 3; ++t) s[t] = f.source == plane ? 0 : g.exact(plane, f.v[t]);
+        want.add(exbsp::classify_signs(s));
+      }
+      ASSERT_EQ(got.splits, want.splits) << round << " " << i;
+      ASSERT_EQ(got.positive, want.positive) << round << " " << i;
+      ASSERT_EQ(got.negative, want.negative) << round << " " << i;
+      ++counted;
+      const long long score = weight * got.splits + std::llabs(got.positive - got.negative);
+      if (score < best_score) {
+        ASSERT_EQ(end, m);  // a new best was counted over the whole sample
+        best_score = score;
+        best_plane = plane;
+        sample.keep_best();
+      }
+    }
+    for (std::size_t k = 0; k < m; ++k)
+      for (int t = 0; t < 3; ++t) {
+        const int kept_sign = sample.best_sign(k, t);
+        if (kept_sign == exbsp::detail::sample_batch<G>::unknown_code) continue;
+        const G::fragment& f = entry(k);
+        ASSERT_EQ(kept_sign, f.source == best_plane ? 0 : g.exact(best_plane, f.v[t]))
+            << round << " " << k << " " << t;
+        ++kept;
+      }
+  }
+  EXPECT_GT(counted, 1000u);
+  EXPECT_GT(kept, 10000u);
 }
 
 TEST(BatchClassify, naive_on_a_stack_of_coplanar_layers_matches_gmpq) {

@@ -166,7 +166,7 @@ TEST(ExactKernel, shared_split_points_are_made_once) {
   EXPECT_EQ(common.size(), 3u);  // the two shared vertices and the one shared split point
 }
 
-// --- the compact representation: float radii, float filter coefficients, chunked points ----
+// --- the compact representation: float radii, chunked points ---------------------------------
 
 /// The triangles scaled by s (a power of two: exact).
 std::array<vec3d, 3> scaled(std::array<vec3d, 3> t, double s) {

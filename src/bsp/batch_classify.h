@@ -24,6 +24,7 @@
 
 #include "bsp/fast_orientation.h"
 #include "bsp/split_pattern.h"
+#include "core/errors.h"
 
 namespace exbsp {
 namespace detail {
@@ -366,6 +367,11 @@ class sample_batch {
   void count(const G& geom, std::uint32_t plane, const static_plane& sp, const fast_plane_core& fp,
              std::size_t k0, std::size_t k1, side_counts& out, coplanar_sources& classes,
              std::size_t sources) {
+    // The codes of points before upto(k0) must be this candidate's: checked, since a caller
+    // that skipped or reordered ranges would silently read another plane's codes.
+    if (k0 != 0 && (k0 != next_k_ || plane != counting_plane_)) out_of_order();
+    next_k_ = k1;
+    counting_plane_ = plane;
     const std::size_t p0 = upto_[k0], p1 = upto_[k1];
     std::int8_t* __restrict code = code_.data();
     if (sp.valid) {
@@ -437,8 +443,8 @@ class sample_batch {
   }
 
   /// best_sign's answer for a point whose sign was not needed (the third point of a fragment
-  /// whose first two straddle the plane).
-  static constexpr int unknown_code = 2;
+  /// whose first two straddle the plane). Not a stored code (those are zero_code and below).
+  static constexpr int unknown_code = 3;
   /// The box of sample fragment k's points (fragment_box of it, from the gathered arrays).
   point_box box(std::size_t k) const {
     point_box b;
@@ -463,7 +469,11 @@ class sample_batch {
   /// A point's code: +1 or -1 (certified by the filter or exact), zero_code (exactly in the
   /// plane) or 0 (not known).
   static constexpr std::int8_t zero_code = 2;
+  static_assert(zero_code != unknown_code, "a stored code and best_sign's unknown differ");
   static constexpr std::uint32_t empty = ~0u;
+  [[noreturn, gnu::cold, gnu::noinline]] static void out_of_order() {
+    throw usage_error("sample_batch::count: ranges must follow one another from 0 for one plane");
+  }
   /// The exact sign of local point p against `plane`, kept in its code (code: count's
   /// restrict pointer to code_, through which every access goes).
   [[gnu::noinline]] int ask(const G& geom, std::uint32_t plane, const fast_plane_core& fp,
@@ -492,6 +502,8 @@ class sample_batch {
   std::vector<std::uint32_t> slot_;     ///< per fragment corner (3 per fragment): local point
   std::vector<std::uint32_t> upto_;     ///< upto_[k]: local points used by fragments [0, k)
   std::vector<std::uint32_t> source_;
+  std::size_t next_k_ = 0;              ///< where the candidate being counted goes on
+  std::uint32_t counting_plane_ = ~0u;  ///< the candidate being counted
 };
 
 }  // namespace detail

@@ -75,9 +75,9 @@ class exact_geometry {
   /// The filter of input triangle `plane` (fast_orientation.h), made from its vertices when
   /// asked rather than stored: 48 bytes per input triangle were up to a third of the peak
   /// heap, and making it costs a cross product. The build makes it once per node plane and
-  /// candidate and keeps the last 32 (bsp_tree_impl.h, static_filter_of). Measured side by
-  /// side: peak heap per fragment pinion 152 -> 128, anchor_dense 154 -> 117, blade 141 -> 93;
-  /// build time within noise to 4% slower (pinion, part, fandisk).
+  /// candidate, in a direct-mapped cache of 32 per subtree (bsp_tree_impl.h, static_filter_of).
+  /// Measured side by side: peak heap per fragment pinion 152 -> 128, anchor_dense 154 -> 117,
+  /// blade 141 -> 93; build time within noise to 4% slower (pinion, part, fandisk).
   fast_plane_core filter(std::uint32_t plane) const {
     const std::array<std::uint32_t, 3>& s = sources_[plane];
     return make_fast_plane(at(s[0]).c, at(s[1]).c, at(s[2]).c);
