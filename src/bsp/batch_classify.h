@@ -411,12 +411,10 @@ class sample_batch {
       }
       const lane_masks lm = classify_lanes(ca, cb, cc, len);
       const unsigned lanes = (1u << len) - 1;
-      const unsigned known_mask = lm.known, positive_mask = lm.positive,
-                     negative_mask = lm.negative;
-      positive += popcount16(positive_mask);
-      negative += popcount16(negative_mask);
-      splits += popcount16(known_mask & ~positive_mask & ~negative_mask);
-      for (unsigned rest = lanes & ~known_mask; rest != 0; rest &= rest - 1) {
+      positive += popcount16(lm.positive);
+      negative += popcount16(lm.negative);
+      splits += popcount16(lm.known & ~lm.positive & ~lm.negative);
+      for (unsigned rest = lanes & ~lm.known; rest != 0; rest &= rest - 1) {
         const std::size_t k = g + static_cast<std::size_t>(lowest_bit(rest));
         const std::uint32_t* sk = slot + 3 * k;
         if (source_[k] == plane || classes.same(source_[k], plane)) {  // in the plane: coplanar
@@ -425,14 +423,11 @@ class sample_batch {
         }
         // Not all known: the exact predicate (the third point only when the first two do not
         // straddle), kept in the codes. Known codes are read here; only unknown ones call out.
-        const int c0 = code[sk[0]], c1 = code[sk[1]], c2 = code[sk[2]];
-        std::array<int, 3> sg{};
-        sg[0] = (c0 & 1) ? c0 : c0 == zero_code ? 0 : ask(geom, plane, fp, sk[0], code);
-        sg[1] = (c1 & 1) ? c1 : c1 == zero_code ? 0 : ask(geom, plane, fp, sk[1], code);
-        if (c2 & 1)
-          sg[2] = c2;
-        else if (c2 != zero_code && sg[0] * sg[1] >= 0)
-          sg[2] = ask(geom, plane, fp, sk[2], code);
+        std::array<int, 3> sg{decode(code[sk[0]]), decode(code[sk[1]]), decode(code[sk[2]])};
+        for (int t = 0; t < 2; ++t)
+          if (sg[t] == unknown_code) sg[t] = ask(geom, plane, fp, sk[t], code);
+        if (sg[2] == unknown_code)
+          sg[2] = sg[0] * sg[1] >= 0 ? ask(geom, plane, fp, sk[2], code) : 0;
         if (sg[0] == 0 && sg[1] == 0 && sg[2] == 0) classes.join(source_[k], plane, sources);
         out.add(classify_signs(sg));
       }
@@ -460,9 +455,7 @@ class sample_batch {
   /// The sign kept by the last keep_best() for point t of sample fragment k: -1, 0, +1, or
   /// unknown_code where it was not needed.
   int best_sign(std::size_t k, int t) const {
-    const int c = best_code_[slot_[3 * k + static_cast<std::size_t>(t)]];
-    if (c & 1) return c;
-    return c == zero_code ? 0 : unknown_code;
+    return decode(best_code_[slot_[3 * k + static_cast<std::size_t>(t)]]);
   }
 
  private:
@@ -470,6 +463,8 @@ class sample_batch {
   /// plane) or 0 (not known).
   static constexpr std::int8_t zero_code = 2;
   static_assert(zero_code != unknown_code, "a stored code and best_sign's unknown differ");
+  /// The sign a stored code holds: -1, 0, +1, or unknown_code (code 0: not known).
+  static int decode(int c) { return (c & 1) ? c : c == zero_code ? 0 : unknown_code; }
   static constexpr std::uint32_t empty = ~0u;
   [[noreturn, gnu::cold, gnu::noinline]] static void out_of_order() {
     throw usage_error("sample_batch::count: ranges must follow one another from 0 for one plane");

@@ -163,10 +163,12 @@ class basic_bsp_tree {
     /// Whether sample.best_sign() gives the exact signs of the node's list against its plane.
     bool sample_signs = false;
     detail::coplanar_sources classes;  ///< sources found in one plane, by this subtree
-    /// Frees the build scratch above (signs .. classes) once the subtree is grown.
+    /// Frees the build scratch above (scratch .. recent_filters) once the subtree is grown.
     void release_scratch() {
       // Assigning a value-initialised object, not `= {}`: for a vector, `= {}` is the
-      // initializer-list assignment, which empties it but keeps its memory.
+      // initializer-list assignment, which empties it but keeps its memory (and a map's
+      // clear() keeps its buckets).
+      scratch = decltype(scratch)();
       signs = decltype(signs)();
       block_signs = decltype(block_signs)();
       tasks = decltype(tasks)();

@@ -138,7 +138,6 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
     grow_node(std::move(w), top, ctx, [&](work&& child) { queue.push_back(std::move(child)); });
   }
   top.release_scratch();
-  top.scratch = {};  // its split-point map (clear() keeps the buckets)
   // Top pieces join the shared read-only pool; refs to them become plain pool indices.
   const auto top_base = static_cast<std::uint32_t>(pool_.size());
   pool_.reserve(pool_.size() + top.pieces.size());
@@ -187,7 +186,6 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
       part.release_scratch();
       collect_fragments(part);
       park_nodes(part);
-      part.scratch = {};
     });
   }
   failure.rethrow();

@@ -269,8 +269,8 @@ int exact_geometry::point_sign_slow(std::uint32_t plane, const fast_plane_core& 
   if (pt.p == none) {
     // An input vertex: 0 when it is one of the plane's own vertices (adjacent mesh triangles),
     // else Epick's orientation, exact on doubles (filtered, exact fallback).
+    if (is_vertex_of(plane, x)) return 0;
     const auto& s = sources_[plane];
-    if (x == s[0] || x == s[1] || x == s[2]) return 0;
     using E = CGAL::Epick;
     const auto P = [&](std::uint32_t id) {
       return E::Point_3(at(id).c[0], at(id).c[1], at(id).c[2]);

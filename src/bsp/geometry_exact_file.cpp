@@ -96,8 +96,9 @@ void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& 
     x.plane = plane;
     // Exact signs (filter, structure, GMP): p and q strictly on opposite sides, so the
     // point's exact value (fp q - fq p) / (fp - fq) has a non-zero denominator.
-    const int sp = point_sign_of(plane, p);
-    const int sq = point_sign_of(plane, q);
+    const fast_plane_core fp = filter(plane);
+    const int sp = point_sign_of(plane, fp, p);
+    const int sq = point_sign_of(plane, fp, q);
     if (sp * sq >= 0)
       in.fail_at(where, field,
                  "the segment between points " + std::to_string(p) + " and " + std::to_string(q) +
