@@ -25,12 +25,8 @@
 // regions, in that colour, under them. It adds no area (no outline grows, nothing is stroked);
 // the regions above stay one path per face.
 //
-// Edges (the hidden-line drawing): mesh edges welded by exact position; an edge is drawn when
-// it is a boundary (one face), non-manifold (three or more), a crease (the normals of its two
-// faces differ by more than crease_deg) or a silhouette (one face turned towards the eye, the
-// other away). Its projection is split into the parts inside some other face's visible region
-// (hidden: that face is in front of it) and the rest (visible); regions are shrunk by
-// edge_margin first so an edge lying on a region's border is not hidden by it.
+// Edges (the hidden-line drawing): the feature edges (geom/feature_edges.h) split exactly into
+// visible and hidden runs by the contract's rule (edge_visibility.h), drawn by edge_paths.h.
 //
 // Curves and lines: each clipped piece (curves.h, painter's slot k: behind polygons k..n-1)
 // keeps what is outside the coverage of those polygons; drawn over the regions.
@@ -78,8 +74,6 @@ struct grid_point {
 constexpr long long grid_per_pixel = 100;
 /// Regions (and holes) thinner than this many grid units are rounding slivers (notation).
 constexpr double min_region_width = 1.5;
-/// Regions are shrunk by this many grid units before they hide an edge.
-constexpr double edge_margin = 2.0;
 
 /// One path of a drawing.
 struct vector_path {

@@ -1,0 +1,122 @@
+// Feature edges (notation in feature_edges.h). Each triangle side becomes a half-edge keyed by
+// its welded vertex pair; sorting the keys groups the triangles around each edge.
+#include "geom/feature_edges.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geom/weld.h"
+
+namespace exbsp::geom {
+
+namespace {
+
+vec3d sub(const vec3d& a, const vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+vec3d cross(const vec3d& a, const vec3d& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const vec3d& a, const vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+}  // namespace
+
+int facing(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint& viewer) {
+  // D(a, b, c, E) = -orientation(a, b, c, E) (homogeneous_det.cpp).
+  const rounding_guard guard;
+  return -det_value(point_of(a), point_of(b), point_of(c), viewer).sign();
+}
+
+view_features find_feature_edges(const triangle_soup& s, const hpoint& viewer,
+                                 double crease_deg) {
+  const welded_ids welded = weld(s.vertices);
+  const std::vector<std::uint32_t>& id = welded.id;
+  view_features out;
+  const std::size_t n = s.triangles.size();
+  out.facing.assign(n, 0);
+  out.feature_sides.assign(n, 0);
+  std::vector<vec3d> normal(n);
+  struct half {
+    std::uint64_t key;
+    std::uint32_t tri;
+    std::uint32_t side;
+  };
+  std::vector<half> halves;
+  halves.reserve(3 * n);
+  {
+    const rounding_guard guard;
+    for (std::size_t t = 0; t < n; ++t) {
+      const auto& v = s.triangles[t].v;
+      const vec3d &a = s.vertices[v[0]], &b = s.vertices[v[1]], &c = s.vertices[v[2]];
+      const det_value plane_with_e(point_of(a), point_of(b), point_of(c), viewer);
+      out.facing[t] = static_cast<std::int8_t>(-plane_with_e.sign());
+    }
+  }
+  for (std::size_t t = 0; t < n; ++t) {
+    const auto& v = s.triangles[t].v;
+    normal[t] = cross(sub(s.vertices[v[1]], s.vertices[v[0]]),
+                      sub(s.vertices[v[2]], s.vertices[v[0]]));
+    if (id[v[0]] == id[v[1]] || id[v[1]] == id[v[2]] || id[v[2]] == id[v[0]] ||
+        dot(normal[t], normal[t]) == 0) {
+      out.facing[t] = 0;
+      continue;  // degenerate: no plane, not drawn
+    }
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      std::uint64_t p = id[v[k]], q = id[v[(k + 1) % 3]];
+      if (p > q) std::swap(p, q);
+      halves.push_back({p << 32 | q, static_cast<std::uint32_t>(t), k});
+    }
+  }
+  std::sort(halves.begin(), halves.end(), [](const half& x, const half& y) {
+    return x.key != y.key ? x.key < y.key : x.tri < y.tri;
+  });
+  const double cos_crease = std::cos(crease_deg * M_PI / 180.0);
+  std::vector<std::uint32_t> tris;
+  for (std::size_t i = 0; i < halves.size();) {
+    std::size_t j = i;
+    while (j < halves.size() && halves[j].key == halves[i].key) ++j;
+    // Distinct faces around the edge (two triangles of one face: a fan diagonal).
+    tris.clear();
+    for (std::size_t k = i; k < j; ++k) {
+      const std::uint32_t t = halves[k].tri;
+      if (std::none_of(tris.begin(), tris.end(),
+                       [&](std::uint32_t u) { return s.triangles[u].face == s.triangles[t].face; }))
+        tris.push_back(t);
+    }
+    const std::size_t uses = j - i;
+    feature_edge e;
+    bool draw = false;
+    if (uses >= 3) {
+      draw = true;
+      e.kind = feature_kind::non_manifold;
+    } else if (tris.size() == 1) {
+      draw = uses == 1;  // boundary; two triangles of one face: a fan diagonal
+      e.kind = feature_kind::boundary;
+    } else {
+      const vec3d& n0 = normal[tris[0]];
+      const vec3d& n1 = normal[tris[1]];
+      if (dot(n0, n1) < cos_crease * std::sqrt(dot(n0, n0) * dot(n1, n1))) {
+        draw = true;
+        e.kind = feature_kind::crease;
+      } else if ((out.facing[tris[0]] > 0) != (out.facing[tris[1]] > 0)) {
+        draw = true;
+        e.kind = feature_kind::silhouette;
+      }
+    }
+    if (draw) {
+      const half& h = halves[i];
+      const auto& tv = s.triangles[h.tri].v;
+      e.a = tv[h.side];
+      e.b = tv[(h.side + 1) % 3];
+      e.tris[0] = tris[0];
+      e.tris[1] = tris.size() > 1 ? tris[1] : tris[0];
+      e.faces[0] = s.triangles[e.tris[0]].face;
+      e.faces[1] = s.triangles[e.tris[1]].face;
+      out.edges.push_back(e);
+      for (std::size_t k = i; k < j; ++k)
+        out.feature_sides[halves[k].tri] |= static_cast<std::uint8_t>(1u << halves[k].side);
+    }
+    i = j;
+  }
+  return out;
+}
+
+}  // namespace exbsp::geom

@@ -1,0 +1,52 @@
+// Feature edges of a triangle soup for one viewer (docs/contract.md section 6): the edges a
+// line drawing shows, used by the hidden-line drawing and by sections.
+//
+// Notation: vertices are welded by exact position (weld.h); an edge is a pair of welded
+// vertices used by one or more triangles. The viewer is a homogeneous point E (homogeneous_det.h):
+// the eye (w = 1) of a perspective view, or the direction towards the viewer (w = 0) of a
+// parallel one. Triangle t = (a, b, c) with normal n = (b - a) x (c - a) FACES the viewer when E
+// lies strictly on n's side of its plane: orientation(a, b, c, E) > 0 (for w = 0: n . E > 0),
+// decided exactly. An edge is a feature edge when it is
+//   - a boundary edge (one triangle),
+//   - non-manifold (three or more triangles),
+//   - a crease: its two faces' normals make an angle over crease_deg (in double: a user's
+//     threshold, not a predicate), or
+//   - a silhouette: one of its two triangles faces the viewer and the other does not.
+// Two triangles of one source face (a fan diagonal) never make a feature edge; degenerate
+// triangles (no plane) are left out.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "geom/homogeneous_det.h"
+#include "mesh/soup.h"
+
+namespace exbsp::geom {
+
+/// Why an edge is drawn.
+enum class feature_kind : std::uint8_t { boundary, non_manifold, crease, silhouette };
+
+struct feature_edge {
+  std::uint32_t a = 0, b = 0;       ///< soup vertex indices (as the first triangle has them)
+  std::uint32_t tris[2] = {0, 0};   ///< its first two triangles (tris[1] == tris[0]: boundary)
+  std::uint32_t faces[2] = {0, 0};  ///< their source face ids
+  feature_kind kind = feature_kind::boundary;
+};
+
+/// The feature edges of a soup for one viewer, and what an occlusion test needs per triangle.
+struct view_features {
+  std::vector<feature_edge> edges;  ///< in order of their welded vertex pairs
+  /// Per triangle: 1 facing the viewer, -1 facing away, 0 seen edge-on or degenerate.
+  std::vector<std::int8_t> facing;
+  /// Per triangle: bit k set when its side (v[k], v[k+1 mod 3]) is a feature edge.
+  std::vector<std::uint8_t> feature_sides;
+};
+
+/// Exact facing of triangle (a, b, c) for viewer E (notation): 1, -1 or 0.
+int facing(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint& viewer);
+
+/// The feature edges of `soup` for `viewer`. Precondition: 0 < crease_deg <= 180.
+view_features find_feature_edges(const triangle_soup& soup, const hpoint& viewer,
+                                 double crease_deg);
+
+}  // namespace exbsp::geom

@@ -1,0 +1,111 @@
+// Filtered exact determinants (notation in homogeneous_det.h).
+//
+// D is evaluated by eliminating a pivot row k with w = 1: every other row i becomes the
+// direction d_i = h_i - w_i h_k, and D = -(-1)^k det3(d_i, i != k in order) (moving the pivot to
+// the first row takes k adjacent swaps; the expansion along the w column then has the single
+// entry 1 at (0, 3), whose cofactor sign is -1). Differences first keep the interval tight
+// for points far from the origin.
+#include "geom/homogeneous_det.h"
+
+#include <stdexcept>
+
+namespace exbsp::geom {
+
+namespace {
+
+template <class T>
+T det3(const T* u, const T* v, const T* w) {
+  return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+         u[2] * (v[0] * w[1] - v[1] * w[0]);
+}
+
+int pivot_of(const std::array<hpoint, 4>& rows) {
+  for (int k = 0; k < 4; ++k)
+    if (rows[k].w == 1) return k;
+  throw std::logic_error("det_value: no row is a point");
+}
+
+/// D computed in number type T from rows converted by `of` (notation above).
+template <class T, class Of>
+T determinant(const std::array<hpoint, 4>& rows, Of of) {
+  const int k = pivot_of(rows);
+  const hpoint& p = rows[static_cast<std::size_t>(k)];
+  const T px = of(p.x), py = of(p.y), pz = of(p.z);
+  T d[3][3];
+  int r = 0;
+  for (int i = 0; i < 4; ++i) {
+    if (i == k) continue;
+    const hpoint& h = rows[static_cast<std::size_t>(i)];
+    d[r][0] = h.w ? of(h.x) - px : of(h.x);
+    d[r][1] = h.w ? of(h.y) - py : of(h.y);
+    d[r][2] = h.w ? of(h.z) - pz : of(h.z);
+    ++r;
+  }
+  const T v = det3(d[0], d[1], d[2]);
+  return (k % 2 == 0) ? T(-v) : v;
+}
+
+int sign_of(const interval& i) {
+  if (i.inf() > 0) return 1;
+  if (i.sup() < 0) return -1;
+  if (i.inf() == 0 && i.sup() == 0) return 0;
+  return 2;  // undecided
+}
+
+}  // namespace
+
+det_value::det_value(const hpoint& h0, const hpoint& h1, const hpoint& h2, const hpoint& h3)
+    : rows_{h0, h1, h2, h3},
+      approx_(determinant<interval>(rows_, [](double v) { return interval(v); })) {}
+
+const mpq_class& det_value::exact() const {
+  if (!exact_)
+    exact_ = std::make_shared<const mpq_class>(
+        determinant<mpq_class>(rows_, [](double v) { return mpq_class(v); }));
+  return *exact_;
+}
+
+int det_value::sign() const {
+  const int s = sign_of(approx_);
+  return s != 2 ? s : sgn(exact());
+}
+
+double det_value::to_double() const {
+  if (exact_) return exact_->get_d();
+  return 0.5 * (approx_.inf() + approx_.sup());
+}
+
+int sign_of_difference_of_products(const det_value& p, const det_value& q, const det_value& r,
+                                   const det_value& s) {
+  const int filtered = sign_of(p.approx() * q.approx() - r.approx() * s.approx());
+  if (filtered != 2) return filtered;
+  const mpq_class v = p.exact() * q.exact() - r.exact() * s.exact();
+  return sgn(v);
+}
+
+double crossing::to_double() const {
+  switch (kind) {
+    case kind_type::zero:
+      return 0;
+    case kind_type::one:
+      return 1;
+    case kind_type::inner:
+      break;
+  }
+  const double av = a.to_double(), bv = b.to_double();
+  const double t = av / (av - bv);
+  return t < 0 ? 0 : t > 1 ? 1 : t;
+}
+
+int compare(const crossing& x, const crossing& y) {
+  using k = crossing::kind_type;
+  auto rank = [](k v) { return v == k::zero ? 0 : v == k::inner ? 1 : 2; };
+  if (x.kind != k::inner || y.kind != k::inner) {
+    const int rx = rank(x.kind), ry = rank(y.kind);
+    return (rx > ry) - (rx < ry);
+  }
+  // t1 - t2 = (a2 b1 - a1 b2) / ((a1 - b1)(a2 - b2)), and sign(a_i - b_i) = sign(a_i).
+  return sign_of_difference_of_products(y.a, x.b, x.a, y.b) * x.a.sign() * y.a.sign();
+}
+
+}  // namespace exbsp::geom

@@ -1,0 +1,178 @@
+// Edge paths (notation in edge_paths.h and edge_visibility.h).
+#include "view/edge_paths.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "view/clip_stage.h"
+#include "view/edge_visibility.h"
+#include "view/pipeline.h"
+#include "view/vector_drawing.h"
+
+namespace exbsp::view {
+
+namespace {
+
+/// Mesh index of a face id (f.mesh_face_offsets: first face of mesh k).
+std::uint32_t mesh_of_face(const frame& f, std::uint32_t face) {
+  if (f.mesh_face_offsets.empty()) return 0;
+  const auto it = std::upper_bound(f.mesh_face_offsets.begin(), f.mesh_face_offsets.end(), face);
+  return static_cast<std::uint32_t>(
+      std::max<std::ptrdiff_t>(0, it - f.mesh_face_offsets.begin() - 1));
+}
+
+/// A run projected to the grid.
+struct grid_run {
+  std::uint32_t edge;
+  grid_point a, b;
+  bool visible;
+};
+
+vec3d lerp(const vec3d& a, const vec3d& b, double t) {
+  return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+}
+
+/// The grid image of the run, false when the view volume cuts it away or it is a point.
+bool project_run(const frame& f, const mat4& pm, const vec3d& a, const vec3d& b, grid_point& ga,
+                 grid_point& gb) {
+  hpoint ca, cb;
+  if (!clip_segment_to_view_volume(pm * to_point(a), pm * to_point(b), ca, cb)) return false;
+  const viewport& vp = f.view.vp;
+  const window_point wa = to_window(vp, ca.x / ca.w, ca.y / ca.w, ca.z / ca.w);
+  const window_point wb = to_window(vp, cb.x / cb.w, cb.y / cb.w, cb.z / cb.w);
+  ga = {to_grid(wa.x - vp.x), to_grid(wa.y - vp.y)};
+  gb = {to_grid(wb.x - vp.x), to_grid(wb.y - vp.y)};
+  return !(ga == gb);
+}
+
+/// Visible runs by grid cell, to find the ones a hidden run may coincide with.
+class run_index {
+ public:
+  static constexpr long long cell = 16 * grid_per_pixel;
+
+  void add(std::uint32_t run, const grid_run& r) {
+    for_cells(r, [&](std::uint64_t k) { cells_[k].push_back(run); });
+  }
+  template <class Visit>
+  void near(const grid_run& r, Visit visit) const {
+    for_cells(r, [&](std::uint64_t k) {
+      const auto it = cells_.find(k);
+      if (it != cells_.end())
+        for (std::uint32_t run : it->second) visit(run);
+    });
+  }
+
+ private:
+  template <class Visit>
+  static void for_cells(const grid_run& r, Visit visit) {
+    auto c = [](long long v) { return v >= 0 ? v / cell : -((-v + cell - 1) / cell); };
+    const long long x0 = c(std::min(r.a.x, r.b.x) - 2), x1 = c(std::max(r.a.x, r.b.x) + 2);
+    const long long y0 = c(std::min(r.a.y, r.b.y) - 2), y1 = c(std::max(r.a.y, r.b.y) + 2);
+    for (long long y = y0; y <= y1; ++y)
+      for (long long x = x0; x <= x1; ++x)
+        visit(static_cast<std::uint64_t>(x + (1LL << 30)) << 32 |
+              static_cast<std::uint64_t>(y + (1LL << 30)));
+  }
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
+};
+
+}  // namespace
+
+void add_edge_paths(const frame& f, vector_drawing& d) {
+  const vector_options& opt = f.vector;
+  const edge_visibility ev = visible_runs(f, opt.crease_deg);
+  const triangle_soup& s = f.soup;
+  const mat4 pm = f.view.projection * f.view.model_view;
+  const bool hidden = opt.edges == vector_options::edges_kind::visible_hidden;
+  std::vector<grid_run> runs;
+  for (const edge_run& r : ev.runs) {
+    if (!r.visible && !hidden) continue;
+    const geom::feature_edge& e = ev.features.edges[r.edge];
+    const vec3d& a = s.vertices[e.a];
+    const vec3d& b = s.vertices[e.b];
+    grid_run g{r.edge, {}, {}, r.visible};
+    if (project_run(f, pm, r.t0 == 0 ? a : lerp(a, b, r.t0), r.t1 == 1 ? b : lerp(a, b, r.t1),
+                    g.a, g.b))
+      runs.push_back(g);
+  }
+  const std::uint32_t meshes =
+      f.mesh_face_offsets.empty() ? 1 : static_cast<std::uint32_t>(f.mesh_face_offsets.size());
+  std::vector<vector_path> visible_paths(meshes), hidden_paths(meshes);
+  for (std::uint32_t m = 0; m < meshes; ++m) {
+    visible_paths[m].kind = vector_path::kind_type::visible_edge;
+    hidden_paths[m].kind = vector_path::kind_type::hidden_edge;
+    visible_paths[m].mesh = hidden_paths[m].mesh = m;
+    visible_paths[m].color = hidden_paths[m].color = {0, 0, 0};
+  }
+  auto mesh_of_edge = [&](std::uint32_t edge) {
+    return std::min(mesh_of_face(f, ev.features.edges[edge].faces[0]), meshes - 1);
+  };
+  run_index index;
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    if (runs[k].visible) {
+      index.add(static_cast<std::uint32_t>(k), runs[k]);
+      visible_paths[mesh_of_edge(runs[k].edge)].rings.push_back({runs[k].a, runs[k].b});
+    }
+  if (hidden) {
+    const geom::hpoint eye = viewer_of(f);
+    // Whether edge j lies in the plane through the viewer and edge i (exact), per pair.
+    std::unordered_map<std::uint64_t, bool> coplanar;
+    auto in_plane = [&](std::uint32_t i, std::uint32_t j) {
+      const std::uint64_t key = static_cast<std::uint64_t>(i) << 32 | j;
+      const auto it = coplanar.find(key);
+      if (it != coplanar.end()) return it->second;
+      const geom::feature_edge& ei = ev.features.edges[i];
+      const geom::feature_edge& ej = ev.features.edges[j];
+      const geom::hpoint A = geom::point_of(s.vertices[ei.a]), B = geom::point_of(s.vertices[ei.b]);
+      bool result;
+      {
+        const geom::rounding_guard guard;
+        result = geom::det_value(eye, A, B, geom::point_of(s.vertices[ej.a])).sign() == 0 &&
+                 geom::det_value(eye, A, B, geom::point_of(s.vertices[ej.b])).sign() == 0;
+      }
+      coplanar.emplace(key, result);
+      return result;
+    };
+    std::vector<std::pair<double, double>> covered;
+    for (const grid_run& h : runs) {
+      if (h.visible) continue;
+      const double dx = static_cast<double>(h.b.x - h.a.x), dy = static_cast<double>(h.b.y - h.a.y);
+      const double len = std::hypot(dx, dy);
+      auto along = [&](const grid_point& q) {
+        return (static_cast<double>(q.x - h.a.x) * dx + static_cast<double>(q.y - h.a.y) * dy) /
+               len;
+      };
+      covered.clear();
+      index.near(h, [&](std::uint32_t k) {
+        const grid_run& v = runs[k];
+        if (v.edge == h.edge || !in_plane(h.edge, v.edge)) return;
+        const double p = along(v.a), q = along(v.b);
+        covered.push_back({std::min(p, q), std::max(p, q)});
+      });
+      std::sort(covered.begin(), covered.end());
+      // What is left of [0, len] outside the covered ranges (pieces under one grid unit are
+      // rounding crumbs of a coincidence and dropped).
+      double at = 0;
+      auto emit = [&](double t0, double t1) {
+        if (t1 - t0 < 1) return;
+        auto point = [&](double t) {
+          return grid_point{h.a.x + std::llround(t / len * dx), h.a.y + std::llround(t / len * dy)};
+        };
+        hidden_paths[mesh_of_edge(h.edge)].rings.push_back({point(t0), point(t1)});
+      };
+      for (const auto& [lo, hi] : covered) {
+        if (lo > at) emit(at, std::min(lo, len));
+        at = std::max(at, hi);
+        if (at >= len) break;
+      }
+      if (at < len) emit(at, len);
+    }
+    for (vector_path& p : hidden_paths)
+      if (!p.rings.empty()) d.paths.push_back(std::move(p));
+  }
+  for (vector_path& p : visible_paths)
+    if (!p.rings.empty()) d.paths.push_back(std::move(p));
+}
+
+}  // namespace exbsp::view
