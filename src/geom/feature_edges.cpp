@@ -25,8 +25,7 @@ int facing(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint& viewer)
   return -det_value(point_of(a), point_of(b), point_of(c), viewer).sign();
 }
 
-view_features find_feature_edges(const triangle_soup& s, const hpoint& viewer,
-                                 double crease_deg) {
+view_features find_feature_edges(const triangle_soup& s, const hpoint& viewer, double crease_deg) {
   const welded_ids welded = weld(s.vertices);
   const std::vector<std::uint32_t>& id = welded.id;
   view_features out;
@@ -52,8 +51,8 @@ view_features find_feature_edges(const triangle_soup& s, const hpoint& viewer,
   }
   for (std::size_t t = 0; t < n; ++t) {
     const auto& v = s.triangles[t].v;
-    normal[t] = cross(sub(s.vertices[v[1]], s.vertices[v[0]]),
-                      sub(s.vertices[v[2]], s.vertices[v[0]]));
+    normal[t] =
+        cross(sub(s.vertices[v[1]], s.vertices[v[0]]), sub(s.vertices[v[2]], s.vertices[v[0]]));
     if (id[v[0]] == id[v[1]] || id[v[1]] == id[v[2]] || id[v[2]] == id[v[0]] ||
         dot(normal[t], normal[t]) == 0) {
       out.facing[t] = 0;

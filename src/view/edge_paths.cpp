@@ -92,8 +92,8 @@ void add_edge_paths(const frame& f, vector_drawing& d) {
     const vec3d& a = s.vertices[e.a];
     const vec3d& b = s.vertices[e.b];
     grid_run g{r.edge, {}, {}, r.visible};
-    if (project_run(f, pm, r.t0 == 0 ? a : lerp(a, b, r.t0), r.t1 == 1 ? b : lerp(a, b, r.t1),
-                    g.a, g.b))
+    if (project_run(f, pm, r.t0 == 0 ? a : lerp(a, b, r.t0), r.t1 == 1 ? b : lerp(a, b, r.t1), g.a,
+                    g.b))
       runs.push_back(g);
   }
   const std::uint32_t meshes =

@@ -204,9 +204,10 @@ edge_visibility visible_runs(const frame& f, double crease_deg) {
         if (t == e.tris[0] || t == e.tris[1]) continue;  // the edge lies in their planes
         if (hidden_by(s, features, t, eye, A, B, h)) hidden.push_back(std::move(h));
       }
-      std::sort(hidden.begin(), hidden.end(), [](const hidden_interval& x, const hidden_interval& y) {
-        return geom::compare(x.lo, y.lo) < 0;
-      });
+      std::sort(hidden.begin(), hidden.end(),
+                [](const hidden_interval& x, const hidden_interval& y) {
+                  return geom::compare(x.lo, y.lo) < 0;
+                });
       // Union: each merged interval keeps the first lo and the largest hi that reaches it.
       for (const hidden_interval& x : hidden) {
         if (!runs.empty() && geom::compare(x.lo, *runs.back().second) <= 0) {
