@@ -77,6 +77,56 @@ class run_index {
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
 };
 
+/// The segments of a path joined into chains: a chain goes on through a grid point where
+/// exactly two of the segments meet, so a dash pattern runs on along it (one polyline per
+/// chain). Segments are taken in order; each chain grows forward, then backward.
+void chain_segments(vector_path& p) {
+  const std::vector<std::vector<grid_point>> segments = std::move(p.rings);
+  p.rings.clear();
+  auto key = [](const grid_point& q) {
+    return static_cast<std::uint64_t>(q.x + (1LL << 31)) << 32 ^
+           static_cast<std::uint64_t>(q.y + (1LL << 31));
+  };
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> at;
+  for (std::uint32_t k = 0; k < segments.size(); ++k) {
+    at[key(segments[k].front())].push_back(k);
+    at[key(segments[k].back())].push_back(k);
+  }
+  std::vector<char> used(segments.size(), 0);
+  // The other unused segment at q when exactly two segments meet there.
+  auto next_at = [&](const grid_point& q) -> std::int64_t {
+    const std::vector<std::uint32_t>& there = at[key(q)];
+    if (there.size() != 2) return -1;
+    for (std::uint32_t k : there)
+      if (!used[k]) return k;
+    return -1;
+  };
+  for (std::uint32_t k = 0; k < segments.size(); ++k) {
+    if (used[k]) continue;
+    used[k] = 1;
+    std::vector<grid_point> chain = segments[k];
+    for (std::int64_t n; (n = next_at(chain.back())) >= 0;) {
+      used[n] = 1;
+      const auto& s = segments[static_cast<std::size_t>(n)];
+      if (s.front() == chain.back())
+        chain.insert(chain.end(), s.begin() + 1, s.end());
+      else
+        chain.insert(chain.end(), s.rbegin() + 1, s.rend());
+    }
+    std::vector<grid_point> head;
+    for (std::int64_t n; !(chain.front() == chain.back()) && (n = next_at(chain.front())) >= 0;) {
+      used[n] = 1;
+      const auto& s = segments[static_cast<std::size_t>(n)];
+      // Prepend s, oriented to end at chain.front().
+      std::vector<grid_point> piece(s.begin(), s.end());
+      if (!(piece.back() == chain.front())) std::reverse(piece.begin(), piece.end());
+      piece.pop_back();
+      chain.insert(chain.begin(), piece.begin(), piece.end());
+    }
+    p.rings.push_back(std::move(chain));
+  }
+}
+
 }  // namespace
 
 void add_edge_paths(const frame& f, vector_drawing& d) {
@@ -169,10 +219,16 @@ void add_edge_paths(const frame& f, vector_drawing& d) {
       if (at < len) emit(at, len);
     }
     for (vector_path& p : hidden_paths)
-      if (!p.rings.empty()) d.paths.push_back(std::move(p));
+      if (!p.rings.empty()) {
+        chain_segments(p);
+        d.paths.push_back(std::move(p));
+      }
   }
   for (vector_path& p : visible_paths)
-    if (!p.rings.empty()) d.paths.push_back(std::move(p));
+    if (!p.rings.empty()) {
+      chain_segments(p);
+      d.paths.push_back(std::move(p));
+    }
 }
 
 }  // namespace exbsp::view

@@ -1,6 +1,9 @@
 // The edge paths of the hidden-line drawing: the runs of edge_visibility.h projected to the
 // drawing grid (vector_drawing.h), one visible and one hidden path per mesh.
 //
+// Chains: the pieces of each path are joined end to end where exactly two meet (grid points),
+// so each chain is one polyline and a dash pattern runs on along it.
+//
 // Coincidence: where a hidden run and a visible run lie on one line through the viewer (exact
 // test: both ends of the visible run's edge in the plane through E and the hidden run's edge,
 // geom/homogeneous_det.h), their images coincide and only the visible one is drawn: the hidden

@@ -51,10 +51,10 @@ drawing_counts count_paths(const vector_drawing& d) {
         c.rings += p.rings.size();
         break;
       case vector_path::kind_type::visible_edge:
-        c.visible_edges += p.rings.size();
+        for (const auto& r : p.rings) c.visible_edges += r.size() - 1;
         break;
       case vector_path::kind_type::hidden_edge:
-        c.hidden_edges += p.rings.size();
+        for (const auto& r : p.rings) c.hidden_edges += r.size() - 1;
         break;
       case vector_path::kind_type::curve:
       case vector_path::kind_type::point:

@@ -136,8 +136,9 @@ long long to_grid(double v);
 
 /// Counts of a drawing, for logs and the bench.
 struct drawing_counts {
-  std::size_t underlays = 0, regions = 0, rings = 0, visible_edges = 0, hidden_edges = 0,
-              curves = 0;
+  std::size_t underlays = 0, regions = 0, rings = 0;
+  std::size_t visible_edges = 0, hidden_edges = 0;  ///< straight pieces of the edge chains
+  std::size_t curves = 0;
 };
 drawing_counts count_paths(const vector_drawing& d);
 
