@@ -22,11 +22,20 @@ std::uint32_t mesh_of_face(const frame& f, std::uint32_t face) {
       std::max<std::ptrdiff_t>(0, it - f.mesh_face_offsets.begin() - 1));
 }
 
+/// Two runs lie on one line of the drawing when they are at most this many grid units apart
+/// (0.04 pixel, far below what a screen or a plotter separates; an exact coincidence rounds to
+/// at most one unit apart, and one more unit covers the rounding of the runs' own ends) ...
+constexpr double same_line = 4;
+/// ... and the sine of the angle between their unrounded images is at most this (twice the
+/// 0.05 that tests/support/hidden_line_oracle.cpp calls "along", for the rounding of short runs).
+constexpr double max_sine = 0.1;
+
 /// A run projected to the grid.
 struct grid_run {
   std::uint32_t edge;
   grid_point a, b;
   bool visible;
+  double dx = 0, dy = 0;  ///< unit direction of the unrounded image, a to b
 };
 
 vec3d lerp(const vec3d& a, const vec3d& b, double t) {
@@ -34,16 +43,19 @@ vec3d lerp(const vec3d& a, const vec3d& b, double t) {
 }
 
 /// The grid image of the run, false when the view volume cuts it away or it is a point.
-bool project_run(const frame& f, const mat4& pm, const vec3d& a, const vec3d& b, grid_point& ga,
-                 grid_point& gb) {
+bool project_run(const frame& f, const mat4& pm, const vec3d& a, const vec3d& b, grid_run& out) {
   hpoint ca, cb;
   if (!clip_segment_to_view_volume(pm * to_point(a), pm * to_point(b), ca, cb)) return false;
   const viewport& vp = f.view.vp;
   const window_point wa = to_window(vp, ca.x / ca.w, ca.y / ca.w, ca.z / ca.w);
   const window_point wb = to_window(vp, cb.x / cb.w, cb.y / cb.w, cb.z / cb.w);
-  ga = {to_grid(wa.x - vp.x), to_grid(wa.y - vp.y)};
-  gb = {to_grid(wb.x - vp.x), to_grid(wb.y - vp.y)};
-  return !(ga == gb);
+  out.a = {to_grid(wa.x - vp.x), to_grid(wa.y - vp.y)};
+  out.b = {to_grid(wb.x - vp.x), to_grid(wb.y - vp.y)};
+  const double len = std::hypot(wb.x - wa.x, wb.y - wa.y);
+  if (out.a == out.b || !(len > 0)) return false;
+  out.dx = (wb.x - wa.x) / len;
+  out.dy = (wb.y - wa.y) / len;
+  return true;
 }
 
 /// Visible runs by grid cell, to find the ones a hidden run may coincide with.
@@ -142,8 +154,7 @@ void add_edge_paths(const frame& f, vector_drawing& d) {
     const vec3d& a = s.vertices[e.a];
     const vec3d& b = s.vertices[e.b];
     grid_run g{r.edge, {}, {}, r.visible};
-    if (project_run(f, pm, r.t0 == 0 ? a : lerp(a, b, r.t0), r.t1 == 1 ? b : lerp(a, b, r.t1), g.a,
-                    g.b))
+    if (project_run(f, pm, r.t0 == 0 ? a : lerp(a, b, r.t0), r.t1 == 1 ? b : lerp(a, b, r.t1), g))
       runs.push_back(g);
   }
   const std::uint32_t meshes =
@@ -165,25 +176,6 @@ void add_edge_paths(const frame& f, vector_drawing& d) {
       visible_paths[mesh_of_edge(runs[k].edge)].rings.push_back({runs[k].a, runs[k].b});
     }
   if (hidden) {
-    const geom::hpoint eye = viewer_of(f);
-    // Whether edge j lies in the plane through the viewer and edge i (exact), per pair.
-    std::unordered_map<std::uint64_t, bool> coplanar;
-    auto in_plane = [&](std::uint32_t i, std::uint32_t j) {
-      const std::uint64_t key = static_cast<std::uint64_t>(i) << 32 | j;
-      const auto it = coplanar.find(key);
-      if (it != coplanar.end()) return it->second;
-      const geom::feature_edge& ei = ev.features.edges[i];
-      const geom::feature_edge& ej = ev.features.edges[j];
-      const geom::hpoint A = geom::point_of(s.vertices[ei.a]), B = geom::point_of(s.vertices[ei.b]);
-      bool result;
-      {
-        const geom::rounding_guard guard;
-        result = geom::det_value(eye, A, B, geom::point_of(s.vertices[ej.a])).sign() == 0 &&
-                 geom::det_value(eye, A, B, geom::point_of(s.vertices[ej.b])).sign() == 0;
-      }
-      coplanar.emplace(key, result);
-      return result;
-    };
     std::vector<std::pair<double, double>> covered;
     for (const grid_run& h : runs) {
       if (h.visible) continue;
@@ -196,8 +188,27 @@ void add_edge_paths(const frame& f, vector_drawing& d) {
       covered.clear();
       index.near(h, [&](std::uint32_t k) {
         const grid_run& v = runs[k];
-        if (v.edge == h.edge || !in_plane(h.edge, v.edge)) return;
-        const double p = along(v.a), q = along(v.b);
+        if (v.edge == h.edge) return;
+        // v's offsets across h's line at its ends; nearly parallel runs only (a crossing at
+        // an angle is a point, not a coincidence).
+        if (std::abs(v.dx * h.dy - v.dy * h.dx) > max_sine) return;
+        auto across = [&](const grid_point& q) {
+          return (static_cast<double>(q.y - h.a.y) * dx - static_cast<double>(q.x - h.a.x) * dy) /
+                 len;
+        };
+        // The part of v within `same_line` of h's line, measured along h.
+        const double ca = across(v.a), cb = across(v.b);
+        double s0 = 0, s1 = 1;  // parameters on v
+        if (ca != cb) {
+          const double u0 = (-same_line - ca) / (cb - ca), u1 = (same_line - ca) / (cb - ca);
+          s0 = std::max(0.0, std::min(u0, u1));
+          s1 = std::min(1.0, std::max(u0, u1));
+        } else if (std::abs(ca) > same_line) {
+          return;
+        }
+        if (s1 <= s0) return;
+        const double p = along(v.a) + s0 * (along(v.b) - along(v.a));
+        const double q = along(v.a) + s1 * (along(v.b) - along(v.a));
         covered.push_back({std::min(p, q), std::max(p, q)});
       });
       std::sort(covered.begin(), covered.end());

@@ -4,10 +4,13 @@
 // Chains: the pieces of each path are joined end to end where exactly two meet (grid points),
 // so each chain is one polyline and a dash pattern runs on along it.
 //
-// Coincidence: where a hidden run and a visible run lie on one line through the viewer (exact
-// test: both ends of the visible run's edge in the plane through E and the hidden run's edge,
-// geom/homogeneous_det.h), their images coincide and only the visible one is drawn: the hidden
-// run loses the part that the visible one covers (measured along it on the grid).
+// Coincidence: where a hidden run and a visible run lie on one line of the drawing, their
+// images coincide and only the visible one is drawn: the hidden run loses the part that a
+// nearly parallel visible run covers within 4 grid units (0.04 pixel). This is a decision about
+// strokes on the drawing's grid, made after visibility, which is exact (edge_visibility.h):
+// in a standard view whose direction was rounded (an isometric eye placed by a normalised
+// vector) the images of two edges can coincide to within 1e-12 pixel without being exactly
+// collinear.
 #pragma once
 
 namespace exbsp::view {

@@ -863,7 +863,11 @@ hidden_line_report check_hidden_lines(const hidden_line_oracle& o, const view::v
             const double f = (at - start) / len;
             const gpoint g{a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])};
             const gpoint dir{(b[0] - a[0]) / len, (b[1] - a[1]) / len};
-            if (near_border(g, size, amb)) {
+            // Near the border, or near a vertex inside a chain (where other edges meet, as at
+            // a ring's ends, which `at` keeps `amb` away from): ambiguous.
+            const bool near_vertex =
+                (k > 0 && at - start < amb) || (k + 2 < ring.size() && start + len - at < amb);
+            if (near_border(g, size, amb) || near_vertex) {
               ++r.run_points;
               ++r.run_skipped;
               continue;
@@ -883,9 +887,15 @@ hidden_line_report check_hidden_lines(const hidden_line_oracle& o, const view::v
               const point_visibility v = verdict(sg.id, g);
               if (v == point_visibility::visible) {
                 any_visible = true;
+                // Along it: within tol over +-amb and nearly parallel (sine <= 0.05; a hidden
+                // edge leaving a shared vertex at a small angle is not a coincidence).
                 const gpoint g1{g[0] - amb * dir[0], g[1] - amb * dir[1]};
                 const gpoint g2{g[0] + amb * dir[0], g[1] + amb * dir[1]};
-                if (segment_distance(g1, sg.a, sg.b) <= tol &&
+                const double sx = sg.b[0] - sg.a[0], sy = sg.b[1] - sg.a[1];
+                const double slen = std::hypot(sx, sy);
+                const bool parallel =
+                    slen > 0 && std::abs(sx * dir[1] - sy * dir[0]) <= 0.05 * slen;
+                if (parallel && segment_distance(g1, sg.a, sg.b) <= tol &&
                     segment_distance(g2, sg.a, sg.b) <= tol)
                   along_visible = true;
               } else if (v == point_visibility::hidden) {
