@@ -23,7 +23,10 @@ namespace {
 // frees the reserve, retries, and marks memory exhausted; the caller's next check
 // (check_gmp_memory, in C++ code between GMP calls) throws std::bad_alloc, with every
 // number in a consistent state. Only a failure after the reserve is spent throws from GMP.
-constexpr std::size_t reserve_bytes = std::size_t{1} << 20;  // one exact value takes kilobytes
+// 4 MB, not 1: one exact value takes kilobytes, but once glibc has raised its mmap threshold
+// (it does when a large block is freed) a failed allocation falls back to mapping at least
+// 1 MB at a time, which a 1 MB reserve, freed, did not make room for (test_hostile, GmpMemory).
+constexpr std::size_t reserve_bytes = std::size_t{4} << 20;
 std::atomic<void*> reserve{nullptr};
 std::atomic<bool> exhausted{false};
 std::atomic<bool> installed{false};
