@@ -551,12 +551,8 @@ vector_drawing visible_drawing(const frame& f) {
     }
     if (!r.rings.empty()) regions.push_back(std::move(r));
   }
-  // Underlays: the union of the regions of each colour used more than once.
-  std::map<std::array<std::uint8_t, 3>, std::vector<std::size_t>> by_color;
-  for (std::size_t k = 0; k < regions.size(); ++k)
-    by_color[{regions[k].color.r, regions[k].color.g, regions[k].color.b}].push_back(k);
-  for (const auto& [rgb, members] : by_color) {
-    if (members.size() < 2) continue;
+  // Underlays (notation): the union of a group of regions, in one colour, under them.
+  auto add_underlay = [&](const std::vector<std::size_t>& members, rgb8 color) {
     clipper.Clear();
     for (std::size_t k : members)
       for (const auto& ring : regions[k].rings) {
@@ -569,12 +565,53 @@ vector_drawing visible_drawing(const frame& f) {
     clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
     vector_path u;
     u.kind = vector_path::kind_type::underlay;
-    u.color = regions[members[0]].color;
+    u.color = color;
     for (cl::Path& ring : merged) {
       remove_spikes(ring);
       if (ring.size() >= 3) u.rings.push_back(to_ring(ring));
     }
     if (!u.rings.empty()) d.paths.push_back(std::move(u));
+  };
+  // First one per mesh of two or more regions, in their mean colour weighted by area: under
+  // a seam between two lit faces of a part shows a colour near both, not the background.
+  std::map<std::uint32_t, std::vector<std::size_t>> by_mesh;
+  std::vector<std::pair<std::vector<std::size_t>, rgb8>> done;  // to draw no underlay twice
+  for (std::size_t k = 0; k < regions.size(); ++k) by_mesh[regions[k].mesh].push_back(k);
+  for (const auto& [mesh, members] : by_mesh) {
+    if (members.size() < 2) continue;
+    double sum[3] = {0, 0, 0}, total = 0;
+    for (std::size_t k : members) {
+      double area = 0;
+      for (const auto& ring : regions[k].rings) {
+        cl::Path p;
+        p.reserve(ring.size());
+        for (const grid_point& q : ring) p.push_back({q.x, q.y});
+        area += cl::Area(p);
+      }
+      area = std::abs(area);
+      const rgb8& c = regions[k].color;
+      sum[0] += area * c.r;
+      sum[1] += area * c.g;
+      sum[2] += area * c.b;
+      total += area;
+    }
+    if (!(total > 0)) continue;
+    auto mean = [&](double v) { return static_cast<std::uint8_t>(std::lround(v / total)); };
+    const rgb8 color{mean(sum[0]), mean(sum[1]), mean(sum[2])};
+    add_underlay(members, color);
+    done.push_back({members, color});
+  }
+  // Then one per colour used by two or more regions: where faces of one colour meet, the
+  // seam shows exactly that colour.
+  std::map<std::array<std::uint8_t, 3>, std::vector<std::size_t>> by_color;
+  for (std::size_t k = 0; k < regions.size(); ++k)
+    by_color[{regions[k].color.r, regions[k].color.g, regions[k].color.b}].push_back(k);
+  for (const auto& [rgb, members] : by_color) {
+    const rgb8 color = regions[members[0]].color;
+    const bool drawn = std::any_of(done.begin(), done.end(), [&](const auto& u) {
+      return u.second == color && u.first == members;
+    });
+    if (members.size() >= 2 && !drawn) add_underlay(members, color);
   }
   d.paths.insert(d.paths.end(), regions.begin(), regions.end());
   if (opt.edges != vector_options::edges_kind::none) add_edge_paths(f, d);

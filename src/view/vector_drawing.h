@@ -20,10 +20,12 @@
 //
 // Underlays: anti-aliasing renderers (browsers, PDF viewers) blend each path's edge pixels
 // with what is below, so two regions sharing an edge let the background through it
-// ("conflation"): a faint line inside a flat area where faces of one colour meet. The drawing
-// therefore starts with one underlay per colour used by two or more regions: the union of those
-// regions, in that colour, under them. It adds no area (no outline grows, nothing is stroked);
-// the regions above stay one path per face.
+// ("conflation"): a faint light line between faces. The drawing therefore starts with
+// underlays, filled unions of regions under them: one per mesh (part) in the area-weighted
+// mean colour of its regions (under a seam between two lit faces shows a colour near both),
+// then one per colour used by two or more regions (where faces of one colour meet, the seam
+// shows exactly that colour). They add no area (no outline grows, nothing is stroked); the
+// regions above stay one path per face.
 //
 // Edges (the hidden-line drawing): the feature edges (geom/feature_edges.h) split exactly into
 // visible and hidden runs by the contract's rule (edge_visibility.h), drawn by edge_paths.h.
