@@ -5,12 +5,12 @@
 // standard stages (view/stages.h) for a fixed perspective camera: "order" (back-to-front
 // traversal for the eye), "transform+clip" (modelview, projection, homogeneous clipping,
 // divide, viewport), "raster" (painter's algorithm at width x height, no z-buffer), "svg"
-// (the SVG document as a string) and "svg write" (atomic file write). Each stage's median
-// over the frames is reported. OSMesa draws the INPUT triangles (what a z-buffer viewer
-// draws; it needs no BSP) with the same matrices and flat face colours from a vertex buffer:
-// glClear + glDrawArrays + glFinish per frame, median over the frames, and the first frame
-// (upload and pipeline compilation) separately. "pixel_agreement" is the fraction of pixels
-// with the same colour in both images.
+// (the SVG document as a string: visible regions, visible and hidden edges) and "svg write" (atomic
+// file write). Each stage's median over the frames is reported. OSMesa draws the INPUT triangles
+// (what a z-buffer viewer draws; it needs no BSP) with the same matrices and flat face colours from
+// a vertex buffer: glClear + glDrawArrays + glFinish per frame, median over the frames, and the
+// first frame (upload and pipeline compilation) separately. "pixel_agreement" is the fraction of
+// pixels with the same colour in both images.
 //
 // The raster stage paints front to back with a coverage mask (the default, paint.h); two
 // more timings of the same stage, not part of the frame, compare: "raster all cores" (front
@@ -196,6 +196,9 @@ int main(int argc, char** argv) {
     f.face_colors.resize(f.soup.face_count);
     for (std::uint32_t i = 0; i < f.soup.face_count; ++i) f.face_colors[i] = face_color(i);
     bench::set_bench_view(f, width, height);
+    // The SVG frame is the hidden-line drawing a CAD user ships: visible regions, visible and
+    // hidden edges.
+    f.vector.edges = view::vector_options::edges_kind::visible_hidden;
 
     json line = {{"input", in.name}, {"triangles", f.soup.triangles.size()},
                  {"kernel", kernel}, {"heuristic", heuristic},

@@ -50,7 +50,7 @@ FULL = {
     "corpus_cap": 60,
     "min_split_max": 6000,
     "naive_random_max": 20000,    # naive and random take ~1 min per build on the 50k-90k organic meshes
-    "render_meshes": ["fandisk", "bunny00"],
+    "render_meshes": ["fandisk", "bunny00", "refined_elephant"],
     "render_frames": 5,
     "profile_mesh": "fandisk",
     "micro_min_time": "0.2",
