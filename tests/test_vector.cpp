@@ -260,6 +260,50 @@ TEST(VisibleRegions, CoplanarOverlappingFacesOfTwoMeshesTileTheirUnion) {
   EXPECT_EQ(svg_document(d).find("<g id=\"mesh-1\">") != std::string::npos, true);
 }
 
+/// Area of closed grid rings (signed sum: holes count negative when wound the other way).
+double rings_area(const std::vector<std::vector<grid_point>>& rings) {
+  double a = 0;
+  for (const auto& r : rings)
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      const grid_point& p = r[k];
+      const grid_point& q = r[(k + 1) % r.size()];
+      a += static_cast<double>(p.x) * static_cast<double>(q.y) -
+           static_cast<double>(q.x) * static_cast<double>(p.y);
+    }
+  return a / 2;
+}
+
+TEST(Underlays, OnePerMeshInTheAreaWeightedMeanColourCoveringExactlyItsRegions) {
+  // One mesh of two faces of different colours sharing an edge (a lit part's neighbouring
+  // faces): its underlay is the union of the two regions, no larger, in their mean colour
+  // weighted by area, so a seam between them shows a colour between theirs, not the
+  // background. No colour is used twice: no per-colour underlay.
+  triangle_soup s;
+  add_quad(s, {-1, -1, 0}, {0, -1, 0}, {0, 1, 0}, {-1, 1, 0});
+  add_quad(s, {0, -1, 0}, {2, -1, 0}, {2, 1, 0}, {0, 1, 0});
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
+                              {{0.5, 0, 6}, {0.5, 0, 0}, {0, 1, 0}}, 200, 150);
+  run(f, {}, output_kind::svg);
+  const vector_drawing d = visible_drawing(f);
+  std::vector<const vector_path*> underlays;
+  for (const vector_path& p : d.paths)
+    if (p.kind == vector_path::kind_type::underlay) underlays.push_back(&p);
+  const auto r = regions_of(d);
+  ASSERT_EQ(r.size(), 2u);
+  ASSERT_EQ(underlays.size(), 1u);
+  const double a0 = std::abs(rings_area(r[0]->rings)), a1 = std::abs(rings_area(r[1]->rings));
+  EXPECT_NEAR(std::abs(rings_area(underlays[0]->rings)), a0 + a1, 1e-9 * (a0 + a1));
+  auto mean = [&](int c0, int c1) {
+    return static_cast<int>(std::lround((a0 * c0 + a1 * c1) / (a0 + a1)));
+  };
+  EXPECT_EQ(underlays[0]->color.r, mean(r[0]->color.r, r[1]->color.r));
+  EXPECT_EQ(underlays[0]->color.b, mean(r[0]->color.b, r[1]->color.b));
+  EXPECT_GT(underlays[0]->color.r, 0);
+  EXPECT_GT(underlays[0]->color.b, 0);
+  // Underlays come first: every region is drawn over them.
+  EXPECT_EQ(d.paths.front().kind, vector_path::kind_type::underlay);
+}
+
 TEST(VisibleRegions, AFaceExactlyBehindAnotherOfTheSameOutlineIsHidden) {
   triangle_soup s;
   add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
