@@ -13,11 +13,3 @@ cd "$here"
 "$build/src/app/exbsp" render -q -o "$here/docs/images/demo.png"
 "$build/bench/kernel_figure" data/meshes/pinion.off "$here/docs/images/exact_vs_double.png" \
   --kernel double --view iso --size 360x360 | tee "$here/docs/images/exact_vs_double.json"
-# - docs/images/joint.png, joint.svg (iso) and joint_front.svg: `exbsp render` of the corpus's
-#   joint, the vector drawings with visible and hidden edges (exact hidden lines).
-for view in iso front; do
-  suffix=$([ "$view" = iso ] && echo "" || echo "_$view")
-  "$build/src/app/exbsp" render data/meshes/joint.off -q --view "$view" --size 640x480 \
-    --edges visible+hidden -o "$here/docs/images/joint$suffix.svg"
-done
-"$build/src/app/exbsp" render data/meshes/joint.off -q --size 640x480 -o "$here/docs/images/joint.png"

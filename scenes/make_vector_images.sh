@@ -5,8 +5,8 @@
 # (vector_svg_chromium.png), and the same drawing of data/meshes/fandisk.off, lit, when the
 # corpus is there (vector_fandisk_chromium.png); and the README's pair of one CAD part,
 # data/meshes/joint.off, lit, in a view fitted to it, as exbsp's PNG and as the visible-region SVG
-# with visible and hidden edges (docs/images/joint.png, docs/images/joint.svg), when the corpus
-# is there. Anyone can rerun it (needs chromium):
+# with visible and hidden edges (docs/images/joint.png, docs/images/joint.svg, and from the
+# front docs/images/joint_front.svg), when the corpus is there. Anyone can rerun it (needs chromium):
 #   scenes/make_vector_images.sh [path/to/exbsp]     (default: $EXBSP, then build/src/app/exbsp)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -77,6 +77,7 @@ if [ -f "$joint" ]; then
   # `exbsp render MESH`: lit, in the view fitted to the mesh (scene/mesh_scene.h).
   "$exbsp" render "$joint" -q --size 640x480 -o "$docs/joint.png"
   "$exbsp" render "$joint" -q --size 640x480 --edges visible+hidden -o "$docs/joint.svg"
+  "$exbsp" render "$joint" -q --size 640x480 --edges visible+hidden --view front -o "$docs/joint_front.svg"
   echo "make_vector_images: wrote docs/images/joint.png ($(stat -c %s "$docs/joint.png") bytes) and joint.svg ($(stat -c %s "$docs/joint.svg") bytes)"
 fi
 echo "make_vector_images: wrote $(ls "$out"/vector_*.png | wc -l) images into $out"
