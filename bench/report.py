@@ -762,5 +762,13 @@ def write(path, meta, cfg, data, plot_rel, command):
     text = "\n".join(head) + "\n" + acc_text + "\n" + heur_text + "\n" + section_render(data["render"], plot_rel) + \
         "\n" + micro_text + "\n" + section_profile(data.get("profile")) + "\n\n" + \
         section_peers(acc, data.get("peers", []), data.get("node", ""), plot_rel) + "\n\n" + "\n".join(METHOD_NOTES)
+    # Section 7 (the hidden-line drawing) is written by bench/hidden_lines.py between its markers:
+    # kept as it stands when the rest is regenerated.
+    begin, end = "<!-- hidden-lines:begin -->", "<!-- hidden-lines:end -->"
+    if os.path.exists(path):
+        with open(path) as f:
+            old = f.read()
+        if begin in old and end in old:
+            text = text.rstrip("\n") + "\n\n" + old[old.index(begin):old.index(end) + len(end)] + "\n"
     with open(path, "w") as f:
         f.write(text)

@@ -1,0 +1,137 @@
+#!/usr/bin/env python3
+"""The hidden-line drawing's figures, in one command: rewrites section 7 of bench/RESULTS.md
+(between the markers <!-- hidden-lines:begin --> and <!-- hidden-lines:end -->, appended when
+they are missing) and keeps the raw output in bench/out/hidden_lines/.
+
+    /usr/bin/python3 bench/hidden_lines.py [--build-dir build] [--frames 3] [--no-peers]
+
+It measures, side by side in one run on this machine:
+  1. cost: bench_render (exact build, then per frame the PNG stages and the SVG stage with
+     visible regions, visible and hidden edges) on fandisk, bunny00 and refined_elephant at
+     1024 x 768: the SVG frame (order + transform+clip + svg + svg write) against the PNG frame
+     (order + transform+clip + raster), and the SVG's size;
+  2. seams: bench/seams.py (librsvg and Chromium against exbsp's PNG, 800 x 600, lit);
+  3. peers: bench/hlr_peers.py (Open CASCADE's hidden-line removal through FreeCAD against
+     exbsp, both judged by the ray-cast oracle of the tests), when FreeCAD is installed.
+Build first: scripts/build (the bench targets are on by default).
+"""
+import argparse
+import datetime
+import json
+import os
+import subprocess
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+root = os.path.dirname(here)
+
+BEGIN, END = "<!-- hidden-lines:begin -->", "<!-- hidden-lines:end -->"
+
+
+def fmt_s(x):
+    return f"{x * 1000:.1f} ms" if x < 1 else f"{x:.2f} s"
+
+
+def machine():
+    model = "?"
+    with open("/proc/cpuinfo") as f:
+        for line in f:
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    return f"{os.cpu_count()} cores, {model}"
+
+
+def cost_rows(build, frames, out):
+    rows = []
+    for mesh in ("fandisk", "bunny00", "refined_elephant"):
+        path = os.path.join(root, "data/meshes", mesh + ".off")
+        if not os.path.exists(path):
+            print(f"hidden_lines: {path} missing (scripts/setup extracts the CGAL corpus)")
+            continue
+        jsonl = os.path.join(out, "render.jsonl")
+        subprocess.run([os.path.join(build, "bench/bench_render"), "--mesh", path, "--kernel", "exact",
+                        "--frames", str(frames), "--orbit", "0", "--out", jsonl,
+                        "--svg", os.path.join(out, mesh + ".svg")], check=True,
+                       stdout=subprocess.DEVNULL)
+        with open(jsonl) as f:
+            r = json.loads(f.read().splitlines()[-1])
+        s = r["stage_seconds_median"]
+        png = s["order"] + s["transform+clip"] + s["raster"]
+        svg = s["order"] + s["transform+clip"] + s["svg"] + s["svg write"]
+        rows.append((mesh, r["triangles"], r["fragments"], png, svg, r["svg_bytes"]))
+        print(f"hidden_lines: {mesh}: PNG frame {fmt_s(png)}, SVG frame {fmt_s(svg)} "
+              f"({svg / png:.1f}x), {r['svg_bytes'] / 1000:.0f} KB", flush=True)
+    return rows
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--build-dir", default=os.path.join(root, "build"))
+    ap.add_argument("--frames", type=int, default=3)
+    ap.add_argument("--no-peers", action="store_true")
+    args = ap.parse_args()
+    out = os.path.join(here, "out/hidden_lines")
+    os.makedirs(out, exist_ok=True)
+    load_before = os.getloadavg()[0]
+    commit = subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], capture_output=True,
+                            text=True).stdout.strip()
+    cost = cost_rows(args.build_dir, args.frames, out)
+    seam_md = os.path.join(out, "seams.md")
+    subprocess.run([sys.executable, os.path.join(here, "seams.py"), "--exbsp",
+                    os.path.join(args.build_dir, "src/app/exbsp"), "--out", os.path.join(out, "seams"),
+                    "--markdown", seam_md], check=True, stdout=subprocess.DEVNULL)
+    peers_md = os.path.join(out, "hlr_peers.md")
+    peers_ok = False
+    if not args.no_peers and os.path.exists(os.path.join(here, "hlr_peers.py")):
+        p = subprocess.run([sys.executable, os.path.join(here, "hlr_peers.py"), "--build-dir", args.build_dir,
+                            "--markdown", peers_md], capture_output=True, text=True)
+        peers_ok = p.returncode == 0 and os.path.exists(peers_md)
+        if not peers_ok:
+            print("hidden_lines: peers skipped:\n" + p.stdout[-2000:] + p.stderr[-2000:])
+    load_after = os.getloadavg()[0]
+
+    lines = [BEGIN, "## 7. The hidden-line drawing (bench/hidden_lines.py)", "",
+             f"Written by `bench/hidden_lines.py` at {commit} on {datetime.date.today()} ({machine()}; "
+             f"load average {load_before:.1f} before, {load_after:.1f} after: read times as upper bounds, "
+             "ratios as measured side by side).", "",
+             "**Cost.** bench_render at 1024×768, exact build, median of "
+             f"{args.frames} frames. PNG frame: order + transform+clip + raster. SVG frame: order + "
+             "transform+clip + svg (visible regions, exact visible and hidden edges, the document) + write.", ""]
+    lines.append("| mesh | triangles | fragments | PNG frame | SVG frame | SVG / PNG | SVG size |")
+    lines.append("|---|---|---|---|---|---|---|")
+    for mesh, tris, frags, png, svg, size in cost:
+        lines.append(f"| {mesh} | {tris:,} | {frags:,} | {fmt_s(png)} | {fmt_s(svg)} | {svg / png:.1f}× | "
+                     f"{size / 1000:.0f} KB |".replace(",", " "))
+    lines += ["", "The goal is an SVG frame at most 5× the PNG frame. The exact edges cost little; the visible "
+              "regions (Clipper's Booleans, fragment by fragment, front to back) take nearly all of it.", "",
+              "**Seams** (bench/seams.py: exbsp's SVG rasterized by librsvg and Chromium against its own PNG, "
+              "800×600, lit, edges none; a seam pixel lies inside the part and outside the colour range of its "
+              "3×3 neighbours in the PNG):", ""]
+    with open(seam_md) as f:
+        lines.append(f.read().strip())
+    lines.append("")
+    if peers_ok:
+        lines += ["**Peers** (bench/hlr_peers.py: Open CASCADE's hidden-line removal through FreeCAD, and exbsp, "
+                  "on the same meshes and parallel views, each judged by the ray-cast oracle of "
+                  "tests/support/hidden_line_oracle.h):", ""]
+        with open(peers_md) as f:
+            lines.append(f.read().strip())
+        lines.append("")
+    lines.append(END)
+    section = "\n".join(lines)
+    results = os.path.join(here, "RESULTS.md")
+    with open(results) as f:
+        text = f.read()
+    if BEGIN in text and END in text:
+        text = text[:text.index(BEGIN)] + section + text[text.index(END) + len(END):]
+    else:
+        text = text.rstrip("\n") + "\n\n" + section + "\n"
+    with open(results, "w") as f:
+        f.write(text)
+    print(section)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
