@@ -85,7 +85,7 @@ def main():
     peers_ok = False
     if not args.no_peers and os.path.exists(os.path.join(here, "hlr_peers.py")):
         p = subprocess.run([sys.executable, os.path.join(here, "hlr_peers.py"), "--build-dir", args.build_dir,
-                            "--markdown", peers_md], capture_output=True, text=True)
+                            "--out", peers_md], capture_output=True, text=True)
         peers_ok = p.returncode == 0 and os.path.exists(peers_md)
         if not peers_ok:
             print("hidden_lines: peers skipped:\n" + p.stdout[-2000:] + p.stderr[-2000:])

@@ -589,6 +589,27 @@ TEST_F(Hostile, dash_output_means_standard_output) {
   EXPECT_FALSE(fs::exists(dir / "-"));
 }
 
+TEST_F(Hostile, every_command_writing_to_a_full_standard_output_fails_with_exit_2) {
+  // Standard output is /dev/full (every write fails with ENOSPC): the data is lost, so no
+  // command may exit 0 (issue 28). The prefix makes the shell point exbsp's standard output at
+  // /dev/full after run_cli's own redirection.
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "SKIPPED: no /dev/full on this machine";
+  write_file(dir / "t.off", triangle_off);
+  write_file(dir / "c.json",
+             R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [[[-1, 0.5], [2, 0.5]]]})");
+  const std::string to_full = "sh -c 'exec \"$0\" \"$@\" >/dev/full'";
+  for (const std::string args :
+       {"build t.off --json", "build t.off", "section t.off --plane 1,0,0,-0.25", "clip c.json",
+        "order t.off --eye 0,0,5", "render t.off -o -"}) {
+    const result r = run(args, to_full);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find("standard output"), std::string::npos) << args << ": " << r.err;
+  }
+  // The same commands to a working standard output exit 0.
+  EXPECT_EQ(run("build t.off --json").status, 0);
+  EXPECT_EQ(run("clip c.json").status, 0);
+}
+
 /// `text` with every "\n" replaced by `eol`, preceded by `prefix`.
 std::string recode(const std::string& text, const std::string& prefix, const std::string& eol) {
   std::string out = prefix;

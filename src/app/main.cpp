@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -267,6 +268,20 @@ nlohmann::json stats_json(const exbsp::build_stats& s) {
           {"peak_rss_bytes", s.peak_rss_bytes},
           {"kernel", s.kernel},
           {"heuristic", s.heuristic}};
+}
+
+/// Flushes standard output and checks that every write to it went through: a full disk or a
+/// closed pipe is an output error (exit 2), never a silent exit 0. Returns `status`.
+int finish_standard_output(int status) {
+  errno = 0;
+  std::cout.flush();
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+  if (failed)
+    throw exbsp::output_error(
+        "(standard output)",
+        std::string("cannot write output: write failed") +
+            (errno ? std::string(": ") + std::strerror(errno) : std::string()));
+  return status;
 }
 
 int run_build(const build_cli& o, bool json) {
@@ -563,20 +578,22 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    if (*build) return run_build(build_opts, json);
+    if (*build) return finish_standard_output(run_build(build_opts, json));
     if (*order) {
       if (eye.empty() && direction.empty())
         throw exbsp::usage_error("order needs --eye X,Y,Z or --direction X,Y,Z");
-      return run_order(order_opts, eye, direction, order_out);
+      return finish_standard_output(run_order(order_opts, eye, direction, order_out));
     }
-    if (*section) return run_section(section_mesh, section_format, section_plane_text, section_out);
+    if (*section)
+      return finish_standard_output(
+          run_section(section_mesh, section_format, section_plane_text, section_out));
     if (*clip) {
       exbsp::scene::clip_command(clip_in, clip_out, clip_algorithm, clip_verbose, std::cout,
                                  std::cerr);
-      return 0;
+      return finish_standard_output(0);
     }
     if (*render) {
-      return run_render(r);
+      return finish_standard_output(run_render(r));
     }
   } catch (const exbsp::limit_error& e) {
     std::cerr << "exbsp: error: " << e.what() << "\n";
