@@ -2,7 +2,8 @@
 // (Open CASCADE's HLR through FreeCAD: bench/hlr_peers.py), judged by the same independent
 // ray-cast oracle (tests/support/hidden_line_oracle.h). Issue 23, "peers table".
 //
-// The frame is the one tests/test_hidden_lines.cpp builds for its parallel views (make_view:
+// The frame is the one the hidden-line suite builds for its parallel views (tests/support/
+// hidden_line_views.h make_view:
 // the camera looks at the bounding box's centre from 4 radii away along the view direction,
 // an orthographic window of 1.3 radii around it, viewport WIDTH x HEIGHT, edges
 // "visible+hidden", crease 30 degrees), through the scene parser (parse_scene_text +
@@ -18,8 +19,8 @@
 // The peer: a JSON file {"visible": [[x0, y0, x1, y1, ...], ...], "hidden": [...]} of
 // polylines (two points or more: a flat list of grid coordinates) in the view's drawing grid
 // (1/100 pixel, y up, origin at the viewport's lower-left: vector_drawing.h). Points are
-// rounded to the nearest grid point, as exbsp's are (to_grid); the polylines of each kind are then chained
-// where exactly two ends meet (as edge_paths.h chains exbsp's), so that the oracle's run
+// rounded to the nearest grid point, as exbsp's are (to_grid); the polylines of each kind are then
+// chained where exactly two ends meet (as edge_paths.h chains exbsp's), so that the oracle's run
 // check (which skips run ends) sees the same kind of runs on both sides. They become one
 // visible_edge and one hidden_edge path of mesh 0.
 //
@@ -30,15 +31,15 @@
 // (on the plane through the look-at point) that lands on the grid's (0, 0).
 //
 // Output: one JSON object on stdout: mesh, view, direction, up, width, height, triangles,
-// feature_edges, feature_kinds, exbsp {seconds, seconds_drawing, seconds_pipeline, stages, agreement,
-// run_agreement, samples, wrong, run_points, run_wrong, ...}, peer {...} (the first --peer) and
-// peers [...] (every --peer, in order).
-// Never a timed test.
+// feature_edges, feature_kinds, exbsp {seconds, seconds_drawing, seconds_pipeline, stages,
+// agreement, run_agreement, samples, wrong, run_points, run_wrong, ...}, peer {...} (the first
+// --peer) and peers [...] (every --peer, in order). Never a timed test.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -58,6 +59,7 @@
 #include "view/standard_pipeline.h"
 #include "view/svg_writer.h"
 #include "view/vector_drawing.h"
+#include "support/hidden_line_views.h"
 
 namespace {
 
@@ -66,26 +68,22 @@ using namespace exbsp::view;
 using json = nlohmann::json;
 using clock_type = std::chrono::steady_clock;
 
-struct view_spec {
-  std::string name;
-  vec3d direction;  ///< into the scene
-  vec3d up;
-};
+using exbsp_test::view_spec;
 
-/// The named parallel views (tests/test_hidden_lines.cpp standard_views(): the same
-/// directions and view-up vectors).
-const std::vector<view_spec>& named_views() {
-  static const std::vector<view_spec> v = {
-      {"front", {0, 0, -1}, {0, 1, 0}},
-      {"back", {0, 0, 1}, {0, 1, 0}},
-      {"top", {0, -1, 0}, {0, 0, -1}},
-      {"bottom", {0, 1, 0}, {0, 0, 1}},
-      {"left", {1, 0, 0}, {0, 1, 0}},
-      {"right", {-1, 0, 0}, {0, 1, 0}},
-      {"isometric", {-1, -1, -1}, {0, 1, 0}},        // from the (+, +, +) corner
-      {"isometric-back-left", {1, -1, 1}, {0, 1, 0}},  // from the (-, +, -) corner
-  };
-  return v;
+/// The suite's view name in the command line's spelling: "Front" -> "front",
+/// "IsometricBackLeft" -> "isometric-back-left".
+std::string cli_name(const std::string& name) {
+  std::string out;
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const char c = name[i];
+    if (std::isupper(static_cast<unsigned char>(c))) {
+      if (i > 0) out += '-';
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 std::vector<double> parse_numbers(const std::string& s) {
@@ -100,8 +98,8 @@ std::vector<double> parse_numbers(const std::string& s) {
 view_spec view_of(const std::string& text, const std::string& up_text) {
   view_spec v;
   bool found = false;
-  for (const view_spec& n : named_views())
-    if (n.name == text) {
+  for (const view_spec& n : exbsp_test::standard_views())
+    if (cli_name(n.name) == text) {
       v = n;
       found = true;
     }
@@ -119,42 +117,6 @@ view_spec view_of(const std::string& text, const std::string& up_text) {
     v.up = {u[0], u[1], u[2]};
   }
   return v;
-}
-
-double norm3(const vec3d& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-
-/// tests/test_hidden_lines.cpp make_view(soup, offsets, v, parallel = true, width, height).
-frame make_parallel_view(const triangle_soup& soup, const view_spec& v, int width, int height,
-                         double crease_deg) {
-  vec3d lo = soup.vertices.at(0), hi = lo;
-  for (const vec3d& p : soup.vertices)
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  const vec3d c{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
-  const double r = norm3({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) / 2;
-  const double dn = norm3(v.direction);
-  const double dist = 4 * r;
-  const vec3d eye{c[0] - dist * v.direction[0] / dn, c[1] - dist * v.direction[1] / dn,
-                  c[2] - dist * v.direction[2] / dn};
-  const double aspect = static_cast<double>(width) / height;
-  std::ostringstream j;
-  j << std::setprecision(17) << R"({"meshes": [], "camera": {"eye": [)" << eye[0] << ", " << eye[1]
-    << ", " << eye[2] << "], \"look_at\": [" << c[0] << ", " << c[1] << ", " << c[2]
-    << "], \"up\": [" << v.up[0] << ", " << v.up[1] << ", " << v.up[2] << "]}, \"projection\": ";
-  j << R"({"type": "orthographic", "left": )" << -1.3 * r * aspect
-    << ", \"right\": " << 1.3 * r * aspect << ", \"bottom\": " << -1.3 * r
-    << ", \"top\": " << 1.3 * r << ", \"near\": " << dist - 2 * r << ", \"far\": " << dist + 2 * r
-    << "}";
-  j << R"(, "viewport": {"width": )" << width << ", \"height\": " << height
-    << R"(}, "svg": {"edges": "visible+hidden", "crease_deg": )" << crease_deg << "}}";
-  const scene::scene sc = scene::parse_scene_text(j.str(), "hlr_judge.json");
-  frame f = scene::make_frame(sc);
-  f.soup = soup;
-  f.face_colors.assign(soup.face_count, rgb8{200, 200, 200});
-  f.mesh_face_offsets = {0, soup.face_count};
-  return f;
 }
 
 json vec_json(const vector3& a) { return json::array({a.x, a.y, a.z}); }
@@ -207,7 +169,8 @@ std::vector<std::vector<grid_point>> peer_polylines(const json& j, const char* k
       throw std::runtime_error(std::string("peer: a polyline of ") + key +
                                " needs an even number (>= 4) of coordinates");
     for (std::size_t k = 0; k < item.size(); k += 2) {
-      const grid_point p{std::llround(item[k].get<double>()), std::llround(item[k + 1].get<double>())};
+      const grid_point p{std::llround(item[k].get<double>()),
+                         std::llround(item[k + 1].get<double>())};
       if (line.empty() || !(line.back() == p)) line.push_back(p);
     }
     ++pieces_in;
@@ -319,9 +282,10 @@ json stage_times(const std::string& log) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app("hlr_judge: exbsp's hidden-line drawing (and a peer's) judged by the ray-cast oracle");
-  std::string mesh_path, view_text = "front", up_text, size_text = "400x300", mapping_out,
-                         svg_out, arithmetic = "automatic";
+  CLI::App app(
+      "hlr_judge: exbsp's hidden-line drawing (and a peer's) judged by the ray-cast oracle");
+  std::string mesh_path, view_text = "front", up_text, size_text = "400x300", mapping_out, svg_out,
+                         arithmetic = "automatic";
   std::vector<std::string> peer_paths, peer_svg_outs;
   int repeats = 3;
   double crease = 30;
@@ -353,12 +317,11 @@ int main(int argc, char** argv) {
 
   try {
     int width = 0, height = 0;
-    if (std::sscanf(size_text.c_str(), "%dx%d", &width, &height) != 2 || width <= 0 ||
-        height <= 0)
+    if (std::sscanf(size_text.c_str(), "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0)
       throw std::runtime_error("--size WIDTHxHEIGHT");
     const view_spec v = view_of(view_text, up_text);
     const triangle_soup soup = read_mesh(mesh_path);
-    frame f = make_parallel_view(soup, v, width, height, crease);
+    frame f = exbsp_test::make_view(soup, {0, soup.face_count}, v, true, width, height, crease);
 
     exbsp_test::hidden_line_options opt;
     if (arithmetic == "exact")

@@ -40,15 +40,20 @@
 #include "view/standard_pipeline.h"
 #include "view/vector_drawing.h"
 #include "support/hidden_line_oracle.h"
+#include "support/hidden_line_views.h"
 #include "support/test_helpers.h"
 
 using namespace exbsp;
 using namespace exbsp::view;
 using exbsp_test::check_hidden_lines;
+using exbsp_test::general_views;
 using exbsp_test::hidden_line_options;
 using exbsp_test::hidden_line_oracle;
 using exbsp_test::hidden_line_report;
+using exbsp_test::make_view;
 using exbsp_test::point_visibility;
+using exbsp_test::standard_views;
+using exbsp_test::view_spec;
 
 namespace {
 
@@ -189,74 +194,6 @@ shape touching_boxes() {
 }
 
 // ---- views ------------------------------------------------------------------------------------
-
-struct view_spec {
-  std::string name;
-  vec3d direction;  ///< into the scene
-  vec3d up;
-};
-
-const std::vector<view_spec>& standard_views() {
-  static const std::vector<view_spec> v = {
-      {"Front", {0, 0, -1}, {0, 1, 0}},
-      {"Back", {0, 0, 1}, {0, 1, 0}},
-      {"Top", {0, -1, 0}, {0, 0, -1}},
-      {"Bottom", {0, 1, 0}, {0, 0, 1}},
-      {"Left", {1, 0, 0}, {0, 1, 0}},
-      {"Right", {-1, 0, 0}, {0, 1, 0}},
-      {"Isometric", {-1, -1, -1}, {0, 1, 0}},        // from the (+, +, +) corner
-      {"IsometricBackLeft", {1, -1, 1}, {0, 1, 0}},  // from the (-, +, -) corner
-  };
-  return v;
-}
-
-const std::vector<view_spec>& general_views() {
-  static const std::vector<view_spec> v = {
-      {"GeneralA", {-0.37, -0.52, -0.77}, {0, 1, 0}},
-      {"GeneralB", {0.61, 0.29, -0.74}, {0, 1, 0}},
-  };
-  return v;
-}
-
-/// The frame of `s` seen along `v`: the camera looks at the bounding box's centre from 4
-/// radii away; perspective (fovy fitting 1.3 radii) or orthographic (a window of 1.3 radii),
-/// through the scene parser (make_view_setup), edges "visible+hidden".
-frame make_view(const triangle_soup& soup, const std::vector<std::uint32_t>& offsets,
-                const view_spec& v, bool parallel, int width = 320, int height = 240) {
-  vec3d lo = soup.vertices.at(0), hi = lo;
-  for (const vec3d& p : soup.vertices)
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  const vec3d c{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
-  const double r = exbsp_test::dist(lo, hi) / 2;
-  const double dn = exbsp_test::norm(v.direction);
-  const double dist = 4 * r;
-  const vec3d eye{c[0] - dist * v.direction[0] / dn, c[1] - dist * v.direction[1] / dn,
-                  c[2] - dist * v.direction[2] / dn};
-  const double aspect = static_cast<double>(width) / height;
-  std::ostringstream j;
-  j << std::setprecision(17) << R"({"meshes": [], "camera": {"eye": [)" << eye[0] << ", " << eye[1]
-    << ", " << eye[2] << "], \"look_at\": [" << c[0] << ", " << c[1] << ", " << c[2]
-    << "], \"up\": [" << v.up[0] << ", " << v.up[1] << ", " << v.up[2] << "]}, \"projection\": ";
-  if (parallel)
-    j << R"({"type": "orthographic", "left": )" << -1.3 * r * aspect
-      << ", \"right\": " << 1.3 * r * aspect << ", \"bottom\": " << -1.3 * r
-      << ", \"top\": " << 1.3 * r << ", \"near\": " << dist - 2 * r << ", \"far\": " << dist + 2 * r
-      << "}";
-  else
-    j << R"({"type": "perspective", "fovy_deg": )" << 2 * std::atan(1.3 / 4) * 180 / M_PI
-      << ", \"near\": " << dist - 2 * r << ", \"far\": " << dist + 2 * r << "}";
-  j << R"(, "viewport": {"width": )" << width << ", \"height\": " << height
-    << R"(}, "svg": {"edges": "visible+hidden"}})";
-  const scene::scene sc = scene::parse_scene_text(j.str(), "hidden_lines.json");
-  frame f = scene::make_frame(sc);
-  f.soup = soup;
-  f.face_colors.assign(soup.face_count, rgb8{200, 200, 200});
-  f.mesh_face_offsets = offsets;
-  return f;
-}
 
 /// Runs the whole SVG pipeline and returns exbsp's drawing.
 vector_drawing draw(frame& f) {
