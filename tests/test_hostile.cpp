@@ -6,6 +6,7 @@
 #include <gmp.h>
 #include <gmpxx.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -28,6 +29,7 @@
 
 #include "support/cli_support.h"
 #include "support/inputs.h"
+#include "support/test_helpers.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "mesh/gmp_memory.h"
@@ -608,6 +610,36 @@ TEST_F(Hostile, every_command_writing_to_a_full_standard_output_fails_with_exit_
   // The same commands to a working standard output exit 0.
   EXPECT_EQ(run("build t.off --json").status, 0);
   EXPECT_EQ(run("clip c.json").status, 0);
+}
+
+TEST_F(Hostile, inexact_kernels_leave_non_finite_fragments_out_of_order_and_render) {
+  // The double kernel's rounded split points on pinion include NaN and infinite corners. The
+  // order document stays valid JSON (no "nan") with the count in it, the picture is drawn,
+  // both exit 0, and standard error says how many were left out (issues 25, 28).
+  const std::string pinion = exbsp_test::corpus_dir() + "pinion.off";
+  EXBSP_NEED_CORPUS(fs::exists(pinion), pinion);
+  const result order =
+      run("order " + exbsp_test::quoted(pinion) + " --kernel double --eye 100,100,100 -o o.json");
+  ASSERT_EQ(order.status, 0) << order.err;
+  const std::string text = read_file(dir / "o.json");
+  EXPECT_EQ(text.find("nan"), std::string::npos);
+  EXPECT_EQ(text.find("inf"), std::string::npos);
+  const nlohmann::json doc = nlohmann::json::parse(text);  // throws on invalid JSON
+  const std::size_t left_out = doc.at("non_finite_fragments").get<std::size_t>();
+  EXPECT_GT(left_out, 0u);
+  EXPECT_NE(order.err.find(std::to_string(left_out) + " fragments with a NaN or infinite corner"),
+            std::string::npos)
+      << order.err;
+  // The exact kernel leaves nothing out.
+  ASSERT_EQ(run("order " + exbsp_test::quoted(pinion) + " --eye 100,100,100 -o e.json").status, 0);
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir / "e.json")).at("non_finite_fragments"), 0);
+  for (const std::string out : {"p.png", "p.svg"}) {
+    const result render =
+        run("render " + exbsp_test::quoted(pinion) + " --kernel double -o " + out);
+    EXPECT_EQ(render.status, 0) << out << ": " << render.err;
+    EXPECT_TRUE(fs::exists(dir / out)) << out;
+    EXPECT_NE(render.err.find("left out of the picture"), std::string::npos) << render.err;
+  }
 }
 
 /// `text` with every "\n" replaced by `eol`, preceded by `prefix`.

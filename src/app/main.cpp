@@ -317,10 +317,15 @@ int run_order(const build_cli& o, const std::string& eye, const std::string& dir
   const exbsp::bsp tree = build_tree(o, progress);
   const auto order = use_eye ? tree.order_from_eye(where) : tree.order_for_direction(where);
   // Streamed: the document is about 600 bytes per fragment, several times the tree.
+  std::size_t non_finite = 0;
   exbsp::write_file_atomically(out_path.empty() ? "-" : out_path,
                                [&](const exbsp::output_sink& sink) {
-                                 exbsp::order_json(tree, order, where, use_eye, sink);
+                                 non_finite = exbsp::order_json(tree, order, where, use_eye, sink);
                                });
+  if (non_finite > 0)
+    std::cerr << "exbsp: warning: " << non_finite
+              << " fragments with a NaN or infinite corner (the " << tree.stats().kernel
+              << " kernel's rounded split points) were left out (\"non_finite_fragments\")\n";
   return 0;
 }
 
@@ -400,6 +405,10 @@ int run_render(const render_cli& r) {
     throw;
   }
   progress.finish();
+  if (summary.non_finite > 0)
+    std::cerr << "exbsp: warning: " << summary.non_finite
+              << " fragments with a NaN or infinite corner (the " << summary.kernel
+              << " kernel's rounded split points) were left out of the picture\n";
   if (!r.quiet) {
     char times[96];
     std::snprintf(times, sizeof times, "build %.2f s, total %.2f s", summary.build_seconds,

@@ -1,12 +1,15 @@
 // `exbsp order` output (order_json.h), built as text through core/json_text.h (17 digits).
 #include "bsp/order_json.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/json_text.h"
 
 namespace exbsp {
 
-void order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const vec3d& where,
-                bool use_eye, const output_sink& sink) {
+std::size_t order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const vec3d& where,
+                       bool use_eye, const output_sink& sink) {
   const bool exact = is_exact(tree.kernel());
   constexpr std::size_t piece = std::size_t{1} << 20;
   std::string out;
@@ -15,9 +18,18 @@ void order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const 
   json_text::append_point(out, where);
   out += ",\n \"kernel\": \"" + to_string(tree.kernel()) + "\", \"heuristic\": \"" +
          tree.stats().heuristic + "\",\n \"fragments\": [";
+  std::size_t written = 0, non_finite = 0;
   for (std::size_t n = 0; n < order.size(); ++n) {
     const fragment_d f = tree.fragment(order[n]);
-    out += n ? ",\n  {\"face\": " : "\n  {\"face\": ";
+    // An inexact kernel's rounded split point can be NaN or infinite, which JSON cannot hold:
+    // such a fragment is left out and counted.
+    if (!std::all_of(f.v.begin(), f.v.end(), [](const vec3d& p) {
+          return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+        })) {
+      ++non_finite;
+      continue;
+    }
+    out += written++ ? ",\n  {\"face\": " : "\n  {\"face\": ";
     out += std::to_string(f.face) + ", \"v\": [";
     for (int i = 0; i < 3; ++i) {
       if (i) out += ", ";
@@ -39,8 +51,9 @@ void order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const 
       out.clear();
     }
   }
-  out += "\n ]}\n";
+  out += "\n ],\n \"non_finite_fragments\": " + std::to_string(non_finite) + "}\n";
   sink(out);
+  return non_finite;
 }
 
 }  // namespace exbsp

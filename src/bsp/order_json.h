@@ -1,6 +1,8 @@
 // The `exbsp order` document (DESIGN.md section 4): {"eye" | "direction": [x, y, z],
-// "kernel", "heuristic", "fragments": [{"face", "v", "exact"}, ...]} back to front, "v" with
-// 17 significant digits, "exact" (exact kernels only) as reduced rationals.
+// "kernel", "heuristic", "fragments": [{"face", "v", "exact"}, ...], "non_finite_fragments"}
+// back to front, "v" with 17 significant digits, "exact" (exact kernels only) as reduced
+// rationals; fragments with a NaN or infinite corner (inexact kernels only) are left out and
+// counted in "non_finite_fragments".
 #pragma once
 #include <cstdint>
 #include <string>
@@ -14,8 +16,9 @@ namespace exbsp {
 /// The order document of `tree` for the fragment indices `order` (back to front), seen from
 /// the eye point `where` (use_eye) or along the direction of projection `where`, passed to
 /// `sink` in pieces of about a megabyte: the document (about 600 bytes per fragment with
-/// exact coordinates) is never held whole.
-void order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const vec3d& where,
-                bool use_eye, const output_sink& sink);
+/// exact coordinates) is never held whole. Returns the number of fragments left out for a NaN
+/// or infinite corner.
+std::size_t order_json(const bsp& tree, const std::vector<std::uint32_t>& order, const vec3d& where,
+                       bool use_eye, const output_sink& sink);
 
 }  // namespace exbsp

@@ -3,6 +3,7 @@
 // per-view stages per frame (notation in render.h).
 #include "scene/render.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -186,6 +187,7 @@ render_summary render_command(const render_request& request, std::ostream& log) 
     const view::stage w = write_stage(out, kind);
     p.add(w.name, w.run);
     p.run(f, stage_log);
+    summary.non_finite = f.non_finite;
     if (request.verbose)
       for (std::size_t k : f.rejected_meshes)
         log << "reject: " << s.meshes[k].key << " (" << s.meshes[k].file
@@ -229,6 +231,7 @@ render_summary render_command(const render_request& request, std::ostream& log) 
     const view::stage w = write_stage(frame_path(out, k), kind);
     p.add(w.name, w.run);
     p.run(f, stage_log);
+    summary.non_finite = std::max(summary.non_finite, f.non_finite);
     summary.outputs.push_back(frame_path(out, k));
   }
   summary.frames = views.size();

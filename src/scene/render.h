@@ -58,6 +58,8 @@ struct render_request {
 /// What a render did, for the one-line summary the command line prints.
 struct render_summary {
   std::size_t triangles = 0, fragments = 0, frames = 0;
+  /// Most fragments with a NaN or infinite corner left out of one frame (inexact kernels).
+  std::size_t non_finite = 0;
   double build_seconds = 0, total_seconds = 0;
   std::string kernel;
   /// Stop with limit_error when the BSP would need more fragments (0: no limit).

@@ -106,8 +106,10 @@ struct frame {
       shader;  ///< screen effects ("fog"): the painters' per-sample colour change
 
   // Counters for --verbose.
-  std::size_t culled = 0;                    ///< fragments removed by backface_culling
-  std::size_t fully_clipped = 0;             ///< fragments entirely outside the view volume
+  std::size_t culled = 0;         ///< fragments removed by backface_culling
+  std::size_t fully_clipped = 0;  ///< fragments entirely outside the view volume
+  std::size_t non_finite =
+      0;  ///< fragments with a NaN or infinite corner (inexact kernels), left out
   std::vector<std::size_t> rejected_meshes;  ///< "reject": meshes dropped by their bounding boxes
 
   /// Colour of a face id (grey when the id has no colour).

@@ -1,6 +1,7 @@
 // Standard pipeline stages (notation in stages.h).
 #include "view/stages.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
@@ -129,9 +130,18 @@ std::string transform_clip_stage(frame& f) {
   std::size_t count = 0;  // f.polygons[0..count) are this frame's; the rest are reused storage
   f.polygons.reserve(f.order.size());
   f.fully_clipped = 0;
+  f.non_finite = 0;
   std::vector<hpoint> in(3), out;
   for (std::uint32_t idx : f.order) {
     const fragment_d& fr = f.fragments.at(idx);
+    // An inexact kernel's rounded split point can be NaN or infinite: such a fragment has no
+    // place in the picture; it is counted (the caller reports it), never passed on.
+    if (!std::all_of(fr.v.begin(), fr.v.end(), [](const vec3d& p) {
+          return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+        })) {
+      ++f.non_finite;
+      continue;
+    }
     clipped_point corner[3];
     for (int k = 0; k < 3; ++k)
       corner[k] = indexed ? points[f.fragment_points[idx][k]] : transform_point(pm, vp, fr.v[k]);
@@ -167,7 +177,9 @@ std::string transform_clip_stage(frame& f) {
   }
   f.polygons.resize(count);
   return std::to_string(f.polygons.size()) + " polygons, " + std::to_string(f.fully_clipped) +
-         " fully clipped";
+         " fully clipped" +
+         (f.non_finite ? ", " + std::to_string(f.non_finite) + " with a non-finite corner left out"
+                       : std::string());
 }
 
 std::string raster_stage(frame& f) {

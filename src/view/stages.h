@@ -23,10 +23,11 @@ std::string order_stage(frame& f);
 
 /// "transform+clip": for each fragment in f.order, c = P Mv p per vertex, homogeneous clip
 /// (clip_stage.h), divide, viewport; fills f.polygons in the same order and counts the
-/// fragments that are entirely outside in f.fully_clipped. Each distinct point is transformed
-/// once; fragments entirely inside (or outside one plane) skip the clipper, with the same
-/// doubles as its path. Polygon colours: the face colour,
-/// or f.fragment_colors[fragment] when the lighting stage filled it.
+/// fragments that are entirely outside in f.fully_clipped, and those with a NaN or infinite
+/// corner (an inexact kernel's split points), which are left out, in f.non_finite. Each distinct
+/// point is transformed once; fragments entirely inside (or outside one plane) skip the clipper,
+/// with the same doubles as its path. Polygon colours: the face colour, or
+/// f.fragment_colors[fragment] when the lighting stage filled it.
 std::string transform_clip_stage(frame& f);
 
 /// "raster": painter's algorithm, no z-buffer: f.picture = background, then every polygon of
