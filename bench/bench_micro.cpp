@@ -107,7 +107,7 @@ void bm_split_triangle(benchmark::State& state) {
     std::array<int, 3> s;
     for (int k = 0; k < 3; ++k)
       s[k] = static_cast<int>(orientation(plane[0], plane[1], plane[2], t[k]));
-    if (classify_signs(s) == classification::straddling && s[0] && s[1] && s[2])
+    if (geom::classify_signs(s) == geom::classification::straddling && s[0] && s[1] && s[2])
       items.push_back({plane, t, s});
   }
   std::size_t i = 0;

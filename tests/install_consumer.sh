@@ -37,7 +37,7 @@ headers="$(cd "$prefix/include" && find exbsp -name '*.h' | sort)"
 grep -q '^exbsp/exbsp.h$' <<<"$headers" || fail "no umbrella header exbsp/exbsp.h"
 grep -q '^exbsp/core/version.h$' <<<"$headers" || fail "no exbsp/core/version.h"
 for private in bsp_tree_impl.h bsp_impl.h bsp_tree.h kernel_ geometry_ reader_util.h fast_orientation.h \
-               exact_output.h split_pattern.h json_reader.h clip_checks.h rasterizer.h; do
+               exact_output.h split_pattern.h cut_plane.h rational.h json_reader.h clip_checks.h rasterizer.h; do
   if grep -q "/$private" <<<"$headers"; then fail "private header installed: $private"; fi
 done
 cgal_users="$(cd "$prefix/include" && grep -l '#include <CGAL/' $headers || true)"

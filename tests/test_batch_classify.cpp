@@ -285,7 +285,7 @@ TEST(BatchClassify, sampled_counts_and_kept_signs_equal_the_exact_signs_point_by
         const G::fragment& f = entry(k);
         std::array<int, 3> s{};
         for (int t = 0; t < 3; ++t) s[t] = f.source == plane ? 0 : g.exact(plane, f.v[t]);
-        want.add(exbsp::classify_signs(s));
+        want.add(exbsp::geom::classify_signs(s));
       }
       ASSERT_EQ(got.splits, want.splits) << round << " " << i;
       ASSERT_EQ(got.positive, want.positive) << round << " " << i;

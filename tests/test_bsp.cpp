@@ -44,13 +44,13 @@ std::array<int, 3> signs(const tri& plane, const tri& t) {
 const tri plane_z0{P(0, 0, 0), P(1, 0, 0), P(0, 1, 0)};  // normal +z
 
 TEST(Classify, signs_to_classes) {
-  using exbsp::classification;
-  EXPECT_EQ(exbsp::classify_signs({0, 0, 0}), classification::coplanar);
-  EXPECT_EQ(exbsp::classify_signs({1, 0, 0}), classification::positive);
-  EXPECT_EQ(exbsp::classify_signs({1, 1, 1}), classification::positive);
-  EXPECT_EQ(exbsp::classify_signs({-1, 0, -1}), classification::negative);
-  EXPECT_EQ(exbsp::classify_signs({1, 0, -1}), classification::straddling);
-  EXPECT_EQ(exbsp::classify_signs({1, -1, -1}), classification::straddling);
+  using exbsp::geom::classification;
+  EXPECT_EQ(exbsp::geom::classify_signs({0, 0, 0}), classification::coplanar);
+  EXPECT_EQ(exbsp::geom::classify_signs({1, 0, 0}), classification::positive);
+  EXPECT_EQ(exbsp::geom::classify_signs({1, 1, 1}), classification::positive);
+  EXPECT_EQ(exbsp::geom::classify_signs({-1, 0, -1}), classification::negative);
+  EXPECT_EQ(exbsp::geom::classify_signs({1, 0, -1}), classification::straddling);
+  EXPECT_EQ(exbsp::geom::classify_signs({1, -1, -1}), classification::straddling);
 }
 
 // Each of the three cyclic positions of the lone vertex c, on each side.

@@ -17,15 +17,16 @@
 
 #include "clip/bbox.h"
 #include "clip/cohen_sutherland.h"
-#include "clip/exact_triangle_clip.h"
 #include "clip/homogeneous.h"
 #include "clip/liang_barsky.h"
 #include "clip/sutherland_hodgman.h"
 #include "core/errors.h"
+#include "support/exact_triangle_clip.h"
 
 namespace {
 
 using namespace exbsp::clip;
+using namespace exbsp_test::oracle;
 
 // ---------------------------------------------------------------------------------------
 // Generators and small geometry helpers

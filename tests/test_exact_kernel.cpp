@@ -35,8 +35,8 @@ struct geometry_fixture {
                                               std::uint32_t plane) {
     const std::array<int, 3> s{geom.sign(plane, f, 0), geom.sign(plane, f, 1),
                                geom.sign(plane, f, 2)};
-    EXPECT_EQ(exbsp::classify_signs(s), exbsp::classification::straddling);
-    const exbsp::split_pattern pat = exbsp::make_split_pattern(s);
+    EXPECT_EQ(exbsp::geom::classify_signs(s), exbsp::geom::classification::straddling);
+    const exbsp::geom::split_pattern pat = exbsp::geom::make_split_pattern(s);
     std::array<exact_geometry::fragment, 3> out;
     geom.split(plane, f, pat, out, scratch);
     return {out.begin(), out.begin() + pat.pieces};
@@ -223,7 +223,7 @@ TEST(ExactKernel, nested_split_points_of_mixed_exponents_lie_exactly_on_their_pl
     for (const auto& f : pieces) {
       const std::array<int, 3> s{g.geom.sign(plane, f, 0), g.geom.sign(plane, f, 1),
                                  g.geom.sign(plane, f, 2)};
-      if (exbsp::classify_signs(s) != exbsp::classification::straddling) {
+      if (exbsp::geom::classify_signs(s) != exbsp::geom::classification::straddling) {
         next.push_back(f);
         continue;
       }
@@ -280,8 +280,8 @@ TEST(ExactKernel, quotient_to_double_rounds_like_the_reduced_rational) {
   for (const auto& [num, den] : cases) {
     mpq_class q(num, den);
     q.canonicalize();
-    const double want = exbsp::rational_to_double(q.get_mpq_t());
-    const double got = exbsp::quotient_to_double(num.get_mpz_t(), den.get_mpz_t());
+    const double want = exbsp::geom::rational_to_double(q.get_mpq_t());
+    const double got = exbsp::geom::quotient_to_double(num.get_mpz_t(), den.get_mpz_t());
     EXPECT_EQ(std::signbit(got), std::signbit(want)) << num << "/" << den;
     EXPECT_EQ(got, want) << num << "/" << den;
   }

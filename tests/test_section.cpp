@@ -26,17 +26,17 @@
 #include <set>
 #include <sstream>
 
-#include "bsp/exact_output.h"
-#include "support/cli_support.h"
-#include "support/inputs.h"
-#include "clip/exact_triangle_clip.h"
 #include "clip/section.h"
 #include "core/errors.h"
+#include "geom/rational.h"
 #include "mesh/mesh_io.h"
 #include "scene/render.h"
 #include "scene/scene.h"
-#include "view/png_io.h"
+#include "support/cli_support.h"
+#include "support/exact_triangle_clip.h"
+#include "support/inputs.h"
 #include "support/test_helpers.h"
+#include "view/png_io.h"
 
 namespace {
 
@@ -425,15 +425,15 @@ TEST(Section, open_input_gives_open_polylines_and_no_cap) {
 }
 
 TEST(Section, pieces_follow_the_section_3_split_convention) {
-  using K = exbsp::clip::epeck;
+  using K = exbsp_test::oracle::epeck;
   triangle_soup s;
   s.add_triangle({0, 0, 0}, {1, 0, 1}, {0, 1, 0.25});  // no vertex on the plane
   s.add_triangle({0, 0, 0.5}, {1, 0, 1}, {0, 1, 0});   // one vertex on the plane
   s.add_triangle({0.3, 0, 1}, {1, 0, 0},
                  {0, 1, 0.7});  // c alone on the negative side... and others
   const section_result r = exbsp::section(s, {0, 0, 1, -0.5});
-  const exbsp::clip::exact_plane<K> plane{K::Point_3(0, 0, 0.5), K::Point_3(1, 0, 0.5),
-                                          K::Point_3(0, 1, 0.5)};
+  const exbsp_test::oracle::exact_plane<K> plane{K::Point_3(0, 0, 0.5), K::Point_3(1, 0, 0.5),
+                                                 K::Point_3(0, 1, 0.5)};
   std::vector<std::array<std::array<std::string, 3>, 3>> expected, got;
   auto text = [](const K::FT& x) {
     std::ostringstream o;
@@ -441,12 +441,12 @@ TEST(Section, pieces_follow_the_section_3_split_convention) {
     return o.str();
   };
   for (const auto& t : s.triangles) {
-    exbsp::clip::exact_triangle<K> e;
+    exbsp_test::oracle::exact_triangle<K> e;
     for (int i = 0; i < 3; ++i) {
       const vec3d& v = s.vertices[t.v[i]];
       e.v[i] = K::Point_3(v[0], v[1], v[2]);
     }
-    for (const auto& piece : exbsp::clip::split_triangle(e, plane).positive) {
+    for (const auto& piece : exbsp_test::oracle::split_triangle(e, plane).positive) {
       std::array<std::array<std::string, 3>, 3> x;
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k) {
@@ -600,7 +600,7 @@ TEST_F(SectionCli, json_has_kept_outline_and_cap_with_exact_rationals) {
           mpq_class q(f.at("exact")[i][k].get<std::string>());
           q.canonicalize();
           EXPECT_EQ(q.get_str(), f.at("exact")[i][k].get<std::string>()) << "not reduced";
-          EXPECT_EQ(exbsp::rational_to_double(q.get_mpq_t()), f.at("v")[i][k].get<double>());
+          EXPECT_EQ(exbsp::geom::rational_to_double(q.get_mpq_t()), f.at("v")[i][k].get<double>());
         }
   // A negative first number is a value, not an option.
   const run_result neg = run("section cube.off --plane -1,0,0,0.5");

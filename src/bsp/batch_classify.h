@@ -23,7 +23,7 @@
 #endif
 
 #include "bsp/fast_orientation.h"
-#include "bsp/split_pattern.h"
+#include "geom/split_pattern.h"
 #include "core/errors.h"
 
 namespace exbsp {
@@ -232,10 +232,10 @@ inline lane_masks classify_lanes(const std::int8_t* a, const std::int8_t* b, con
 struct side_counts {
   long long splits = 0, positive = 0, negative = 0;
   /// Counts one fragment classified c (a coplanar one counts nowhere).
-  void add(classification c) {
-    splits += c == classification::straddling;
-    positive += c == classification::positive;
-    negative += c == classification::negative;
+  void add(geom::classification c) {
+    splits += c == geom::classification::straddling;
+    positive += c == geom::classification::positive;
+    negative += c == geom::classification::negative;
   }
 };
 
@@ -429,7 +429,7 @@ class sample_batch {
         if (sg[2] == unknown_code)
           sg[2] = sg[0] * sg[1] >= 0 ? ask(geom, plane, fp, sk[2], code) : 0;
         if (sg[0] == 0 && sg[1] == 0 && sg[2] == 0) classes.join(source_[k], plane, sources);
-        out.add(classify_signs(sg));
+        out.add(geom::classify_signs(sg));
       }
     }
     out.splits += splits;

@@ -19,7 +19,7 @@
 
 #include "bsp/batch_classify.h"
 #include "bsp/engine.h"
-#include "bsp/split_pattern.h"
+#include "geom/split_pattern.h"
 #include "bsp/tree_file.h"
 #include "mesh/soup.h"
 
@@ -197,7 +197,7 @@ class basic_bsp_tree {
   std::array<int, 3> signs_against(std::uint32_t plane, const fragment& f) const {
     return {geom_.sign(plane, f, 0), geom_.sign(plane, f, 1), geom_.sign(plane, f, 2)};
   }
-  classification classify(std::uint32_t plane, const fragment& f) const;
+  geom::classification classify(std::uint32_t plane, const fragment& f) const;
   /// Back to front (DESIGN.md section 3) with side_of(plane source) = sign of the eye against
   /// a node's plane; iterative.
   template <class SideOf>

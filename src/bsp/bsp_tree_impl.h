@@ -27,11 +27,11 @@ namespace exbsp {
 /// Classification of f against the plane; skips the third predicate when the first two
 /// already have opposite signs.
 template <class G>
-classification basic_bsp_tree<G>::classify(std::uint32_t plane, const fragment& f) const {
+geom::classification basic_bsp_tree<G>::classify(std::uint32_t plane, const fragment& f) const {
   const int s0 = geom_.sign(plane, f, 0);
   const int s1 = geom_.sign(plane, f, 1);
-  if (s0 * s1 < 0) return classification::straddling;
-  return classify_signs({s0, s1, geom_.sign(plane, f, 2)});
+  if (s0 * s1 < 0) return geom::classification::straddling;
+  return geom::classify_signs({s0, s1, geom_.sign(plane, f, 2)});
 }
 
 /// Shared state of one build: options and the counters updated by all threads.
@@ -405,18 +405,18 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
         if (part.sample_signs) return part.sample.box(j);
       return box_of(fragment_at(w.list[j]));
     };
-    switch (classify_signs(s)) {
-      case classification::coplanar:
+    switch (geom::classify_signs(s)) {
+      case geom::classification::coplanar:
         part.node_fragments.push_back(ref);
         break;
-      case classification::positive:
+      case geom::classification::positive:
         positive.add(ref, box_at(j));
         break;
-      case classification::negative:
+      case geom::classification::negative:
         negative.add(ref, box_at(j));
         break;
-      case classification::straddling: {
-        const split_pattern pattern = make_split_pattern(s);
+      case geom::classification::straddling: {
+        const geom::split_pattern pattern = geom::make_split_pattern(s);
         std::array<fragment, 3> pieces;
         geom_.split(plane_source, fragment_at(ref), pattern, pieces, part.scratch);
         ctx.splits.fetch_add(1, std::memory_order_relaxed);
@@ -496,7 +496,7 @@ std::size_t basic_bsp_tree<G>::choose_splitter(const std::vector<std::uint32_t>&
   const auto cls = [&](std::size_t i, std::size_t j) {
     const fragment& candidate = resolve(part, list[i]);
     const fragment& other = resolve(part, list[j]);
-    return other.source == candidate.source ? classification::coplanar
+    return other.source == candidate.source ? geom::classification::coplanar
                                             : classify(candidate.source, other);
   };
   // A plane list[i] lies in (choose_sampled_counts' plane_key): its source triangle's. (The

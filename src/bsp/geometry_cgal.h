@@ -16,31 +16,25 @@
 #include "bsp/exact_output.h"
 #include "bsp/fast_orientation.h"
 #include "bsp/kernel_traits.h"
-#include "bsp/split_pattern.h"
 #include "bsp/tree_file.h"
 #include "core/errors.h"
+#include "geom/cut_plane.h"
+#include "geom/split_pattern.h"
 
 namespace exbsp {
 namespace detail {
 
 /// The point where [p,q] meets the plane through `a` with normal n (n = (b-a)x(c-a)),
-/// computed from p: p + fp / (fp - fq) (q - p).
+/// computed from p (geom/cut_plane.h), then collapsed (Epeck: the lazy DAG pruned).
 template <class K>
 typename K::Point_3 intersect_with_normal(const typename K::Point_3& a,
                                           const typename K::Vector_3& n,
                                           const typename K::Point_3& p,
                                           const typename K::Point_3& q) {
-  if constexpr (kernel_traits<K>::direct_intersection) {
-    return kernel_traits<K>::intersection(a, n, p, q);
-  } else {
-    using FT = typename K::FT;
-    const FT fp = n * (p - a);
-    const FT fq = n * (q - a);
-    const FT t = fp / (fp - fq);
-    typename K::Point_3 x = p + t * (q - p);
-    kernel_traits<K>::collapse(x);
-    return x;
-  }
+  typename K::Point_3 x =
+      geom::cut_plane_traits<K>().construct_plane_line_intersection_point_3_object()(a, n, p, q);
+  kernel_traits<K>::collapse(x);
+  return x;
 }
 
 }  // namespace detail
@@ -54,25 +48,26 @@ struct split_pieces {
 };
 
 /// Splits triangle t that straddles `plane` (three points; signs s of t's vertices against
-/// it) by the section 3 convention (split_pattern.h). Pieces keep t's orientation.
+/// it) by the section 3 convention (geom/split_pattern.h). Pieces keep t's orientation.
 /// Precondition: classify_signs(s) == straddling (throws usage_error otherwise).
 template <class K>
 split_pieces<K> split_triangle(const std::array<typename K::Point_3, 3>& plane,
                                const std::array<typename K::Point_3, 3>& t,
                                const std::array<int, 3>& s) {
-  if (classify_signs(s) != classification::straddling)
+  if (geom::classify_signs(s) != geom::classification::straddling)
     throw usage_error("split_triangle: the triangle does not straddle the plane");
-  const split_pattern pat = make_split_pattern(s);
-  const auto n = CGAL::cross_product(plane[1] - plane[0], plane[2] - plane[0]);
-  std::array<typename K::Point_3, 5> corner{t[0], t[1], t[2], {}, {}};
-  for (int j = 0; j < pat.new_points; ++j)
-    corner[3 + j] = detail::intersect_with_normal<K>(plane[0], n, t[pat.from[j]], t[pat.to[j]]);
+  using point = typename K::Point_3;
+  const auto n = geom::cut_plane_traits<K>().construct_normal_3_object()(plane);
   split_pieces<K> out;
-  out.count = pat.pieces;
-  for (int i = 0; i < pat.pieces; ++i) {
-    out.side[i] = pat.side[i];
-    for (int k = 0; k < 3; ++k) out.piece[i][k] = corner[pat.corner[i][k]];
-  }
+  geom::apply_split(
+      geom::make_split_pattern(s), t,
+      [&](const point& p, const point& q) {
+        return detail::intersect_with_normal<K>(plane[0], n, p, q);
+      },
+      [&](int side, const std::array<point, 3>& piece) {
+        out.side[out.count] = side;
+        out.piece[out.count++] = piece;
+      });
   return out;
 }
 
@@ -140,7 +135,7 @@ class cgal_geometry {
   }
 
   /// Writes the pieces of f (straddling `plane` with signs s, pattern pat) to out[0..pieces).
-  void split(std::uint32_t plane, const fragment& f, const split_pattern& pat,
+  void split(std::uint32_t plane, const fragment& f, const geom::split_pattern& pat,
              std::array<fragment, 3>& out, scratch& sc) const {
     const triangle& pl = sources_[plane];
     if (sc.plane != plane || !sc.normal) {

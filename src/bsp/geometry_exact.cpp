@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "bsp/exact_output.h"
+#include "geom/rational.h"
 #include "core/errors.h"
 #include "mesh/gmp_memory.h"
 
@@ -332,7 +333,7 @@ void exact_geometry::approximate(std::uint32_t id) {
     const exact_value& e = exact_of(id);
     double r = 0;
     for (int k = 0; k < 3; ++k) {
-      x.c[k] = quotient_to_double(e.x[k].get_mpz_t(), e.w.get_mpz_t());
+      x.c[k] = geom::quotient_to_double(e.x[k].get_mpz_t(), e.w.get_mpz_t());
       r = std::max(r, ulp_of(x.c[k]));
     }
     check_gmp_memory();
@@ -359,7 +360,7 @@ std::uint32_t exact_geometry::construct(std::uint32_t plane, std::uint32_t p, st
   return id;
 }
 
-void exact_geometry::split(std::uint32_t plane, const fragment& f, const split_pattern& pat,
+void exact_geometry::split(std::uint32_t plane, const fragment& f, const geom::split_pattern& pat,
                            std::array<fragment, 3>& out, scratch& sc) {
   std::array<std::uint32_t, 5> ids{f.v[0], f.v[1], f.v[2], none, none};
   for (int j = 0; j < pat.new_points; ++j)
@@ -424,7 +425,7 @@ void exact_geometry::prepare_output(const std::vector<fragment>& fragments) cons
         const std::uint32_t id = constructed[static_cast<std::size_t>(i)];
         const exact_value& e = exact_of(id);
         for (int k = 0; k < 3; ++k)
-          rounded_[id][k] = quotient_to_double(e.x[k].get_mpz_t(), e.w.get_mpz_t());
+          rounded_[id][k] = geom::quotient_to_double(e.x[k].get_mpz_t(), e.w.get_mpz_t());
         check_gmp_memory();
       });
     failure.rethrow();

@@ -32,7 +32,7 @@
 #include "bsp/engine.h"
 #include "bsp/exact_output.h"
 #include "bsp/fast_orientation.h"
-#include "bsp/split_pattern.h"
+#include "geom/split_pattern.h"
 
 namespace exbsp {
 namespace tree_file {
@@ -106,7 +106,7 @@ class exact_geometry {
     int budget = 32;
     return point_sign(plane, fp, id, budget);
   }
-  void split(std::uint32_t plane, const fragment& f, const split_pattern& pat,
+  void split(std::uint32_t plane, const fragment& f, const geom::split_pattern& pat,
              std::array<fragment, 3>& out, scratch& sc);
 
   int side_of_eye(std::uint32_t plane, const vec3d& eye) const;

@@ -25,7 +25,7 @@
 #include "bsp/batch_classify.h"
 #include "bsp/engine.h"
 #include "bsp/parallel.h"
-#include "bsp/split_pattern.h"
+#include "geom/split_pattern.h"
 #include "core/errors.h"
 
 namespace exbsp {
@@ -76,10 +76,10 @@ std::size_t choose_min_split(std::size_t n, const Classify& cls, unsigned thread
       std::uint64_t c = 0;
       for (std::size_t j = 0; j < n; ++j) {
         if (j == i) continue;
-        const classification k = cls(i, j);
-        if (k == classification::straddling) {
+        const geom::classification k = cls(i, j);
+        if (k == geom::classification::straddling) {
           if (key(++c, i) >= best.load(std::memory_order_relaxed)) return;  // cannot win
-        } else if (k == classification::coplanar && j > i) {
+        } else if (k == geom::classification::coplanar && j > i) {
           same_plane[j].store(1, std::memory_order_relaxed);
         }
       }
@@ -198,16 +198,16 @@ void count_sides(std::size_t i, const Classify& cls, std::size_t m, const Positi
     const std::size_t j = position(k);
     if (j == i) continue;
     switch (cls(i, j)) {
-      case classification::straddling:
+      case geom::classification::straddling:
         ++in.straddling;
         break;
-      case classification::positive:
+      case geom::classification::positive:
         ++in.positive;
         break;
-      case classification::negative:
+      case geom::classification::negative:
         ++in.negative;
         break;
-      case classification::coplanar:
+      case geom::classification::coplanar:
         ++in.coplanar;
         break;
     }

@@ -3,8 +3,8 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
 
-#include "bsp/exact_output.h"
 #include "bsp/kernel_traits.h"
+#include "geom/rational.h"
 
 namespace exbsp {
 
@@ -16,7 +16,7 @@ struct kernel_traits<gmpq_kernel> : kernel_traits_defaults<gmpq_kernel> {
   static constexpr bool exact = true;  // no filter: the slow reference on purpose
   static mpq_srcptr rational(const gmpq_kernel::FT& x) { return x.mpq(); }
   static gmpq_kernel::FT from_rational(mpq_srcptr q) { return CGAL::Gmpq(q); }
-  static double to_double(const gmpq_kernel::FT& x) { return rational_to_double(x.mpq()); }
+  static double to_double(const gmpq_kernel::FT& x) { return geom::rational_to_double(x.mpq()); }
 };
 
 }  // namespace exbsp

@@ -13,8 +13,8 @@ namespace exbsp {
 template <class K>
 struct kernel_traits;
 
-/// What a kernel has unless it says otherwise: no double filter, nothing to collapse, the
-/// generic intersection formula in the kernel's own FT, no rationals.
+/// What a kernel has unless it says otherwise: no double filter, nothing to collapse, no
+/// rationals. (Split points are geom/cut_plane.h's, per kernel.)
 template <class K>
 struct kernel_traits_defaults {
   /// May the certified double filter (fast_orientation.h) answer side tests?
@@ -24,12 +24,6 @@ struct kernel_traits_defaults {
   /// Drop lazy DAGs after a construction (Epeck).
   static void collapse(const typename K::Point_3&) {}
   static void collapse_vector(const typename K::Vector_3&) {}
-  /// Whether intersection() replaces the generic formula.
-  static constexpr bool direct_intersection = false;
-  template <class... A>
-  static typename K::Point_3 intersection(const A&...) {
-    return {};
-  }
   static mpq_srcptr rational(const typename K::FT&) { return nullptr; }
   /// The FT of a rational (exact kernels; saved trees).
   static typename K::FT from_rational(mpq_srcptr) { return {}; }

@@ -11,10 +11,11 @@
 //      outline projected along the dominant axis of n, each face covered w times where w is
 //      the outline's winding number around it, found by an explicit-stack traversal from
 //      the infinite face (w changes by the net use of each constrained edge crossed).
-// The split runs here on point indices rather than through clip::split_triangle on points
-// (the outline and the cap need to know which edge made each cut point), with the same
-// combinatorics, bsp/split_pattern.h (test_section checks that the pieces equal
-// split_triangle's exactly).
+// The split runs here on point indices rather than on points (the outline and the cap need
+// to know which edge made each cut point): geom::apply_split with the edge visitor, the same
+// combinatorics as the tree's (geom/split_pattern.h), and the cut points are
+// geom::plane_segment_intersection's (test_section checks that the pieces equal the clipping
+// oracle's, tests/support/exact_triangle_clip.h, exactly).
 #include "clip/section.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -26,13 +27,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <unordered_map>
 
-#include "bsp/exact_output.h"
-#include "bsp/split_pattern.h"
 #include "core/errors.h"
+#include "geom/cut_plane.h"
+#include "geom/rational.h"
+#include "geom/split_pattern.h"
+#include "geom/weld.h"
 
 namespace exbsp {
 
@@ -42,14 +44,6 @@ using K = CGAL::Exact_predicates_exact_constructions_kernel;
 using point3 = K::Point_3;
 using point2 = K::Point_2;
 constexpr std::uint32_t no_point = std::numeric_limits<std::uint32_t>::max();
-
-// Epeck's exact number type is mpq_class or boost's gmp_rational depending on CGAL's
-// configuration (as in bsp/kernel_epeck.h, which this module must not depend on).
-inline mpq_srcptr mpq_of(const mpq_class& q) { return q.get_mpq_t(); }
-template <class Number>
-mpq_srcptr mpq_of(const Number& q) {
-  return q.backend().data();
-}
 
 struct tri {
   std::array<std::uint32_t, 3> v;
@@ -70,39 +64,31 @@ struct exact_mesh {
 
 std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; }
 
-struct vec3d_hash {
-  std::size_t operator()(const vec3d& v) const {
-    std::size_t h = 0;
-    for (double x : v) {
-      std::uint64_t bits;
-      std::memcpy(&bits, &x, sizeof bits);
-      h = (h ^ bits) * 0x100000001b3ull + (h >> 29);
-    }
-    return h;
-  }
-};
-
-/// The soup as an exact mesh, vertices with equal coordinates merged (-0 equals +0).
+/// The soup as an exact mesh: the vertices the triangles use, in order of first use, welded
+/// by geom::weld (equal doubles, so -0 equals +0); a welded point keeps its first vertex's
+/// coordinates with zeros made +0 (the doubles written out for it).
 exact_mesh from_soup(const triangle_soup& soup) {
-  exact_mesh m;
-  std::unordered_map<vec3d, std::uint32_t, vec3d_hash> index;
-  std::vector<std::uint32_t> id(soup.vertices.size(), no_point);
-  m.tris.reserve(soup.triangles.size());
-  for (const soup_triangle& t : soup.triangles) {
-    tri out{{}, t.face};
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t v = t.v[k];
-      if (id[v] == no_point) {
-        const vec3d& p = soup.vertices[v];
-        const vec3d q{p[0] + 0.0, p[1] + 0.0, p[2] + 0.0};
-        auto [it, fresh] = index.emplace(q, 0u);
-        if (fresh) it->second = m.add(point3(q[0], q[1], q[2]), q);
-        id[v] = it->second;
+  std::vector<std::uint32_t> use(soup.vertices.size(), no_point);  // vertex -> first-use rank
+  std::vector<vec3d> used;
+  for (const soup_triangle& t : soup.triangles)
+    for (std::uint32_t v : t.v)
+      if (use[v] == no_point) {
+        use[v] = static_cast<std::uint32_t>(used.size());
+        used.push_back(soup.vertices[v]);
       }
-      out.v[k] = id[v];
+  const geom::welded_ids welded = geom::weld(used);
+  exact_mesh m;
+  m.pts.reserve(welded.count);
+  m.input.reserve(welded.count);
+  for (std::size_t i = 0; i < used.size(); ++i)
+    if (welded.id[i] == m.pts.size()) {  // the first vertex of its welded point
+      const vec3d q{used[i][0] + 0.0, used[i][1] + 0.0, used[i][2] + 0.0};
+      m.add(point3(q[0], q[1], q[2]), q);
     }
-    m.tris.push_back(out);
-  }
+  m.tris.reserve(soup.triangles.size());
+  for (const soup_triangle& t : soup.triangles)
+    m.tris.push_back(
+        {{welded.id[use[t.v[0]]], welded.id[use[t.v[1]]], welded.id[use[t.v[2]]]}, t.face});
   return m;
 }
 
@@ -133,7 +119,9 @@ struct cut_plane {
     for (int k = 1; k < 3; ++k)
       if (std::fabs(c[k]) > std::fabs(c[axis])) axis = k;
   }
-  int side(const point3& q) const { return static_cast<int>(p.oriented_side(q)); }
+  int side(const point3& q) const {
+    return geom::cut_plane_traits<K>().oriented_side_3_object()(p, q);
+  }
   point2 project(const point3& q) const { return {q[(axis + 1) % 3], q[(axis + 2) % 3]}; }
   /// The point of the plane above the 2D point (inverse of project).
   point3 lift(const point2& q) const {
@@ -146,22 +134,6 @@ struct cut_plane {
     return {c[0], c[1], c[2]};
   }
 };
-
-/// The exact point where [a, b] (strictly opposite sides) meets the plane: X = (fa b - fb a) /
-/// (fa - fb) computed on the exact values and wrapped as a one-level lazy point.
-point3 crossing(const cut_plane& plane, const point3& a, const point3& b) {
-  using ET = K::Exact_kernel::FT;
-  const auto& ea = CGAL::exact(a);
-  const auto& eb = CGAL::exact(b);
-  const auto& ep = CGAL::exact(plane.p);
-  const ET fa = ep.a() * ea.x() + ep.b() * ea.y() + ep.c() * ea.z() + ep.d();
-  const ET fb = ep.a() * eb.x() + ep.b() * eb.y() + ep.c() * eb.z() + ep.d();
-  const ET den = fa - fb;
-  point3 out{K::FT(ET((fa * eb.x() - fb * ea.x()) / den)),
-             K::FT(ET((fa * eb.y() - fb * ea.y()) / den)),
-             K::FT(ET((fa * eb.z() - fb * ea.z()) / den))};
-  return out;
-}
 
 /// In-plane edge uses (key: smaller index first).
 struct edge_use {
@@ -412,7 +384,7 @@ cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32
     auto [it, fresh] = cut_point.emplace(key, 0u);
     if (fresh) {
       it->second =
-          m.add(crossing(plane, m.pts[std::min(a, b)], m.pts[std::max(a, b)]), {NAN, NAN, NAN});
+          m.add(geom::plane_segment_intersection<K>(plane.p, m.pts[a], m.pts[b]), {NAN, NAN, NAN});
       sign.push_back(0);
       ++stats.cut_points;
     }
@@ -436,27 +408,23 @@ cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32
   for (const tri& t : m.tris) {
     if (collinear_triangle(m, t)) ++stats.degenerate_input;
     const std::array<int, 3> s{side(t.v[0]), side(t.v[1]), side(t.v[2])};
-    const classification c = classify_signs(s);
-    if (c == classification::positive || c == classification::coplanar) {
+    const geom::classification c = geom::classify_signs(s);
+    if (c == geom::classification::positive || c == geom::classification::coplanar) {
       r.kept.push_back(t);
       ++stats.kept_whole;
-      if (c == classification::coplanar) ++stats.in_plane;
+      if (c == geom::classification::coplanar) ++stats.in_plane;
       continue;
     }
-    if (c == classification::negative) {
+    if (c == geom::classification::negative) {
       ++stats.removed;
       in_plane_edges(t, removed_edges);
       continue;
     }
     ++stats.split;
-    const split_pattern pattern = make_split_pattern(s);
-    std::array<std::uint32_t, 5> corner{t.v[0], t.v[1], t.v[2], 0, 0};
-    for (int j = 0; j < pattern.new_points; ++j)
-      corner[3 + j] = cross(t.v[pattern.from[j]], t.v[pattern.to[j]]);
-    for (int k = 0; k < pattern.pieces; ++k) {
-      const auto& p = pattern.corner[k];
-      emit(pattern.side[k], tri{{corner[p[0]], corner[p[1]], corner[p[2]]}, t.face});
-    }
+    geom::apply_split(geom::make_split_pattern(s), t.v, cross,
+                      [&](int piece_side, const std::array<std::uint32_t, 3>& v) {
+                        emit(piece_side, tri{v, t.face});
+                      });
   }
 
   // Pass 2: merge equal points on the plane (non-conforming input only), count edge uses.
@@ -609,7 +577,7 @@ std::vector<section_chain> chain_edges(const std::vector<directed_edge>& edges) 
 double coordinate_double(const exact_mesh& m, std::uint32_t i, int k) {
   const double d = m.input[i][k];
   if (!std::isnan(d)) return d;
-  return rational_to_double(mpq_of(CGAL::exact(m.pts[i][k])));
+  return geom::rational_to_double(geom::mpq_of(CGAL::exact(m.pts[i][k])));
 }
 
 }  // namespace
@@ -642,7 +610,8 @@ section_result section(const triangle_soup& soup, const section_plane& plane,
       section_point p;
       for (int k = 0; k < 3; ++k) {
         p.v[k] = coordinate_double(m, i, k);
-        if (options.exact_text) p.exact[k] = rational_to_string(mpq_of(CGAL::exact(m.pts[i][k])));
+        if (options.exact_text)
+          p.exact[k] = geom::rational_to_string(geom::mpq_of(CGAL::exact(m.pts[i][k])));
       }
       out.points.push_back(std::move(p));
     }

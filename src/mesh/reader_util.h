@@ -108,6 +108,9 @@ std::size_t bounded_reserve(std::uint64_t declared, std::size_t bytes_left,
 
 /// Merges vertices with exactly equal coordinates (== on doubles, so -0 and +0 merge; the
 /// first occurrence is stored). Used by the STL reader, whose facets carry coordinates.
+/// The rule is geom::weld's (geom/weld.h), but this one stays: mesh lies under geom, and it
+/// welds while the file is read, one vertex at a time, with the vertex limit checked on the
+/// way and the line of the vertex that exceeds it in the message.
 class vertex_welder {
  public:
   explicit vertex_welder(triangle_soup& soup) : soup_(soup) {}

@@ -1,6 +1,7 @@
 // The combinatorial half of the split convention (DESIGN.md section 3), shared by every
-// geometry (CGAL kernels and exbsp's own exact points): which new points a straddling
-// triangle needs, and which corners each piece takes, from the three vertex signs alone.
+// geometry (CGAL kernels and exbsp's own exact points) and by every user of it (the tree, the
+// section, the clipping oracle of the tests): which new points a straddling triangle needs,
+// and which corners each piece takes, from the three vertex signs alone.
 //
 // Notation: parent triangle t = (t0, t1, t2); corner code 0..2 = parent vertex t[code],
 // 3 + j = the j-th new point, which lies on segment [t[from[j]], t[to[j]]].
@@ -13,7 +14,7 @@
 #include <array>
 #include <cstdint>
 
-namespace exbsp {
+namespace exbsp::geom {
 
 enum class classification { coplanar, positive, negative, straddling };
 
@@ -66,4 +67,17 @@ inline split_pattern make_split_pattern(const std::array<int, 3>& s) {
   return p;
 }
 
-}  // namespace exbsp
+/// Splits triangle t (corners of any type: points, point indices) by pattern p: new point j
+/// is cut(t[from[j]], t[to[j]]), made in order j = 0, 1 (the edge visitor: it sees which
+/// edge it cuts); then emit(side, {corner, corner, corner}) runs once per piece, in order.
+template <class Corner, class Cut, class Emit>
+void apply_split(const split_pattern& p, const std::array<Corner, 3>& t, Cut&& cut, Emit&& emit) {
+  std::array<Corner, 5> corner{t[0], t[1], t[2], Corner{}, Corner{}};
+  for (int j = 0; j < p.new_points; ++j) corner[3 + j] = cut(t[p.from[j]], t[p.to[j]]);
+  for (int k = 0; k < p.pieces; ++k) {
+    const auto& c = p.corner[k];
+    emit(p.side[k], std::array<Corner, 3>{corner[c[0]], corner[c[1]], corner[c[2]]});
+  }
+}
+
+}  // namespace exbsp::geom

@@ -1,4 +1,7 @@
-// Exact clipping and splitting of triangles by planes with a CGAL kernel (CAD section views).
+// The tests' oracle for exact clipping and splitting of triangles by planes with a CGAL kernel:
+// triangles as points (no shared vertices, no outline), checked against Sutherland–Hodgman in
+// test_clip and against the section's pieces in test_section. Test support only, not in the
+// library.
 //
 // Notation (DESIGN.md section 3): a cut plane is three points (a, b, c); its positive side
 // is where (b - a) x (c - a) points, i.e. p is on the positive side when
@@ -11,13 +14,15 @@
 //   - one vertex z on the plane, the other two opposite: relabel cyclically to (z, a, b);
 //     X = plane ∩ [a, b]; pieces (z, a, X) on a's side and (z, X, b) on b's side.
 // The classification and the split's combinatorics (which new points, which corners per
-// piece) are the BSP's own, bsp/split_pattern.h: one split for the tree, clipping and
-// sections (section.cpp); only the construction of the points is here.
+// piece) are the BSP's own, geom/split_pattern.h, and the cut points are
+// geom::plane_segment_intersection's (geom/cut_plane.h): one split for the tree, this oracle
+// and sections (clip/section.cpp).
 // Pieces keep the parent's orientation. With exact constructions (Epeck, Gmpq) the pieces of
 // both sides tile the parent exactly.
 //
-// The templates are explicitly instantiated once (exact_triangle_clip.cpp) for exbsp::clip::epeck
-// and exbsp::clip::gmpq_kernel; other kernels (e.g. Epick) instantiate them implicitly.
+// The templates are explicitly instantiated once (exact_triangle_clip.cpp) for
+// exbsp_test::oracle::epeck and exbsp_test::oracle::gmpq_kernel; other kernels (e.g. Epick)
+// instantiate them implicitly.
 #pragma once
 #include <array>
 #include <string>
@@ -27,10 +32,11 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
 
-#include "bsp/split_pattern.h"
 #include "core/errors.h"
+#include "geom/cut_plane.h"
+#include "geom/split_pattern.h"
 
-namespace exbsp::clip {
+namespace exbsp_test::oracle {
 
 using epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 using gmpq_kernel = CGAL::Simple_cartesian<CGAL::Gmpq>;
@@ -48,8 +54,8 @@ struct exact_plane {
 };
 
 /// How a triangle lies with respect to a plane (see the notation above): the BSP's
-/// classification (bsp/split_pattern.h).
-using triangle_plane_side = exbsp::classification;
+/// classification (geom/split_pattern.h).
+using triangle_plane_side = exbsp::geom::classification;
 
 /// Both sides of a split: `positive` holds the pieces in the closed positive side (and a
 /// coplanar triangle), `negative` those in the open negative side, each in piece order.
@@ -100,25 +106,23 @@ namespace detail {
 template <class K>
 void require_plane(const exact_plane<K>& plane, const char* function) {
   if (CGAL::collinear(plane.a, plane.b, plane.c))
-    throw usage_error(std::string(function) + ": the three plane points are collinear");
+    throw exbsp::usage_error(std::string(function) + ": the three plane points are collinear");
+}
+
+template <class K>
+typename exbsp::geom::cut_plane_traits<K>::Plane_3 points_of(const exact_plane<K>& plane) {
+  return {plane.a, plane.b, plane.c};
 }
 
 template <class K>
 int side_of(const exact_plane<K>& plane, const typename K::Point_3& p) {
-  return static_cast<int>(CGAL::orientation(plane.a, plane.b, plane.c, p));
+  return exbsp::geom::cut_plane_traits<K>().oriented_side_3_object()(points_of(plane), p);
 }
 
 template <class K>
-typename K::Point_3 crossing_unchecked(const exact_plane<K>& plane, const typename K::Point_3& p0,
-                                       const typename K::Point_3& q0) {
-  const bool swap = CGAL::compare_xyz(q0, p0) == CGAL::SMALLER;
-  const typename K::Point_3& p = swap ? q0 : p0;
-  const typename K::Point_3& q = swap ? p0 : q0;
-  const typename K::Vector_3 n = CGAL::cross_product(plane.b - plane.a, plane.c - plane.a);
-  const typename K::FT fp = n * (p - plane.a);
-  const typename K::FT fq = n * (q - plane.a);
-  const typename K::FT t = fp / (fp - fq);
-  return p + t * (q - p);
+typename K::Point_3 crossing_unchecked(const exact_plane<K>& plane, const typename K::Point_3& p,
+                                       const typename K::Point_3& q) {
+  return exbsp::geom::plane_segment_intersection<K>(points_of(plane), p, q);
 }
 
 template <class K>
@@ -126,7 +130,7 @@ exact_split<K> split_unchecked(const exact_triangle<K>& t, const exact_plane<K>&
   const std::array<int, 3> s{side_of(plane, t.v[0]), side_of(plane, t.v[1]),
                              side_of(plane, t.v[2])};
   exact_split<K> out;
-  switch (exbsp::classify_signs(s)) {
+  switch (exbsp::geom::classify_signs(s)) {
     case triangle_plane_side::coplanar:
     case triangle_plane_side::positive:
       out.positive.push_back(t);
@@ -137,15 +141,13 @@ exact_split<K> split_unchecked(const exact_triangle<K>& t, const exact_plane<K>&
     case triangle_plane_side::straddling:
       break;
   }
-  const exbsp::split_pattern pattern = exbsp::make_split_pattern(s);
-  std::array<typename K::Point_3, 5> corner{t.v[0], t.v[1], t.v[2], {}, {}};
-  for (int j = 0; j < pattern.new_points; ++j)
-    corner[3 + j] = crossing_unchecked(plane, t.v[pattern.from[j]], t.v[pattern.to[j]]);
-  for (int k = 0; k < pattern.pieces; ++k) {
-    const auto& c = pattern.corner[k];
-    (pattern.side[k] > 0 ? out.positive : out.negative)
-        .push_back(exact_triangle<K>{{corner[c[0]], corner[c[1]], corner[c[2]]}});
-  }
+  using point = typename K::Point_3;
+  exbsp::geom::apply_split(
+      exbsp::geom::make_split_pattern(s), t.v,
+      [&](const point& p, const point& q) { return crossing_unchecked(plane, p, q); },
+      [&](int side, const std::array<point, 3>& piece) {
+        (side > 0 ? out.positive : out.negative).push_back(exact_triangle<K>{piece});
+      });
   return out;
 }
 
@@ -154,8 +156,9 @@ exact_split<K> split_unchecked(const exact_triangle<K>& t, const exact_plane<K>&
 template <class K>
 triangle_plane_side classify_triangle(const exact_triangle<K>& t, const exact_plane<K>& plane) {
   detail::require_plane(plane, "classify_triangle");
-  return exbsp::classify_signs({detail::side_of(plane, t.v[0]), detail::side_of(plane, t.v[1]),
-                                detail::side_of(plane, t.v[2])});
+  return exbsp::geom::classify_signs({detail::side_of(plane, t.v[0]),
+                                      detail::side_of(plane, t.v[1]),
+                                      detail::side_of(plane, t.v[2])});
 }
 
 template <class K>
@@ -164,7 +167,7 @@ typename K::Point_3 plane_segment_intersection(const exact_plane<K>& plane,
                                                const typename K::Point_3& q) {
   detail::require_plane(plane, "plane_segment_intersection");
   if (detail::side_of(plane, p) * detail::side_of(plane, q) >= 0)
-    throw usage_error(
+    throw exbsp::usage_error(
         "plane_segment_intersection: the endpoints are not strictly on opposite sides");
   return detail::crossing_unchecked(plane, p, q);
 }
@@ -215,4 +218,4 @@ std::vector<exact_triangle<K>> clip_triangle(const exact_triangle<K>& t,
 EXBSP_CLIP_EXACT_TEMPLATES(extern, epeck)
 EXBSP_CLIP_EXACT_TEMPLATES(extern, gmpq_kernel)
 
-}  // namespace exbsp::clip
+}  // namespace exbsp_test::oracle
