@@ -43,7 +43,11 @@ struct pending_slot {
   char path[PATH_MAX + 1];
 };
 std::array<pending_slot, max_pending> pending;
-constexpr int cleanup_signals[] = {SIGINT, SIGTERM, SIGHUP};
+// Every catchable signal whose default action ends the process without a fault (faults,
+// SIGSEGV and the like, are left to the runtime and the sanitizers): a full disk under
+// `ulimit -f` (SIGXFSZ), a closed pipe, Ctrl-\ (SIGQUIT), timers and the user signals.
+constexpr int cleanup_signals[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGPIPE, SIGALRM,   SIGTERM,
+                                   SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF};
 
 extern "C" void remove_pending_and_reraise(int sig) {
   const int saved = errno;
