@@ -330,13 +330,19 @@ class t_junction_mender {
       const double len2 = dx * dx + dy * dy, len = std::sqrt(len2);
       on_edge_.clear();
       cells_.clear();
-      const long long steps = static_cast<long long>(len / (cell / 2)) + 1;
-      for (long long s = 0; s <= steps; ++s) {
-        const double t = static_cast<double>(s) / static_cast<double>(steps);
-        const long long cx = cell_of(a.X + std::llround(t * dx)),
-                        cy = cell_of(a.Y + std::llround(t * dy));
-        for (long long ox = -1; ox <= 1; ++ox)
-          for (long long oy = -1; oy <= 1; ++oy) cells_.push_back(key(cx + ox, cy + oy));
+      // The cells met by the edge's one-unit neighbourhood: the edge in pieces of at most one
+      // cell, each piece's box grown by two units (one for the neighbourhood, one for the
+      // rounding of the piece's ends). Most edges are shorter than a cell: one to four cells.
+      const long long pieces = static_cast<long long>(len / cell) + 1;
+      for (long long s = 0; s < pieces; ++s) {
+        const double t0 = static_cast<double>(s) / static_cast<double>(pieces),
+                     t1 = static_cast<double>(s + 1) / static_cast<double>(pieces);
+        const long long x0 = a.X + std::llround(t0 * dx), x1 = a.X + std::llround(t1 * dx);
+        const long long y0 = a.Y + std::llround(t0 * dy), y1 = a.Y + std::llround(t1 * dy);
+        const long long cx0 = cell_of(std::min(x0, x1) - 2), cx1 = cell_of(std::max(x0, x1) + 2);
+        const long long cy0 = cell_of(std::min(y0, y1) - 2), cy1 = cell_of(std::max(y0, y1) + 2);
+        for (long long cx = cx0; cx <= cx1; ++cx)
+          for (long long cy = cy0; cy <= cy1; ++cy) cells_.push_back(key(cx, cy));
       }
       std::sort(cells_.begin(), cells_.end());
       cells_.erase(std::unique(cells_.begin(), cells_.end()), cells_.end());
