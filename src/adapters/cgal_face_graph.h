@@ -2,7 +2,7 @@
 // graph traits, ...) to a triangle_soup, and triangles (BSP fragments, a section) back into
 // a FaceGraph. Header-only; the consumer brings CGAL (and its flags) for its own mesh.
 //
-// Notation (DESIGN.md section 2): the faces are taken in faces(g) order; the face at position
+// Notation (docs/contract.md "Input"): the faces are taken in faces(g) order; the face at position
 // f (0-based) with corners (v0, ..., v_{k-1}) = vertices_around_face(halfedge(face, g), g)
 // becomes the fan (v0, v_i, v_{i+1}), i = 1..k-2, every triangle with face id f (for a
 // Surface_mesh without removed faces, f = the face's idx()). No face is dropped: exactly

@@ -1,7 +1,7 @@
 // OpenMesh adapters (component exbsp::openmesh): an OpenMesh TriMesh or PolyMesh (any traits)
 // to a triangle_soup, and the BSP's fragments or a section back to an OpenMesh mesh.
 //
-// Notation (DESIGN.md section 2): a face f with corners (v0, ..., v_{k-1}) = mesh.fv_range(f),
+// Notation (docs/contract.md "Input"): a face f with corners (v0, ..., v_{k-1}) = mesh.fv_range(f),
 // k >= 3, becomes the fan (v0, v_i, v_{i+1}), i = 1..k-2, every triangle with face id
 // f.idx(), so fragments and section triangles map straight back to the mesh's faces. No face
 // is dropped: exactly degenerate triangles stay in the soup (the BSP skips and counts them in

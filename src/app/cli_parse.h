@@ -1,5 +1,5 @@
-// Command-line parsing for `exbsp` (DESIGN.md section 4): the text formats of its option
-// values, mesh input from a file or standard input, and suggestions for misspelled commands
+// Command-line parsing for `exbsp` (docs/contract.md "Command line"): the text formats of its
+// option values, mesh input from a file or standard input, and suggestions for misspelled commands
 // and options. Kept apart from main.cpp so the tests can call it; every function throws
 // usage_error (exit 2) with a message naming the option.
 #pragma once

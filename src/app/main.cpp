@@ -1,6 +1,6 @@
-// exbsp command line (DESIGN.md section 4): glue only. Library exceptions become messages
-// "exbsp: error: ..." on stderr and exit codes: 2 bad input, bad usage or an output that cannot
-// be written; 3 resource limit (--max-fragments, whose default comes from the available
+// exbsp command line (docs/contract.md "Command line"): glue only. Library exceptions become
+// messages "exbsp: error: ..." on stderr and exit codes: 2 bad input, bad usage or an output that
+// cannot be written; 3 resource limit (--max-fragments, whose default comes from the available
 // memory, or out of memory).
 #include <CLI/CLI.hpp>
 #include <omp.h>

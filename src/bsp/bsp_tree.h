@@ -1,7 +1,7 @@
 // The BSP tree, templated on a geometry G (geometry_cgal.h for the CGAL kernels,
 // geometry_exact.h for exbsp's own exact points), explicitly instantiated in bsp_<kernel>.cpp.
 //
-// Notation (DESIGN.md section 3):
+// Notation (docs/contract.md "The BSP"):
 //   triangle (a,b,c), normal n = (b-a)x(c-a), f(p) = sign of orientation(a,b,c,p):
 //   f > 0 on the side n points to. A node's plane is the plane of its splitter's SOURCE
 //   input triangle (three input points, doubles): a fragment lies exactly in its source's
@@ -198,8 +198,8 @@ class basic_bsp_tree {
     return {geom_.sign(plane, f, 0), geom_.sign(plane, f, 1), geom_.sign(plane, f, 2)};
   }
   geom::classification classify(std::uint32_t plane, const fragment& f) const;
-  /// Back to front (DESIGN.md section 3) with side_of(plane source) = sign of the eye against
-  /// a node's plane; iterative.
+  /// Back to front (docs/contract.md "The BSP") with side_of(plane source) = sign of the eye
+  /// against a node's plane; iterative.
   template <class SideOf>
   std::vector<std::uint32_t> traverse(SideOf side_of, bool back_to_front) const {
     std::vector<std::uint32_t> out;

@@ -168,7 +168,7 @@ class bsp {
   exact_triangle fragment_exact(std::size_t i) const;
 
   /// Fragment indices back to front (or front to back) for a perspective eye point
-  /// (DESIGN.md section 3).
+  /// (docs/contract.md "The BSP").
   /// Per frame: the tree does not depend on the viewpoint, so build once and call this (or
   /// order_for_direction) for every new camera; no rebuild. Cost: one exact side test of the
   /// eye per node and one visit per fragment, O(nodes + fragments), allocating only the

@@ -1,5 +1,6 @@
-// Splitter heuristics of the BSP build (DESIGN.md section 3): which fragment of a node's list
-// gives the node its plane. Private to src/bsp; the tree (bsp_tree_impl.h) calls choose_splitter.
+// Splitter heuristics of the BSP build (docs/contract.md "The BSP"): which fragment of a node's
+// list gives the node its plane. Private to src/bsp; the tree (bsp_tree_impl.h) calls
+// choose_splitter.
 //
 // Notation: a node's list holds n >= 2 fragments at positions 0..n-1 (list order). cls(i, j) is
 // the exact classification of the fragment at position j against the plane of the fragment at

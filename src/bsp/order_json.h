@@ -1,4 +1,4 @@
-// The `exbsp order` document (DESIGN.md section 4): {"eye" | "direction": [x, y, z],
+// The `exbsp order` document (docs/contract.md "Command line"): {"eye" | "direction": [x, y, z],
 // "kernel", "heuristic", "fragments": [{"face", "v", "exact"}, ...], "non_finite_fragments"}
 // back to front, "v" with 17 significant digits, "exact" (exact kernels only) as reduced
 // rationals; fragments with a NaN or infinite corner (inexact kernels only) are left out and

@@ -2,7 +2,7 @@
 // (plane, coplanar fragments, children) and its cells, in the painter's order, so that other
 // primitives (curves, lines, points) can be split and ordered against the node planes exactly.
 //
-// Notation (DESIGN.md section 3): node N has the plane of the input triangle (a, b, c) =
+// Notation (docs/contract.md "The BSP"): node N has the plane of the input triangle (a, b, c) =
 // N.plane; h_N(p) = orientation(a, b, c, p), positive on the side n = (b - a) x (c - a)
 // points to. Each side of N holds a subtree or nothing; an empty side is a CELL: the convex
 // region (open or closed at its walls) cut out by the half-spaces on the path from the root,

@@ -4,7 +4,7 @@
 // an axis-aligned box (a 2D window or a 3D box) is the closed set min <= p <= max,
 // component-wise. A polygon is a vector of its vertices in order (closed implicitly:
 // the last vertex connects to the first). A fan triangulation of a polygon v0..v(k-1)
-// is (v0, v[i], v[i+1]) for i = 1..k-2, as in DESIGN.md section 2.
+// is (v0, v[i], v[i+1]) for i = 1..k-2, as in docs/contract.md "Input".
 #pragma once
 #include <array>
 #include <cstddef>

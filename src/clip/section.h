@@ -1,6 +1,6 @@
 // Exact sections of triangle meshes by planes (CAD section views): `exbsp section` and the
-// scenes' "clip_planes" (DESIGN.md sections 4 and 5). This header hides CGAL; the work is done
-// in section.cpp on CGAL's Epeck kernel.
+// scenes' "clip_planes" (docs/contract.md, "Command line" and "Scenes"). This header hides CGAL;
+// the work is done in section.cpp on CGAL's Epeck kernel.
 //
 // Notation: the plane P = (A, B, C, D) holds four doubles; n = (A, B, C) and the side of a
 // point p is the exact sign of f(p) = A*px + B*py + C*pz + D (evaluated on the exact input,
@@ -116,13 +116,13 @@ section_result section(const triangle_soup& soup, const section_plane& plane,
 /// half-spaces). With `caps`, each plane that cuts a closed part adds its cap as the new face
 /// soup.face_count + i (i = index of the plane), and later planes cut earlier caps like any
 /// other face, so the result stays closed. The cut is exact; the returned soup holds the exact
-/// points rounded once to the nearest doubles (the BSP's input is doubles, DESIGN.md
-/// section 2). face_count becomes soup.face_count + planes.size() with caps, unchanged without.
+/// points rounded once to the nearest doubles (the BSP's input is doubles, docs/contract.md
+/// "Input"). face_count becomes soup.face_count + planes.size() with caps, unchanged without.
 /// Throws usage_error for a bad plane.
 triangle_soup clip_soup(const triangle_soup& soup, const std::vector<section_plane>& planes,
                         bool caps);
 
-/// Output formats of `exbsp section` (DESIGN.md section 4).
+/// Output formats of `exbsp section` (docs/contract.md "Command line").
 ///   json: {"plane", "closed", "kept": [{"face", "v", "exact"}], "outline": [{"closed", "v",
 ///         "exact"}], "cap": [{"v", "exact"}], "stats"} (doubles with 17 significant digits);
 ///   off:  kept ∪ cap as one OFF mesh, shared points merged exactly (one vertex each);

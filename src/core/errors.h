@@ -1,6 +1,6 @@
 // exbsp error hierarchy: the library reports every failure by throwing one of these;
-// it never aborts or exits. The command line maps them to exit codes (DESIGN.md section 4):
-// input_error, scene_error, usage_error and output_error -> 2, limit_error (and
+// it never aborts or exits. The command line maps them to exit codes (docs/contract.md "Command
+// line"): input_error, scene_error, usage_error and output_error -> 2, limit_error (and
 // std::bad_alloc) -> 3.
 #pragma once
 #include <stdexcept>

@@ -1,5 +1,5 @@
-// JSON text for exbsp's coordinate outputs (`order`, `section`). DESIGN.md section 4 fixes
-// doubles as 17 significant digits ("%.17g"); nlohmann-json prints the shortest round-trip
+// JSON text for exbsp's coordinate outputs (`order`, `section`). docs/contract.md "Command line"
+// fixes doubles as 17 significant digits ("%.17g"); nlohmann-json prints the shortest round-trip
 // form instead, so these few pieces are written as text here, once, and the documents that
 // use them (bsp/order_json.h, clip/section_output.cpp) share them.
 #pragma once

@@ -1,4 +1,4 @@
-// The combinatorial half of the split convention (DESIGN.md section 3), shared by every
+// The combinatorial half of the split convention (docs/contract.md "The BSP"), shared by every
 // geometry (CGAL kernels and exbsp's own exact points) and by every user of it (the tree, the
 // section, the clipping oracle of the tests): which new points a straddling triangle needs,
 // and which corners each piece takes, from the three vertex signs alone.

@@ -1,7 +1,7 @@
 // The Python module `exbsp` (pybind11, numpy arrays in and out); docs/python.md is its manual.
 //
 // Notation: a mesh is (vertices, faces[, face_ids]): vertices an (n, 3) float64 array (the
-// exact input, DESIGN.md section 2); faces an (m, k >= 3) integer array or a list of polygons,
+// exact input, docs/contract.md "Input"); faces an (m, k >= 3) integer array or a list of polygons,
 // fan-triangulated, face id = row index unless face_ids gives one per row. Exact coordinates
 // come out as fractions.Fraction, parsed from the engine's reduced "p/q" text.
 // Errors: exbsp::usage_error -> exbsp.UsageError (a ValueError), input_error -> exbsp.InputError

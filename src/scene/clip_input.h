@@ -1,4 +1,4 @@
-// `exbsp clip` (DESIGN.md section 4): the clipping toolbox from a JSON file.
+// `exbsp clip` (docs/contract.md "Command line"): the clipping toolbox from a JSON file.
 //
 // Input: {"region": R, "segments": [[p, q], ...], "polygons": [[p, ...], ...]} with R one of
 //   {"rect": [xmin, ymin, xmax, ymax]}                2D window

@@ -1,6 +1,6 @@
 // The built-in demo scene. World frame: z up; the parts sit side by side along x.
 //
-// Colours are per mesh and drawn unlit (DESIGN.md section 5), so to make the solids readable
+// Colours are per mesh and drawn unlit (docs/contract.md "Scenes"), so to make the solids readable
 // the demo bakes a fixed shading into its meshes: each part is split into one mesh per
 // distinct shade of its faces, shade = base colour * (0.5 + 0.5 |n . L|) for the world-space
 // unit normal n and a fixed light direction L. All of them still go into the one BSP.

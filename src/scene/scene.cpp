@@ -154,7 +154,7 @@ void parse_curves(const reader& r, const json& doc, scene& s) {
   }
 }
 
-/// "svg": {"mode", "edges", "crease_deg"} (DESIGN.md section 6; also used for PDF output).
+/// "svg": {"mode", "edges", "crease_deg"} (docs/contract.md "Pixels"; also used for PDF output).
 void parse_vector(const reader& r, const json& doc, scene& s) {
   const json* v = r.optional(doc, "svg");
   if (!v) return;

@@ -1,4 +1,4 @@
-// Scene files (DESIGN.md section 5): parsing, validation, view setup and geometry loading.
+// Scene files (docs/contract.md "Scenes"): parsing, validation, view setup and geometry loading.
 //
 // Notation: every error names the scene file and the offending key as a JSON pointer
 // ("/meshes/0/color/1", "/projection/near"); see scene_error in core/errors.h. Mesh paths are
@@ -119,7 +119,7 @@ enum class aspect_policy {
   fit       ///< letterbox: the largest centred part of the viewport with the window's aspect
 };
 
-/// The camera forms of DESIGN.md section 5 ("camera").
+/// The camera forms of docs/contract.md "Scenes" ("camera").
 enum class camera_form { look_at, look, polar, pilot, phigs };
 
 /// A validated scene.

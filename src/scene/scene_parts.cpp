@@ -1,5 +1,5 @@
 // Modelling hierarchy, camera forms, viewport/image, lines and trackball of a scene
-// (notation in scene.h; DESIGN.md section 5).
+// (notation in scene.h; docs/contract.md "Scenes").
 #include "scene/scene_parts.h"
 
 #include <algorithm>

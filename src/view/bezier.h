@@ -1,4 +1,5 @@
-// Bézier curves of any degree in 3D (double), for the "curves" of a scene (DESIGN.md section 5).
+// Bézier curves of any degree in 3D (double), for the "curves" of a scene (docs/contract.md
+// "Scenes").
 //
 // Notation: a curve of degree n has the n + 1 control points P_0 .. P_n and is
 //   B(t) = sum_{i=0..n} b_{i,n}(t) P_i,   b_{i,n}(t) = C(n,i) t^i (1-t)^(n-i),   t in [0, 1].

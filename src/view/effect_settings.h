@@ -1,4 +1,4 @@
-// Parameters of the effects a scene may name under "effects" (DESIGN.md section 5), as plain
+// Parameters of the effects a scene may name under "effects" (docs/contract.md "Scenes"), as plain
 // data carried by the frame (pipeline.h). The scene parser (src/scene/scene.cpp) validates
 // them and fills in the documented defaults; an effect's stage reads only its own struct, and
 // only when the scene named the effect. README.md "## Effects" describes each one.

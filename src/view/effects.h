@@ -1,4 +1,4 @@
-// The catalogue of effects a scene may name under "effects" (DESIGN.md section 5), and where
+// The catalogue of effects a scene may name under "effects" (docs/contract.md "Scenes"), and where
 // each plugs into the stage list (pipeline.h). An effect runs only when the scene names it:
 // a scene that names none gets exactly the stages build, order, transform+clip, raster (or
 // svg), and pays for nothing else.

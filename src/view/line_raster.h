@@ -1,4 +1,4 @@
-// Line rasterization for curves: a DDA with an explicit pixel rule (DESIGN.md section 6
+// Line rasterization for curves: a DDA with an explicit pixel rule (docs/contract.md "Pixels"
 // pixels: pixel (i, j) covers [i, i+1] x [j, j+1], centre (i+1/2, j+1/2), y up).
 //
 // Notation: segment from s = (x0, y0) to e = (x1, y1), dx = x1 - x0, dy = y1 - y0; width W

@@ -5,7 +5,7 @@
 //
 // Two walks give the same image. The reference (back_to_front) paints every polygon of
 // f.polygons in order, each overwriting what is behind it. The fast one (front_to_back) walks
-// the list in reverse (DESIGN.md section 3: front-to-back is the exact reverse) with a
+// the list in reverse (docs/contract.md "The BSP": front-to-back is the exact reverse) with a
 // coverage mask of one bit per pixel: a pixel takes the colour of the first polygon that
 // covers it, which is the last one the reference paints there, and a polygon whose screen box
 // is already entirely covered is skipped without rasterizing it. Visibility still comes from

@@ -1,4 +1,4 @@
-// The PHIGS view reference model (DESIGN.md section 5, seed 004) as OpenGL-style matrices.
+// The PHIGS view reference model (docs/contract.md "Scenes", seed 004) as OpenGL-style matrices.
 //
 // Notation: world points p; the view reference coordinates (VRC) have origin VRP and axes
 //   n = VPN / |VPN|,   u = (VUP x n) / |VUP x n|,   v = n x u

@@ -1,6 +1,6 @@
 // The viewing pipeline as an explicit list of named stages over one `frame`.
 //
-// Data flow (DESIGN.md section 1): world-space soup -> BSP build -> fragments converted once to
+// Data flow (docs/architecture.md): world-space soup -> BSP build -> fragments converted once to
 // double -> back-to-front order for the view -> [world-space effects: backface_culling,
 // lighting] -> modelview, projection, homogeneous clip, divide, viewport -> [curves] ->
 // [screen effects: fog, a sample shader] -> rasterizer (painter's algorithm; antialias replaces it)
@@ -32,7 +32,7 @@
 
 namespace exbsp::view {
 
-/// The four projection types of a scene (DESIGN.md section 5).
+/// The four projection types of a scene (docs/contract.md "Scenes").
 enum class projection_kind { perspective, frustum, orthographic, oblique };
 /// "perspective", "frustum", "orthographic", "oblique".
 const char* to_string(projection_kind k);

@@ -1,5 +1,5 @@
 // The "place" stage: the viewport's picture inside a larger image (glViewport x, y inside the
-// window; DESIGN.md section 5 "image", and the letterbox bars of aspect "fit").
+// window; docs/contract.md "Scenes" "image", and the letterbox bars of aspect "fit").
 //
 // Notation: window coordinates as viewport.h (y up, origin at the image's lower-left corner);
 // the viewport's picture has its lower-left corner at (place_x, place_y) of the image

@@ -1,4 +1,4 @@
-// Triangle rasterization by edge functions with the top-left rule (DESIGN.md section 6).
+// Triangle rasterization by edge functions with the top-left rule (docs/contract.md "Pixels").
 //
 // Notation: window coordinates, y UP (viewport.h); pixel (i, j) has centre p = (i+1/2, j+1/2).
 // A triangle is first made counter-clockwise (b and c swapped when clockwise), so its interior

@@ -25,7 +25,7 @@
 // at its midpoint (one path per piece), and the background rectangle takes the shader's
 // background.
 //
-// Placement (a viewport inside a larger "image", DESIGN.md section 5): both documents are
+// Placement (a viewport inside a larger "image", docs/contract.md "Scenes"): both documents are
 // nested, unchanged, as an inner <svg x=".." y=".." width height> (which clips to the
 // viewport, as the PNG's copy does) in an outer <svg> of the image's size whose background
 // rectangle has the scene's background colour; y = image_height - place_y - height (SVG's y

@@ -1,5 +1,5 @@
 // Vector output (SVG, PDF) as one intermediate list of paths: the visible-region drawing and
-// the painter's stack (DESIGN.md section 6).
+// the painter's stack (docs/contract.md "Pixels").
 //
 // Notation: the drawing grid. A window point (x, y) (viewport.h, y up) becomes the grid point
 //   X = round(100 (x - vp.x)),  Y = round(100 (y - vp.y))
@@ -8,8 +8,8 @@
 // grid edge share it exactly in the file.
 //
 // Visible regions: the polygons of the transform+clip stage, taken FRONT TO BACK (the reverse
-// of their back-to-front list, DESIGN.md section 3), are snapped to the grid; each loses what
-// the polygons before it already cover (Clipper's integer Booleans: covered := covered ∪ P,
+// of their back-to-front list, docs/contract.md "The BSP"), are snapped to the grid; each loses
+// what the polygons before it already cover (Clipper's integer Booleans: covered := covered ∪ P,
 // visible(P) := P \ covered), and the visible parts of one source face are merged into one
 // region (holes kept). The screen is cut into square tiles so that each Boolean sees only the
 // coverage near its polygon, and a tile found fully covered rejects everything behind it at
@@ -47,7 +47,7 @@ namespace exbsp::view {
 
 struct frame;
 
-/// "svg": {"mode", "edges", "crease_deg"} of a scene (DESIGN.md section 6).
+/// "svg": {"mode", "edges", "crease_deg"} of a scene (docs/contract.md "Pixels").
 struct vector_options {
   enum class mode_kind { visible, painter };
   enum class edges_kind { none, visible, visible_hidden };
@@ -95,7 +95,7 @@ struct vector_path {
   std::vector<std::vector<grid_point>> rings;  ///< closed rings (regions) or open polylines
 };
 
-/// Where a drawing goes in the output image (DESIGN.md section 5 "image"; the PNG's "place"
+/// Where a drawing goes in the output image (docs/contract.md "Scenes" "image"; the PNG's "place"
 /// stage, placement.h): the image is image_width x image_height pixels of `background`, with
 /// the drawing's lower-left corner at (x, y) (window coordinates, y up), clipped to the drawing.
 struct drawing_placement {
