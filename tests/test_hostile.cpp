@@ -626,6 +626,18 @@ TEST_F(Hostile, every_command_writing_to_a_full_standard_output_fails_with_exit_
   EXPECT_EQ(run("clip c.json").status, 0);
 }
 
+TEST_F(Hostile, build_json_of_a_mesh_whose_name_is_not_utf8_is_valid_json) {
+  // Linux file names are bytes: "\xff\xfe.off" is a valid name but not UTF-8. build --json
+  // wrote nothing and exited 1 (nlohmann's type_error 316); the name now carries U+FFFD.
+  const std::string name = "\xff\xfe.off";
+  write_file(dir / name, triangle_off);
+  const result r = run("build " + exbsp_test::quoted(name) + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc.at("fragments"), 1);
+  EXPECT_EQ(doc.at("mesh").get<std::string>(), "\xEF\xBF\xBD\xEF\xBF\xBD.off");
+}
+
 TEST_F(Hostile, inexact_kernels_leave_non_finite_fragments_out_of_order_and_render) {
   // The double kernel's rounded split points on pinion include NaN and infinite corners. The
   // order document stays valid JSON (no "nan") with the count in it, the picture is drawn,

@@ -296,7 +296,9 @@ int run_build(const build_cli& o, bool json) {
     j["seed"] = s.seed;
     if (load_seconds >= 0)
       j["load_seconds"] = load_seconds;  // a saved tree: build_seconds is its build's
-    std::cout << j.dump() << "\n";
+    // A file name need not be UTF-8 (Linux names are bytes): invalid bytes become U+FFFD in
+    // the JSON instead of an exception from the writer (issue 28).
+    std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   } else {
     if (load_seconds >= 0) std::cout << "saved tree loaded in " << load_seconds << " s; ";
     std::cout << (o.mesh == "-" ? "<stdin>" : o.mesh) << ": " << s.input_triangles
