@@ -11,6 +11,7 @@
 //   for (auto i : tree.order_from_eye({0, 0, 10})) draw(frags[i]);
 #pragma once
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -135,6 +136,15 @@ struct build_stats {
 struct fragment_d {
   std::uint32_t face;
   std::array<vec3d, 3> v;
+
+  /// False when a corner has a NaN or infinite coordinate (an inexact kernel's rounded split
+  /// point; never with the exact kernels).
+  bool finite() const {
+    for (const vec3d& p : v)
+      for (double c : p)
+        if (!std::isfinite(c)) return false;
+    return true;
+  }
 };
 
 /// Exact coordinates of a fragment as reduced rationals "p/q" (or "p").

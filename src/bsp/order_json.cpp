@@ -1,9 +1,6 @@
 // `exbsp order` output (order_json.h), built as text through core/json_text.h (17 digits).
 #include "bsp/order_json.h"
 
-#include <algorithm>
-#include <cmath>
-
 #include "core/json_text.h"
 
 namespace exbsp {
@@ -23,9 +20,7 @@ std::size_t order_json(const bsp& tree, const std::vector<std::uint32_t>& order,
     const fragment_d f = tree.fragment(order[n]);
     // An inexact kernel's rounded split point can be NaN or infinite, which JSON cannot hold:
     // such a fragment is left out and counted.
-    if (!std::all_of(f.v.begin(), f.v.end(), [](const vec3d& p) {
-          return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-        })) {
+    if (!f.finite()) {
       ++non_finite;
       continue;
     }

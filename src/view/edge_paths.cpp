@@ -14,14 +14,6 @@ namespace exbsp::view {
 
 namespace {
 
-/// Mesh index of a face id (f.mesh_face_offsets: first face of mesh k).
-std::uint32_t mesh_of_face(const frame& f, std::uint32_t face) {
-  if (f.mesh_face_offsets.empty()) return 0;
-  const auto it = std::upper_bound(f.mesh_face_offsets.begin(), f.mesh_face_offsets.end(), face);
-  return static_cast<std::uint32_t>(
-      std::max<std::ptrdiff_t>(0, it - f.mesh_face_offsets.begin() - 1));
-}
-
 /// Two runs lie on one line of the drawing when they are at most this many grid units apart
 /// (0.04 pixel, far below what a screen or a plotter separates; an exact coincidence rounds to
 /// at most one unit apart, and one more unit covers the rounding of the runs' own ends) ...
@@ -167,7 +159,7 @@ void add_edge_paths(const frame& f, vector_drawing& d) {
     visible_paths[m].color = hidden_paths[m].color = {0, 0, 0};
   }
   auto mesh_of_edge = [&](std::uint32_t edge) {
-    return std::min(mesh_of_face(f, ev.features.edges[edge].faces[0]), meshes - 1);
+    return std::min(f.mesh_of(ev.features.edges[edge].faces[0]), meshes - 1);
   };
   run_index index;
   for (std::size_t k = 0; k < runs.size(); ++k)

@@ -9,7 +9,9 @@
 // scene has curves. Effects plug in at four hooks (effects.h); the render command adds the write
 // stage.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -115,6 +117,13 @@ struct frame {
   /// Colour of a face id (grey when the id has no colour).
   rgb8 color_of(std::uint32_t face) const {
     return face < face_colors.size() ? face_colors[face] : rgb8{160, 160, 160};
+  }
+  /// Mesh index of a face id (mesh_face_offsets: first face of mesh k; mesh 0 when empty).
+  std::uint32_t mesh_of(std::uint32_t face) const {
+    if (mesh_face_offsets.empty()) return 0;
+    const auto it = std::upper_bound(mesh_face_offsets.begin(), mesh_face_offsets.end(), face);
+    return static_cast<std::uint32_t>(
+        std::max<std::ptrdiff_t>(0, it - mesh_face_offsets.begin() - 1));
   }
 };
 

@@ -136,9 +136,7 @@ std::string transform_clip_stage(frame& f) {
     const fragment_d& fr = f.fragments.at(idx);
     // An inexact kernel's rounded split point can be NaN or infinite: such a fragment has no
     // place in the picture; it is counted (the caller reports it), never passed on.
-    if (!std::all_of(fr.v.begin(), fr.v.end(), [](const vec3d& p) {
-          return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-        })) {
+    if (!fr.finite()) {
       ++f.non_finite;
       continue;
     }

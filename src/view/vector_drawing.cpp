@@ -384,14 +384,6 @@ class t_junction_mender {
   cl::Path mended_;
 };
 
-/// Mesh index of each face id (f.mesh_face_offsets: first face of mesh k).
-std::uint32_t mesh_of(const frame& f, std::uint32_t face) {
-  if (f.mesh_face_offsets.empty()) return 0;
-  const auto it = std::upper_bound(f.mesh_face_offsets.begin(), f.mesh_face_offsets.end(), face);
-  return static_cast<std::uint32_t>(
-      std::max<std::ptrdiff_t>(0, it - f.mesh_face_offsets.begin() - 1));
-}
-
 rgb8 shaded(const frame& f, rgb8 c, double x, double y, double z) {
   return f.shader ? f.shader->shade(c, x, y, z) : c;
 }
@@ -531,7 +523,7 @@ vector_drawing visible_drawing(const frame& f) {
   face_ids.reserve(faces.size());
   for (const auto& [face, acc] : faces) face_ids.push_back(face);
   std::sort(face_ids.begin(), face_ids.end(), [&](std::uint32_t a, std::uint32_t b) {
-    const std::uint32_t ma = mesh_of(f, a), mb = mesh_of(f, b);
+    const std::uint32_t ma = f.mesh_of(a), mb = f.mesh_of(b);
     return ma != mb ? ma < mb : a < b;
   });
   std::vector<vector_path> regions;
@@ -547,7 +539,7 @@ vector_drawing visible_drawing(const frame& f) {
     vector_path r;
     r.kind = vector_path::kind_type::region;
     r.face = face;
-    r.mesh = mesh_of(f, face);
+    r.mesh = f.mesh_of(face);
     const double n = static_cast<double>(acc.n);
     r.color = shaded(f, acc.color, acc.sx / n, acc.sy / n, acc.sz / n);
     for (cl::Path& ring : merged) {
@@ -641,7 +633,7 @@ vector_drawing painter_drawing(const frame& f) {
     r.kind = vector_path::kind_type::region;
     r.face = p.face;
     r.fragment = p.fragment;
-    r.mesh = mesh_of(f, p.face);
+    r.mesh = f.mesh_of(p.face);
     double sx = 0, sy = 0, sz = 0;
     std::vector<grid_point> ring;
     for (const window_point& w : p.v) {
