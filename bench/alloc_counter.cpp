@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Heap accounting by replacing the global operator new/delete and GMP's memory functions.
 // Sizes are malloc_usable_size of the block on both allocation and release, so no header is
 // added to blocks and blocks allocated before install() are released correctly.

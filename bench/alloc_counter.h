@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Heap accounting for bench_sweep: live and peak heap bytes while counting is on.
 //
 // What is counted: every block from the global operator new (all variants) and every block

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // bench_micro: Google Benchmark micro-benchmarks of the exact core.
 //
 //   BM_orientation/<kind>   one orientation predicate on double input points:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // bench_render: per-frame times of exbsp's viewing pipeline next to Mesa's off-screen
 // OpenGL z-buffer (OSMesa, llvmpipe), on the same triangles in the same process.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // bench_section: time of exbsp::section on one mesh (default data/meshes/fandisk.off) through
 // its bounding-box centre, with the default exact kernel (Epeck). Prints one JSON line per
 // plane: median, min and max wall seconds over --repeats runs, with the section's counters.

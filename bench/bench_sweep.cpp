@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // bench_sweep: builds BSP trees for inputs x kernels x heuristics and writes one JSON line per
 // (input, heuristic, kernel) with build time, heap memory, tree statistics and, optionally,
 // the exact defect counts of defects.h.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // bench_tree_file: saved trees (docs/tree-file.md) against builds. For each mesh: one build,
 // then save and load `repeats` times (median wall time), the file's size per fragment, and
 // the time until a viewer can draw (tree + fragments in doubles + one order) from the mesh

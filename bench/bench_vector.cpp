@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // bench_vector: vector output per frame (SVG and PDF) for the painter's stack and the
 // visible-region drawing (src/view/vector_drawing.h), with and without edges.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The fixed view of the rendering benchmarks (bench_render, bench_vector): a perspective camera
 // looking at the centre of the soup's bounding box from one diagonal away along (1, 0.6, 0.4),
 // z up, fovy 40 degrees, near 0.05 and far 3 diagonals, viewport width x height.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """What the benchmark scripts share: paths, the corpus, kernels and heuristics, raw-data loading
 and the small statistics (medians, spreads, log-log slopes) the report and the plots both use."""
 import json

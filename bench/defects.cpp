@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact defect counts of a built tree; definitions at the top of defects.h. The checks are
 // tests/support/tree_checker.h's; this file picks the large-tree options (no pairwise overlap
 // test, sampled rays, fixed eyes) and turns the checker's report into counts.

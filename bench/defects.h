@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact defect counts of a built tree: how far an inexact kernel's tree is from the exact
 // contract (DESIGN.md section 3). The checks are the tests' exact tree checker
 // (tests/support/tree_checker.h), run on large trees: the tree is copied exactly into Epeck

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Effects overhead: does a scene that names no effects pay anything for them?
 #
 # Builds `exbsp` (Release, no tests, no bench) from this tree ("after") and from the

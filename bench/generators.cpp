@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Benchmark inputs by spec; see generators.h.
 #include "generators.h"
 

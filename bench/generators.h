@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Benchmark inputs: a mesh file or a generated soup (random soup, sticks: their definitions are
 // at the top of tests/support/inputs.h, shared with the tests), named by a spec string.
 #pragma once

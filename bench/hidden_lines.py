@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """The hidden-line drawing's figures, in one command: rewrites section 7 of bench/RESULTS.md
 (between the markers <!-- hidden-lines:begin --> and <!-- hidden-lines:end -->, appended when
 they are missing) and keeps the raw output in bench/out/hidden_lines/.

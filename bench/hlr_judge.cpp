@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // hlr_judge: exbsp's hidden-line drawing of a mesh in one PARALLEL view, and optionally a peer's
 // (Open CASCADE's HLR through FreeCAD: bench/hlr_peers.py), judged by the same independent
 // ray-cast oracle (tests/support/hidden_line_oracle.h). Issue 23, "peers table".

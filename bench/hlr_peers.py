@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """Hidden-line drawings of CGAL meshes: exbsp against Open CASCADE's hidden-line removal (HLR) as
 FreeCAD exposes it, both judged by the same independent ray-cast oracle
 (tests/support/hidden_line_oracle.h). Issue 23, "peers table". Writes bench/hlr_peers.md (and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // bench_inexact: which invariants the inexact kernels (double, Epick) break, per generator of
 // the property tests (tests/support/generators.h) and on 40-triangle CAD subsets. A
 // measurement, not a test: every case is built with a heuristic and seed drawn by RapidCheck

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // What rounding does to a BSP order, as a picture: a mesh rendered (scene::mesh_scene's fitted,
 // lit view) from the exact kernel's tree and from an inexact kernel's tree, side by side, and a
 // third panel with every pixel where they differ in magenta over the dimmed exact picture.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """Where a build spends its time: perf sampling of one single-threaded bench_sweep build, self
 time per (shared object, function), and the same grouped into categories.
 

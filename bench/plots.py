@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """bench/plots/*.png from the raw data of a run (matplotlib, Agg). A bar that has no value (a
 build stopped at the fragment limit, over its time cap, or skipped by the sweep's limits) is
 not left blank: the reason is written where the bar would stand."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """bench/RESULTS.md from the raw data of a run: tables, readings (every figure computed from the
 data, none typed in) and the method notes. No measurement and no plotting here (run.py and
 plots.py); every function takes the loaded rows and returns markdown, so the report can be

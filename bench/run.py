@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """Regenerates bench/RESULTS.md and bench/plots/*.png: the ONE command of the benchmarks.
 
     bench/run.py                the full run (10-17 minutes on the 2-core reference machine, 2026-11-24)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """Seams of the vector drawing: exbsp's SVG rasterized by librsvg (rsvg-convert) and by headless
 Chromium, compared pixel by pixel with exbsp's own PNG of the same view (the painter's raster,
 no anti-aliasing). Anti-aliasing renderers blend the pixels along each region's boundary with

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """Unit checks of the report, plot and profile code of bench/ on small synthetic raw data (no
 measurement): the tables, the readings' figures, missing rows, seeds' spreads, profile categories.
 Run: python3 -m unittest discover -s bench -p test_report.py (ctest: bench_report_unit)."""

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // vector_cgal_boolean: the visible-region loop of src/view/vector_drawing.cpp with CGAL's
 // Boolean_set_operations_2 (Polygon_set_2 on Epeck, exact) instead of Clipper, on the first N
 // front-to-back polygons of a mesh at 800x600 (the camera of bench_vector), to compare the two

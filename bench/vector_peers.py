@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """Vector drawings of interpenetrating parts: exbsp's SVG against matplotlib's mplot3d and
 three.js's SVGRenderer, each checked pixel by pixel against Mesa's z-buffer image of the same
 triangles under the same camera. Writes bench/VECTOR_PEERS.md and bench/plots/vector_peers.png

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // zbuffer_render: Mesa's off-screen z-buffer (OSMesa, tests/support/osmesa_zbuffer.h) image of
 // flat-coloured triangles under a given 4x4 matrix: the reference images of bench/vector_peers.py,
 // which compares exbsp's, matplotlib's and three.js's vector drawings with them.

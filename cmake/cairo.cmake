@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # cairo (Debian 12: libcairo2-dev): PDF output of `exbsp render ... -o OUT.pdf`
 # (src/view/vector_pdf.cpp). cairo ships a pkg-config file and no CMake package, so
 # pkg-config finds it (find_path/find_library as a fallback).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # CGAL (header-only in Debian 12; brings GMP and MPFR). find_package first.
 find_package(CGAL 5.5 REQUIRED)
 # Exact kernels need the FPU rounding mode respected: never let the compiler fold it away.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # GMP, GMP's C++ classes (gmpxx) and MPFR as imported targets: CGAL uses them, and exbsp also
 # calls them directly (exact rationals, correctly rounded output, bsp/exact_gmp.h).
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Helpers of the dependency lookups that are installed with the package (gmp.cmake, cairo.cmake,
 # polyclipping.cmake) and so run both in exbsp's own build and in a consumer's
 # find_package(exbsp) (where exbspConfig.cmake sets exbsp_FIND_PACKAGE_CONTEXT).

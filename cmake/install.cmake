@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # cmake --install: the public headers, libexbsp (static, and shared with EXBSP_BUILD_SHARED),
 # the exbsp command line and a CMake package (find_package(exbsp [COMPONENTS openmesh])).
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # OpenMesh (Debian ships a CMake config): optional. When found, exbsp builds the adapter target
 # exbsp_openmesh (src/adapters/openmesh.h: OpenMesh meshes to and from exbsp) and installs it as
 # the package component `openmesh` (find_package(exbsp COMPONENTS openmesh) -> exbsp::openmesh).

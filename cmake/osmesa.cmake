@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # OSMesa, Mesa's off-screen OpenGL (Debian 12: libosmesa6-dev, which pulls libgl-dev for
 # GL/gl.h): the independent z-buffer renderer of tests/test_oracle_gl.cpp.
 #

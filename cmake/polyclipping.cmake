@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Clipper (Angus Johnson's polygon clipper; Debian 12: libpolyclipping-dev): the 2D polygon
 # Booleans on integer coordinates behind the visible-region SVG/PDF (src/view/vector_regions.cpp).
 # Debian ships no CMake package for it, so find_path/find_library first, with pkg-config's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Python module (src/python): pybind11 (Debian's python3-pybind11 / pybind11-dev) for Debian's
 # /usr/bin/python3, which has numpy and pytest (the pyenv python3 that may come first on PATH
 # has neither). Pass -DPython_EXECUTABLE=... to use another interpreter.

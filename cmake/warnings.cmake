@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Project-wide compile settings: warnings, reproducible doubles, optional strictness and sanitizers.
 # exbsp_options is linked by exbsp's own targets (modules, CLI, tests, benchmarks) and never
 # installed: the installed libraries carry none of these flags to consumers (docs/package.md).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Regenerates the README's pictures from the committed code (one command):
 #   docs/make_figures.sh [BUILD_DIR]   (default build/, built by scripts/build)
 # - docs/images/demo.png: `exbsp render` of the built-in demo scene;

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Renders the pictures of README.md "## Effects" into scenes/images/: every effect scene with
 # its effect (NAME.png) and the same scene without it (NAME_without.png), and the curve scene
 # with and without its curves. 400 x 300 each. Anyone can rerun it:

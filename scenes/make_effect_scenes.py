@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """Writes the effect and curve scenes (scenes/effects_*.json, scenes/curves.json) and the one
 mesh they add (scenes/meshes/floor/pz.off, a 1 x 1 quad facing +z, scaled by transforms).
 

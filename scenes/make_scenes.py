@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """Writes the example scenes (scenes/*.json) and their small OFF meshes (scenes/meshes/).
 
 Meshes are drawn flat and unlit in their mesh colour (DESIGN.md section 5), so to keep the

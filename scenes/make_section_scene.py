@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """Writes scenes/section.json and its closed meshes under scenes/meshes/section/.
 
 A flange (a 4 x 4 x 2 block with a round through-hole, genus 1), a shaft through the hole and a

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Renders the pictures of README.md "## Vector output" into scenes/images/: scenes/perspective.json
 # as exbsp's PNG (vector_png.png) and as a visible-region SVG with visible and hidden edges
 # ("svg": {"edges": "visible+hidden"}), rasterized by headless Chromium at 1:1

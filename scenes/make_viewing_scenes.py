@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """Writes the modelling and viewing example scenes (groups, transforms, camera forms, viewport,
 ortho2d, lines, trackball) and the `exbsp clip` inputs under scenes/clip/. They reuse the parts
 that make_scenes.py writes under scenes/meshes/. Run: python3 scenes/make_viewing_scenes.py"""

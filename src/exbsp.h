@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // exbsp: the whole public C++ API in one include (installed as <exbsp/exbsp.h>).
 //
 // Everything here is free of CGAL, Boost and OpenMP; exact arithmetic happens inside the

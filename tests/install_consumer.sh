@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Installs the built exbsp into a temporary prefix and checks the package as a consumer sees it:
 #   1. only public headers are installed, each compiles alone against <prefix>/include (no
 #      private header, no CGAL outside adapters/cgal_face_graph.h), warning-free under

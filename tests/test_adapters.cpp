@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the mesh adapters (src/adapters/): OpenMesh TriMesh / PolyMesh and CGAL FaceGraphs
 // (Surface_mesh, Polyhedron_3) to a triangle_soup (fan triangulation and face ids as DESIGN.md
 // section 2), and BSP fragments and sections back to those meshes (face ids kept, every

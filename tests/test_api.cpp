@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Tests of the public API additions of the package: exact coordinates as GMP rationals
 // (bsp/exact_gmp.h) and cancelling a build from the progress callback (build_options::progress,
 // build_cancelled). Degenerate cases first.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The exact build's batched side tests (src/bsp/batch_classify.h, fast_orientation.h): the
 // static plane filter and the box filter on points built to sit exactly on a plane and one ulp
 // off it (they may only say "not known" there, never a wrong sign), the learnt coplanar

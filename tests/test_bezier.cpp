@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Tests of src/view/bezier.h: Bernstein weights, de Casteljau evaluation, convex hull,
 // end-point interpolation, subdivision, derivative, adaptive flattening, precondition errors.
 // Notation: degree n, control points P_0 .. P_n, B(t) the curve, t in [0, 1].

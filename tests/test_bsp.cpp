@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Unit tests of the exact BSP: classification, every split case, coplanar handling,
 // traversal rules, the painter's failure case, depth and limits.
 #include <gtest/gtest.h>

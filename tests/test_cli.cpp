@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Checks of the exbsp command line (DESIGN.md sections 2 and 4), run as a separate process
 // (EXBSP_CLI) in a fresh temporary directory: bad input exits 2 naming file and line and
 // writes nothing; `build --json` has every documented key; `order` JSON has the eye or the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Tests of src/clip/: each clipper against its definition on fixed and random input.
 //
 // Random coordinates come from gen_coord(): a mix of uniform doubles on a fine grid, values

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The clipping toolbox in users' hands: convex regions as half-spaces (clip/convex_region.h),
 // Sutherland–Hodgman split into pieces for concave input, and `exbsp clip` (scene/clip_input.h):
 // its JSON/SVG output, --verbose outcodes, and bad input (exit 2, key named, nothing written).

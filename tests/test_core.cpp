@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Tests of src/core that no other module's tests cover: file kinds by extension
 // (core/file_name.h), the one rule render, clip, section, the scene-or-mesh choice and the
 // mesh reader share.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The degenerate-input suite of the exact BSP: coplanar stacks in both orientations with
 // crossers (some with a vertex exactly on the stack's plane), vertices on one, two and three
 // node planes, vertices one ulp (and one subnormal) off a plane, coordinates near 1e9 with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact edge visibility (view/edge_visibility.h) and the geometry under it (geom/): exact
 // determinants and crossings, feature edges, and the runs of edges in the degenerate
 // configurations of standard views: edges exactly behind a fan diagonal, exactly behind a

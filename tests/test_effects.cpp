@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Tests of the opt-in effects (src/view/{lighting,fog,antialias,depth_of_field}.*), their
 // parameters in scene files, the stage lists ("a scene that names no effect pays nothing"),
 // and Bézier curves in the painter's sequence (src/view/curves.*, clip_stage.*,

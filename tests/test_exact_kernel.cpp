@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // exbsp's own exact kernel (`exact`, geometry_exact.h): its three ways of answering a side
 // test each on points built to sit exactly on a plane and one ulp off it, and the contract
 // that it gives the same tree and byte-identical orders as gmpq and epeck (DESIGN.md section 3)

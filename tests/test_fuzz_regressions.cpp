@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Inputs the fuzzers found (tests/fuzz/crashes/): each must now end in a clear exbsp error.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The pluggable heuristic (heuristic "custom", build_options::score): a callback that
 // reproduces min-split or sampled gives exactly their tree; the same tree for every exact
 // kernel and every thread count; what the callback sees; errors and exceptions propagate.

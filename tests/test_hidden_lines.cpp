@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Hidden-line drawing (issue 23): the solid (visible_edge) and dashed (hidden_edge) runs of the
 // SVG, judged by an independent ray-cast oracle (support/hidden_line_oracle.h), which finds
 // the feature edges itself and decides every sample with exact signs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Hostile input and hostile environments (issue 11): every item has a regression here.
 // Library checks call the functions directly; command-line checks run EXBSP_CLI in a fresh
 // temporary directory as tests/test_cli.cpp does. Memory-cap checks run the CLI (or a forked

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The module layout (docs/architecture.md, docs/contract.md section 1), checked on the source
 // tree: every #include line of src/ is listed with the module of the file that holds it and
 // the module (or outside library) it names, and each floor may only include what lies below

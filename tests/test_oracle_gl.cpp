@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Image oracle against Mesa's off-screen OpenGL (OSMesa, llvmpipe; Debian libosmesa6-dev).
 //
 // Every scene is rendered twice: by exbsp (BSP order + painter's rasterizer, no z-buffer) and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The parallel build (src/bsp/bsp_tree_impl.h: OpenMP with atomics): every parallel part runs
 // with 1, 2 and 4 threads and must give the same tree, order and exact points. These are the
 // tests the ThreadSanitizer build runs (scripts/test --tsan): each one drives a parallel

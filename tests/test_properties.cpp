@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // RapidCheck properties of the exact BSP (DESIGN.md sections 2 and 3), checked in exact
 // arithmetic: fragments in their source planes with the same orientation, exact tilings of
 // every source, correct sides of every ancestor plane, consistent statistics, back-to-front

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Tests of the fast painter's raster (view/rasterizer.h, view/paint.h): the span rasterizer
 // must reproduce the pixel-by-pixel reference of the top-left rule bit for bit, and the
 // front-to-back painter with its coverage mask must give the same image as the back-to-front

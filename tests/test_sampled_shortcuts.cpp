@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The sampled heuristic's shortcuts (src/bsp/heuristics.h, bsp_tree_impl.h, batch_classify.h):
 // candidates in the plane of an earlier candidate are skipped, the exact kernel remembers
 // exact signs in a bounded table, and the winner's signs may serve the partition. None may

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Tests of src/scene/: scene validation (every error names its key), defaults, relative mesh
 // paths, geometry loading (transforms, face offsets, colours), view setup, the built-in demo,
 // the example scenes in scenes/, `exbsp render` output (PNG read back, SVG parsed back) and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact sections (clip/section.h, `exbsp section`, scene "clip_planes"). Every check is exact,
 // on GMP rationals parsed from the result's "p/q" strings:
 //   - closed: kept ∪ cap uses every directed edge as often as its reverse (a manifold: each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Tests of src/view/trackball.h: unit quaternions, Shoemake's arcball, camera orbit.
 // Notation: q = (w, x, y, z); rotation v' = q v q*; arcball drag p -> q is (p.q, p x q), which
 // turns by twice the arc from p to q, so it maps p to 2 (p.q) q - p. Eye coordinates: x right,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Tests of the public tree walk (src/bsp/traversal.h): bsp::node, side_of_plane,
 // traverse_from_eye / traverse_for_direction against order_from_eye, ancestors() and the
 // exact input. Degenerate cases first: the empty tree, eyes exactly on node planes, points a

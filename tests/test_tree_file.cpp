@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Saved trees (bsp::save / load, docs/tree-file.md): round trips give the same tree (stats,
 // fragments, exact coordinates, ancestors, byte-identical orders and a byte-identical re-save)
 // for every kernel; every damaged or forged file is an input_error naming the file, never a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Vector output (view/vector_drawing.h, svg_writer.h, vector_pdf.h): visible regions, edges,
 // SVG and PDF.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Tests of src/view/: matrices and camera against closed forms and GLM, oblique projection,
 // viewport, clip stage, the top-left rule (coverage counted through the rasterizer's coverage
 // callback), painter's order on a cyclic overlap against a z-buffer oracle, backface culling,

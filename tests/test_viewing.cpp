@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Modelling and viewing from scene files (DESIGN.md section 5, issue 12): "transforms" lists and
 // nested "groups" on the matrix stack, the camera forms (position/look/up, polar, pilot, PHIGS)
 // checked against GLM and against the formulas' defining properties, viewport x/y inside an

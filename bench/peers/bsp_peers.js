@@ -1,4 +1,5 @@
 #!/usr/bin/env node
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Times the BSP trees of two JavaScript CSG libraries on exbsp's benchmark meshes.
 //
 //   node bsp_peers.js MESH.off [MESH.off ...] [--repeat N] [--cap SECONDS]

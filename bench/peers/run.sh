@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Times csg.js and JSCAD's BSP trees on exbsp's benchmark meshes (see README.md).
 #   bench/peers/run.sh [MESH.off ...]     (default: bench/run.py's CAD and organic corpus)
 # Writes bench/out/peers.jsonl (one JSON line per tool x mesh); extra options for bsp_peers.js

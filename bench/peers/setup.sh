@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Installs what the JavaScript peers need: Debian's nodejs and npm (apt-get, as root or with
 # sudo) and the pinned npm packages of bench/peers (csg, @jscad/modeling) and bench/peers/vector
 # (three, jsdom) from their committed package-lock.json files. A quick no-op when all is there.

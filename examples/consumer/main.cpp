@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Builds the exact BSP of two crossing triangles through the installed exbsp package and
 // prints the back-to-front order for an eye above them, with exact coordinates as GMP
 // rationals (exbsp/bsp/exact_gmp.h). Exit status 0 when all is as expected.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // A viewer-style consumer of the installed exbsp package: reads a mesh with OpenMesh (as a CAD
 // viewer already holds it), converts it with the OpenMesh adapter, builds the exact BSP, renders
 // a PNG from a view fitted to the mesh with exbsp's viewing pipeline, and writes the fragments

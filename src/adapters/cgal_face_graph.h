@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // CGAL adapters: any CGAL FaceGraph (Surface_mesh, Polyhedron_3, OpenMesh through CGAL's
 // graph traits, ...) to a triangle_soup, and triangles (BSP fragments, a section) back into
 // a FaceGraph. Header-only; the consumer brings CGAL (and its flags) for its own mesh.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // OpenMesh adapters (component exbsp::openmesh): an OpenMesh TriMesh or PolyMesh (any traits)
 // to a triangle_soup, and the BSP's fragments or a section back to an OpenMesh mesh.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The common half of the mesh adapters (openmesh.h, cgal_face_graph.h): triangles with face
 // ids taken from BSP fragments or a section, and their insertion into a halfedge mesh with
 // vertices shared where the mesh allows it. Header-only.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Option-value parsing, mesh input and typo suggestions for the command line (cli_parse.h).
 #include "app/cli_parse.h"
 

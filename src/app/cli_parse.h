@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Command-line parsing for `exbsp` (docs/contract.md "Command line"): the text formats of its
 // option values, mesh input from a file or standard input, and suggestions for misspelled commands
 // and options. Kept apart from main.cpp so the tests can call it; every function throws

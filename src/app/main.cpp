@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // exbsp command line (docs/contract.md "Command line"): glue only. Library exceptions become
 // messages "exbsp: error: ..." on stderr and exit codes: 2 bad input, bad usage or an output that
 // cannot be written; 3 resource limit (--max-fragments, whose default comes from the available

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Batched side tests for geometries whose points carry a certified double centre and radius
 // (G::has_centres: exbsp's exact geometry). Private to src/bsp (used by bsp_tree_impl.h).
 //

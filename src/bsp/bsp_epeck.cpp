@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Explicit instantiation of the BSP for the epeck kernel (one object per CGAL header set).
 #include "bsp/kernel_epeck.h"
 #include "bsp/bsp_tree_impl.h"

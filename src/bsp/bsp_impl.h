@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Private: the type-erased tree behind exbsp::bsp, one implementation per kernel.
 #pragma once
 #include <memory>

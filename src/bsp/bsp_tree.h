@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The BSP tree, templated on a geometry G (geometry_cgal.h for the CGAL kernels,
 // geometry_exact.h for exbsp's own exact points), explicitly instantiated in bsp_<kernel>.cpp.
 //

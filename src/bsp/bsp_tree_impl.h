@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Definitions of basic_bsp_tree<G>. Included only by the per-kernel translation units
 // (bsp_<kernel>.cpp), which instantiate them explicitly.
 // Notation: see bsp_tree.h. The splitter heuristics are in heuristics.h.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // exbsp::bsp facade: kernel dispatch, names, and the kernel-independent helpers.
 #include "bsp/engine.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // exbsp public API: build an exact BSP tree of a triangle soup and read back-to-front orders.
 //
 // This header hides CGAL: the kernel is chosen at run time and the tree is one of five

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // fragment_exact_mpq: the kernel's exact values copied into mpq_class (bsp_impl::visit_exact).
 #include "bsp/exact_gmp.h"
 

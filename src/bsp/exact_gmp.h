@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact fragment coordinates as GMP rationals (optional part of the public API: it includes
 // gmpxx.h, so a consumer needs GMP's C++ headers; exbsp::exbsp links gmpxx for it).
 //

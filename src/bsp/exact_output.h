@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The tree's exact output: exact coordinates visited per fragment and written as text (the
 // rationals themselves, their text and their rounding are geom/rational.h's), and the peak
 // memory a build reports.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Certified fast orientation of double points against a plane through three double points.
 //
 // Notation: plane points a, b, c (doubles); e1 = b - a, e2 = c - a; n = e1 x e2;

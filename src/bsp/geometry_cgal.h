@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The BSP's geometry for a CGAL kernel K (epeck, gmpq, epick, double): fragments hold K
 // points, side tests are K's orientation predicate behind the certified double filter
 // (fast_orientation.h) where the kernel allows it, split points are K constructions.

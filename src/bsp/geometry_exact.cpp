@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // exbsp's exact geometry: point table, certified approximations, exact fallback.
 // Notation: see geometry_exact.h. u = 2^-53 (unit roundoff).
 #include "bsp/geometry_exact.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // exbsp's own exact geometry (`--kernel exact`): the same tree and order as gmpq and epeck,
 // at close to double speed.
 //

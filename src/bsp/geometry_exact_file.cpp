@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Saved trees of the exact kernel: the point table and the fragments (docs/tree-file.md).
 // Notation: see geometry_exact.h; V input vertices (point ids 0 .. V-1), C constructed points
 // SEG(p, q, plane) (ids V .. V+C-1 in the file, each after its endpoints), F fragments.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Splitter heuristics of the BSP build (docs/contract.md "The BSP"): which fragment of a node's
 // list gives the node its plane. Private to src/bsp; the tree (bsp_tree_impl.h) calls
 // choose_splitter.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Simple_cartesian<double>: plain double predicates and constructions, no filter, no epsilon.
 #pragma once
 #include <CGAL/Simple_cartesian.h>

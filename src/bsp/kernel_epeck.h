@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // CGAL Epeck: lazy exact kernel. Its exact number type is mpq_class or boost's gmp_rational
 // depending on CGAL's configuration; geom::mpq_of reads the GMP rational of either.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // CGAL Epick: exact (filtered) predicates on double coordinates, rounded constructions.
 #pragma once
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Simple_cartesian<CGAL::Gmpq>: plain exact rationals, no filtering (the slow reference).
 #pragma once
 #include <CGAL/Gmpq.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Kernel traits: what the BSP's CGAL geometry (geometry_cgal.h) needs to know about a CGAL
 // kernel beyond its types. Each kernel's specialisation lives in its own header
 // (kernel_<name>.h) so that a translation unit includes only the CGAL headers of the kernel

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // `exbsp order` output (order_json.h), built as text through core/json_text.h (17 digits).
 #include "bsp/order_json.h"
 

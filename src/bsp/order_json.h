@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The `exbsp order` document (docs/contract.md "Command line"): {"eye" | "direction": [x, y, z],
 // "kernel", "heuristic", "fragments": [{"face", "v", "exact"}, ...], "non_finite_fragments"}
 // back to front, "v" with 17 significant digits, "exact" (exact kernels only) as reduced

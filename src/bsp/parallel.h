@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // OpenMP helpers of the BSP build: the team size for a requested thread count, and the
 // collection of an exception thrown inside a parallel loop (it must not leave the region).
 // Private to src/bsp (used by bsp_tree_impl.h and heuristics.h).

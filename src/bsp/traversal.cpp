@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The tree walk of the public API (notation in traversal.h); the walk itself is
 // basic_bsp_tree::walk, shared with order_from_eye.
 #include "bsp/traversal.h"

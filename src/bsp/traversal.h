@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Walking a built BSP tree (exbsp::bsp::traverse_from_eye / traverse_for_direction): its nodes
 // (plane, coplanar fragments, children) and its cells, in the painter's order, so that other
 // primitives (curves, lines, points) can be split and ordered against the node planes exactly.

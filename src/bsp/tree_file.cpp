@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Saved trees: the file's frame (magic, version, kernel, body size, CRC-32), the common part
 // (stats, options, soup) and bsp::save / load. The kernel-specific parts are in
 // tree_file_impl.h. Layout and checks: docs/tree-file.md; notation: tree_file.h.

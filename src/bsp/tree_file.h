@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Private: the saved-tree format (docs/tree-file.md). A little-endian byte writer, a bounded
 // reader that names the byte offset and field of every problem, and the parts of a tree file
 // that do not depend on the kernel. bsp::save / bsp::load (engine.h) are the public side.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Saved trees of the CGAL kernels (epeck, gmpq, epick, double): the fragments of
 // cgal_geometry<K> (docs/tree-file.md). Included at the end of geometry_cgal.h.
 // Notation: tree_file.h. A fragment is its source triangle and nine coordinates: exact kernels

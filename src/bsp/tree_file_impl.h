@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Saved trees: the kernel-independent half of a tree's own part (the nodes) and the loading
 // constructor of basic_bsp_tree<G>. Included by bsp_tree_impl.h, instantiated with the tree.
 // Notation: tree_file.h; layout and checks: docs/tree-file.md.

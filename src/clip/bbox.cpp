@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Bounding boxes (see bbox.h). `b` is the box being grown, one point after the other.
 #include "clip/bbox.h"
 

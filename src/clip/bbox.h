@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Axis-aligned bounding boxes for trivial rejection before per-triangle clipping work.
 //
 // Notation: boxes are closed (min <= p <= max on every axis, clip_types.h); two boxes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Internal precondition checks of the floating-point clippers (not installed API).
 // Every check throws exbsp::usage_error naming the function that was misused.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Small value types shared by the floating-point clippers of src/clip/.
 //
 // Notation: points are std::array<double, N> (vec2, vec3, vec4 = homogeneous x, y, z, w);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Cohen–Sutherland clipping (see cohen_sutherland.h for the outcode notation).
 //
 // Implementation notes: a = the original endpoint being moved, o = the other original

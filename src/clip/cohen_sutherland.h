@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Cohen–Sutherland line clipping against a 2D window or a 3D box.
 //
 // Notation: an outcode has one bit per box boundary, two per axis k:

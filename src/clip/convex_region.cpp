@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Convex regions as half-spaces (notation in convex_region.h). The hull and the convexity
 // test come from CGAL (convex_hull_3, is_convex_2 with exact predicates) rather than hand code.
 #include "clip/convex_region.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Convex regions as half-spaces, for Sutherland–Hodgman (sutherland_hodgman.h).
 //
 // Notation: a 2D half-plane is {a*x + b*y + c >= 0} and a 3D half-space {n·p + d >= 0}, the

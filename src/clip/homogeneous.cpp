@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Homogeneous clipping (see homogeneous.h for the plane order and outcode bits).
 // Plane j (0..5) is w + x, w - x, w + y, w - y, w + z, w - z >= 0: axis j / 2, and the
 // coordinate enters with sign + for even j, - for odd j. `in`/`out` are the polygons before

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Homogeneous (4D) clipping in OpenGL clip space, before the perspective divide.
 //
 // Notation: a clip-space point is (x, y, z, w); the view volume is -w <= x, y, z <= w, i.e.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Segment clipping in clip space: Liang–Barsky and Cohen–Sutherland (notation in
 // homogeneous_segment.h).
 #include "clip/homogeneous_segment.h"

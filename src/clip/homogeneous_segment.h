@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Homogeneous (4D) clipping of a line segment against the OpenGL view volume, before the
 // perspective divide: Liang–Barsky and Cohen–Sutherland in clip coordinates.
 //

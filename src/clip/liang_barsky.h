@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Liang–Barsky parametric line clipping against a 2D window or a 3D box.
 //
 // Notation: the segment is P(t) = p0 + t * d, d = p1 - p0, t in [0, 1]. Each boundary gives

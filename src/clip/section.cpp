@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact sections (notation in section.h). One cut is three passes over an "exact mesh"
 // (Epeck points, triangles as point indices with face ids):
 //   1. signs and split: each triangle is classified by the exact signs of its points and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact sections of triangle meshes by planes (CAD section views): `exbsp section` and the
 // scenes' "clip_planes" (docs/contract.md, "Command line" and "Scenes"). This header hides CGAL;
 // the work is done in section.cpp on CGAL's Epeck kernel.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Output formats of `exbsp section` (section.h): JSON like `exbsp order`'s fragments, OFF of
 // kept ∪ cap, and an SVG of the outline in the cut plane. The JSON is text built with
 // core/json_text.h, so that doubles print with 17 significant digits exactly as `order` does.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Sutherland–Hodgman polygon clipping against a convex region given as half-spaces.
 //
 // Notation: a 2D half-plane is {a*x + b*y + c >= 0}; a 3D half-space is {n·p + d >= 0};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Atomic file output (notation in atomic_file.h). Temporary names are
 // DIR/.exbsp-RRRRRRRRRRRR.tmp (12 random letters): short, so a target name near the 255-byte
 // limit still works. mkstemp is not used because it creates the file 0600 whatever the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Output files, the one writer every exbsp output goes through (order JSON, PNG, SVG, ...).
 // A regular file is replaced atomically: the bytes go to a fresh temporary file in the
 // target's directory (created O_CREAT|O_EXCL|O_NOFOLLOW under a short random name, so a

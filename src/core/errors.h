@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // exbsp error hierarchy: the library reports every failure by throwing one of these;
 // it never aborts or exits. The command line maps them to exit codes (docs/contract.md "Command
 // line"): input_error, scene_error, usage_error and output_error -> 2, limit_error (and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // File names: the one place that decides a file's kind by its extension (mesh input, scene
 // input, and the outputs of render, section and clip).
 //

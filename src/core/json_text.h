@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // JSON text for exbsp's coordinate outputs (`order`, `section`). docs/contract.md "Command line"
 // fixes doubles as 17 significant digits ("%.17g"); nlohmann-json prints the shortest round-trip
 // form instead, so these few pieces are written as text here, once, and the documents that

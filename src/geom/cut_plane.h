@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Plane ∩ segment for a CGAL kernel K, the one construction the tree (bsp/geometry_cgal.h),
 // the section (clip/section.cpp) and the clipping oracle of the tests share. In the style of
 // CGAL's cut-plane traits (Polygon_mesh_processing's Three_point_cut_plane_traits): a functor

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Feature edges (notation in feature_edges.h). Each triangle side becomes a half-edge keyed by
 // its welded vertex pair; sorting the keys groups the triangles around each edge.
 #include "geom/feature_edges.h"

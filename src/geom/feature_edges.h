@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Feature edges of a triangle soup for one viewer (docs/contract.md section 6): the edges a
 // line drawing shows, used by the hidden-line drawing and by sections.
 //

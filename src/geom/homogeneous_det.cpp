@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Filtered exact determinants (notation in homogeneous_det.h).
 //
 // D is evaluated by eliminating a pivot row k with w = 1: every other row i becomes the

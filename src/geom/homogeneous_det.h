@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact signs and exact comparisons of 4 x 4 determinants of homogeneous double points.
 //
 // Notation: a point of projective 3-space is h = (x, y, z, w) with double x, y, z and w = 1 (a

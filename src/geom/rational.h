@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact rationals (GMP mpq) for output, shared by the tree (bsp), the section (clip) and the
 // bindings: the GMP rational behind an exact CGAL number, reduced "p/q" text and the
 // correctly rounded (nearest, ties to even) double.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The combinatorial half of the split convention (docs/contract.md "The BSP"), shared by every
 // geometry (CGAL kernels and exbsp's own exact points) and by every user of it (the tree, the
 // section, the clipping oracle of the tests): which new points a straddling triangle needs,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // One welder for every module that needs a vertex's identity by position.
 //
 // Policy: two vertices are the same when their coordinates compare equal as doubles, so -0.0

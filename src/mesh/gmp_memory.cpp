@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // GMP memory functions that throw std::bad_alloc (see gmp_memory.h). GMP requires the
 // allocation functions never to return NULL; throwing is the only way out besides abort().
 // GMP is compiled with -fexceptions on Debian (libgmp is built so C++ exceptions may cross

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // GMP allocation failures as C++ exceptions. GMP's default allocator calls abort() when
 // malloc fails; exbsp's contract is that the library never aborts, so programs using the
 // exact kernels (gmpq, epeck) should install these functions once, before any GMP number is

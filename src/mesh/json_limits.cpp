@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Nesting depth of JSON text (json_limits.h): one pass that tracks whether it is inside a
 // string (a '"' not escaped by a backslash toggles it) and counts unclosed '[' and '{'
 // outside strings. Lines are counted at '\n', and at a '\r' not followed by '\n'.

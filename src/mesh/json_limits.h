@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Limits checked on JSON text before a JSON library parses it. nlohmann::json parses
 // iteratively but copies, compares and (in older releases) destroys values recursively, so
 // a document nested 100,000 levels deep overflows the stack; the depth is therefore bounded

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Mesh input entry points: choose the reader by extension, load the whole file into memory
 // and hand it to the format reader (read_off.cpp, read_obj.cpp, read_ply.cpp, read_stl.cpp).
 #include "mesh/mesh_io.h"

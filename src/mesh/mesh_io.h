@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Mesh input: OFF, OBJ, PLY and STL into a triangle soup (docs/contract.md "Input").
 // The readers are exbsp's own (not OpenMesh's): a coordinate is the IEEE double nearest to
 // its decimal text, no face is dropped, and bad input throws input_error naming file and line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // OBJ reader (Wavefront, polygonal subset).
 //
 //   v x y z [w] [r g b [a]]      a vertex; w and colour values are ignored (must be numbers)

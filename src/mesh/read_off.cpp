@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // OFF reader (Geomview Object File Format, ASCII).
 //
 //   [ST][C][N]OFF [nv nf [ne]]     header keyword; the counts may follow on the same line

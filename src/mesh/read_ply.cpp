@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // PLY reader (Stanford polygon format: ascii, binary_little_endian, binary_big_endian).
 //
 //   ply

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // STL reader (stereolithography, ascii and binary).
 //
 // binary:  80-byte header (ignored, may start with "solid"), uint32 N, then N records of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Shared helpers of the mesh readers: lines, tokens, exact number parsing, messages.
 // Numbers: a decimal token means the IEEE double nearest to its value; std::from_chars
 // (correctly rounded) does the conversion, this file only adds the sign handling, the

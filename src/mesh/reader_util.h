@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Internal helpers shared by the mesh readers (read_off.cpp, read_obj.cpp, read_ply.cpp,
 // read_stl.cpp). Not part of the public API: include mesh/mesh_io.h instead.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 #include "mesh/soup.h"
 
 #include "core/errors.h"

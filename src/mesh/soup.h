@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Triangle soup: the exact input of every exbsp computation (docs/contract.md "Input").
 // Vertices are the IEEE doubles read from the file; polygons are fan-triangulated from
 // their first vertex and every triangle keeps the 0-based index of its source face.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The Python module `exbsp` (pybind11, numpy arrays in and out); docs/python.md is its manual.
 //
 // Notation: a mesh is (vertices, faces[, face_ids]): vertices an (n, 3) float64 array (the

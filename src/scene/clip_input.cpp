@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // `exbsp clip`: JSON input -> the clippers of src/clip -> JSON or SVG (notation in clip_input.h).
 #include "scene/clip_input.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // `exbsp clip` (docs/contract.md "Command line"): the clipping toolbox from a JSON file.
 //
 // Input: {"region": R, "segments": [[p, q], ...], "polygons": [[p, ...], ...]} with R one of

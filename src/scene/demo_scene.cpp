@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The built-in demo scene. World frame: z up; the parts sit side by side along x.
 //
 // Colours are per mesh and drawn unlit (docs/contract.md "Scenes"), so to make the solids readable

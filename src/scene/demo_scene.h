@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The built-in demo scene of `exbsp render` without a scene file: everything it draws is
 // generated in code, so it works without any mesh file.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // A scene for one bare mesh with a fitted view (notation in mesh_scene.h). The scene is
 // written as a JSON document and validated by parse_scene, so a fitted scene obeys exactly
 // the rules of a scene file; the already-read soup is then attached (the file is not read

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // `exbsp render MESH`: a scene for one bare mesh, with a view fitted to its bounding box.
 //
 // Notation: world axes as the file gives them, +y up (OpenGL's convention, and that of most

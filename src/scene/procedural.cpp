@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Procedural meshes (notation in procedural.h). Polygons are listed counter-clockwise seen
 // from outside, so n = (b - a) x (c - a) points outward.
 #include "scene/procedural.h"

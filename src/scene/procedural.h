@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Procedural meshes for the built-in demo scene and tests (no files needed).
 //
 // Notation: every mesh is a triangle_soup whose faces are polygons (fan-triangulated by

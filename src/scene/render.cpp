@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // `exbsp render`: scene (or the built-in demo) -> one soup -> the stage list of
 // view/effects.h -> atomic PNG, SVG or PDF write; with an orbit, one build and one run of the
 // per-view stages per frame (notation in render.h).

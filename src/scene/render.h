@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // `exbsp render`: scene file (or the built-in demo) -> PNG or SVG, or an orbit animation.
 //
 // Still image: a "reject" stage first drops whole meshes whose bounding box is outside the view

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Scene parsing and validation (notation in scene.h). Every check names its key as a JSON
 // pointer; parse_scene validates the whole document before any mesh file is read.
 #include "scene/scene.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Scene files (docs/contract.md "Scenes"): parsing, validation, view setup and geometry loading.
 //
 // Notation: every error names the scene file and the offending key as a JSON pointer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Modelling hierarchy, camera forms, viewport/image, lines and trackball of a scene
 // (notation in scene.h; docs/contract.md "Scenes").
 #include "scene/scene_parts.h"

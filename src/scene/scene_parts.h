@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Parts of the scene parser kept out of scene.cpp (notation in scene.h; internal to
 // src/scene): the modelling hierarchy ("meshes", "groups", "transforms"), the camera forms,
 // "viewport"/"image"/"aspect", "lines" and "trackball". Each throws scene_error naming its key.

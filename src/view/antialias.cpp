@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // N x N supersampling (notation in antialias.h).
 #include "view/antialias.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The "antialias" effect: N x N supersampling with a box filter. Its stage replaces "raster".
 //
 // Notation: N = settings.samples. The frame is painted at N times the viewport's resolution

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Backface culling: N = (b - a) x (c - a), V towards the viewer, cull when N . V <= 0
 // (notation in backface_culling.h).
 #include "view/backface_culling.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The backface_culling effect (a world-space stage after "order").
 //
 // Notation: a fragment (a, b, c) keeps its source face's orientation; its normal is

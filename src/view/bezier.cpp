@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Bézier curves: de Casteljau evaluation and subdivision, Bernstein weights, derivative,
 // adaptive flattening. Notation as in bezier.h: degree n, control points P_0 .. P_n,
 // parameter t in [0, 1], de Casteljau rounds P_i^(k+1) = (1-t) P_i^(k) + t P_{i+1}^(k).

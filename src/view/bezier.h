@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Bézier curves of any degree in 3D (double), for the "curves" of a scene (docs/contract.md
 // "Scenes").
 //

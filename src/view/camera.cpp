@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // gluLookAt. Notation (camera.h): g = look_at - eye, t = up, w = -g/|g|,
 // u = t x w / |t x w|, v = w x u, Mv = R_uvw T(-eye). polar_view and pilot_view are products
 // of glRotated-style rotations (transforms.h) exactly as camera.h writes them.

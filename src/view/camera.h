@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The viewing transform gluLookAt(eye, look_at, up).
 //
 // Notation: gaze g = look_at - eye, view-up t = up. The camera basis is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The clipping stage: delegates to exbsp_clip's homogeneous (4D) Sutherland–Hodgman clipper
 // (src/clip/homogeneous.h), which clips against w+x, w-x, w+y, w-y, w+z, w-z >= 0 before the
 // divide, interpolates each crossing from the lexicographically smaller end point (shared

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The clipping stage of the viewing pipeline: the one boundary between the view module and
 // exbsp_clip's homogeneous clippers (polygons: clip/homogeneous.h; segments of curves and
 // lines: clip/homogeneous_segment.h), for the view's hpoint. Switching clippers changes only

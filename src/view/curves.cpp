@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Curves: flattening, BSP cell placement and homogeneous clipping (notation in curves.h).
 #include "view/curves.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Bézier curves in the painter's sequence: the "curves" stage (after transform+clip; it exists
 // only when the scene has curves).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Thin-lens depth of field by accumulation (notation in depth_of_field.h).
 #include "view/depth_of_field.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The "depth_of_field" effect: a thin-lens camera rendered by accumulating jittered-aperture
 // painter's renders. Its stage runs after the raster stage (PNG only).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Edge paths (notation in edge_paths.h and edge_visibility.h).
 #include "view/edge_paths.h"
 

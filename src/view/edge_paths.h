@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The edge paths of the hidden-line drawing: the runs of edge_visibility.h projected to the
 // drawing grid (vector_drawing.h), one visible and one hidden path per mesh.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact edge visibility (notation in edge_visibility.h).
 #include "view/edge_visibility.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact edge visibility for the hidden-line drawing (docs/contract.md section 6).
 //
 // Notation: a feature edge (geom/feature_edges.h) from A to B is p(t) = A + t (B - A), 0 <= t

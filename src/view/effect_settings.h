@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Parameters of the effects a scene may name under "effects" (docs/contract.md "Scenes"), as plain
 // data carried by the frame (pipeline.h). The scene parser (src/scene/scene.cpp) validates
 // them and fills in the documented defaults; an effect's stage reads only its own struct, and

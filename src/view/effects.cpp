@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Effect catalogue and the standard stage list (see effects.h for the hooks).
 #include "view/effects.h"
 

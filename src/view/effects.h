@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The catalogue of effects a scene may name under "effects" (docs/contract.md "Scenes"), and where
 // each plugs into the stage list (pipeline.h). An effect runs only when the scene names it:
 // a scene that names none gets exactly the stages build, order, transform+clip, raster (or

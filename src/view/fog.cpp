@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Fog (notation in fog.h).
 #include "view/fog.h"
 

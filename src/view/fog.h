@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The "fog" effect: a screen-space stage after transform+clip that installs its colour
 // change as the frame's sample_shader (sample_shader.h); the painters apply it without
 // knowing it is fog.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // RGB image storage (top row first). See image.h.
 #include "view/image.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // An 8-bit RGB image addressed in window coordinates (viewport.h): pixel (i, j) is column i,
 // window row j counted from the BOTTOM; storage is top row first (PNG order), row r = height-1-j.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // JSON reading with JSON-pointer error messages, for the view's types (numbers, triples,
 // colours): the scene parser (src/scene), `exbsp clip` (scene/clip_input.cpp) and the effects'
 // parameter readers (effects.h) share it.

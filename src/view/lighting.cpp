@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Flat Lambert shading (notation in lighting.h).
 #include "view/lighting.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The "lighting" effect: flat Lambert shading from one directional light (a world-space stage
 // after "order"; settings in effect_settings.h).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Line rasterization for curves: a DDA with an explicit pixel rule (docs/contract.md "Pixels"
 // pixels: pixel (i, j) covers [i, i+1] x [j, j+1], centre (i+1/2, j+1/2), y up).
 //

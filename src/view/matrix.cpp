@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Homogeneous 4x4 matrices (row-major storage, column vectors: p' = M p). See matrix.h.
 #include "view/matrix.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Homogeneous 4x4 matrices, points and vectors in double precision.
 //
 // Notation (used by every file of the view module):

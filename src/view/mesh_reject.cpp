@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Bounding-box trivial reject of whole meshes (notation in mesh_reject.h).
 #include "view/mesh_reject.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The "reject" stage: whole meshes outside the view volume are dropped before any
 // per-triangle work (the BSP build included), by the bounding-box trivial reject.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact fallback of orient2d (orient2d.h): CGAL's filtered exact Orientation_2 on doubles.
 #include "view/orient2d.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact 2D orientation of double points, used by the rasterizer's edge functions.
 //
 // orient2d(a, b, c) = sign of det [a - c, b - c] = sign of (b - a) x (c - a): +1 when c is to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The painter (notation in paint.h).
 #include "view/paint.h"
 

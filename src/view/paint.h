@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The painter: polygons back to front (top-left rule, rasterizer.h) with curve lines
 // (line_raster.h) in their painter's slots (curves.h), each sample through the frame's
 // sample_shader when a screen effect installed one (sample_shader.h: fog, per pixel),

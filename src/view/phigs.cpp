@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // PHIGS view orientation and view mapping (notation in phigs.h).
 #include "view/phigs.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The PHIGS view reference model (docs/contract.md "Scenes", seed 004) as OpenGL-style matrices.
 //
 // Notation: world points p; the view reference coordinates (VRC) have origin VRP and axes

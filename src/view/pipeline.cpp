@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The stage list runner (pipeline.h): runs named stages in order and times them.
 #include "view/pipeline.h"
 

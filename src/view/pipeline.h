@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The viewing pipeline as an explicit list of named stages over one `frame`.
 //
 // Data flow (docs/architecture.md): world-space soup -> BSP build -> fragments converted once to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The viewport's picture inside the image (notation in placement.h).
 #include "view/placement.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The "place" stage: the viewport's picture inside a larger image (glViewport x, y inside the
 // window; docs/contract.md "Scenes" "image", and the letterbox bars of aspect "fit").
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // PNG via libpng. libpng reports errors by longjmp: every function calling setjmp below keeps
 // only trivially destructible locals (pointers), and the callbacks never let a C++ exception
 // cross libpng; error text is stored in a context struct and turned into an exception after

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // PNG encoding and decoding with libpng: 8-bit RGB, no interlace, row 0 = top of the image.
 #pragma once
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // glOrtho, glFrustum, gluPerspective and the PHIGS-style oblique shear (notation in projection.h).
 #include "view/projection.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Projection matrices, OpenGL conventions: eye coordinates look down -z; near and far are
 // positive distances in front of the eye (planes z_eye = -near and z_eye = -far); the result
 // is in clip coordinates where the view volume is -w <= x, y, z <= w, and z_ndc = -1 at near.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Painting with the top-left-rule rasterizer (notation in rasterizer.h).
 #include "view/rasterizer.h"
 

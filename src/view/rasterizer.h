@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Triangle rasterization by edge functions with the top-left rule (docs/contract.md "Pixels").
 //
 // Notation: window coordinates, y UP (viewport.h); pixel (i, j) has centre p = (i+1/2, j+1/2).

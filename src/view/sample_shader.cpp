@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The depth plane of a window-space polygon (notation in sample_shader.h).
 #include "view/sample_shader.h"
 

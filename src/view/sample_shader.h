@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Per-sample colour changes of screen-space effects (fog), kept out of the painters.
 //
 // A screen effect's stage (fog.h) installs a sample_shader in the frame; the painters

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Curves in the frame: the scene's Bézier curves (input, world space) and the product of the
 // "curves" stage, pieces of their flattened polylines in window coordinates, each tagged
 // with its place in the painter's sequence (curves.h explains the depth rule).

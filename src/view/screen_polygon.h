@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The product of the transform+clip stage: one clipped fragment in window coordinates.
 #pragma once
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Standard pipeline stages (notation in stages.h).
 #include "view/stages.h"
 

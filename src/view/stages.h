@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The standard stages of the viewing pipeline (pipeline.h). Each takes the frame, fills its
 // products and returns a short note for the verbose log.
 //

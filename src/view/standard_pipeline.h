@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The standard stage lists of the viewing pipeline (pipeline.h): "build", then the per-view
 // stages with the effects a scene names (effects.h holds the effect catalogue they come
 // from). Kept apart from effects.h so that the installed API needs no JSON types.

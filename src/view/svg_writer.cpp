@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // SVG writer (notation in svg_writer.h). Coordinates are printed with std::to_chars, the
 // shortest text that reads back as the same double.
 #include "view/svg_writer.h"

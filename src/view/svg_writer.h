@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // SVG output: the visible-region drawing (vector_drawing.h, the default) and the painter's
 // stack ("svg": {"mode": "painter"}), a vector drawing that looks like the PNG.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Arcball and unit quaternions. Notation as in trackball.h: q = (w, x, y, z) = w + v with
 // v = (x, y, z); rotation v' = q v q*; products compose right to left; eye coordinates x right,
 // y up, z towards the viewer. For pure unit quaternions p, q the arcball quaternion

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Virtual trackball: Shoemake's arcball ("ARCBALL: a user interface for specifying
 // three-dimensional orientation using a mouse", Graphics Interface 1992) and unit quaternions.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Modelling transforms (glTranslate / glRotate / glScale equivalents) and a matrix stack
 // (glPushMatrix / glPopMatrix). Matrices are row-major and act on column vectors (matrix.h);
 // multiply() post-multiplies like OpenGL: the last transform given is applied first.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Visible regions, hidden-line edges and curves for vector output (notation in
 // vector_drawing.h). The 2D Booleans are Clipper's (libpolyclipping): integer coordinates, so
 // the grid points of the drawing are its exact input and output; a measurement against CGAL's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Vector output (SVG, PDF) as one intermediate list of paths: the visible-region drawing and
 // the painter's stack (docs/contract.md "Pixels").
 //

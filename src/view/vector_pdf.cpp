@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // cairo PDF writer (notation in vector_pdf.h).
 #include "view/vector_pdf.h"
 

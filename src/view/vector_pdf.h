@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // PDF output of a vector drawing (vector_drawing.h) through cairo's PDF surface: the same
 // paths, colours, groups' drawing order and stroke styles as the SVG writer.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Viewport transform: ndc [-1, 1]^3 -> window coordinates (notation in viewport.h).
 #include "view/viewport.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The viewport transform (glViewport + glDepthRange) from normalized device coordinates
 // (ndc, after the perspective divide, view volume [-1, 1]^3) to window coordinates.
 //

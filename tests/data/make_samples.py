@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-3.0-or-later
 """Writes the mesh reader samples: good meshes in tests/data/ and the malformed corpus in
 tests/data/bad/ with its manifest EXPECTED.tsv (file, expected line (0 = none), message
 substring). The outputs are committed; rerun after editing a case:

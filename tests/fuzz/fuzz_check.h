@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Shared oracle of the exbsp fuzz targets (tests/fuzz/README.md).
 //
 // A target feeds one input to a parser inside run_guarded(). The contract (DESIGN.md

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The mesh-reader fuzz targets (fuzz_off, fuzz_obj, fuzz_ply, fuzz_stl): one input = the
 // complete contents of a mesh file, read with read_mesh_data (mesh/mesh_io.h).
 //

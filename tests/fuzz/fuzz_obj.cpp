@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // libFuzzer target: the OBJ reader (read_mesh_data with mesh_format::obj). Oracle: fuzz_mesh.h.
 #include "fuzz_mesh.h"
 

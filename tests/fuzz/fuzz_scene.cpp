@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // libFuzzer target: the scene parser (scene/scene.h, DESIGN.md section 5). One input = the
 // text of a scene file. Nothing is rendered.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // libFuzzer target: the saved-tree loader (bsp::deserialize, docs/tree-file.md).
 //
 // One input = the bytes of a tree file, loaded twice: as is (the frame checks: magic,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Writes the seed corpus of fuzz_tree (corpus/fuzz_tree/): small saved trees of every kernel
 # and heuristic, made with the exbsp command line, and damaged variants of one of them.
 #   tests/fuzz/make_tree_seeds.sh [EXBSP]     EXBSP: the exbsp binary (default build/src/app/exbsp)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Builds the exbsp libFuzzer targets and runs each for RUNS executions (README.md).
 #
 #   tests/fuzz/run.sh [RUNS]          RUNS defaults to 1000000; 0 = only build and replay

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
 # Tests of the Python module exbsp (src/python, docs/python.md), run by ctest as
 #   PYTHONPATH=build/src/python /usr/bin/python3 -m pytest tests/python
 # Degenerate input and misuse first; then orders, exact Fractions (checked against the same

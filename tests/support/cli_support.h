@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Helpers of the tests that run the exbsp command line (EXBSP_CLI) as a separate process:
 // shell quoting, one run with stdout and stderr captured, and a GoogleTest fixture with a
 // fresh temporary directory per test, the CLI run inside it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Explicit instantiations of the tests' exact triangle/plane clipper (exact_triangle_clip.h) for
 // Epeck and Simple_cartesian<Gmpq>: the only translation unit that compiles them.
 #include "support/exact_triangle_clip.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The tests' oracle for exact clipping and splitting of triangles by planes with a CGAL kernel:
 // triangles as points (no shared vertices, no outline), checked against Sutherland–Hodgman in
 // test_clip and against the section's pieces in test_section. Test support only, not in the

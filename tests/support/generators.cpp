@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // RapidCheck generators of triangle soups and the CAD corpus cases; what each generator is
 // for: tests/HARD_CASES.md, declarations and notation in generators.h.
 #include "support/generators.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // RapidCheck generators of triangle soups (tests/HARD_CASES.md says what each is for and
 // what each invariant of the checker proves), the CAD corpus cases, and the glue that builds
 // a generated soup with every heuristic and fails the property on any broken invariant

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The hidden-line oracle (hidden_line_oracle.h): feature edges, ray casts to the eye with
 // exact or filtered-exact signs, and the comparison with a drawing's edge runs.
 #include "support/hidden_line_oracle.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The hidden-line oracle (issue 23): an independent judge of the edges of a vector drawing
 // (view/vector_drawing.h: the solid visible_edge and dashed hidden_edge runs of the SVG).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The views of the hidden-line suite (tests/test_hidden_lines.cpp) and of bench/hlr_judge: the
 // standard views (front, back, top, bottom, left, right, two isometric corners) and two general
 // ones, and the frame of a soup seen along one of them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Deterministic generated inputs; notation at the top of inputs.h.
 #include "support/inputs.h"
 

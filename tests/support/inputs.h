@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Deterministic generated inputs shared by the tests and the benchmarks: the same soup on
 // every machine for a given size and seed (splitmix64, not std:: distributions), and the one
 // OFF writer of the tests (coordinates with 17 significant digits: reading the file back

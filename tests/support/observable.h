@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // What a user can observe of a built tree, as one string, for tests that compare trees across
 // kernels, thread counts and saved files (test_exact_kernel, test_heuristics, test_parallel):
 // statistics without timings, each fragment's face with its exact and double coordinates and

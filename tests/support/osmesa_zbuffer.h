@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Mesa's off-screen OpenGL (OSMesa, llvmpipe; Debian libosmesa6-dev, cmake/osmesa.cmake) as an
 // independent z-buffer renderer: the context of tests/test_oracle_gl.cpp, and a flat-colour
 // triangle renderer shared by tests/test_vector.cpp and bench/zbuffer_render.cpp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Small helpers of the test files; see test_helpers.h.
 #include "support/test_helpers.h"
 

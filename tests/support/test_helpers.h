@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Small helpers of the test files, one copy each: whole-file reads and writes, temporary
 // directories, RapidCheck's fixed seed, soups from triangles, the key of a scene_error, the
 // colours of an image, quads and perspective frames, a z-buffer oracle of a frame, matrices from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The exact invariant checker of BSP trees; notation and what each check means at the top of
 // tree_checker.h. Compiled once here for the CGAL kernels (explicit instantiations at the end).
 //

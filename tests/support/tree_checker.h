@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The exact invariant checker of BSP trees, shared by the tests (tests/test_properties.cpp,
 // test_degenerate.cpp: every invariant of tests/HARD_CASES.md must hold) and the benchmarks
 // (bench/defects.cpp: how many items an inexact kernel's tree breaks). Compiled once, in

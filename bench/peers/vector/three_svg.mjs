@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // three.js's SVGRenderer (in jsdom) drawing the scenes of bench/vector_peers.py.
 //
 //   node bench/peers/vector/three_svg.mjs JOBS.json
