@@ -6,6 +6,11 @@
 //   <exbsp/bsp/exact_gmp.h>          exact fragment coordinates as GMP rationals (gmpxx.h)
 //   <exbsp/adapters/openmesh.h>      OpenMesh meshes to and from exbsp (target exbsp::openmesh)
 //   <exbsp/adapters/cgal_face_graph.h>  any CGAL FaceGraph to and from exbsp (CGAL)
+// and the two headers of the GPL component exbsp::gpl (docs/licence.md) are not included either:
+//   <exbsp/clip/section_cap.h>       sections and clipping with caps
+//   <exbsp/clip/convex_hull.h>       the convex hull of 3D points as half-spaces
+// The rest is the LGPL components: exbsp::core (core/, mesh/, bsp/, clip/, scene/procedural.h,
+// adapters/triangle_list.h) and exbsp::render (view/).
 #pragma once
 #include "core/errors.h"
 #include "core/version.h"

@@ -6,10 +6,18 @@
 #      -Wall -Wextra -Werror;
 #   2. the exported targets carry no compile options (no -Wall/-Werror/-ffp-contract/
 #      -frounding-math/-fsanitize) and no absolute library paths (imported targets instead);
-#   3. examples/consumer (find_package(exbsp)) and examples/viewer (find_package(exbsp
-#      COMPONENTS openmesh): OpenMesh reader and adapter, BSP, PNG) build and run, against the
-#      static library and, when installed, the shared one (BUILD_SHARED_LIBS=ON);
-#   4. find_package(exbsp) works on a machine without OpenMesh unless the component is asked.
+#   3. examples/consumer (find_package(exbsp COMPONENTS core)) and examples/viewer
+#      (find_package(exbsp COMPONENTS openmesh render): OpenMesh reader and adapter, BSP, PNG)
+#      build and run, against the static libraries and, when installed, the shared ones
+#      (BUILD_SHARED_LIBS=ON); the shared viewer loads libexbsp_core and libexbsp_render, never
+#      the GPL libexbsp_gpl;
+#   4. find_package(exbsp) works on a machine without OpenMesh unless the component is asked;
+#   5. COMPONENTS core works where cairo, Clipper, libpng and OpenMP cannot be found: their
+#      lookups are disabled or point at files that do not exist, and the consumer's targets,
+#      compile and link lines and loaded libraries show none of them (the static core library
+#      alone still needs the OpenMP runtime, so there OpenMP stays findable);
+#   6. a consumer of every component (core, render, gpl, openmesh) builds and runs: a capped
+#      section (gpl) of a procedural box (core), an image written as PNG (render).
 # Arguments: BUILD_DIR SOURCE_DIR.
 set -euo pipefail
 # (grep -q reads from here-strings, never from a pipe: with pipefail, grep -q quitting at the
@@ -37,7 +45,7 @@ cxx="${cxx:-c++}"
 headers="$(cd "$prefix/include" && find exbsp -name '*.h' | sort)"
 grep -q '^exbsp/exbsp.h$' <<<"$headers" || fail "no umbrella header exbsp/exbsp.h"
 grep -q '^exbsp/core/version.h$' <<<"$headers" || fail "no exbsp/core/version.h"
-for private in bsp_tree_impl.h bsp_impl.h bsp_tree.h kernel_ geometry_ reader_util.h fast_orientation.h \
+for private in section_impl.h bsp_tree_impl.h bsp_impl.h bsp_tree.h kernel_ geometry_ reader_util.h fast_orientation.h \
                exact_output.h split_pattern.h cut_plane.h rational.h json_reader.h clip_checks.h rasterizer.h; do
   if grep -q "/$private" <<<"$headers"; then fail "private header installed: $private"; fi
 done
@@ -53,13 +61,15 @@ echo "$headers" | xargs -P 2 -I{} bash -c 'check_header {}' || fail "an installe
 echo "install_consumer: $(echo "$headers" | wc -l) public headers, each self-contained"
 
 # 2. Exported interface.
-targets="$(cat "$cmake_dir"/exbspTargets*.cmake)"
+targets="$(cat "$cmake_dir"/exbsp_*_targets*.cmake)"
 if grep -q 'INTERFACE_COMPILE_OPTIONS' <<<"$targets"; then fail "exported INTERFACE_COMPILE_OPTIONS"; fi
 if grep -Eq -- '-W(all|extra|error)|-ffp-contract|-frounding-math|-fsanitize' <<<"$targets"; then
   fail "exported compile or sanitizer flags"
 fi
 links="$(grep 'INTERFACE_LINK_LIBRARIES' <<<"$targets" || true)"
 if grep -q '"/' <<<"$links"; then fail "absolute path in the link interface"; fi
+core_targets="$(cat "$cmake_dir"/exbsp_core_targets*.cmake)"
+if grep -Eiq 'cairo|polyclipping|PNG' <<<"$core_targets"; then fail "the core targets name cairo, Clipper or libpng"; fi
 echo "install_consumer: exported targets carry no compile options and no absolute library paths"
 
 # 3. The examples, static and shared.
@@ -74,7 +84,7 @@ awk 'BEGIN {
     print 4, q[4*f+1] + 8*s, q[4*f+2] + 8*s, q[4*f+3] + 8*s, q[4*f+4] + 8*s
 }' >"$work/two_cubes.off"
 variants=(static)
-if [ -n "$(find "$prefix" -name 'libexbsp.so*' | head -1)" ]; then variants+=(shared); fi
+if [ -n "$(find "$prefix" -name 'libexbsp_core.so*' | head -1)" ]; then variants+=(shared); fi
 for variant in "${variants[@]}"; do
   shared=OFF
   [ "$variant" = shared ] && shared=ON
@@ -89,9 +99,11 @@ for variant in "${variants[@]}"; do
   done
   loads="$(ldd "$work/build-viewer-$variant/exbsp_viewer")"
   if [ "$variant" = shared ]; then
-    [[ "$loads" == *libexbsp.so* ]] || fail "the shared viewer does not load libexbsp.so"
+    [[ "$loads" == *libexbsp_core.so* && "$loads" == *libexbsp_render.so* ]] \
+      || fail "the shared viewer does not load libexbsp_core.so and libexbsp_render.so"
+    [[ "$loads" != *libexbsp_gpl.so* ]] || fail "the (LGPL) viewer loads the GPL libexbsp_gpl.so"
   else
-    [[ "$loads" != *libexbsp.so* ]] || fail "the static viewer loads libexbsp.so"
+    [[ "$loads" != *libexbsp_* ]] || fail "the static viewer loads a shared exbsp library"
   fi
   "$work/build-consumer-$variant/exbsp_consumer" >/dev/null || fail "exbsp_consumer ($variant)"
   "$work/build-viewer-$variant/exbsp_viewer" "$source_dir/tests/data/cube.off" "$work/cube.png" "$work/cube_fragments.off" \
@@ -121,4 +133,95 @@ EOF
 cmake -S "$b/src" -B "$b/build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_DISABLE_FIND_PACKAGE_OpenMesh=ON \
   >"$b/log" 2>&1 || { cat "$b/log"; fail "find_package(exbsp) needs OpenMesh"; }
 echo "install_consumer: find_package(exbsp) works without OpenMesh"
+
+# 5. The core alone, where cairo, Clipper, libpng and OpenMP cannot be found. CMake's own
+# lookups are disabled (CMAKE_DISABLE_FIND_PACKAGE_<Pkg>); exbsp's cairo.cmake and
+# polyclipping.cmake find_path/find_library results are preset to files that do not exist, so
+# that any use of them fails the build; and the consumer must not even have the targets.
+for variant in "${variants[@]}"; do
+  shared=OFF
+  hide=(-DCMAKE_DISABLE_FIND_PACKAGE_PNG=ON -DCMAKE_DISABLE_FIND_PACKAGE_PkgConfig=ON
+        -DEXBSP_CAIRO_INCLUDE_DIR=/nonexistent/include -DEXBSP_CAIRO_LIBRARY=/nonexistent/libcairo.so
+        -DEXBSP_POLYCLIPPING_INCLUDE_DIR=/nonexistent/include
+        -DEXBSP_POLYCLIPPING_LIBRARY=/nonexistent/libpolyclipping.so)
+  if [ "$variant" = shared ]; then
+    shared=ON
+    hide+=(-DCMAKE_DISABLE_FIND_PACKAGE_OpenMP=ON)
+  fi
+  b="$work/core-only-$variant"
+  mkdir -p "$b/src"
+  cat >"$b/src/CMakeLists.txt" <<END_OF_PROJECT
+cmake_minimum_required(VERSION 3.18)
+project(core_only LANGUAGES CXX)
+find_package(exbsp 0.1 REQUIRED COMPONENTS core)
+foreach(t exbsp::render exbsp::gpl exbsp::cairo exbsp::polyclipping PNG::PNG)
+  if(TARGET \${t})
+    message(FATAL_ERROR "find_package(exbsp COMPONENTS core) made \${t}")
+  endif()
+endforeach()
+if("$shared" STREQUAL "ON" AND TARGET OpenMP::OpenMP_CXX)
+  message(FATAL_ERROR "find_package(exbsp COMPONENTS core) looked up OpenMP for the shared library")
+endif()
+add_executable(exbsp_consumer $source_dir/examples/consumer/main.cpp)
+target_link_libraries(exbsp_consumer PRIVATE exbsp::core)
+END_OF_PROJECT
+  cmake -S "$b/src" -B "$b/build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+    -DBUILD_SHARED_LIBS=$shared "${hide[@]}" "${consumer_flags[@]}" >"$b/log" 2>&1 \
+    || { cat "$b/log"; fail "find_package(exbsp COMPONENTS core) ($variant) needs more than GMP"; }
+  cmake --build "$b/build" >>"$b/log" 2>&1 || { cat "$b/log"; fail "the core-only consumer ($variant) does not build"; }
+  if grep -Eiq 'cairo|polyclipping|png|nonexistent' "$b/build/build.ninja"; then
+    fail "the core-only consumer ($variant) is compiled or linked with cairo, Clipper or libpng"
+  fi
+  loads="$(ldd "$b/build/exbsp_consumer")"
+  if grep -Eq 'libcairo|libpolyclipping|libpng|libexbsp_render|libexbsp_gpl' <<<"$loads"; then
+    fail "the core-only consumer ($variant) loads: $loads"
+  fi
+  if [ "$variant" = shared ]; then
+    [[ "$loads" == *libexbsp_core.so* ]] || fail "the shared core-only consumer does not load libexbsp_core.so"
+  fi
+  "$b/build/exbsp_consumer" >/dev/null || fail "the core-only consumer ($variant) failed"
+  hidden="cairo, Clipper, libpng"
+  [ "$variant" = shared ] && hidden+=", OpenMP"
+  echo "install_consumer: COMPONENTS core builds and runs ($variant) without $hidden"
+done
+
+# 6. Every component at once.
+for variant in "${variants[@]}"; do
+  shared=OFF
+  [ "$variant" = shared ] && shared=ON
+  b="$work/all-$variant"
+  mkdir -p "$b/src"
+  cat >"$b/src/CMakeLists.txt" <<'END_OF_PROJECT'
+cmake_minimum_required(VERSION 3.18)
+project(all_components LANGUAGES CXX)
+find_package(exbsp 0.1 REQUIRED COMPONENTS core render gpl openmesh)
+add_executable(all_components main.cpp)
+target_link_libraries(all_components PRIVATE exbsp::exbsp exbsp::openmesh)
+END_OF_PROJECT
+  cat >"$b/src/main.cpp" <<'END_OF_PROGRAM'
+#include <exbsp/clip/convex_hull.h>
+#include <exbsp/clip/section_cap.h>
+#include <exbsp/exbsp.h>
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+  const exbsp::triangle_soup box = exbsp::scene::make_box({0, 0, 0}, {1, 1, 1});  // core
+  const exbsp::section_result core = exbsp::section(box, {0, 0, 1, -0.5});       // core
+  const exbsp::section_result capped = exbsp::section_with_cap(box, {0, 0, 1, -0.5});  // gpl
+  const auto hull =
+      exbsp::clip::convex_hull_half_spaces({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}});  // gpl
+  exbsp::view::image img(8, 8, {255, 255, 255});  // render
+  if (argc > 1) exbsp::view::write_png(img, argv[1]);
+  std::printf("cap %zu, hull %zu\n", capped.cap.size(), hull.size());
+  return core.cap.empty() && !capped.cap.empty() && hull.size() == 4 ? 0 : 1;
+}
+END_OF_PROGRAM
+  cmake -S "$b/src" -B "$b/build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+    -DBUILD_SHARED_LIBS=$shared "${consumer_flags[@]}" >"$b/log" 2>&1 \
+    || { cat "$b/log"; fail "find_package(exbsp COMPONENTS core render gpl openmesh) ($variant)"; }
+  cmake --build "$b/build" >>"$b/log" 2>&1 || { cat "$b/log"; fail "the all-components consumer ($variant) does not build"; }
+  "$b/build/all_components" "$b/out.png" || fail "the all-components consumer ($variant) failed"
+  echo "install_consumer: COMPONENTS core render gpl openmesh build and run ($variant)"
+done
 echo "install_consumer: OK"

@@ -31,6 +31,7 @@
 #include "adapters/openmesh.h"
 #include "bsp/engine.h"
 #include "clip/section.h"
+#include "clip/section_cap.h"
 #include "core/errors.h"
 #include "mesh/soup.h"
 
@@ -314,7 +315,7 @@ TEST(OpenMeshFromExbsp, IntersectingCubesGiveEveryFragmentAFace) {
 
 TEST(OpenMeshFromExbsp, SectionOfCubeIsClosedWithCapFace) {
   const triangle_soup s = exbsp::openmesh::soup_from_mesh(openmesh_cube<poly_mesh>());
-  const exbsp::section_result r = exbsp::section(s, {1, 1, 1, -1.5});  // a hexagonal cut
+  const exbsp::section_result r = exbsp::section_with_cap(s, {1, 1, 1, -1.5});  // a hexagonal cut
   ASSERT_TRUE(r.closed);
   ASSERT_FALSE(r.cap.empty());
   tri_mesh m;
@@ -438,7 +439,7 @@ TEST(CgalFromExbsp, IntersectingPartsGiveEveryFragmentAFace) {
 }
 
 TEST(CgalFromExbsp, SectionIntoPolyhedronIsClosed) {
-  const exbsp::section_result r = exbsp::section(soup_cube(), {0, 0, 1, -0.25});
+  const exbsp::section_result r = exbsp::section_with_cap(soup_cube(), {0, 0, 1, -0.25});
   ASSERT_TRUE(r.closed);
   polyhedron p;
   auto ids = get(CGAL::dynamic_face_property_t<std::uint32_t>(), p);

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "support/cli_support.h"
+#include "clip/convex_hull.h"
 #include "clip/convex_region.h"
 #include "clip/sutherland_hodgman.h"
 #include "core/errors.h"

@@ -28,6 +28,7 @@
 #include <sstream>
 
 #include "clip/section.h"
+#include "clip/section_cap.h"
 #include "core/errors.h"
 #include "geom/rational.h"
 #include "mesh/mesh_io.h"
@@ -151,7 +152,7 @@ mpq_class cap_area2_along_n(const section_result& r) {
 /// Face by face, the pieces kept by P and by -P tile the input face (in-plane faces twice).
 void expect_tiling(const triangle_soup& soup, const section_plane& p) {
   const section_plane neg{-p[0], -p[1], -p[2], -p[3]};
-  const section_result a = exbsp::section(soup, p), b = exbsp::section(soup, neg);
+  const section_result a = exbsp::section_with_cap(soup, p), b = exbsp::section_with_cap(soup, neg);
   std::vector<q3> sum(soup.face_count, q3{0, 0, 0});
   for (const section_result* r : {&a, &b}) {
     const std::vector<q3> pts = exact_points(*r);
@@ -197,7 +198,7 @@ triangle_soup unit_cube() {
 // --- degenerate cuts ---------------------------------------------------------------------
 
 TEST(Section, box_is_oriented_outward_and_closed) {
-  const section_result r = exbsp::section(unit_cube(), {0, 0, 1, 10});  // everything kept
+  const section_result r = exbsp::section_with_cap(unit_cube(), {0, 0, 1, 10});  // everything kept
   EXPECT_TRUE(r.closed);
   EXPECT_EQ(r.kept.size(), 12u);
   EXPECT_TRUE(r.cap.empty());
@@ -211,7 +212,7 @@ TEST(Section, box_is_oriented_outward_and_closed) {
 
 TEST(Section, plain_cut_of_a_cube_has_a_unit_square_cap) {
   const section_plane p{0, 0, 1, -0.5};
-  const section_result r = exbsp::section(unit_cube(), p);
+  const section_result r = exbsp::section_with_cap(unit_cube(), p);
   expect_closed_section(r);
   ASSERT_EQ(r.outline.size(), 1u);
   EXPECT_EQ(cap_area2_along_n(r), -2);  // area 1, facing -z
@@ -220,7 +221,7 @@ TEST(Section, plain_cut_of_a_cube_has_a_unit_square_cap) {
 
 TEST(Section, plane_through_three_vertices) {
   const section_plane p{1, 1, 1, -1};  // through (1,0,0), (0,1,0), (0,0,1)
-  const section_result r = exbsp::section(unit_cube(), p);
+  const section_result r = exbsp::section_with_cap(unit_cube(), p);
   expect_closed_section(r);
   ASSERT_EQ(r.outline.size(), 1u);
   // The three corners and where the face diagonals cross the plane (collinear points).
@@ -228,12 +229,12 @@ TEST(Section, plane_through_three_vertices) {
   EXPECT_EQ(cap_area2_along_n(r),
             -3);  // triangle of area sqrt(3)/2; (2 area n̂)·n = 2 * sqrt3/2 * sqrt3
   expect_tiling(unit_cube(), p);
-  expect_closed_section(exbsp::section(unit_cube(), {-1, -1, -1, 1}));
+  expect_closed_section(exbsp::section_with_cap(unit_cube(), {-1, -1, -1, 1}));
 }
 
 TEST(Section, diagonal_plane_along_two_edges) {
   const section_plane p{1, -1, 0, 0};  // x = y: contains the edges x=y=0 and x=y=1
-  const section_result r = exbsp::section(unit_cube(), p);
+  const section_result r = exbsp::section_with_cap(unit_cube(), p);
   expect_closed_section(r);
   // The cut rectangle: sqrt(2) by 1; 2 area (n̂·n) = 2 sqrt2 sqrt2 = 4.
   EXPECT_EQ(cap_area2_along_n(r), -4);
@@ -242,7 +243,7 @@ TEST(Section, diagonal_plane_along_two_edges) {
 
 TEST(Section, plane_containing_a_face_keeps_the_whole_solid_on_its_side) {
   const section_result r =
-      exbsp::section(unit_cube(), {0, 0, 1, 0});  // z >= 0: bottom face in the plane
+      exbsp::section_with_cap(unit_cube(), {0, 0, 1, 0});  // z >= 0: bottom face in the plane
   expect_closed_section(r);
   EXPECT_EQ(r.kept.size(), 12u);
   EXPECT_TRUE(r.cap.empty());
@@ -252,7 +253,7 @@ TEST(Section, plane_containing_a_face_keeps_the_whole_solid_on_its_side) {
 }
 
 TEST(Section, plane_containing_a_face_with_the_solid_removed_keeps_a_double_sided_face) {
-  const section_result r = exbsp::section(unit_cube(), {0, 0, -1, 0});  // z <= 0
+  const section_result r = exbsp::section_with_cap(unit_cube(), {0, 0, -1, 0});  // z <= 0
   expect_closed_section(r);
   EXPECT_EQ(r.kept.size(), 2u);  // the bottom face, facing -z
   EXPECT_EQ(r.stats.in_plane, 2u);
@@ -264,7 +265,7 @@ TEST(Section, tangent_planes_cut_nothing) {
   for (const section_plane& p :
        {section_plane{1, 1, 0, -2}, section_plane{-1, -1, 0, 2},      // along edge x=y=1
         section_plane{1, 1, 1, -3}, section_plane{-1, -1, -1, 3}}) {  // at vertex (1,1,1)
-    const section_result r = exbsp::section(unit_cube(), p);
+    const section_result r = exbsp::section_with_cap(unit_cube(), p);
     expect_closed_section(r);
     EXPECT_TRUE(r.outline.empty());
     EXPECT_TRUE(r.cap.empty());
@@ -280,22 +281,23 @@ TEST(Section, plane_through_a_non_manifold_vertex) {
   for (const section_plane& p : {section_plane{1, 1, 1, -3}, section_plane{0, 0, 1, -1},
                                  section_plane{0, 0, -1, 1}, section_plane{1, -1, 0, 0}}) {
     SCOPED_TRACE(testing::Message() << p[0] << "," << p[1] << "," << p[2] << "," << p[3]);
-    const section_result r = exbsp::section(s, p);
+    const section_result r = exbsp::section_with_cap(s, p);
     expect_closed_section(r);
     expect_tiling(s, p);
   }
   // x = y: two rectangles touching at the shared vertex, as two simple loops.
-  const section_result r = exbsp::section(s, {1, -1, 0, 0});
+  const section_result r = exbsp::section_with_cap(s, {1, -1, 0, 0});
   EXPECT_EQ(r.outline.size(), 2u);
   // x+y+z = 3 only touches both cubes at the shared vertex: nothing to cut.
-  EXPECT_TRUE(exbsp::section(s, {1, 1, 1, -3}).outline.empty());
-  expect_closed_section(exbsp::section(s, {1, 1, -2, 0}));  // through the vertex, cutting both
+  EXPECT_TRUE(exbsp::section_with_cap(s, {1, 1, 1, -3}).outline.empty());
+  expect_closed_section(
+      exbsp::section_with_cap(s, {1, 1, -2, 0}));  // through the vertex, cutting both
 }
 
 TEST(Section, one_ulp_off_a_face) {
   const double below = std::nextafter(1.0, 0.0);
   const section_plane p{0, 0, 1, -below};  // z >= 1 - 2^-53: a slab one ulp thick
-  const section_result r = exbsp::section(unit_cube(), p);
+  const section_result r = exbsp::section_with_cap(unit_cube(), p);
   expect_closed_section(r);
   EXPECT_EQ(cap_area2_along_n(r), -2);
   for (const auto& t : r.cap)
@@ -304,7 +306,7 @@ TEST(Section, one_ulp_off_a_face) {
   expect_tiling(unit_cube(), p);
   // A plane tilted by 2^-60 through the top edge x = 0: the top face straddles it.
   const section_plane tilt{std::ldexp(1.0, -60), 0, 1, -1};
-  const section_result t = exbsp::section(unit_cube(), tilt);
+  const section_result t = exbsp::section_with_cap(unit_cube(), tilt);
   expect_closed_section(t);
   EXPECT_GT(t.stats.split, 0u);
   expect_tiling(unit_cube(), tilt);
@@ -323,7 +325,7 @@ TEST(Section, collinear_sliver_closing_a_t_junction) {
   for (const section_plane& p : {section_plane{1, 0, 0, -0.25}, section_plane{1, 0, 0, -0.5},
                                  section_plane{1, 0.5, -1, 0.5}, section_plane{-1, 0, 0, 0.75}}) {
     SCOPED_TRACE(testing::Message() << p[0] << "," << p[1] << "," << p[2] << "," << p[3]);
-    const section_result r = exbsp::section(s, p);
+    const section_result r = exbsp::section_with_cap(s, p);
     EXPECT_EQ(r.stats.degenerate_input, 1u);
     expect_closed_section(r);
     expect_tiling(s, p);
@@ -336,7 +338,7 @@ TEST(Section, holes_and_nested_islands) {
   add_box(s, {2, 2, 2}, {8, 8, 8}, true);  // cavity
   add_box(s, {4, 4, 4}, {6, 6, 6});        // island inside the cavity
   const section_plane p{0, 0, 1, -5};
-  const section_result r = exbsp::section(s, p);
+  const section_result r = exbsp::section_with_cap(s, p);
   expect_closed_section(r);
   EXPECT_EQ(r.outline.size(), 3u);
   EXPECT_EQ(cap_area2_along_n(r), -2 * (100 - 36 + 4));
@@ -355,7 +357,7 @@ TEST(Section, holes_and_nested_islands) {
   EXPECT_EQ(areas, (std::multiset<mpq_class>{-36, 4, 100}));
   expect_tiling(s, p);
   // A slanted cut through all three.
-  expect_closed_section(exbsp::section(s, {0.25, 0.5, 1, -8.5}));
+  expect_closed_section(exbsp::section_with_cap(s, {0.25, 0.5, 1, -8.5}));
 }
 
 TEST(Section, touching_solids_with_t_junctions_are_refined_to_stay_closed) {
@@ -364,7 +366,7 @@ TEST(Section, touching_solids_with_t_junctions_are_refined_to_stay_closed) {
   add_box(s, {1, 0.25, 0}, {2, 0.75, 1});  // shares part of the face x = 1, not its vertices
   for (const section_plane& p :
        {section_plane{0, 0, 1, -0.5}, section_plane{0.125, 0.25, 1, -0.75}}) {
-    const section_result r = exbsp::section(s, p);
+    const section_result r = exbsp::section_with_cap(s, p);
     expect_closed_section(r);
     EXPECT_GT(r.stats.split_constraints, 0u);
   }
@@ -374,7 +376,7 @@ TEST(Section, overlapping_solids_cover_the_overlap_twice) {
   triangle_soup s;
   add_box(s, {0, 0, 0}, {2, 2, 2});
   add_box(s, {1, 1, 1}, {3, 3, 3});  // a second closed solid through the first
-  const section_result r = exbsp::section(s, {0, 0, 1, -1.5});
+  const section_result r = exbsp::section_with_cap(s, {0, 0, 1, -1.5});
   expect_closed_section(r);
   EXPECT_GT(r.stats.cap_steiner_points, 0u);      // the loops cross at (2,1) and (1,2)
   EXPECT_EQ(cap_area2_along_n(r), -2 * (4 + 4));  // two squares of area 4, the overlap twice
@@ -399,7 +401,7 @@ TEST(Section, many_small_integer_planes_hit_vertices_edges_and_faces_and_stay_cl
                           next(-12, 12) / 2.0};
     if (p[0] == 0 && p[1] == 0 && p[2] == 0) continue;
     SCOPED_TRACE(testing::Message() << p[0] << "," << p[1] << "," << p[2] << "," << p[3]);
-    const section_result r = exbsp::section(s, p);
+    const section_result r = exbsp::section_with_cap(s, p);
     expect_closed_section(r);
     expect_tiling(s, p);
     cut += !r.cap.empty();
@@ -411,7 +413,7 @@ TEST(Section, many_small_integer_planes_hit_vertices_edges_and_faces_and_stay_cl
 TEST(Section, open_input_gives_open_polylines_and_no_cap) {
   triangle_soup s = unit_cube();
   s.triangles.erase(s.triangles.begin() + 2, s.triangles.begin() + 4);  // drop the top face
-  const section_result r = exbsp::section(s, {0, 0, 1, -0.5});
+  const section_result r = exbsp::section_with_cap(s, {0, 0, 1, -0.5});
   EXPECT_FALSE(r.closed);
   EXPECT_TRUE(r.cap.empty());
   ASSERT_EQ(r.outline.size(), 1u);  // the four walls still make a closed loop
@@ -419,7 +421,7 @@ TEST(Section, open_input_gives_open_polylines_and_no_cap) {
   triangle_soup w;  // one wall: an open polyline
   w.add_triangle({0, 0, 0}, {1, 0, 0}, {1, 0, 1});
   w.add_triangle({0, 0, 0}, {1, 0, 1}, {0, 0, 1});
-  const section_result o = exbsp::section(w, {0, 0, 1, -0.5});
+  const section_result o = exbsp::section_with_cap(w, {0, 0, 1, -0.5});
   ASSERT_EQ(o.outline.size(), 1u);
   EXPECT_FALSE(o.outline[0].closed);
   EXPECT_EQ(o.outline[0].p.size(), 3u);
@@ -432,7 +434,7 @@ TEST(Section, pieces_follow_the_section_3_split_convention) {
   s.add_triangle({0, 0, 0.5}, {1, 0, 1}, {0, 1, 0});   // one vertex on the plane
   s.add_triangle({0.3, 0, 1}, {1, 0, 0},
                  {0, 1, 0.7});  // c alone on the negative side... and others
-  const section_result r = exbsp::section(s, {0, 0, 1, -0.5});
+  const section_result r = exbsp::section_with_cap(s, {0, 0, 1, -0.5});
   const exbsp_test::oracle::exact_plane<K> plane{K::Point_3(0, 0, 0.5), K::Point_3(1, 0, 0.5),
                                                  K::Point_3(0, 1, 0.5)};
   std::vector<std::array<std::array<std::string, 3>, 3>> expected, got;
@@ -467,11 +469,36 @@ TEST(Section, pieces_follow_the_section_3_split_convention) {
 }
 
 TEST(Section, bad_planes_are_usage_errors) {
-  EXPECT_THROW(exbsp::section(unit_cube(), {0, 0, 0, 1}), exbsp::usage_error);
-  EXPECT_THROW(exbsp::section(unit_cube(), {NAN, 0, 1, 1}), exbsp::usage_error);
-  EXPECT_THROW(exbsp::section(unit_cube(), {0, 0, 1, INFINITY}), exbsp::usage_error);
-  EXPECT_THROW(exbsp::clip_soup(unit_cube(), {{0, 0, 1, 0}, {0, 0, 0, 0}}, true),
+  EXPECT_THROW(exbsp::section_with_cap(unit_cube(), {0, 0, 0, 1}), exbsp::usage_error);
+  EXPECT_THROW(exbsp::section_with_cap(unit_cube(), {NAN, 0, 1, 1}), exbsp::usage_error);
+  EXPECT_THROW(exbsp::section_with_cap(unit_cube(), {0, 0, 1, INFINITY}), exbsp::usage_error);
+  EXPECT_THROW(exbsp::clip_soup_with_caps(unit_cube(), {{0, 0, 1, 0}, {0, 0, 0, 0}}),
                exbsp::usage_error);
+}
+
+// The LGPL core's section() (section.h) is the same cut without the cap: same kept triangles,
+// points and outline wherever the cap subdivides nothing (docs/licence.md: the cap needs
+// CGAL's GPL triangulation and lives in exbsp::gpl).
+TEST(Section, core_section_is_the_capped_section_without_its_cap) {
+  for (const section_plane& p : {section_plane{0, 0, 1, -0.5}, section_plane{1, 1, 1, -1.5},
+                                 section_plane{0, 0, 1, 0}, section_plane{-1, -1, -1, 1}}) {
+    const section_result core = exbsp::section(unit_cube(), p);
+    const section_result capped = exbsp::section_with_cap(unit_cube(), p);
+    EXPECT_TRUE(core.cap.empty());
+    EXPECT_EQ(core.stats.cap_triangles, 0u);
+    EXPECT_EQ(core.closed, capped.closed);
+    ASSERT_EQ(core.kept.size(), capped.kept.size());
+    for (std::size_t i = 0; i < core.kept.size(); ++i) {
+      EXPECT_EQ(core.kept[i].face, capped.kept[i].face);
+      for (int k = 0; k < 3; ++k)
+        EXPECT_EQ(core.points[core.kept[i].p[k]].exact, capped.points[capped.kept[i].p[k]].exact);
+    }
+    ASSERT_EQ(core.outline.size(), capped.outline.size());
+    for (std::size_t i = 0; i < core.outline.size(); ++i)
+      EXPECT_EQ(core.outline[i].p.size(), capped.outline[i].p.size());
+  }
+  EXPECT_THROW(exbsp::section(unit_cube(), {0, 0, 0, 1}), exbsp::usage_error);
+  EXPECT_THROW(exbsp::clip_soup(unit_cube(), {{0, 0, 0, 0}}), exbsp::usage_error);
 }
 
 // --- several planes (scenes) ---------------------------------------------------------------
@@ -481,11 +508,11 @@ TEST(Section, clip_soup_with_caps_stays_closed_and_cuts_earlier_caps) {
   add_box(s, {0, 0, 0}, {10, 10, 10});
   add_box(s, {2, 2, 2}, {8, 8, 8}, true);
   const std::vector<section_plane> planes{{0, 0, -1, 5}, {-1, 0, 0, 5}, {1, 1, 1, -3}};
-  const triangle_soup c = exbsp::clip_soup(s, planes, true);
+  const triangle_soup c = exbsp::clip_soup_with_caps(s, planes);
   EXPECT_EQ(c.face_count, s.face_count + 3);
   // Rounded to doubles, but every point here is a dyadic rational with few bits: exact.
   const section_result r =
-      exbsp::section(c, {0, 0, 1, 100});  // keeps everything: re-reads c exactly
+      exbsp::section_with_cap(c, {0, 0, 1, 100});  // keeps everything: re-reads c exactly
   expect_closed_section(r);
   std::set<std::uint32_t> cap_faces;
   for (const auto& t : c.triangles)
@@ -501,7 +528,7 @@ TEST(Section, clip_soup_with_caps_stays_closed_and_cuts_earlier_caps) {
       EXPECT_GE(p[0] + p[1] + p[2], 3);
     }
   }
-  const triangle_soup nocap = exbsp::clip_soup(s, planes, false);
+  const triangle_soup nocap = exbsp::clip_soup(s, planes);
   EXPECT_EQ(nocap.face_count, s.face_count);
   for (const auto& t : nocap.triangles) EXPECT_LT(t.face, s.face_count);
 }
@@ -529,7 +556,7 @@ TEST_P(Corpus, slanted_and_axis_cuts_through_the_middle_are_exact_and_closed) {
                                   {1, 0, 0, -xs[xs.size() / 2]}};  // through a vertex
   for (const section_plane& p : planes) {
     SCOPED_TRACE(testing::Message() << p[0] << "," << p[1] << "," << p[2] << "," << p[3]);
-    const section_result r = exbsp::section(s, p);
+    const section_result r = exbsp::section_with_cap(s, p);
     if (&p != &planes[2]) {  // (the vertex plane may contain a face, as for cube.off)
       EXPECT_GT(r.stats.split, 0u);
       EXPECT_FALSE(r.outline.empty());
@@ -612,7 +639,7 @@ TEST_F(SectionCli, json_has_kept_outline_and_cap_with_exact_rationals) {
 TEST_F(SectionCli, off_output_is_a_closed_mesh_and_svg_draws_the_loop) {
   ASSERT_EQ(run("section cube.off --plane 1,1,1,-1.5 -o cut.off").status, 0);
   const triangle_soup s = exbsp::read_mesh((dir / "cut.off").string());
-  const section_result r = exbsp::section(s, {0, 0, 1, 100});
+  const section_result r = exbsp::section_with_cap(s, {0, 0, 1, 100});
   EXPECT_TRUE(r.closed);
   const run_result svg = run("section cube.off --plane 1,1,1,-1.5 -o cut.svg");
   ASSERT_EQ(svg.status, 0) << svg.err;
@@ -720,7 +747,7 @@ TEST_F(SectionScene, geometry_is_cut_with_caps_in_their_colour_and_stays_closed)
       EXPECT_GE(g.soup.vertices[v][0], 0.25);
     }
   // Dyadic coordinates round exactly: the soup read back is closed, caps and all.
-  expect_closed_section(exbsp::section(g.soup, {0, 0, 1, 100}));
+  expect_closed_section(exbsp::section_with_cap(g.soup, {0, 0, 1, 100}));
 }
 
 TEST_F(SectionScene, cut_part_renders_in_one_bsp_with_an_uncut_intersecting_part) {

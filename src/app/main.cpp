@@ -29,6 +29,7 @@
 #include "core/atomic_file.h"
 #include "core/version.h"
 #include "clip/section.h"
+#include "clip/section_cap.h"
 #include "core/errors.h"
 #include "core/file_name.h"
 #include "mesh/gmp_memory.h"
@@ -345,7 +346,7 @@ int run_section(const std::string& mesh, const std::string& format, const std::s
   const exbsp::triangle_soup soup = exbsp::cli::read_mesh_input(mesh, format, std::cin);
   exbsp::section_options options;
   options.exact_text = !off && !svg;
-  const exbsp::section_result r = exbsp::section(soup, plane, options);
+  const exbsp::section_result r = exbsp::section_with_cap(soup, plane, options);
   const std::string text = off   ? exbsp::section_off(r)
                            : svg ? exbsp::section_svg(r)
                                  : exbsp::section_json(r);

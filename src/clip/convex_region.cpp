@@ -1,12 +1,11 @@
-// SPDX-License-Identifier: GPL-3.0-or-later
-// Convex regions as half-spaces (notation in convex_region.h). The hull and the convexity
-// test come from CGAL (convex_hull_3, is_convex_2 with exact predicates) rather than hand code.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Convex regions as half-spaces (notation in convex_region.h). The convexity test comes from
+// CGAL (is_convex_2 with exact predicates) rather than hand code; the 3D convex hull is in
+// convex_hull.cpp (the GPL component: CGAL's convex_hull_3 is GPL-3.0-or-later).
 #include "clip/convex_region.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/convex_hull_3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -57,42 +56,6 @@ std::vector<half_plane2> convex_polygon_half_planes(const std::vector<vec2>& pol
     // f(x) = (q - p) x (x - p) = -(qy - py) x + (qx - px) y + (qy - py) px - (qx - px) py.
     const double a = -(q.y() - p.y()), b = q.x() - p.x();
     out.push_back({sign * a, sign * b, sign * (-(a * p.x() + b * p.y()))});
-  }
-  return out;
-}
-
-std::vector<half_space3> convex_hull_half_spaces(const std::vector<vec3>& points) {
-  const char* function = "convex_hull_half_spaces";
-  std::vector<kernel::Point_3> pts;
-  for (const vec3& p : points) {
-    detail::require_finite(p, function, "point");
-    pts.emplace_back(p[0], p[1], p[2]);
-  }
-  if (pts.size() < 4)
-    throw usage_error(std::string(function) + ": a polyhedron needs at least 4 points");
-  // The hull is 3D iff some four points are not coplanar.
-  bool solid = false;
-  {
-    std::size_t i = 1;
-    while (i < pts.size() && pts[i] == pts[0]) ++i;
-    std::size_t j = i + 1;
-    while (j < pts.size() && CGAL::collinear(pts[0], pts[i], pts[j])) ++j;
-    for (std::size_t k = j + 1; k < pts.size() && !solid; ++k)
-      solid = CGAL::orientation(pts[0], pts[i], pts[j], pts[k]) != CGAL::COPLANAR;
-  }
-  if (!solid)
-    throw usage_error(std::string(function) + ": the points do not span a solid (all coplanar)");
-  CGAL::Surface_mesh<kernel::Point_3> hull;
-  CGAL::convex_hull_3(pts.begin(), pts.end(), hull);
-  std::vector<half_space3> out;
-  for (const auto f : hull.faces()) {
-    std::vector<kernel::Point_3> v;
-    for (const auto vd : CGAL::vertices_around_face(hull.halfedge(f), hull))
-      v.push_back(hull.point(vd));
-    // Faces are counter-clockwise seen from outside: (b - a) x (c - a) points out.
-    const kernel::Vector_3 n = -CGAL::cross_product(v[1] - v[0], v[2] - v[0]);
-    out.push_back(
-        {{n.x(), n.y(), n.z()}, -(n.x() * v[0].x() + n.y() * v[0].y() + n.z() * v[0].z())});
   }
   return out;
 }

@@ -6,7 +6,8 @@
 // A convex polygon (either orientation) gives one half-plane per edge of nonzero length: for
 // a counter-clockwise edge p -> q, f(x) = (q - p) x (x - p) (the 2D cross product), negated for
 // a clockwise polygon. A convex polyhedron given as a point set gives one half-space per face
-// of its convex hull (CGAL::convex_hull_3; coplanar hull triangles give repeated planes); given
+// of its convex hull (CGAL::convex_hull_3, convex_hull.h in the GPL component exbsp::gpl;
+// coplanar hull triangles give repeated planes); given
 // as faces, one per face, its normal by Newell's formula oriented towards the centroid of all
 // vertices. Convexity and orientation are decided with exact predicates (CGAL Epick) on the
 // double input; the coefficients are rounded doubles (a point exactly on a face may evaluate a
@@ -23,10 +24,6 @@ namespace exbsp::clip {
 /// and repeated vertices are allowed. Throws usage_error for NaN/infinite input, fewer than 3
 /// vertices, zero area, or a polygon that is not convex (a reflex vertex or a self-crossing).
 std::vector<half_plane2> convex_polygon_half_planes(const std::vector<vec2>& polygon);
-
-/// The half-spaces of the convex hull of `points`. Throws usage_error for NaN/infinite input
-/// or points that do not span 3D (fewer than 4, or all coplanar).
-std::vector<half_space3> convex_hull_half_spaces(const std::vector<vec3>& points);
 
 /// The half-spaces of a convex polyhedron given by its faces (each a planar polygon of at least
 /// 3 vertices, any orientation). Throws usage_error for NaN/infinite input, a degenerate face,

@@ -1,4 +1,4 @@
-// SPDX-License-Identifier: GPL-3.0-or-later
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact sections (notation in section.h). One cut is three passes over an "exact mesh"
 // (Epeck points, triangles as point indices with face ids):
 //   1. signs and split: each triangle is classified by the exact signs of its points and
@@ -8,10 +8,9 @@
 //      makes two of them equal), then the in-plane edges of kept and removed pieces are
 //      counted: net use (u,v) - (v,u) in kept pieces, kept uses, removed uses;
 //   3. the outline edges are chained into loops and polylines, and for a closed input the
-//      cap is the constrained Delaunay triangulation (Epeck, Exact_intersections_tag) of the
-//      outline projected along the dominant axis of n, each face covered w times where w is
-//      the outline's winding number around it, found by an explicit-stack traversal from
-//      the infinite face (w changes by the net use of each constrained edge crossed).
+//      cap, when a cap builder is given (section_cap.cpp, the GPL component: CGAL's
+//      constrained Delaunay triangulation), covers the region the outline winds around; the
+//      kept triangles and the outline are then refined along the edges it subdivided.
 // The split runs here on point indices rather than on points (the outline and the cap need
 // to know which edge made each cut point): geom::apply_split with the edge visitor, the same
 // combinatorics as the tree's (geom/split_pattern.h), and the cut points are
@@ -19,10 +18,8 @@
 // oracle's, tests/support/exact_triangle_clip.h, exactly).
 #include "clip/section.h"
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include "clip/section_impl.h"
+
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -39,31 +36,9 @@
 
 namespace exbsp {
 
+namespace section_detail {
+
 namespace {
-
-using K = CGAL::Exact_predicates_exact_constructions_kernel;
-using point3 = K::Point_3;
-using point2 = K::Point_2;
-constexpr std::uint32_t no_point = std::numeric_limits<std::uint32_t>::max();
-
-struct tri {
-  std::array<std::uint32_t, 3> v;
-  std::uint32_t face;
-};
-
-/// Points (with the input double where a point is an input vertex) and triangles.
-struct exact_mesh {
-  std::vector<point3> pts;
-  std::vector<vec3d> input;  ///< the input double, NaN for constructed points
-  std::vector<tri> tris;
-  std::uint32_t add(const point3& p, const vec3d& d) {
-    pts.push_back(p);
-    input.push_back(d);
-    return static_cast<std::uint32_t>(pts.size() - 1);
-  }
-};
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; }
 
 /// The soup as an exact mesh: the vertices the triangles use, in order of first use, welded
 /// by geom::weld (equal doubles, so -0 equals +0); a welded point keeps its first vertex's
@@ -110,42 +85,12 @@ bool collinear_triangle(const exact_mesh& m, const tri& t) {
   return CGAL::collinear(m.pts[t.v[0]], m.pts[t.v[1]], m.pts[t.v[2]]);
 }
 
-/// The plane with exact coefficients and its dominant axis.
-struct cut_plane {
-  section_plane d;
-  K::Plane_3 p;
-  int axis;  ///< index of the largest |n_k|
-  explicit cut_plane(const section_plane& c) : d(c), p(c[0], c[1], c[2], c[3]) {
-    axis = 0;
-    for (int k = 1; k < 3; ++k)
-      if (std::fabs(c[k]) > std::fabs(c[axis])) axis = k;
-  }
-  int side(const point3& q) const {
-    return geom::cut_plane_traits<K>().oriented_side_3_object()(p, q);
-  }
-  point2 project(const point3& q) const { return {q[(axis + 1) % 3], q[(axis + 2) % 3]}; }
-  /// The point of the plane above the 2D point (inverse of project).
-  point3 lift(const point2& q) const {
-    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-    const K::FT n[3] = {p.a(), p.b(), p.c()};
-    K::FT c[3];
-    c[i] = q.x();
-    c[j] = q.y();
-    c[axis] = -(p.d() + n[i] * c[i] + n[j] * c[j]) / n[axis];
-    return {c[0], c[1], c[2]};
-  }
-};
-
 /// In-plane edge uses (key: smaller index first).
 struct edge_use {
   int net = 0;             ///< uses lo->hi minus hi->lo in kept pieces
   std::uint32_t kept = 0;  ///< uses in kept pieces
   std::uint32_t removed = 0;
   std::uint32_t first_from = no_point, first_to = no_point;  ///< first kept use
-};
-
-struct directed_edge {
-  std::uint32_t from, to;
 };
 
 bool by_ends(const directed_edge& a, const directed_edge& b) {
@@ -159,149 +104,6 @@ struct cut_result {
   std::vector<tri> cap;
   bool closed = false;
 };
-
-// --- pass 3b: the cap -------------------------------------------------------------------
-
-struct vertex_info {
-  std::uint32_t id = no_point;
-};
-struct face_info {
-  int winding = 0;
-  bool seen = false;
-};
-using cdt_vb = CGAL::Triangulation_vertex_base_with_info_2<vertex_info, K>;
-using cdt_fb =
-    CGAL::Triangulation_face_base_with_info_2<face_info, K,
-                                              CGAL::Constrained_triangulation_face_base_2<K>>;
-using cdt_tds = CGAL::Triangulation_data_structure_2<cdt_vb, cdt_fb>;
-using cdt = CGAL::Constrained_Delaunay_triangulation_2<K, cdt_tds, CGAL::Exact_intersections_tag>;
-
-/// Interior points of the outline edges the triangulation subdivided: key (lo, hi) -> the
-/// points strictly between, ordered from lo to hi.
-using subdivision = std::unordered_map<std::uint64_t, std::vector<std::uint32_t>>;
-
-/// Triangles covering the region the outline winds around, each face -w times (reversed
-/// when w > 0) so that the cap's boundary is the outline reversed. Steiner points (crossing
-/// outline edges) are lifted to the plane and appended to m; outline edges that pass through
-/// other outline points or Steiner points are reported in `split` (non-conforming or
-/// self-intersecting input only).
-std::vector<tri> build_cap(exact_mesh& m, const cut_plane& plane,
-                           const std::vector<directed_edge>& outline, std::uint32_t cap_face,
-                           section_stats& stats, subdivision& split) {
-  std::vector<tri> cap;
-  if (outline.empty()) return cap;
-  std::unordered_map<std::uint64_t, int> net;  // lo->hi multiplicity
-  std::vector<std::uint32_t> ids;
-  for (const directed_edge& e : outline) {
-    const bool up = e.from < e.to;
-    net[up ? edge_key(e.from, e.to) : edge_key(e.to, e.from)] += up ? 1 : -1;
-    ids.push_back(e.from);
-    ids.push_back(e.to);
-  }
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-
-  cdt tr;
-  std::unordered_map<std::uint32_t, cdt::Vertex_handle> handle;
-  std::unordered_map<std::uint32_t, point2> flat;
-  for (std::uint32_t id : ids) {
-    const point2 q = plane.project(m.pts[id]);
-    flat.emplace(id, q);
-    cdt::Vertex_handle h = tr.insert(q);
-    h->info().id = id;
-    handle.emplace(id, h);
-  }
-  std::vector<std::pair<std::uint64_t, int>> constraints(net.begin(), net.end());
-  std::sort(constraints.begin(), constraints.end());
-  for (const auto& [key, n] : constraints) {
-    if (n == 0) continue;
-    tr.insert_constraint(handle.at(static_cast<std::uint32_t>(key >> 32)),
-                         handle.at(static_cast<std::uint32_t>(key & 0xffffffffu)));
-  }
-
-  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
-    if (v->info().id != no_point) continue;
-    v->info().id = m.add(plane.lift(v->point()), {NAN, NAN, NAN});
-    ++stats.cap_steiner_points;
-  }
-  // Subdivided constraints (no triangulation edge joins their ends): walk each from lo to
-  // hi along collinear constrained edges and record the points passed.
-  for (const auto& [key, n] : constraints) {
-    if (n == 0) continue;
-    const cdt::Vertex_handle va = handle.at(static_cast<std::uint32_t>(key >> 32));
-    const cdt::Vertex_handle vb = handle.at(static_cast<std::uint32_t>(key & 0xffffffffu));
-    if (tr.is_edge(va, vb)) continue;
-    std::vector<std::uint32_t> mids;
-    for (cdt::Vertex_handle v = va; v != vb;) {
-      cdt::Vertex_handle next;
-      auto ec = tr.incident_edges(v);
-      const auto done = ec;
-      do {
-        if (tr.is_infinite(*ec) || !tr.is_constrained(*ec)) continue;
-        const cdt::Face_handle f = ec->first;
-        const int i = ec->second;
-        const cdt::Vertex_handle w =
-            f->vertex(cdt::cw(i)) == v ? f->vertex(cdt::ccw(i)) : f->vertex(cdt::cw(i));
-        if (CGAL::collinear(va->point(), vb->point(), w->point()) &&
-            CGAL::collinear_are_strictly_ordered_along_line(v->point(), w->point(), vb->point()))
-          next = w;
-        else if (w == vb)
-          next = w;
-      } while (next == cdt::Vertex_handle() && ++ec != done);
-      if (next == cdt::Vertex_handle()) break;  // cannot happen for a constraint of tr
-      if (next != vb) mids.push_back(next->info().id);
-      v = next;
-    }
-    if (!mids.empty()) {
-      ++stats.split_constraints;
-      split.emplace(key, std::move(mids));
-    }
-  }
-
-  // Net multiplicity of the outline along the triangulation edge u->v: the outline edge u-v
-  // itself, plus every subdivided outline edge that contains u-v.
-  auto multiplicity = [&](cdt::Vertex_handle u, cdt::Vertex_handle v) {
-    const std::uint32_t a = u->info().id, b = v->info().id;
-    const auto it = net.find(a < b ? edge_key(a, b) : edge_key(b, a));
-    int w = it == net.end() ? 0 : a < b ? it->second : -it->second;
-    for (const auto& entry : split) {
-      const point2& p = flat.at(static_cast<std::uint32_t>(entry.first >> 32));
-      const point2& q = flat.at(static_cast<std::uint32_t>(entry.first & 0xffffffffu));
-      if (!CGAL::collinear(p, q, u->point()) || !CGAL::collinear(p, q, v->point())) continue;
-      if (!CGAL::collinear_are_ordered_along_line(p, u->point(), q) ||
-          !CGAL::collinear_are_ordered_along_line(p, v->point(), q))
-        continue;
-      const int n = net.at(entry.first);
-      w += CGAL::collinear_are_ordered_along_line(p, u->point(), v->point()) ? n : -n;
-    }
-    return w;
-  };
-
-  std::vector<cdt::Face_handle> stack{tr.infinite_face()};
-  tr.infinite_face()->info().seen = true;
-  while (!stack.empty()) {
-    const cdt::Face_handle f = stack.back();
-    stack.pop_back();
-    for (int i = 0; i < 3; ++i) {
-      const cdt::Face_handle g = f->neighbor(i);
-      if (g->info().seen) continue;
-      int w = f->info().winding;
-      if (f->is_constrained(i)) w -= multiplicity(f->vertex(cdt::ccw(i)), f->vertex(cdt::cw(i)));
-      g->info().winding = w;
-      g->info().seen = true;
-      stack.push_back(g);
-    }
-  }
-
-  for (auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f) {
-    const int w = f->info().winding;
-    const std::uint32_t a = f->vertex(0)->info().id, b = f->vertex(1)->info().id,
-                        c = f->vertex(2)->info().id;
-    for (int k = 0; k < std::abs(w); ++k)
-      cap.push_back(w > 0 ? tri{{a, c, b}, cap_face} : tri{{a, b, c}, cap_face});
-  }
-  return cap;
-}
 
 /// Splits kept triangles along the subdivided outline edges (fans from the opposite
 /// corner, one edge at a time, with a worklist) so that kept and cap share every edge.
@@ -368,7 +170,7 @@ std::vector<directed_edge> refine_outline(const std::vector<directed_edge>& outl
 
 // --- passes 1 to 3a: split, merge, count, outline ------------------------------------------
 
-cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32_t cap_face,
+cut_result cut(exact_mesh& m, const cut_plane& plane, cap_builder build_cap, std::uint32_t cap_face,
                section_stats& stats) {
   cut_result r;
   r.closed = is_closed(m.tris);
@@ -496,7 +298,7 @@ cut_result cut(exact_mesh& m, const cut_plane& plane, bool want_cap, std::uint32
   std::sort(r.outline.begin(), r.outline.end(), by_ends);
   stats.outline_edges += r.outline.size();
 
-  if (r.closed && want_cap) {
+  if (r.closed && build_cap) {
     subdivision split;
     r.cap = build_cap(m, plane, r.outline, cap_face, stats, split);
     stats.cap_triangles += r.cap.size();
@@ -583,15 +385,8 @@ double coordinate_double(const exact_mesh& m, std::uint32_t i, int k) {
 
 }  // namespace
 
-void check_section_plane(const section_plane& plane, const std::string& what) {
-  for (double x : plane)
-    if (!std::isfinite(x)) throw usage_error(what + ": A, B, C, D must be finite numbers");
-  if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0)
-    throw usage_error(what + ": the normal (A, B, C) must not be zero");
-}
-
 section_result section(const triangle_soup& soup, const section_plane& plane,
-                       const section_options& options) {
+                       const section_options& options, cap_builder build_cap) {
   check_section_plane(plane);
   const auto t0 = std::chrono::steady_clock::now();
   section_result out;
@@ -599,7 +394,7 @@ section_result section(const triangle_soup& soup, const section_plane& plane,
   out.cap_face = soup.face_count;
   exact_mesh m = from_soup(soup);
   const cut_plane cp(plane);
-  cut_result r = cut(m, cp, options.cap, soup.face_count, out.stats);
+  cut_result r = cut(m, cp, build_cap, soup.face_count, out.stats);
   out.closed = r.closed;
   const std::vector<section_chain> chains = chain_edges(r.outline);
 
@@ -634,20 +429,20 @@ section_result section(const triangle_soup& soup, const section_plane& plane,
 }
 
 triangle_soup clip_soup(const triangle_soup& soup, const std::vector<section_plane>& planes,
-                        bool caps) {
+                        cap_builder build_cap) {
   for (std::size_t i = 0; i < planes.size(); ++i)
     check_section_plane(planes[i], "plane " + std::to_string(i));
   exact_mesh m = from_soup(soup);
   for (std::size_t i = 0; i < planes.size(); ++i) {
     section_stats stats;
     const std::uint32_t cap_face = soup.face_count + static_cast<std::uint32_t>(i);
-    cut_result r = cut(m, cut_plane(planes[i]), caps, cap_face, stats);
+    cut_result r = cut(m, cut_plane(planes[i]), build_cap, cap_face, stats);
     m.tris = std::move(r.kept);
     m.tris.insert(m.tris.end(), r.cap.begin(), r.cap.end());
   }
   triangle_soup out;
   out.source = soup.source;
-  out.face_count = soup.face_count + (caps ? static_cast<std::uint32_t>(planes.size()) : 0);
+  out.face_count = soup.face_count + (build_cap ? static_cast<std::uint32_t>(planes.size()) : 0);
   std::vector<std::uint32_t> index(m.pts.size(), no_point);
   out.triangles.reserve(m.tris.size());
   for (const tri& t : m.tris) {
@@ -664,6 +459,24 @@ triangle_soup clip_soup(const triangle_soup& soup, const std::vector<section_pla
     out.triangles.push_back(s);
   }
   return out;
+}
+
+}  // namespace section_detail
+
+void check_section_plane(const section_plane& plane, const std::string& what) {
+  for (double x : plane)
+    if (!std::isfinite(x)) throw usage_error(what + ": A, B, C, D must be finite numbers");
+  if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0)
+    throw usage_error(what + ": the normal (A, B, C) must not be zero");
+}
+
+section_result section(const triangle_soup& soup, const section_plane& plane,
+                       const section_options& options) {
+  return section_detail::section(soup, plane, options, nullptr);
+}
+
+triangle_soup clip_soup(const triangle_soup& soup, const std::vector<section_plane>& planes) {
+  return section_detail::clip_soup(soup, planes, nullptr);
 }
 
 }  // namespace exbsp

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact sections of triangle meshes by planes (CAD section views): `exbsp section` and the
 // scenes' "clip_planes" (docs/contract.md, "Command line" and "Scenes"). This header hides CGAL;
-// the work is done in section.cpp on CGAL's Epeck kernel.
+// the work is done in section.cpp on CGAL's Epeck kernel. section() and clip_soup() are in the
+// LGPL core and make no caps; section_with_cap() and clip_soup_with_caps() (section_cap.h) are
+// in the GPL component exbsp::gpl, because the cap needs CGAL's GPL triangulation.
 //
 // Notation: the plane P = (A, B, C, D) holds four doubles; n = (A, B, C) and the side of a
 // point p is the exact sign of f(p) = A*px + B*py + C*pz + D (evaluated on the exact input,
@@ -18,7 +20,8 @@
 //     the in-plane edges shared by a kept and a removed piece). They are chained into simple
 //     loops, oriented counter-clockwise seen from the kept side (around +n: outer boundaries
 //     counter-clockwise, holes clockwise), and, for open input, open polylines.
-//   - Cap (closed input only): the region the outline encloses (holes and nested islands
+//   - Cap (closed input only; section_cap.h): the region the outline encloses (holes and nested
+//   islands
 //     included: each region is covered as many times as the outline winds around it),
 //     triangulated by an exact constrained Delaunay triangulation in the plane, facing -n
 //     (outward from the kept part). The boundary of the cap is the outline reversed, so
@@ -39,6 +42,8 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include <exbsp/core/export.h>
 
 #include "../mesh/soup.h"
 
@@ -97,7 +102,7 @@ struct section_result {
   std::vector<section_point> points;   ///< every point used below, merged exactly
   std::vector<section_triangle> kept;  ///< kept triangles in section 3 order
   std::vector<section_chain> outline;  ///< loops first (closed input: loops only)
-  std::vector<section_triangle> cap;   ///< empty unless `closed`
+  std::vector<section_triangle> cap;   ///< section_with_cap only, and only when `closed`
   std::uint32_t cap_face = 0;          ///< face id of the cap triangles (= input face_count)
   section_stats stats;
 };
@@ -105,23 +110,21 @@ struct section_result {
 /// Options of section().
 struct section_options {
   bool exact_text = true;  ///< fill section_point::exact (costs time; off for rendering)
-  bool cap = true;         ///< build the cap of a closed input
 };
 
-/// Cuts `soup` by `plane` exactly (see the notation above). Throws usage_error for a bad
-/// plane (check_section_plane); never aborts.
-section_result section(const triangle_soup& soup, const section_plane& plane,
-                       const section_options& options = {});
+/// Cuts `soup` by `plane` exactly (see the notation above): kept triangles and outline, no
+/// cap (section_with_cap in section_cap.h makes it). Throws usage_error for a bad plane
+/// (check_section_plane); never aborts.
+EXBSP_EXPORT section_result section(const triangle_soup& soup, const section_plane& plane,
+                                    const section_options& options = {});
 
 /// Clips `soup` by every plane in turn (keeping f >= 0 of each, i.e. the intersection of the
-/// half-spaces). With `caps`, each plane that cuts a closed part adds its cap as the new face
-/// soup.face_count + i (i = index of the plane), and later planes cut earlier caps like any
-/// other face, so the result stays closed. The cut is exact; the returned soup holds the exact
-/// points rounded once to the nearest doubles (the BSP's input is doubles, docs/contract.md
-/// "Input"). face_count becomes soup.face_count + planes.size() with caps, unchanged without.
-/// Throws usage_error for a bad plane.
-triangle_soup clip_soup(const triangle_soup& soup, const std::vector<section_plane>& planes,
-                        bool caps);
+/// half-spaces), without caps (clip_soup_with_caps in section_cap.h adds them). The cut is
+/// exact; the returned soup holds the exact points rounded once to the nearest doubles (the
+/// BSP's input is doubles, docs/contract.md "Input"); face_count is unchanged. Throws
+/// usage_error for a bad plane.
+EXBSP_EXPORT triangle_soup clip_soup(const triangle_soup& soup,
+                                     const std::vector<section_plane>& planes);
 
 /// Output formats of `exbsp section` (docs/contract.md "Command line").
 ///   json: {"plane", "closed", "kept": [{"face", "v", "exact"}], "outline": [{"closed", "v",

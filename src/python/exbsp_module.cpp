@@ -19,6 +19,7 @@
 
 #include "bsp/engine.h"
 #include "clip/section.h"
+#include "clip/section_cap.h"
 #include "core/errors.h"
 #include "core/version.h"
 #include "mesh/mesh_io.h"
@@ -239,12 +240,11 @@ py::dict section(const py::array_t<double, py::array::c_style | py::array::force
                  const py::object& face_ids) {
   const exbsp::triangle_soup soup = soup_from(vertices, faces, face_ids);
   exbsp::section_options options;
-  options.cap = cap;
   options.exact_text = exact;
   exbsp::section_result r;
   {
     py::gil_scoped_release no_gil;
-    r = exbsp::section(soup, plane, options);
+    r = cap ? exbsp::section_with_cap(soup, plane, options) : exbsp::section(soup, plane, options);
   }
   const auto points = make_array<double>({static_cast<py::ssize_t>(r.points.size()), 3},
                                          [&](std::size_t j) { return r.points[j / 3].v[j % 3]; });

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "clip/cohen_sutherland.h"
+#include "clip/convex_hull.h"
 #include "clip/convex_region.h"
 #include "clip/liang_barsky.h"
 #include "core/errors.h"

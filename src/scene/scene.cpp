@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "clip/section.h"
+#include "clip/section_cap.h"
 #include "core/errors.h"
 #include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"
@@ -374,7 +375,8 @@ scene_geometry load_geometry(const scene& s) {
                               " (the largest double / 16; scale the mesh down)");
     }
     const std::uint32_t first_face = g.soup.face_count, own_faces = part.face_count;
-    if (!s.clip_planes.empty()) part = clip_soup(part, s.clip_planes, s.caps);
+    if (!s.clip_planes.empty())
+      part = s.caps ? clip_soup_with_caps(part, s.clip_planes) : clip_soup(part, s.clip_planes);
     g.soup.append(part);
     g.face_colors.resize(g.soup.face_count, m.color);
     for (std::uint32_t f = first_face + own_faces; f < g.soup.face_count; ++f)
