@@ -22,6 +22,7 @@
 
 #include "../mesh/soup.h"
 #include "traversal.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp {
 
@@ -35,19 +36,19 @@ enum class kernel_id {
 };
 
 /// "exact", "epeck", "epick", "double", "gmpq".
-std::string to_string(kernel_id k);
+EXBSP_EXPORT std::string to_string(kernel_id k);
 /// Every kernel's name, the default first: "exact", "epeck", "gmpq", "epick", "double".
-const std::vector<std::string>& kernel_names();
+EXBSP_EXPORT const std::vector<std::string>& kernel_names();
 /// Parses a kernel name; throws usage_error for an unknown name.
-kernel_id parse_kernel(const std::string& name);
+EXBSP_EXPORT kernel_id parse_kernel(const std::string& name);
 /// True for kernels whose constructions are exact (exact, epeck, gmpq).
-bool is_exact(kernel_id k);
+EXBSP_EXPORT bool is_exact(kernel_id k);
 
 /// Names of the built-in splitter heuristics: "naive", "min-split", "sampled", "random".
 /// bsp::build also accepts "custom", which needs build_options::score (see there).
-const std::vector<std::string>& heuristic_names();
+EXBSP_EXPORT const std::vector<std::string>& heuristic_names();
 /// The default heuristic (the best one the benchmarks found; see bench/RESULTS.md).
-const char* default_heuristic();
+EXBSP_EXPORT const char* default_heuristic();
 
 /// Progress of a running build, reported to build_options::progress.
 struct build_progress {
@@ -155,7 +156,7 @@ class bsp_impl;
 class bsp_access;  // private: the library's own access to the implementation (bsp_impl.h)
 
 /// A built BSP tree. Movable, not copyable. Thread-safe for concurrent const use.
-class bsp {
+class EXBSP_EXPORT bsp {
  public:
   /// Builds the tree of `soup`. Throws usage_error for an unknown heuristic (or "custom"
   /// without options.score, or options.score with another heuristic), limit_error when

@@ -13,6 +13,7 @@
 #include <cstddef>
 
 #include "engine.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp {
 
@@ -22,6 +23,6 @@ using exact_triangle_mpq = std::array<std::array<mpq_class, 3>, 3>;
 /// The exact coordinates of fragment i of `tree` (i < tree.fragment_count()). Throws
 /// usage_error for an index out of range or an inexact kernel (epick, double). Thread-safe
 /// for concurrent calls on one tree, like the other const members of bsp.
-exact_triangle_mpq fragment_exact_mpq(const bsp& tree, std::size_t i);
+EXBSP_EXPORT exact_triangle_mpq fragment_exact_mpq(const bsp& tree, std::size_t i);
 
 }  // namespace exbsp

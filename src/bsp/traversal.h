@@ -19,6 +19,7 @@
 #include <cstdint>
 
 #include "../mesh/soup.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp {
 
@@ -36,14 +37,14 @@ struct bsp_node {
 
 /// Exact sign (+1, 0, -1) of h_N(p) = orientation(N.plane, p) for any finite double point p,
 /// whatever the tree's kernel (CGAL's filtered exact predicate on double input).
-int side_of_plane(const bsp_node& n, const vec3d& p);
+EXBSP_EXPORT int side_of_plane(const bsp_node& n, const vec3d& p);
 
 /// h_N(p) = ((b - a) x (c - a)) . (p - a) in double: for interpolating where a segment meets
 /// the plane. Its sign may differ from side_of_plane's near the plane; decide with the latter.
-double plane_value(const bsp_node& n, const vec3d& p);
+EXBSP_EXPORT double plane_value(const bsp_node& n, const vec3d& p);
 
 /// The callbacks of a traversal (order above); each default does nothing.
-class bsp_visitor {
+class EXBSP_EXPORT bsp_visitor {
  public:
   virtual ~bsp_visitor() = default;
   /// Node n is reached, before its sides and fragments; eye_side = s (+1, 0 or -1).

@@ -10,28 +10,30 @@
 #include <vector>
 
 #include "clip_types.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::clip {
 
 /// Smallest box containing the points. Throws usage_error for no points or NaN/infinite ones.
-box2 bounding_box(const std::vector<vec2>& points);
+EXBSP_EXPORT box2 bounding_box(const std::vector<vec2>& points);
 /// Smallest box containing the points. Throws usage_error for no points or NaN/infinite ones.
-box3 bounding_box(const std::vector<vec3>& points);
+EXBSP_EXPORT box3 bounding_box(const std::vector<vec3>& points);
 /// Smallest box containing the triangle. Throws usage_error for NaN/infinite coordinates.
-box2 bounding_box(const std::array<vec2, 3>& triangle);
+EXBSP_EXPORT box2 bounding_box(const std::array<vec2, 3>& triangle);
 /// Smallest box containing the triangle. Throws usage_error for NaN/infinite coordinates.
-box3 bounding_box(const std::array<vec3, 3>& triangle);
+EXBSP_EXPORT box3 bounding_box(const std::array<vec3, 3>& triangle);
 
 /// True when the closed boxes share a point. No checks (NaN bounds never overlap).
-bool boxes_overlap(const box2& a, const box2& b);
+EXBSP_EXPORT bool boxes_overlap(const box2& a, const box2& b);
 /// True when the closed boxes share a point. No checks (NaN bounds never overlap).
-bool boxes_overlap(const box3& a, const box3& b);
+EXBSP_EXPORT bool boxes_overlap(const box3& a, const box3& b);
 
 /// True when the triangle's bounding box misses the closed window, so no clipping is needed
 /// to discard it. False does not mean the triangle meets the window. Throws like bounding_box.
-bool triangle_outside_window(const std::array<vec2, 3>& triangle, const window2& window);
+EXBSP_EXPORT bool triangle_outside_window(const std::array<vec2, 3>& triangle,
+                                          const window2& window);
 
 /// The eight corners of the box, corner i taking max on axis k when bit k of i is set.
-std::array<vec3, 8> box_corners(const box3& box);
+EXBSP_EXPORT std::array<vec3, 8> box_corners(const box3& box);
 
 }  // namespace exbsp::clip

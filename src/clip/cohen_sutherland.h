@@ -19,6 +19,7 @@
 #include <optional>
 
 #include "clip_types.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::clip {
 
@@ -37,9 +38,9 @@ enum outcode_bit : unsigned {
 };
 
 /// 4-bit outcode of p against the window. No checks: NaN compares as inside.
-unsigned outcode(const vec2& p, const window2& window);
+EXBSP_EXPORT unsigned outcode(const vec2& p, const window2& window);
 /// 6-bit outcode of p against the box (27 regions). No checks: NaN compares as inside.
-unsigned outcode(const vec3& p, const box3& box);
+EXBSP_EXPORT unsigned outcode(const vec3& p, const box3& box);
 
 /// True when both endpoints are inside (codes both 0): the segment is kept unchanged.
 inline bool trivially_accepted(unsigned code0, unsigned code1) { return (code0 | code1) == 0; }
@@ -49,8 +50,9 @@ inline bool trivially_rejected(unsigned code0, unsigned code1) { return (code0 &
 /// The part of segment s inside the closed window, with the direction of s, or nothing.
 /// A segment fully inside is returned bit-for-bit; a zero-length segment is kept iff its
 /// point is inside. Throws usage_error if a coordinate is NaN/infinite or min > max.
-std::optional<segment2> cohen_sutherland_clip(const segment2& s, const window2& window);
+EXBSP_EXPORT std::optional<segment2> cohen_sutherland_clip(const segment2& s,
+                                                           const window2& window);
 /// 3D version against the closed box; same guarantees and errors.
-std::optional<segment3> cohen_sutherland_clip(const segment3& s, const box3& box);
+EXBSP_EXPORT std::optional<segment3> cohen_sutherland_clip(const segment3& s, const box3& box);
 
 }  // namespace exbsp::clip

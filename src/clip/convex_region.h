@@ -17,18 +17,20 @@
 
 #include "clip_types.h"
 #include "sutherland_hodgman.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::clip {
 
 /// The half-planes of a convex polygon (the region it bounds, boundary included). Collinear
 /// and repeated vertices are allowed. Throws usage_error for NaN/infinite input, fewer than 3
 /// vertices, zero area, or a polygon that is not convex (a reflex vertex or a self-crossing).
-std::vector<half_plane2> convex_polygon_half_planes(const std::vector<vec2>& polygon);
+EXBSP_EXPORT std::vector<half_plane2> convex_polygon_half_planes(const std::vector<vec2>& polygon);
 
 /// The half-spaces of a convex polyhedron given by its faces (each a planar polygon of at least
 /// 3 vertices, any orientation). Throws usage_error for NaN/infinite input, a degenerate face,
 /// or a polyhedron that is not convex (a vertex strictly outside some face's half-space, by
 /// more than a relative 1e-9 of the coordinates' size).
-std::vector<half_space3> convex_polyhedron_half_spaces(const std::vector<std::vector<vec3>>& faces);
+EXBSP_EXPORT std::vector<half_space3> convex_polyhedron_half_spaces(
+    const std::vector<std::vector<vec3>>& faces);
 
 }  // namespace exbsp::clip

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "clip_types.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::clip {
 
@@ -42,25 +43,25 @@ struct homogeneous_polygon {
 
 /// 6-bit outcode of p against the six clip planes (bits as in the notation above).
 /// A point with w < 0 always has at least one bit set. No checks.
-unsigned homogeneous_outcode(const vec4& p);
+EXBSP_EXPORT unsigned homogeneous_outcode(const vec4& p);
 
 /// True when every point is inside the view volume (all outcodes 0); false for no points.
-bool homogeneous_trivially_accepted(const std::vector<vec4>& points);
+EXBSP_EXPORT bool homogeneous_trivially_accepted(const std::vector<vec4>& points);
 /// True when all points are outside one common clip plane (the AND of their outcodes is not
 /// 0): nothing of their convex hull is visible. Use it on the eight clip-space corners of
 /// an object's bounding box to reject the object before any per-triangle work.
 /// False for no points.
-bool homogeneous_trivially_rejected(const std::vector<vec4>& points);
+EXBSP_EXPORT bool homogeneous_trivially_rejected(const std::vector<vec4>& points);
 /// Triangle versions of the two tests above.
-bool homogeneous_trivially_accepted(const std::array<vec4, 3>& triangle);
-bool homogeneous_trivially_rejected(const std::array<vec4, 3>& triangle);
+EXBSP_EXPORT bool homogeneous_trivially_accepted(const std::array<vec4, 3>& triangle);
+EXBSP_EXPORT bool homogeneous_trivially_rejected(const std::array<vec4, 3>& triangle);
 
 /// Clips a convex polygon against the view volume. Trivially accepted input is returned
 /// unchanged (bit-for-bit); trivially rejected input, input with fewer than 3 vertices and
 /// results with fewer than 3 vertices are returned empty (attribute_count kept). Throws usage_error
 /// when attributes.size() != positions.size() * attribute_count or a coordinate/attribute is NaN or
 /// infinite.
-homogeneous_polygon homogeneous_clip(const homogeneous_polygon& polygon);
+EXBSP_EXPORT homogeneous_polygon homogeneous_clip(const homogeneous_polygon& polygon);
 
 /// Clips triangle (p[0], p[1], p[2]) with attributes.size() / 3 attributes per vertex
 /// (vertex-major, may be empty) and returns the visible convex polygon, in the triangle's
@@ -72,10 +73,10 @@ homogeneous_polygon homogeneous_clip_triangle(const std::array<vec4, 3>& p,
 /// Fan triangulation (v0, v[i], v[i+1]) of a clipped polygon, each triangle a 3-vertex
 /// homogeneous_polygon with the same attribute_count. Nothing for fewer than 3 vertices.
 /// Throws usage_error when attributes.size() != positions.size() * attribute_count.
-std::vector<homogeneous_polygon> fan_triangulate(const homogeneous_polygon& polygon);
+EXBSP_EXPORT std::vector<homogeneous_polygon> fan_triangulate(const homogeneous_polygon& polygon);
 
 /// Perspective divide (x/w, y/w, z/w) to normalised device coordinates.
 /// Throws usage_error unless w > 0 (clipped output has w >= 0; w == 0 only at the origin).
-vec3 perspective_divide(const vec4& p);
+EXBSP_EXPORT vec3 perspective_divide(const vec4& p);
 
 }  // namespace exbsp::clip

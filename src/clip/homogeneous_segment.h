@@ -23,6 +23,7 @@
 // produced by a plane is then put exactly on it (x = -w for w + x = 0, and so on).
 #pragma once
 #include "clip_types.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::clip {
 
@@ -30,11 +31,12 @@ namespace exbsp::clip {
 /// when nothing is left; otherwise sets out_a = P(t0), out_b = P(t1) and, when t0_out / t1_out
 /// are not null, the parameters. A zero-length segment (a == b) is kept iff a is inside.
 /// Non-finite input returns false (nothing to draw); never throws.
-bool homogeneous_liang_barsky(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b,
-                              double* t0_out = nullptr, double* t1_out = nullptr);
+EXBSP_EXPORT bool homogeneous_liang_barsky(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b,
+                                           double* t0_out = nullptr, double* t1_out = nullptr);
 
 /// Cohen–Sutherland with the same contract as homogeneous_liang_barsky.
-bool homogeneous_cohen_sutherland(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b,
-                                  double* t0_out = nullptr, double* t1_out = nullptr);
+EXBSP_EXPORT bool homogeneous_cohen_sutherland(const vec4& a, const vec4& b, vec4& out_a,
+                                               vec4& out_b, double* t0_out = nullptr,
+                                               double* t1_out = nullptr);
 
 }  // namespace exbsp::clip

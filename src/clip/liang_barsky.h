@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "clip_types.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::clip {
 
@@ -58,8 +59,10 @@ using liang_barsky_result3 = liang_barsky_result<3>;
 /// A segment fully inside is returned bit-for-bit with t0 = 0, t1 = 1; a zero-length
 /// segment is kept iff its point is inside. Throws usage_error on NaN/infinite coordinates
 /// or min > max.
-std::optional<liang_barsky_result2> liang_barsky_clip(const segment2& s, const window2& window);
+EXBSP_EXPORT std::optional<liang_barsky_result2> liang_barsky_clip(const segment2& s,
+                                                                   const window2& window);
 /// 3D version against the closed box; same guarantees and errors.
-std::optional<liang_barsky_result3> liang_barsky_clip(const segment3& s, const box3& box);
+EXBSP_EXPORT std::optional<liang_barsky_result3> liang_barsky_clip(const segment3& s,
+                                                                   const box3& box);
 
 }  // namespace exbsp::clip

@@ -54,7 +54,8 @@ using section_plane = std::array<double, 4>;
 
 /// Throws usage_error unless the four numbers are finite and (A, B, C) is not zero.
 /// `what` names the plane in the message (e.g. "--plane").
-void check_section_plane(const section_plane& plane, const std::string& what = "plane");
+EXBSP_EXPORT void check_section_plane(const section_plane& plane,
+                                      const std::string& what = "plane");
 
 /// A point of a section: correctly rounded doubles and, when asked for, the exact
 /// coordinates as reduced rationals "p/q" (or "p").
@@ -133,15 +134,15 @@ EXBSP_EXPORT triangle_soup clip_soup(const triangle_soup& soup,
 ///   svg:  the outline drawn in the cut plane (see section_svg_basis), loops filled with
 ///         `cap_color` under the nonzero rule, open polylines stroked.
 /// Precondition for json: the result was made with exact_text.
-std::string section_json(const section_result& r);
-std::string section_off(const section_result& r);
-std::string section_svg(const section_result& r,
-                        const std::array<unsigned char, 3>& cap_color = {200, 60, 50});
+EXBSP_EXPORT std::string section_json(const section_result& r);
+EXBSP_EXPORT std::string section_off(const section_result& r);
+EXBSP_EXPORT std::string section_svg(const section_result& r,
+                                     const std::array<unsigned char, 3>& cap_color = {200, 60, 50});
 
 /// The in-plane basis of the SVG drawing: n̂ = n/|n|; m = the axis of the smallest |n_m|
 /// (first on ties); u = e_m - (e_m·n̂) n̂ normalised; v = n̂ × u; so (u, v, n̂) is right-handed
 /// and the drawing is seen from the kept side (plane z = c: u = x, v = y). The SVG shows
 /// (u·p, v·p) with v upwards.
-std::array<vec3d, 2> section_svg_basis(const section_plane& plane);
+EXBSP_EXPORT std::array<vec3d, 2> section_svg_basis(const section_plane& plane);
 
 }  // namespace exbsp

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "clip_types.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::clip {
 
@@ -55,36 +56,37 @@ struct half_space3 {
 /// convex), in the input's vertex order. An empty region list returns the polygon unchanged;
 /// a result with fewer than 3 vertices (nothing, a point or a segment) is returned empty, as
 /// is an input with fewer than 3 vertices. Throws usage_error on NaN/infinite input.
-std::vector<vec2> sutherland_hodgman_clip(const std::vector<vec2>& polygon,
-                                          const std::vector<half_plane2>& region);
+EXBSP_EXPORT std::vector<vec2> sutherland_hodgman_clip(const std::vector<vec2>& polygon,
+                                                       const std::vector<half_plane2>& region);
 /// 3D version: a planar polygon clipped by half-spaces; same guarantees and errors.
-std::vector<vec3> sutherland_hodgman_clip(const std::vector<vec3>& polygon,
-                                          const std::vector<half_space3>& region);
+EXBSP_EXPORT std::vector<vec3> sutherland_hodgman_clip(const std::vector<vec3>& polygon,
+                                                       const std::vector<half_space3>& region);
 
 /// sutherland_hodgman_clip split into pieces (see the file comment): each piece is a polygon
 /// of at least 3 vertices; a convex input gives at most one piece, equal to
 /// sutherland_hodgman_clip's result. Throws usage_error on NaN/infinite input.
-std::vector<std::vector<vec2>> sutherland_hodgman_pieces(const std::vector<vec2>& polygon,
-                                                         const std::vector<half_plane2>& region);
+EXBSP_EXPORT std::vector<std::vector<vec2>> sutherland_hodgman_pieces(
+    const std::vector<vec2>& polygon, const std::vector<half_plane2>& region);
 /// 3D version for a planar polygon; same guarantees and errors.
-std::vector<std::vector<vec3>> sutherland_hodgman_pieces(const std::vector<vec3>& polygon,
-                                                         const std::vector<half_space3>& region);
+EXBSP_EXPORT std::vector<std::vector<vec3>> sutherland_hodgman_pieces(
+    const std::vector<vec3>& polygon, const std::vector<half_space3>& region);
 
 /// The four half-planes of the closed window: x >= xmin, x <= xmax, y >= ymin, y <= ymax
 /// (in that order). Throws usage_error on NaN/infinite bounds or min > max.
-std::vector<half_plane2> window_half_planes(const window2& window);
+EXBSP_EXPORT std::vector<half_plane2> window_half_planes(const window2& window);
 /// The six half-spaces of the closed box: x >= min, x <= max, then y, then z.
 /// Throws usage_error on NaN/infinite bounds or min > max.
-std::vector<half_space3> box_half_spaces(const box3& box);
+EXBSP_EXPORT std::vector<half_space3> box_half_spaces(const box3& box);
 /// The six half-spaces of a glFrustum view volume in eye coordinates (eye at the origin,
 /// looking down -z): left, right, bottom, top, near (z <= -near), far (z >= -far).
 /// Throws usage_error unless left < right, bottom < top, 0 < near < far, all finite.
-std::vector<half_space3> frustum_half_spaces(double left, double right, double bottom, double top,
-                                             double near, double far);
+EXBSP_EXPORT std::vector<half_space3> frustum_half_spaces(double left, double right, double bottom,
+                                                          double top, double near, double far);
 /// The six half-spaces of a glOrtho view volume in eye coordinates: the box
 /// [left, right] x [bottom, top] x [-far, -near]. Throws usage_error unless left < right,
 /// bottom < top, near < far, all finite.
-std::vector<half_space3> orthographic_half_spaces(double left, double right, double bottom,
-                                                  double top, double near, double far);
+EXBSP_EXPORT std::vector<half_space3> orthographic_half_spaces(double left, double right,
+                                                               double bottom, double top,
+                                                               double near, double far);
 
 }  // namespace exbsp::clip

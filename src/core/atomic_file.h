@@ -9,6 +9,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <exbsp/core/export.h>
 
 namespace exbsp {
 
@@ -23,7 +24,7 @@ namespace exbsp {
 /// (when those signals have their default action; the signal is then re-raised).
 /// Throws output_error naming `path` (empty name, missing directory, a directory, permission,
 /// disk full, ...); any existing file at `path` is then left untouched.
-void write_file_atomically(const std::string& path, std::string_view bytes);
+EXBSP_EXPORT void write_file_atomically(const std::string& path, std::string_view bytes);
 
 /// Receives an output's bytes piece by piece.
 using output_sink = std::function<void(std::string_view)>;
@@ -32,11 +33,11 @@ using output_sink = std::function<void(std::string_view)>;
 /// a large output (a whole order document) is never held in memory at once. The same rules;
 /// if `produce` throws, the temporary file is removed and the exception passes on (for "-"
 /// and non-regular targets, the pieces written so far stay written).
-void write_file_atomically(const std::string& path,
-                           const std::function<void(const output_sink&)>& produce);
+EXBSP_EXPORT void write_file_atomically(const std::string& path,
+                                        const std::function<void(const output_sink&)>& produce);
 
 /// Number of temporary output files currently being written (registered for removal on a
 /// signal). For tests: 0 whenever no write_file_atomically call is running.
-int pending_temporary_files();
+EXBSP_EXPORT int pending_temporary_files();
 
 }  // namespace exbsp

@@ -6,18 +6,19 @@
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <exbsp/core/export.h>
 
 namespace exbsp {
 
 /// Base of all exbsp errors. what() is a complete, user-facing message.
-class error : public std::runtime_error {
+class EXBSP_EXPORT error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
 /// Bad input file: unreadable, syntax error, NaN/Inf, index out of range, count mismatch.
 /// The message names the file and, where there is one, the line ("FILE:LINE: ...").
-class input_error : public error {
+class EXBSP_EXPORT input_error : public error {
  public:
   input_error(const std::string& file, std::size_t line, const std::string& what)
       : error(line ? file + ":" + std::to_string(line) + ": " + what : file + ": " + what),
@@ -34,7 +35,7 @@ class input_error : public error {
 
 /// Bad scene: a missing or wrongly typed key, an impossible camera or projection.
 /// The message names the scene file and the key (JSON pointer style, e.g. /projection/near).
-class scene_error : public error {
+class EXBSP_EXPORT scene_error : public error {
  public:
   scene_error(const std::string& file, const std::string& key, const std::string& what)
       : error(file + ": " + (key.empty() ? std::string() : key + ": ") + what),
@@ -48,14 +49,14 @@ class scene_error : public error {
 };
 
 /// A resource limit was reached (e.g. --max-fragments); nothing partial is returned.
-class limit_error : public error {
+class EXBSP_EXPORT limit_error : public error {
  public:
   using error::error;
 };
 
 /// An output file could not be written (directory missing, disk full, permission, rename).
 /// The message names the file ("FILE: cannot write output: ..."); nothing partial is left.
-class output_error : public error {
+class EXBSP_EXPORT output_error : public error {
  public:
   output_error(const std::string& file, const std::string& what)
       : error(file + ": " + what), file_(file) {}
@@ -67,14 +68,14 @@ class output_error : public error {
 
 /// The caller cancelled a build by throwing this from build_options::progress (bsp/engine.h);
 /// bsp::build lets it through unchanged and keeps nothing of the partial tree.
-class build_cancelled : public error {
+class EXBSP_EXPORT build_cancelled : public error {
  public:
   build_cancelled() : error("build cancelled") {}
   using error::error;
 };
 
 /// A caller broke a documented precondition (e.g. a zero direction vector).
-class usage_error : public error {
+class EXBSP_EXPORT usage_error : public error {
  public:
   using error::error;
 };

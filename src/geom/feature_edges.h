@@ -21,6 +21,7 @@
 
 #include "geom/homogeneous_det.h"
 #include "mesh/soup.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::geom {
 
@@ -44,10 +45,10 @@ struct view_features {
 };
 
 /// Exact facing of triangle (a, b, c) for viewer E (notation): 1, -1 or 0.
-int facing(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint& viewer);
+EXBSP_EXPORT int facing(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint& viewer);
 
 /// The feature edges of `soup` for `viewer`. Precondition: 0 < crease_deg <= 180.
-view_features find_feature_edges(const triangle_soup& soup, const hpoint& viewer,
-                                 double crease_deg);
+EXBSP_EXPORT view_features find_feature_edges(const triangle_soup& soup, const hpoint& viewer,
+                                              double crease_deg);
 
 }  // namespace exbsp::geom

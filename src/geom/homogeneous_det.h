@@ -19,6 +19,8 @@
 #include <array>
 #include <memory>
 
+#include <exbsp/core/export.h>
+
 namespace exbsp::geom {
 
 /// A homogeneous point: w = 1 (a point) or 0 (a direction).
@@ -41,15 +43,15 @@ using rounding_guard = CGAL::Protect_FPU_rounding<true>;
 class det_value {
  public:
   det_value() = default;
-  det_value(const hpoint& h0, const hpoint& h1, const hpoint& h2, const hpoint& h3);
+  EXBSP_EXPORT det_value(const hpoint& h0, const hpoint& h1, const hpoint& h2, const hpoint& h3);
 
   /// Exact sign (-1, 0, 1).
-  int sign() const;
+  EXBSP_EXPORT int sign() const;
   /// The exact value (computed once, on first use).
-  const mpq_class& exact() const;
+  EXBSP_EXPORT const mpq_class& exact() const;
   const interval& approx() const { return approx_; }
   /// A double near the value (the exact one rounded when it was computed).
-  double to_double() const;
+  EXBSP_EXPORT double to_double() const;
 
  private:
   std::array<hpoint, 4> rows_{};
@@ -58,8 +60,8 @@ class det_value {
 };
 
 /// Exact sign of p q - r s.
-int sign_of_difference_of_products(const det_value& p, const det_value& q, const det_value& r,
-                                   const det_value& s);
+EXBSP_EXPORT int sign_of_difference_of_products(const det_value& p, const det_value& q,
+                                                const det_value& r, const det_value& s);
 
 /// A parameter t = a / (a - b) on a segment where an affine function with values a at t = 0
 /// and b at t = 1 vanishes; a and b are nonzero with opposite signs, so 0 < t < 1. The ends
@@ -79,10 +81,10 @@ struct crossing {
     return {kind_type::inner, a, b};
   }
   /// A double near t.
-  double to_double() const;
+  EXBSP_EXPORT double to_double() const;
 };
 
 /// Exact comparison of two crossings on the same segment: -1, 0 or 1 as x <, =, > y.
-int compare(const crossing& x, const crossing& y);
+EXBSP_EXPORT int compare(const crossing& x, const crossing& y);
 
 }  // namespace exbsp::geom

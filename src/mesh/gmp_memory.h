@@ -4,6 +4,7 @@
 // exact kernels (gmpq, epeck) should install these functions once, before any GMP number is
 // created (the exbsp command line does so first thing in main).
 #pragma once
+#include <exbsp/core/export.h>
 
 namespace exbsp {
 
@@ -18,14 +19,14 @@ namespace exbsp {
 /// An exception from inside GMP can also leave the number being written unusable, so the
 /// first failure is absorbed by a 1 MB reserve of address space instead (gmp_memory.cpp):
 /// the call completes and check_gmp_memory then throws from C++.
-void install_gmp_memory_functions();
+EXBSP_EXPORT void install_gmp_memory_functions();
 
 /// Throws std::bad_alloc when the reserve has been spent (memory ran out inside GMP). Call it
 /// between GMP calls, where every number is consistent (exbsp's exact kernel does).
-void check_gmp_memory();
+EXBSP_EXPORT void check_gmp_memory();
 
 /// Makes a new reserve after memory was freed (each exact build starts with it), and clears
 /// the exhausted mark once there is one. Does nothing before install_gmp_memory_functions.
-void rearm_gmp_memory_reserve();
+EXBSP_EXPORT void rearm_gmp_memory_reserve();
 
 }  // namespace exbsp

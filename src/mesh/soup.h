@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+#include <exbsp/core/export.h>
 
 namespace exbsp {
 
@@ -20,7 +21,7 @@ struct soup_triangle {
 
 /// A triangle soup as loaded: no face dropped, degenerate triangles still present
 /// (the BSP build skips and counts them).
-struct triangle_soup {
+struct EXBSP_EXPORT triangle_soup {
   std::vector<vec3d> vertices;
   std::vector<soup_triangle> triangles;  ///< file order, fans in order
   std::uint32_t face_count = 0;          ///< number of faces in the source (polygons)

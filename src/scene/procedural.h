@@ -9,28 +9,31 @@
 #include <vector>
 
 #include "../mesh/soup.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::scene {
 
 /// Axis-aligned box [lo, hi]: 6 quad faces, outward. Precondition: lo < hi componentwise.
-triangle_soup make_box(const vec3d& lo, const vec3d& hi);
+EXBSP_EXPORT triangle_soup make_box(const vec3d& lo, const vec3d& hi);
 
 /// Right prism over a convex polygon `outline` (x, y, counter-clockwise) from z0 to z1 > z0:
 /// bottom cap, top cap, then one quad per side; outward.
-triangle_soup make_prism(const std::vector<std::array<double, 2>>& outline, double z0, double z1);
+EXBSP_EXPORT triangle_soup make_prism(const std::vector<std::array<double, 2>>& outline, double z0,
+                                      double z1);
 
 /// A spur-gear-like CAD part: `teeth` trapezoid teeth between root_radius and tip_radius, a
 /// round bore of bore_radius (sampled at the profile's angles), extruded from -thickness/2 to
 /// +thickness/2 along z, centred on the z axis; outward. Preconditions: teeth >= 3,
 /// 0 < bore_radius < root_radius < tip_radius, thickness > 0.
-triangle_soup make_gear(int teeth, double root_radius, double tip_radius, double bore_radius,
-                        double thickness);
+EXBSP_EXPORT triangle_soup make_gear(int teeth, double root_radius, double tip_radius,
+                                     double bore_radius, double thickness);
 
 /// Three long flat planks (one quad face each) in cyclic overlap as seen from +z: plank i
 /// runs along direction angle 120 i degrees, at distance `offset` from the origin, from
 /// parameter -half_length to +half_length, `width` wide, rising with `slope` along its length,
 /// so that plank i passes over plank i+1 (mod 3) where they cross. No depth order of the three
 /// exists; a BSP must split one of them. Normals point up (+z side).
-triangle_soup make_cyclic_planks(double offset, double half_length, double width, double slope);
+EXBSP_EXPORT triangle_soup make_cyclic_planks(double offset, double half_length, double width,
+                                              double slope);
 
 }  // namespace exbsp::scene

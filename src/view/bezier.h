@@ -20,6 +20,7 @@
 #include <functional>
 #include <utility>
 #include <vector>
+#include <exbsp/core/export.h>
 
 namespace exbsp {
 
@@ -34,11 +35,11 @@ using vec2d = std::array<double, 2>;
 /// error about 3 n ulp (binomial and power recurrences).
 /// Exact at the ends: t = 0 gives (1, 0, .., 0), t = 1 gives (0, .., 0, 1).
 /// Throws usage_error unless t is finite and in [0, 1].
-std::vector<double> bernstein_weights(std::size_t n, double t);
+EXBSP_EXPORT std::vector<double> bernstein_weights(std::size_t n, double t);
 
 /// A Bézier curve of degree n >= 0 given by n + 1 finite control points.
 /// A degree-0 curve (one control point) is valid: it is that point for every t.
-class bezier_curve {
+class EXBSP_EXPORT bezier_curve {
  public:
   /// Throws usage_error when `control_points` is empty or a coordinate is NaN or infinite.
   explicit bezier_curve(std::vector<vec3d> control_points);

@@ -10,6 +10,7 @@
 #include "image.h"
 #include "matrix.h"
 #include "viewport.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::view {
 
@@ -80,7 +81,7 @@ struct effect_scene {
 
 /// What the "fog" stage computes for a view (its sample shader reads it): the settings and
 /// the inverse of the projection, to turn a window point (x, y, depth) back into eye space.
-struct fog_shading {
+struct EXBSP_EXPORT fog_shading {
   fog_settings settings;
   mat4 inverse_projection = mat4::identity();
   viewport vp;

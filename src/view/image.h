@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 #include <vector>
+#include <exbsp/core/export.h>
 
 namespace exbsp::view {
 
@@ -17,7 +18,7 @@ struct rgb8 {
 };
 
 /// width x height RGB pixels, 3 bytes each, top row first.
-class image {
+class EXBSP_EXPORT image {
  public:
   image() = default;
   /// Throws usage_error unless 0 < width, height <= 65536.

@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "../mesh/soup.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::view {
 
@@ -62,14 +63,14 @@ inline bool is_finite(const point3& a) {
 }
 
 /// a / |a|. Throws usage_error for a zero or non-finite vector.
-vector3 normalized(const vector3& a);
+EXBSP_EXPORT vector3 normalized(const vector3& a);
 
 /// Conversions from the soup's coordinate triple.
 inline point3 to_point(const vec3d& p) { return {p[0], p[1], p[2]}; }
 inline vec3d to_vec3d(const point3& p) { return {p.x, p.y, p.z}; }
 
 /// A 4x4 matrix of doubles, row-major (see the notation at the top of this file).
-struct mat4 {
+struct EXBSP_EXPORT mat4 {
   std::array<double, 16> m{};
 
   /// Element at row r, column c (0-based).
@@ -82,19 +83,19 @@ struct mat4 {
 };
 
 /// Matrix product: (a * b) p = a (b p).
-mat4 operator*(const mat4& a, const mat4& b);
+EXBSP_EXPORT mat4 operator*(const mat4& a, const mat4& b);
 /// M (x, y, z, 1): the homogeneous image of a point.
-hpoint operator*(const mat4& m, const point3& p);
+EXBSP_EXPORT hpoint operator*(const mat4& m, const point3& p);
 /// M (x, y, z, w).
-hpoint operator*(const mat4& m, const hpoint& p);
+EXBSP_EXPORT hpoint operator*(const mat4& m, const hpoint& p);
 /// M (x, y, z, 0): the image of a vector (only the upper-left 3x3 block acts).
-vector3 transform_vector(const mat4& m, const vector3& v);
+EXBSP_EXPORT vector3 transform_vector(const mat4& m, const vector3& v);
 /// M (x, y, z, 1) divided by its w. Throws usage_error when w is 0 or the result is not finite.
-point3 transform_point(const mat4& m, const point3& p);
-mat4 transpose(const mat4& a);
+EXBSP_EXPORT point3 transform_point(const mat4& m, const point3& p);
+EXBSP_EXPORT mat4 transpose(const mat4& a);
 /// Largest absolute difference between corresponding elements.
-double max_abs_difference(const mat4& a, const mat4& b);
+EXBSP_EXPORT double max_abs_difference(const mat4& a, const mat4& b);
 /// True when every element is finite.
-bool is_finite(const mat4& a);
+EXBSP_EXPORT bool is_finite(const mat4& a);
 
 }  // namespace exbsp::view

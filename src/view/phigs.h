@@ -23,6 +23,7 @@
 #pragma once
 #include "camera.h"
 #include "matrix.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::view {
 
@@ -37,7 +38,7 @@ struct phigs_view {
 };
 
 /// The matrices of a PHIGS view.
-struct phigs_matrices {
+struct EXBSP_EXPORT phigs_matrices {
   camera_basis basis;                   ///< u, v, n (n in the w slot)
   mat4 orientation = mat4::identity();  ///< O: world -> VRC
   mat4 mapping = mat4::identity();      ///< M: VRC -> clip coordinates
@@ -51,6 +52,6 @@ struct phigs_matrices {
 /// Builds the matrices. Throws usage_error naming the parameter ("vup", "prp", "window",
 /// "front", "back", "vpn") for non-finite input, a zero VPN, VUP parallel to VPN, an empty
 /// window, F <= B, or a PRP on the wrong side (pn <= F for perspective, pn <= 0 for parallel).
-phigs_matrices phigs_view_matrices(const phigs_view& p);
+EXBSP_EXPORT phigs_matrices phigs_view_matrices(const phigs_view& p);
 
 }  // namespace exbsp::view

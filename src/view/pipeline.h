@@ -32,16 +32,17 @@
 #include "screen_polygon.h"
 #include "vector_drawing.h"
 #include "viewport.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::view {
 
 /// The four projection types of a scene (docs/contract.md "Scenes").
 enum class projection_kind { perspective, frustum, orthographic, oblique };
 /// "perspective", "frustum", "orthographic", "oblique".
-const char* to_string(projection_kind k);
+EXBSP_EXPORT const char* to_string(projection_kind k);
 
 /// Everything the stages need to know about the view.
-struct view_setup {
+struct EXBSP_EXPORT view_setup {
   projection_kind kind = projection_kind::perspective;
   camera cam;                          ///< gluLookAt input; cam.eye orders perspective views
   mat4 model_view = mat4::identity();  ///< look_at(cam)
@@ -136,7 +137,7 @@ struct stage {
 };
 
 /// An ordered list of stages.
-class pipeline {
+class EXBSP_EXPORT pipeline {
  public:
   /// Appends a stage.
   void add(std::string name, std::function<std::string(frame&)> run);

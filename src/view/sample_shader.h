@@ -18,6 +18,7 @@
 
 #include "image.h"
 #include "viewport.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::view {
 
@@ -34,6 +35,6 @@ struct depth_plane {
   double at(double x, double y) const { return zx * x + zy * y + z0; }
 };
 /// The plane through the polygon's widest fan triangle.
-depth_plane polygon_depth_plane(const std::vector<window_point>& v);
+EXBSP_EXPORT depth_plane polygon_depth_plane(const std::vector<window_point>& v);
 
 }  // namespace exbsp::view

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "pipeline.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::view {
 
@@ -19,16 +20,16 @@ enum class output_kind { png, svg, pdf };
 ///   [after_transform effects], then for PNG: raster (or the raster effect, antialias),
 ///   [after_raster effects]; for SVG: svg, for PDF: pdf (png_only effects have no stage).
 /// Re-running these stages on a frame whose "build" ran renders another view of the same BSP.
-pipeline per_view_pipeline(const std::vector<std::string>& effects, output_kind output,
-                           bool curves = false);
+EXBSP_EXPORT pipeline per_view_pipeline(const std::vector<std::string>& effects, output_kind output,
+                                        bool curves = false);
 
 /// "build" followed by per_view_pipeline(effects, output, curves). The caller appends the
 /// "write" stage.
-pipeline standard_pipeline(const std::vector<std::string>& effects, output_kind output,
-                           bool curves = false);
+EXBSP_EXPORT pipeline standard_pipeline(const std::vector<std::string>& effects, output_kind output,
+                                        bool curves = false);
 
 /// The effects among `effects` that have no stage in `output` (png_only effects for SVG and PDF).
-std::vector<std::string> effects_without_stage(const std::vector<std::string>& effects,
-                                               output_kind output);
+EXBSP_EXPORT std::vector<std::string> effects_without_stage(const std::vector<std::string>& effects,
+                                                            output_kind output);
 
 }  // namespace exbsp::view

@@ -36,6 +36,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include <exbsp/core/export.h>
 
 namespace exbsp {
 
@@ -50,22 +51,22 @@ struct quaternion {
 };
 
 /// Hamilton product: (a * b) is the rotation b followed by a.
-quaternion operator*(const quaternion& a, const quaternion& b);
+EXBSP_EXPORT quaternion operator*(const quaternion& a, const quaternion& b);
 /// w - x i - y j - z k; the inverse rotation of a unit quaternion.
-quaternion conjugate(const quaternion& q);
+EXBSP_EXPORT quaternion conjugate(const quaternion& q);
 /// Euclidean norm sqrt(w^2 + x^2 + y^2 + z^2) (overflow-safe).
-double norm(const quaternion& q);
+EXBSP_EXPORT double norm(const quaternion& q);
 /// q / |q|. Throws usage_error when q is zero or has a non-finite component.
-quaternion normalize(const quaternion& q);
+EXBSP_EXPORT quaternion normalize(const quaternion& q);
 /// normalize(a * b): composing many rotations this way stays a unit quaternion.
 /// Throws usage_error as normalize().
-quaternion compose(const quaternion& a, const quaternion& b);
+EXBSP_EXPORT quaternion compose(const quaternion& a, const quaternion& b);
 /// 4D dot product; |dot(a, b)| = 1 for unit quaternions of the same rotation.
-double dot(const quaternion& a, const quaternion& b);
+EXBSP_EXPORT double dot(const quaternion& a, const quaternion& b);
 
 /// Rotation by `angle` radians about `axis` (any length > 0, right-hand rule).
 /// Throws usage_error for a zero or non-finite axis or a non-finite angle.
-quaternion from_axis_angle(const vec3d& axis, double angle);
+EXBSP_EXPORT quaternion from_axis_angle(const vec3d& axis, double angle);
 
 /// A rotation as a unit axis and an angle in [0, pi].
 struct axis_angle {
@@ -74,33 +75,33 @@ struct axis_angle {
 };
 /// The axis and angle of the rotation q (normalised first; q and -q give the same answer).
 /// For the identity (angle 0) the axis is (0, 0, 1). Throws usage_error as normalize().
-axis_angle to_axis_angle(const quaternion& q);
+EXBSP_EXPORT axis_angle to_axis_angle(const quaternion& q);
 
 /// v rotated by q (normalised first). Throws usage_error as normalize() or for non-finite v.
-vec3d rotate(const quaternion& q, const vec3d& v);
+EXBSP_EXPORT vec3d rotate(const quaternion& q, const vec3d& v);
 /// The 3x3 rotation matrix of q (normalised first), row-major: rotate(q, v) = M v.
 /// Throws usage_error as normalize().
-std::array<double, 9> to_matrix3(const quaternion& q);
+EXBSP_EXPORT std::array<double, 9> to_matrix3(const quaternion& q);
 /// The 4x4 homogeneous matrix (rotation, no translation), row-major, last row (0, 0, 0, 1).
 /// Throws usage_error as normalize().
-std::array<double, 16> to_matrix4(const quaternion& q);
+EXBSP_EXPORT std::array<double, 16> to_matrix4(const quaternion& q);
 
 /// Spherical linear interpolation along the shorter arc: slerp(a, b, 0) = a, slerp(a, b, 1) =
 /// +-b (b's sign is flipped when dot(a, b) < 0), constant angular speed, unit result.
 /// Falls back to normalised linear interpolation when a and b are nearly equal.
 /// Throws usage_error as normalize() or for a non-finite t (any finite t extrapolates).
-quaternion slerp(const quaternion& a, const quaternion& b, double t);
+EXBSP_EXPORT quaternion slerp(const quaternion& a, const quaternion& b, double t);
 
 /// Arcball rotation between two points on the unit sphere (normalised first): the quaternion
 /// (p.q, p x q) — axis p x q, angle twice the angle between p and q (see the file comment).
 /// Equal points give exactly the identity. Throws usage_error for zero or non-finite points.
-quaternion arcball_rotation(const vec3d& p, const vec3d& q);
+EXBSP_EXPORT quaternion arcball_rotation(const vec3d& p, const vec3d& q);
 
 /// Virtual-trackball rotation between two points on the unit sphere (normalised first): axis
 /// p x q, angle = the angle between p and q (p goes to q). Equal points give exactly the
 /// identity; opposite points (rim points 180 degrees apart) the half turn about an axis
 /// perpendicular to p in the screen plane. Throws usage_error for zero or non-finite points.
-quaternion virtual_trackball_rotation(const vec3d& p, const vec3d& q);
+EXBSP_EXPORT quaternion virtual_trackball_rotation(const vec3d& p, const vec3d& q);
 
 /// Which rotation a drag gives.
 enum class trackball_kind {
@@ -110,7 +111,7 @@ enum class trackball_kind {
 
 /// The trackball a scene's "trackball" or --trackball names: "arcball" or "virtual";
 /// nothing for any other name.
-std::optional<trackball_kind> trackball_named(const std::string& name);
+EXBSP_EXPORT std::optional<trackball_kind> trackball_named(const std::string& name);
 
 /// Direction of the screen y axis.
 enum class screen_y {
@@ -119,7 +120,7 @@ enum class screen_y {
 };
 
 /// Shoemake's arcball over a viewport.
-class arcball {
+class EXBSP_EXPORT arcball {
  public:
   /// Ball centred in the viewport [0, width] x [0, height], radius min(width, height) / 2.
   /// Throws usage_error unless width and height are finite and > 0.
@@ -163,6 +164,6 @@ struct orbit_view {
 /// inverse rotation, R_world^-1 = B R^-1 B^T with B = (right, true up, back) of the camera.
 /// The returned up is the camera's new true up (unit, orthogonal to the view direction).
 /// Throws usage_error for non-finite input, eye == look_at, or up parallel to eye - look_at.
-orbit_view orbit_camera(const orbit_view& camera, const quaternion& rotation);
+EXBSP_EXPORT orbit_view orbit_camera(const orbit_view& camera, const quaternion& rotation);
 
 }  // namespace exbsp

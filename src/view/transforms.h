@@ -7,19 +7,20 @@
 #include <vector>
 
 #include "matrix.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::view {
 
 /// Translation by t (glTranslated).
-mat4 translate(const vector3& t);
+EXBSP_EXPORT mat4 translate(const vector3& t);
 /// Non-uniform scale (glScaled).
-mat4 scale(double sx, double sy, double sz);
+EXBSP_EXPORT mat4 scale(double sx, double sy, double sz);
 /// Rotation by angle_deg degrees counter-clockwise about `axis` through the origin
 /// (right-hand rule, glRotated). Throws usage_error for a zero or non-finite axis.
-mat4 rotate(double angle_deg, const vector3& axis);
+EXBSP_EXPORT mat4 rotate(double angle_deg, const vector3& axis);
 
 /// A stack of matrices; the top is the current transform. Never empty.
-class matrix_stack {
+class EXBSP_EXPORT matrix_stack {
  public:
   /// Starts with one identity matrix.
   matrix_stack();

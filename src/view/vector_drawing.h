@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "image.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::view {
 
@@ -64,8 +65,8 @@ struct vector_options {
 };
 
 /// "visible", "painter" / "none", "visible", "visible+hidden".
-const char* to_string(vector_options::mode_kind m);
-const char* to_string(vector_options::edges_kind e);
+EXBSP_EXPORT const char* to_string(vector_options::mode_kind m);
+EXBSP_EXPORT const char* to_string(vector_options::edges_kind e);
 
 /// A grid point (notation above).
 struct grid_point {
@@ -122,20 +123,20 @@ struct vector_drawing {
 };
 
 /// The placement of a frame's drawing (from f.view and f.background).
-drawing_placement placement_of(const frame& f);
+EXBSP_EXPORT drawing_placement placement_of(const frame& f);
 
 /// The visible-region drawing of a frame whose transform+clip stage ran (and curves and fog
 /// stages when present): underlays, regions sorted by (mesh, face), then hidden edges (when asked),
 /// visible edges, curves. Meshes come from f.mesh_face_offsets (all faces in mesh 0 when empty).
 /// Throws usage_error for a bad crease angle.
-vector_drawing visible_drawing(const frame& f);
+EXBSP_EXPORT vector_drawing visible_drawing(const frame& f);
 
 /// The painter's stack of a frame as a drawing (the PDF writer's painter mode): one region
 /// per polygon of f.polygons, back to front, with curve pieces in their slots.
-vector_drawing painter_drawing(const frame& f);
+EXBSP_EXPORT vector_drawing painter_drawing(const frame& f);
 
 /// Rounds a window coordinate (already relative to the viewport origin) to the grid.
-long long to_grid(double v);
+EXBSP_EXPORT long long to_grid(double v);
 
 /// Counts of a drawing, for logs and the bench.
 struct drawing_counts {
@@ -143,6 +144,6 @@ struct drawing_counts {
   std::size_t visible_edges = 0, hidden_edges = 0;  ///< straight pieces of the edge chains
   std::size_t curves = 0;
 };
-drawing_counts count_paths(const vector_drawing& d);
+EXBSP_EXPORT drawing_counts count_paths(const vector_drawing& d);
 
 }  // namespace exbsp::view

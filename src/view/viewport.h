@@ -8,6 +8,7 @@
 // whose top edge is at window y = height - r.
 #pragma once
 #include "matrix.h"
+#include <exbsp/core/export.h>
 
 namespace exbsp::view {
 
@@ -25,10 +26,10 @@ struct viewport {
 
 /// Window coordinates of an ndc point: x_w = x + (x_ndc + 1) width / 2, y_w likewise,
 /// z_w = depth_near + (z_ndc + 1)(depth_far - depth_near) / 2.
-window_point to_window(const viewport& vp, double x_ndc, double y_ndc, double z_ndc);
+EXBSP_EXPORT window_point to_window(const viewport& vp, double x_ndc, double y_ndc, double z_ndc);
 
 /// The same map as a 4x4 matrix acting on (x_ndc, y_ndc, z_ndc, 1).
-mat4 viewport_matrix(const viewport& vp);
+EXBSP_EXPORT mat4 viewport_matrix(const viewport& vp);
 
 /// Image row (0 = top) of window pixel row j in a window of the given height.
 inline int image_row(int j, int height) { return height - 1 - j; }
