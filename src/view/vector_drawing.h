@@ -9,14 +9,17 @@
 //
 // Visible regions: the polygons of the transform+clip stage, taken FRONT TO BACK (the reverse
 // of their back-to-front list, docs/contract.md "The BSP"), are snapped to the grid; each loses
-// what the polygons before it already cover (Clipper's integer Booleans: covered := covered ∪ P,
-// visible(P) := P \ covered), and the visible parts of one source face are merged into one
-// region (holes kept). The screen is cut into square tiles so that each Boolean sees only the
-// coverage near its polygon, and a tile found fully covered rejects everything behind it at
-// once. Rounding makes cracks under one grid unit wide where polygons in front meet at a
-// T-junction; what shows through them is dropped: spikes (zero-area antennas, under one unit
-// wide) are cut off the rings, and rings thinner than min_region_width (their area over half
-// their perimeter) are dropped (they cannot decide any pixel).
+// what the polygons before it already cover (visible(P) := P \ covered, covered := covered ∪
+// visible(P)), and the visible parts of one source face are merged into one region (holes
+// kept). The coverage is kept as its disjoint pieces, listed in 4-pixel tiles: P is fully
+// visible when a line through an edge separates it from every piece near it (exact integer
+// test: the shared edges of a mesh do), and only otherwise do Clipper's integer Booleans take
+// the difference with the pieces it may overlap; a tile whose pieces' areas fill it rejects
+// everything behind it at once. Rounding makes cracks under one grid unit wide where polygons
+// in front meet at a T-junction; what shows through them is dropped: spikes (zero-area
+// antennas, under one unit wide) are cut off the rings, and rings thinner than
+// min_region_width (their area over half their perimeter) are dropped (they cannot decide any
+// pixel).
 //
 // Underlays: anti-aliasing renderers (browsers, PDF viewers) blend each path's edge pixels
 // with what is below, so two regions sharing an edge let the background through it
@@ -24,8 +27,10 @@
 // underlays, filled unions of regions under them: one per mesh (part) in the area-weighted
 // mean colour of its regions (under a seam between two lit faces shows a colour near both),
 // then one per colour used by two or more regions (where faces of one colour meet, the seam
-// shows exactly that colour). They add no area (no outline grows, nothing is stroked); the
-// regions above stay one path per face.
+// shows exactly that colour). An underlay is one path whose rings are the unions of its
+// regions taken in 64-pixel squares (a renderer fills a path's rings together, so no seam
+// shows where two squares' unions meet). They add no area (no outline grows, nothing is
+// stroked); the regions above stay one path per face.
 //
 // Edges (the hidden-line drawing): the feature edges (geom/feature_edges.h) split exactly into
 // visible and hidden runs by the contract's rule (edge_visibility.h), drawn by edge_paths.h.
