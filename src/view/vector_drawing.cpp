@@ -8,9 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <map>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "core/errors.h"
 #include "view/clip_stage.h"
@@ -152,43 +151,113 @@ double twice_area_from(const cl::Path& p, double ox, double oy) {
   return a;
 }
 
-/// Signed area of the ring's part inside the square [x0, x0 + side] x [y0, y0 + side], in
-/// square units, by Sutherland–Hodgman against the square's four sides (a non-convex ring
-/// clipped by a convex window keeps its area, even where the clipped ring touches itself).
-double area_in_square(const cl::Path& ring, long long x0, long long y0, long long side) {
-  struct pt {
-    double x, y;
-  };
-  std::vector<pt> a, b;
-  a.reserve(ring.size() + 8);
-  for (const cl::IntPoint& q : ring)
-    a.push_back({static_cast<double>(q.X - x0), static_cast<double>(q.Y - y0)});
-  const double s = static_cast<double>(side);
-  // Each side as "keep where f(p) >= 0".
-  auto clip = [&](auto f) {
-    b.clear();
-    for (std::size_t i = 0, j = a.size() - 1; i < a.size(); j = i++) {
-      const double fj = f(a[j]), fi = f(a[i]);
-      if (fi >= 0) {
-        if (fj < 0)
-          b.push_back({a[j].x + (a[i].x - a[j].x) * fj / (fj - fi),
-                       a[j].y + (a[i].y - a[j].y) * fj / (fj - fi)});
-        b.push_back(a[i]);
-      } else if (fj >= 0) {
-        b.push_back({a[j].x + (a[i].x - a[j].x) * fj / (fj - fi),
-                     a[j].y + (a[i].y - a[j].y) * fj / (fj - fi)});
-      }
+/// True when the ring turns left (or goes straight) at every vertex: counter-clockwise and
+/// convex. Integer cross products, exact.
+bool convex_ccw(const cl::Path& r) {
+  const std::size_t n = r.size();
+  if (n < 3) return false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const cl::IntPoint& a = r[i];
+    const cl::IntPoint& b = r[(i + 1) % n];
+    const cl::IntPoint& c = r[(i + 2) % n];
+    if ((b.X - a.X) * (c.Y - b.Y) - (b.Y - a.Y) * (c.X - b.X) < 0) return false;
+  }
+  return true;
+}
+
+/// Polygons in doubles, relative to an origin on the grid, for overlap areas: Sutherland–
+/// Hodgman clipping by convex windows. (Clipper's Booleans give exact integer polygons, which
+/// the output needs; the coverage only needs areas, at a twentieth of the cost.) A non-convex
+/// polygon clipped by a convex window keeps its area, even where the result touches itself.
+struct point_d {
+  double x, y;
+};
+using polygon_d = std::vector<point_d>;
+
+/// Keeps the part of `a` where dx (y - py) - dy (x - px) >= 0 (left of the directed line).
+void clip_half_plane(polygon_d& a, polygon_d& scratch, double px, double py, double dx, double dy) {
+  if (a.empty() || (dx == 0 && dy == 0)) return;
+  auto f = [&](const point_d& q) { return dx * (q.y - py) - dy * (q.x - px); };
+  scratch.clear();
+  for (std::size_t i = 0, j = a.size() - 1; i < a.size(); j = i++) {
+    const double fj = f(a[j]), fi = f(a[i]);
+    if ((fi >= 0) != (fj >= 0)) {
+      const double t = fj / (fj - fi);
+      scratch.push_back({a[j].x + (a[i].x - a[j].x) * t, a[j].y + (a[i].y - a[j].y) * t});
     }
-    a.swap(b);
-    return !a.empty();
-  };
-  if (!clip([](const pt& p) { return p.x; }) || !clip([s](const pt& p) { return s - p.x; }) ||
-      !clip([](const pt& p) { return p.y; }) || !clip([s](const pt& p) { return s - p.y; }))
-    return 0;
+    if (fi >= 0) scratch.push_back(a[i]);
+  }
+  a.swap(scratch);
+}
+
+double signed_area(const polygon_d& a) {
   double twice = 0;
   for (std::size_t i = 0, j = a.size() - 1; i < a.size(); j = i++)
     twice += a[j].x * a[i].y - a[i].x * a[j].y;
   return 0.5 * twice;
+}
+
+/// `ring` relative to (ox, oy), clipped by the convex counter-clockwise `window`.
+void clip_by_convex(const cl::Path& ring, const cl::Path& window, long long ox, long long oy,
+                    polygon_d& out, polygon_d& scratch) {
+  out.clear();
+  for (const cl::IntPoint& q : ring)
+    out.push_back({static_cast<double>(q.X - ox), static_cast<double>(q.Y - oy)});
+  for (std::size_t k = 0; k < window.size() && !out.empty(); ++k) {
+    const cl::IntPoint& w0 = window[k];
+    const cl::IntPoint& w1 = window[(k + 1) % window.size()];
+    clip_half_plane(out, scratch, static_cast<double>(w0.X - ox), static_cast<double>(w0.Y - oy),
+                    static_cast<double>(w1.X - w0.X), static_cast<double>(w1.Y - w0.Y));
+  }
+}
+
+/// Signed area of the part of `a` (relative coordinates) inside [x0, x1] x [y0, y1].
+double area_in_box(polygon_d a, polygon_d& scratch, double x0, double y0, double x1, double y1) {
+  clip_half_plane(a, scratch, x0, y0, 0, -1);  // x >= x0
+  clip_half_plane(a, scratch, x1, y0, 0, 1);   // x <= x1
+  clip_half_plane(a, scratch, x0, y0, 1, 0);   // y >= y0
+  clip_half_plane(a, scratch, x0, y1, -1, 0);  // y <= y1
+  return a.empty() ? 0 : signed_area(a);
+}
+
+/// The counter-clockwise simple ring cut into convex counter-clockwise triangles by ear
+/// clipping (integer predicates, exact); false when no ear is found (a degenerate ring).
+/// Straight vertices (collinear with their neighbours) are dropped first.
+bool ear_triangles(const cl::Path& ring, std::vector<cl::Path>& out) {
+  auto cross = [](const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c) {
+    return (b.X - a.X) * (c.Y - a.Y) - (b.Y - a.Y) * (c.X - a.X);
+  };
+  cl::Path r = ring;
+  out.clear();
+  while (r.size() > 3) {
+    const std::size_t n = r.size();
+    bool cut = false;
+    for (std::size_t i = 0; i < n && !cut; ++i) {
+      const cl::IntPoint& a = r[(i + n - 1) % n];
+      const cl::IntPoint& b = r[i];
+      const cl::IntPoint& c = r[(i + 1) % n];
+      const long long turn = cross(a, b, c);
+      if (turn == 0) {  // straight or a spike: no area at b
+        r.erase(r.begin() + static_cast<std::ptrdiff_t>(i));
+        cut = true;
+        break;
+      }
+      if (turn < 0) continue;
+      bool empty = true;
+      for (std::size_t k = 0; k < n && empty; ++k) {
+        if (k == i || k == (i + 1) % n || k == (i + n - 1) % n) continue;
+        const cl::IntPoint& q = r[k];
+        empty = !(cross(a, b, q) >= 0 && cross(b, c, q) >= 0 && cross(c, a, q) >= 0);
+      }
+      if (!empty) continue;
+      out.push_back({a, b, c});
+      r.erase(r.begin() + static_cast<std::ptrdiff_t>(i));
+      cut = true;
+    }
+    if (!cut) return false;
+  }
+  if (r.size() == 3 && cross(r[0], r[1], r[2]) > 0) out.push_back(r);
+  return true;
 }
 
 /// True when a line through an edge of one of the point sets has all of `p` on one closed
@@ -259,19 +328,25 @@ class tiled_coverage {
   /// Adds the counter-clockwise polygon p; appends its part not covered before to `visible`.
   void add(const cl::Path& p, cl::Paths& visible) {
     if (hides(p)) return;
-    const bbox_i box = bbox_of(p);
-    clip_.clear();
-    gather(box, clip_, [&](const cl::Paths& piece) { return !separated(p, piece); });
+    near_.clear();
+    gather(bbox_of(p), [&](const cl::Paths& rings, bool square) {
+      if (!separated(p, rings)) near_.push_back({&rings, square});
+    });
     const std::size_t before = visible.size();
-    if (clip_.empty()) {
-      visible.push_back(p);
-    } else {
-      clipper_.Clear();
-      clipper_.AddPath(p, cl::ptSubject, true);
-      clipper_.AddPaths(clip_, cl::ptClip, true);
-      out_.clear();
-      clipper_.Execute(cl::ctDifference, out_, cl::pftNonZero, cl::pftNonZero);
-      visible.insert(visible.end(), out_.begin(), out_.end());
+    switch (near_.empty() ? outcome::visible : overlap_outcome(p)) {
+      case outcome::visible:
+        visible.push_back(p);
+        break;
+      case outcome::hidden:
+        break;
+      case outcome::unknown:
+        clipper_.Clear();
+        clipper_.AddPath(p, cl::ptSubject, true);
+        for (const candidate& c : near_) clipper_.AddPaths(*c.rings, cl::ptClip, true);
+        out_.clear();
+        clipper_.Execute(cl::ctDifference, out_, cl::pftNonZero, cl::pftNonZero);
+        visible.insert(visible.end(), out_.begin(), out_.end());
+        break;
     }
     if (visible.size() > before)
       insert(cl::Paths(visible.begin() + static_cast<std::ptrdiff_t>(before), visible.end()));
@@ -280,7 +355,9 @@ class tiled_coverage {
   /// The parts of the open polyline `line` outside the coverage.
   cl::Paths outside(const cl::Path& line) {
     cl::Paths clip;
-    gather(bbox_of(line), clip, [](const cl::Paths&) { return true; });
+    gather(bbox_of(line), [&](const cl::Paths& rings, bool) {
+      clip.insert(clip.end(), rings.begin(), rings.end());
+    });
     if (clip.empty()) return {line};
     clipper_.Clear();
     clipper_.AddPath(line, cl::ptSubject, false);
@@ -295,7 +372,9 @@ class tiled_coverage {
   /// True when the point is strictly covered (nonzero winding of the coverage).
   bool covers(const cl::IntPoint& q) {
     cl::Paths clip;
-    gather({q.X, q.Y, q.X, q.Y}, clip, [](const cl::Paths&) { return true; });
+    gather({q.X, q.Y, q.X, q.Y}, [&](const cl::Paths& rings, bool) {
+      clip.insert(clip.end(), rings.begin(), rings.end());
+    });
     int winding = 0;
     for (const cl::Path& p : clip)
       if (cl::PointInPolygon(q, p) == 1) winding += cl::Orientation(p) ? 1 : -1;
@@ -350,10 +429,17 @@ class tiled_coverage {
         const long long x0 = tx * tile_side, y0 = ty * tile_side;
         const bool inside =
             box.x0 >= x0 && box.x1 <= x0 + tile_side && box.y0 >= y0 && box.y1 <= y0 + tile_side;
-        for (const cl::Path& r : rings)
-          t.area += inside
-                        ? 0.5 * twice_area_from(r, static_cast<double>(x0), static_cast<double>(y0))
-                        : area_in_square(r, x0, y0, tile_side);
+        for (const cl::Path& r : rings) {
+          if (inside) {
+            t.area += 0.5 * twice_area_from(r, static_cast<double>(x0), static_cast<double>(y0));
+          } else {
+            poly_.clear();
+            for (const cl::IntPoint& q : r)
+              poly_.push_back({static_cast<double>(q.X - x0), static_cast<double>(q.Y - y0)});
+            const double side = static_cast<double>(tile_side);
+            t.area += area_in_box(poly_, scratch_, 0, 0, side, side);
+          }
+        }
         // Pieces are disjoint, so the sum never exceeds the tile but by rounding; a shortfall
         // under half a square unit is no gap any region could be seen through.
         if (t.area >= tile_area - 0.5) {
@@ -366,36 +452,96 @@ class tiled_coverage {
     stamp_.push_back(0);
   }
 
-  /// Appends to `clip` the rings of the pieces near `box` that `keep` accepts (each piece once)
-  /// and the square of each full tile.
-  template <class Keep>
-  void gather(const bbox_i& box, cl::Paths& clip, Keep keep) {
+  /// Calls visit(rings, is_square) for each piece near `box` (each once) and for the square
+  /// of each full tile `box` meets.
+  template <class Visit>
+  void gather(const bbox_i& box, Visit visit) {
     ++query_;
+    squares_.clear();
     const auto [tx0, ty0, tx1, ty1] = tile_range(box);
+    const bool point = box.x0 == box.x1 && box.y0 == box.y1;
     for (int ty = ty0; ty <= ty1; ++ty)
       for (int tx = tx0; tx <= tx1; ++tx) {
         const tile& t = tiles_[index(tx, ty)];
         if (t.full) {
-          cl::Paths sq{square(tx, ty)};
-          if (keep(sq)) clip.push_back(sq[0]);
+          squares_.push_back({square(tx, ty)});
+          visit(squares_.back(), true);
           continue;
         }
         for (const std::uint32_t id : t.pieces) {
           if (stamp_[id] == query_) continue;
           stamp_[id] = query_;
           const piece& pc = pieces_[id];
-          if (pc.box.x1 <= box.x0 || pc.box.x0 >= box.x1 || pc.box.y1 <= box.y0 ||
-              pc.box.y0 >= box.y1) {
-            if (!(box.x0 == box.x1 && box.y0 == box.y1)) continue;  // a point: boxes may touch
-            if (pc.box.x1 < box.x0 || pc.box.x0 > box.x1 || pc.box.y1 < box.y0 ||
-                pc.box.y0 > box.y1)
-              continue;
-          }
-          if (!keep(pc.rings)) continue;
-          clip.insert(clip.end(), pc.rings.begin(), pc.rings.end());
+          // Boxes meeting only along a line cannot overlap (unless the query is a point).
+          const bool apart = point ? pc.box.x1 < box.x0 || pc.box.x0 > box.x1 ||
+                                         pc.box.y1 < box.y0 || pc.box.y0 > box.y1
+                                   : pc.box.x1 <= box.x0 || pc.box.x0 >= box.x1 ||
+                                         pc.box.y1 <= box.y0 || pc.box.y0 >= box.y1;
+          if (!apart) visit(pc.rings, false);
         }
       }
   }
+
+  enum class outcome { visible, hidden, unknown };
+
+  /// What the candidates near_ (pieces and full squares not separated from p) leave of p, when
+  /// areas decide it. p is cut into convex windows (itself, or its ear triangles), each
+  /// candidate clipped by them. Every overlap under min_overlap (times p's area when that is
+  /// under one square unit): p is visible (the T-junction chains of a mesh, which no single
+  /// line separates). The covered area (full squares, plus
+  /// the pieces outside them: pieces are disjoint, squares are disjoint, but a piece may reach
+  /// into a full square) within half a square unit of p's: hidden. Otherwise (a partial
+  /// overlap, or no convex windows) Clipper decides.
+  outcome overlap_outcome(const cl::Path& p) {
+    windows_.clear();
+    if (convex_ccw(p)) {
+      windows_.push_back(p);
+    } else {
+      if (!ear_triangles(p, windows_)) return outcome::unknown;
+      long long twice = 0;
+      for (const cl::Path& w : windows_)
+        twice += (w[1].X - w[0].X) * (w[2].Y - w[0].Y) - (w[1].Y - w[0].Y) * (w[2].X - w[0].X);
+      if (static_cast<double>(twice) != 2 * cl::Area(p)) return outcome::unknown;
+    }
+    const long long ox = p[0].X, oy = p[0].Y;
+    double covered = 0, largest = 0;
+    for (const candidate& c : near_) {
+      double overlap = 0, in_squares = 0;
+      for (const cl::Path& w : windows_)
+        for (const cl::Path& r : *c.rings) {
+          clip_by_convex(r, w, ox, oy, poly_, scratch_);
+          if (poly_.empty()) continue;
+          overlap += signed_area(poly_);
+          if (c.square) continue;
+          for (const candidate& q : near_)
+            if (q.square) {
+              const cl::Path& sq = (*q.rings)[0];
+              in_squares +=
+                  area_in_box(poly_, scratch_, static_cast<double>(sq[0].X - ox),
+                              static_cast<double>(sq[0].Y - oy), static_cast<double>(sq[2].X - ox),
+                              static_cast<double>(sq[2].Y - oy));
+            }
+        }
+      largest = std::max(largest, overlap);
+      covered += overlap - in_squares;
+    }
+    const double area = cl::Area(p);
+    if (largest < min_overlap * std::min(1.0, area)) return outcome::visible;
+    if (covered >= area - 0.5) return outcome::hidden;
+    return outcome::unknown;
+  }
+
+  /// Overlaps under this many square units are rounding, not cover (1/10^7 pixel).
+  static constexpr double min_overlap = 1e-3;
+
+  struct candidate {
+    const cl::Paths* rings;
+    bool square;
+  };
+  std::vector<candidate> near_;
+  std::deque<cl::Paths> squares_;  ///< full tiles' squares handed out (stable addresses)
+  std::vector<cl::Path> windows_;
+  polygon_d poly_, scratch_;
 
   int nx_, ny_;
   std::vector<tile> tiles_;
@@ -403,7 +549,7 @@ class tiled_coverage {
   std::vector<std::uint32_t> stamp_;
   std::uint32_t query_ = 0;
   cl::Clipper clipper_;
-  cl::Paths clip_, out_;
+  cl::Paths out_;
 };
 
 /// T-junctions: where a vertex of one polygon lies inside an edge of another (a BSP split
@@ -529,6 +675,7 @@ void append_curve(vector_drawing& d, vector_path&& piece) {
 struct face_accumulator {
   cl::Paths pieces;
   rgb8 color;
+  double shown = 0;  ///< visible area of the fragment that gave the colour
   bool seen = false;
   double sx = 0, sy = 0, sz = 0;
   std::size_t n = 0;
@@ -565,7 +712,9 @@ vector_drawing visible_drawing(const frame& f) {
   vector_drawing d = empty_drawing(f);
   tiled_coverage coverage(static_cast<long long>(vp.width) * grid_per_pixel,
                           static_cast<long long>(vp.height) * grid_per_pixel);
-  std::unordered_map<std::uint32_t, face_accumulator> faces;
+  std::uint32_t face_end = 0;
+  for (const screen_polygon& p : f.polygons) face_end = std::max(face_end, p.face + 1);
+  std::vector<face_accumulator> faces(face_end);
   std::vector<vector_path> curve_paths;
   auto clip_line = [&](const screen_line& l) {
     vector_path p = curve_path(f, l);
@@ -610,9 +759,14 @@ vector_drawing visible_drawing(const frame& f) {
     coverage.add(poly, visible);
     if (visible.empty()) continue;
     face_accumulator& acc = faces[p.face];
-    if (!acc.seen) {
+    // The colour of the fragment showing most of the face: a sliver fragment's normal, from
+    // its rounded corners, may be far off (lighting is per fragment).
+    double shown = 0;
+    for (const cl::Path& v : visible) shown += cl::Area(v);
+    if (!acc.seen || shown > acc.shown) {
       acc.seen = true;
       acc.color = p.color;
+      acc.shown = shown;
     }
     for (const window_point& w : p.v) {
       acc.sx += w.x;
@@ -626,8 +780,8 @@ vector_drawing visible_drawing(const frame& f) {
 
   // One region per face: the union of its pieces, rounding slivers dropped.
   std::vector<std::uint32_t> face_ids;
-  face_ids.reserve(faces.size());
-  for (const auto& [face, acc] : faces) face_ids.push_back(face);
+  for (std::uint32_t face = 0; face < face_end; ++face)
+    if (faces[face].seen) face_ids.push_back(face);
   std::sort(face_ids.begin(), face_ids.end(), [&](std::uint32_t a, std::uint32_t b) {
     const std::uint32_t ma = f.mesh_of(a), mb = f.mesh_of(b);
     return ma != mb ? ma < mb : a < b;
