@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <future>
 #include <map>
 
 #include "core/errors.h"
@@ -163,6 +164,25 @@ bool convex_ccw(const cl::Path& r) {
     if ((b.X - a.X) * (c.Y - b.Y) - (b.Y - a.Y) * (c.X - b.X) < 0) return false;
   }
   return true;
+}
+
+/// The ring without its vertices collinear with their neighbours (exact integer test).
+cl::Path without_straight_vertices(const cl::Path& r) {
+  cl::Path out(r);
+  for (bool changed = true; changed && out.size() > 3;) {
+    changed = false;
+    for (std::size_t i = 0; i < out.size() && out.size() > 3; ++i) {
+      const std::size_t n = out.size();
+      const cl::IntPoint& a = out[(i + n - 1) % n];
+      const cl::IntPoint& b = out[i];
+      const cl::IntPoint& c = out[(i + 1) % n];
+      if ((b.X - a.X) * (c.Y - b.Y) - (b.Y - a.Y) * (c.X - b.X) == 0) {
+        out.erase(out.begin() + static_cast<std::ptrdiff_t>(i));
+        changed = true;
+      }
+    }
+  }
+  return out;
 }
 
 /// Polygons in doubles, relative to an origin on the grid, for overlap areas: Sutherland–
@@ -556,20 +576,38 @@ class tiled_coverage {
 /// point on a neighbour's edge), rounding to the grid moves it up to half a unit off that edge
 /// and opens a crack through which what is behind would show. Every vertex lying less than
 /// one unit from the inside of an edge of another polygon is inserted into that edge, so the
-/// two share the boundary exactly. Vertices are found in a sorted index of 4-pixel cells,
-/// walking the cells along each edge; a polygon is mended only when it may be visible.
+/// two share the boundary exactly. Vertices are found in a grid of 2-pixel cells (each cell's
+/// distinct points, sorted, in one array: a counting sort), walking the cells along each edge;
+/// a polygon is mended only when it may be visible.
 class t_junction_mender {
  public:
-  explicit t_junction_mender(const std::vector<cl::Path>& polys) {
+  t_junction_mender(const std::vector<cl::Path>& polys, long long width, long long height)
+      : nx_(std::max<long long>(1, (width + cell - 1) / cell + 2)),
+        ny_(std::max<long long>(1, (height + cell - 1) / cell + 2)),
+        start_(static_cast<std::size_t>(nx_ * ny_) + 1, 0) {
     for (const cl::Path& p : polys)
-      for (const cl::IntPoint& q : p) index_.push_back({key(cell_of(q.X), cell_of(q.Y)), q});
-    std::sort(index_.begin(), index_.end(), [](const entry& a, const entry& b) {
-      return a.key != b.key ? a.key < b.key : a.p.X != b.p.X ? a.p.X < b.p.X : a.p.Y < b.p.Y;
-    });
-    index_.erase(
-        std::unique(index_.begin(), index_.end(),
-                    [](const entry& a, const entry& b) { return a.key == b.key && a.p == b.p; }),
-        index_.end());
+      for (const cl::IntPoint& q : p) ++start_[cell_index(q.X, q.Y) + 1];
+    for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
+    points_.resize(start_.back());
+    std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
+    for (const cl::Path& p : polys)
+      for (const cl::IntPoint& q : p) points_[next[cell_index(q.X, q.Y)]++] = q;
+    // Each cell's points sorted and made distinct (shared corners appear once per polygon).
+    std::size_t out = 0;
+    for (std::size_t c = 0; c + 1 < start_.size(); ++c) {
+      const auto first = points_.begin() + static_cast<std::ptrdiff_t>(start_[c]);
+      const auto last = points_.begin() + static_cast<std::ptrdiff_t>(start_[c + 1]);
+      std::sort(first, last, [](const cl::IntPoint& a, const cl::IntPoint& b) {
+        return a.X != b.X ? a.X < b.X : a.Y < b.Y;
+      });
+      const auto end = std::unique(first, last);
+      start_[c] = out;
+      out = static_cast<std::size_t>(
+          std::copy(first, end, points_.begin() + static_cast<std::ptrdiff_t>(out)) -
+          points_.begin());
+    }
+    start_.back() = out;
+    points_.resize(out);
   }
 
   /// Inserts into p's edges the vertices lying less than one unit from their insides.
@@ -591,27 +629,30 @@ class t_junction_mender {
                      t1 = static_cast<double>(s + 1) / static_cast<double>(pieces);
         const long long x0 = a.X + std::llround(t0 * dx), x1 = a.X + std::llround(t1 * dx);
         const long long y0 = a.Y + std::llround(t0 * dy), y1 = a.Y + std::llround(t1 * dy);
-        const long long cx0 = cell_of(std::min(x0, x1) - 2), cx1 = cell_of(std::max(x0, x1) + 2);
-        const long long cy0 = cell_of(std::min(y0, y1) - 2), cy1 = cell_of(std::max(y0, y1) + 2);
-        for (long long cx = cx0; cx <= cx1; ++cx)
-          for (long long cy = cy0; cy <= cy1; ++cy) cells_.push_back(key(cx, cy));
+        const long long cx0 = cell_x(std::min(x0, x1) - 2), cx1 = cell_x(std::max(x0, x1) + 2);
+        const long long cy0 = cell_y(std::min(y0, y1) - 2), cy1 = cell_y(std::max(y0, y1) + 2);
+        for (long long cy = cy0; cy <= cy1; ++cy)
+          for (long long cx = cx0; cx <= cx1; ++cx)
+            cells_.push_back(static_cast<std::size_t>(cy * nx_ + cx));
       }
-      std::sort(cells_.begin(), cells_.end());
-      cells_.erase(std::unique(cells_.begin(), cells_.end()), cells_.end());
-      for (const std::uint64_t k : cells_) {
-        auto it = std::lower_bound(index_.begin(), index_.end(), k,
-                                   [](const entry& e, std::uint64_t v) { return e.key < v; });
-        for (; it != index_.end() && it->key == k; ++it) {
-          const cl::IntPoint& v = it->p;
+      if (pieces > 1) {
+        std::sort(cells_.begin(), cells_.end());
+        cells_.erase(std::unique(cells_.begin(), cells_.end()), cells_.end());
+      }
+      for (const std::size_t c : cells_)
+        for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) {
+          const cl::IntPoint& v = points_[k];
           const double vx = static_cast<double>(v.X - a.X), vy = static_cast<double>(v.Y - a.Y);
           const double along = vx * dx + vy * dy;
           if (along <= 0 || along >= len2) continue;
           if (std::abs(vx * dy - vy * dx) >= len) continue;  // one unit or more off the line
           on_edge_.push_back({along, v});
         }
-      }
-      std::sort(on_edge_.begin(), on_edge_.end(),
-                [](const auto& x, const auto& y) { return x.first < y.first; });
+      std::sort(on_edge_.begin(), on_edge_.end(), [](const auto& x, const auto& y) {
+        return x.first != y.first
+                   ? x.first < y.first
+                   : (x.second.X != y.second.X ? x.second.X < y.second.X : x.second.Y < y.second.Y);
+      });
       for (const auto& [along, v] : on_edge_)
         if (!(mended_.back() == v)) mended_.push_back(v);
     }
@@ -619,19 +660,26 @@ class t_junction_mender {
   }
 
  private:
-  static constexpr long long cell = 4 * grid_per_pixel;
-  struct entry {
-    std::uint64_t key;
-    cl::IntPoint p;
-  };
-  static std::uint64_t key(long long cx, long long cy) {
-    return static_cast<std::uint64_t>(cx + (1LL << 30)) << 32 |
-           static_cast<std::uint64_t>(cy + (1LL << 30));
+  static constexpr long long cell = 2 * grid_per_pixel;
+  // Cells are clamped into the grid, with one extra cell on every side for points rounded
+  // just outside the viewport: a point is always found in the cell it was filed under.
+  long long cell_x(long long v) const {
+    return std::clamp<long long>(floor_div(v, cell) + 1, 0, nx_ - 1);
   }
-  static long long cell_of(long long v) { return v >= 0 ? v / cell : -((-v + cell - 1) / cell); }
+  long long cell_y(long long v) const {
+    return std::clamp<long long>(floor_div(v, cell) + 1, 0, ny_ - 1);
+  }
+  std::size_t cell_index(long long x, long long y) const {
+    return static_cast<std::size_t>(cell_y(y) * nx_ + cell_x(x));
+  }
+  static long long floor_div(long long v, long long d) {
+    return v >= 0 ? v / d : -((-v + d - 1) / d);
+  }
 
-  std::vector<entry> index_;
-  std::vector<std::uint64_t> cells_;
+  long long nx_, ny_;
+  std::vector<std::size_t> start_;  ///< cell c's points: points_[start_[c], start_[c + 1])
+  std::vector<cl::IntPoint> points_;
+  std::vector<std::size_t> cells_;
   std::vector<std::pair<double, cl::IntPoint>> on_edge_;
   cl::Path mended_;
 };
@@ -710,6 +758,15 @@ vector_drawing visible_drawing(const frame& f) {
     throw usage_error("svg: crease_deg must be in (0, 180], got " + std::to_string(opt.crease_deg));
   const viewport& vp = f.view.vp;
   vector_drawing d = empty_drawing(f);
+  // The edges depend on the frame alone, not on the regions: they are found on a second thread
+  // meanwhile (the frame is only read; an exception reaches the caller through get()).
+  std::future<std::vector<vector_path>> edges;
+  if (opt.edges != vector_options::edges_kind::none)
+    edges = std::async(std::launch::async, [&f] {
+      vector_drawing e;
+      add_edge_paths(f, e);
+      return std::move(e.paths);
+    });
   tiled_coverage coverage(static_cast<long long>(vp.width) * grid_per_pixel,
                           static_cast<long long>(vp.height) * grid_per_pixel);
   std::uint32_t face_end = 0;
@@ -746,7 +803,8 @@ vector_drawing visible_drawing(const frame& f) {
     }
     if (!cl::Orientation(poly)) cl::ReversePath(poly);
   }
-  t_junction_mender mender(snapped);
+  t_junction_mender mender(snapped, static_cast<long long>(vp.width) * grid_per_pixel,
+                           static_cast<long long>(vp.height) * grid_per_pixel);
   cl::Paths visible;
   for (std::size_t k = f.polygons.size(); k-- > 0;) {
     // Lines of slot k + 1 lie behind polygons k + 1 .. n - 1: clip them now.
@@ -792,10 +850,16 @@ vector_drawing visible_drawing(const frame& f) {
   cl::Paths merged;
   for (std::uint32_t face : face_ids) {
     face_accumulator& acc = faces[face];
-    clipper.Clear();
-    clipper.AddPaths(acc.pieces, cl::ptSubject, true);
     merged.clear();
-    clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
+    if (acc.pieces.size() == 1 && convex_ccw(acc.pieces[0])) {
+      // One convex piece (most faces): its own union, but for the straight vertices Clipper
+      // would drop.
+      merged.push_back(without_straight_vertices(acc.pieces[0]));
+    } else {
+      clipper.Clear();
+      clipper.AddPaths(acc.pieces, cl::ptSubject, true);
+      clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
+    }
     vector_path r;
     r.kind = vector_path::kind_type::region;
     r.face = face;
@@ -885,7 +949,11 @@ vector_drawing visible_drawing(const frame& f) {
     if (members.size() >= 2 && !drawn) add_underlay(members, color);
   }
   d.paths.insert(d.paths.end(), regions.begin(), regions.end());
-  if (opt.edges != vector_options::edges_kind::none) add_edge_paths(f, d);
+  if (edges.valid()) {
+    std::vector<vector_path> e = edges.get();
+    d.paths.insert(d.paths.end(), std::make_move_iterator(e.begin()),
+                   std::make_move_iterator(e.end()));
+  }
   // Curve pieces were clipped front to back: put them back in back-to-front order.
   for (auto it = curve_paths.rbegin(); it != curve_paths.rend(); ++it)
     append_curve(d, std::move(*it));

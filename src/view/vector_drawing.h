@@ -13,8 +13,10 @@
 // visible(P)), and the visible parts of one source face are merged into one region (holes
 // kept). The coverage is kept as its disjoint pieces, listed in 4-pixel tiles: P is fully
 // visible when a line through an edge separates it from every piece near it (exact integer
-// test: the shared edges of a mesh do), and only otherwise do Clipper's integer Booleans take
-// the difference with the pieces it may overlap; a tile whose pieces' areas fill it rejects
+// test: the shared edges of a mesh do), or when its overlaps with them have no area (T-junction
+// chains); it is hidden when the pieces' overlaps add up to its area (areas in doubles, by
+// Sutherland–Hodgman against convex windows). Only the rest (partly hidden P) goes to Clipper's
+// integer Booleans, with the pieces it overlaps; a tile whose pieces' areas fill it rejects
 // everything behind it at once. Rounding makes cracks under one grid unit wide where polygons
 // in front meet at a T-junction; what shows through them is dropped: spikes (zero-area
 // antennas, under one unit wide) are cut off the rings, and rings thinner than
@@ -33,7 +35,8 @@
 // stroked); the regions above stay one path per face.
 //
 // Edges (the hidden-line drawing): the feature edges (geom/feature_edges.h) split exactly into
-// visible and hidden runs by the contract's rule (edge_visibility.h), drawn by edge_paths.h.
+// visible and hidden runs by the contract's rule (edge_visibility.h), drawn by edge_paths.h;
+// found on a second thread while the regions are made (they depend on the frame alone).
 //
 // Curves and lines: each clipped piece (curves.h, painter's slot k: behind polygons k..n-1)
 // keeps what is outside the coverage of those polygons; drawn over the regions.
