@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <future>
 #include <map>
 
@@ -231,13 +230,23 @@ void clip_by_convex(const cl::Path& ring, const cl::Path& window, long long ox, 
   }
 }
 
-/// Signed area of the part of `a` (relative coordinates) inside [x0, x1] x [y0, y1].
-double area_in_box(polygon_d a, polygon_d& scratch, double x0, double y0, double x1, double y1) {
-  clip_half_plane(a, scratch, x0, y0, 0, -1);  // x >= x0
-  clip_half_plane(a, scratch, x1, y0, 0, 1);   // x <= x1
-  clip_half_plane(a, scratch, x0, y0, 1, 0);   // y >= y0
-  clip_half_plane(a, scratch, x0, y1, -1, 0);  // y <= y1
-  return a.empty() ? 0 : signed_area(a);
+/// Signed area of the part of `a` (relative coordinates) inside [x0, x1] x [y0, y1]; `work`
+/// and `scratch` are buffers.
+double area_in_box(const polygon_d& a, polygon_d& work, polygon_d& scratch, double x0, double y0,
+                   double x1, double y1) {
+  work.assign(a.begin(), a.end());
+  clip_half_plane(work, scratch, x0, y0, 0, -1);  // x >= x0
+  clip_half_plane(work, scratch, x1, y0, 0, 1);   // x <= x1
+  clip_half_plane(work, scratch, x0, y0, 1, 0);   // y >= y0
+  clip_half_plane(work, scratch, x0, y1, -1, 0);  // y <= y1
+  return work.empty() ? 0 : signed_area(work);
+}
+
+/// True when q is inside the convex counter-clockwise ring or on its boundary (exact).
+bool in_convex(const cl::Path& r, long long qx, long long qy) {
+  for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+    if ((r[i].X - r[j].X) * (qy - r[j].Y) - (r[i].Y - r[j].Y) * (qx - r[j].X) < 0) return false;
+  return true;
 }
 
 /// The counter-clockwise simple ring cut into convex counter-clockwise triangles by ear
@@ -410,6 +419,7 @@ class tiled_coverage {
     std::vector<std::uint32_t> pieces;
     double area = 0;  ///< of the pieces' parts inside the tile, square units
     bool full = false;
+    cl::Paths square;  ///< once full: the tile's square, standing for its pieces
   };
 
   std::size_t index(int tx, int ty) const { return static_cast<std::size_t>(ty) * nx_ + tx; }
@@ -441,6 +451,19 @@ class tiled_coverage {
     const auto id = static_cast<std::uint32_t>(pieces_.size());
     const auto [tx0, ty0, tx1, ty1] = tile_range(box);
     const double tile_area = static_cast<double>(tile_side) * static_cast<double>(tile_side);
+    const double side = static_cast<double>(tile_side);
+    // A convex piece over many tiles: the tiles whose four corners it holds are inside it
+    // (their whole area counts), found from one test per tile corner.
+    const bool convex = rings.size() == 1 && convex_ccw(rings[0]);
+    const int cw = tx1 - tx0 + 2;
+    corner_in_.clear();
+    if (convex && (tx1 - tx0 + 1) * (ty1 - ty0 + 1) > 4)
+      for (int cy = ty0; cy <= ty1 + 1; ++cy)
+        for (int cx = tx0; cx <= tx1 + 1; ++cx)
+          corner_in_.push_back(in_convex(rings[0], cx * tile_side, cy * tile_side));
+    auto corner = [&](int cx, int cy) {
+      return corner_in_[static_cast<std::size_t>((cy - ty0) * cw + (cx - tx0))];
+    };
     for (int ty = ty0; ty <= ty1; ++ty)
       for (int tx = tx0; tx <= tx1; ++tx) {
         tile& t = tiles_[index(tx, ty)];
@@ -449,15 +472,19 @@ class tiled_coverage {
         const long long x0 = tx * tile_side, y0 = ty * tile_side;
         const bool inside =
             box.x0 >= x0 && box.x1 <= x0 + tile_side && box.y0 >= y0 && box.y1 <= y0 + tile_side;
-        for (const cl::Path& r : rings) {
-          if (inside) {
-            t.area += 0.5 * twice_area_from(r, static_cast<double>(x0), static_cast<double>(y0));
-          } else {
-            poly_.clear();
-            for (const cl::IntPoint& q : r)
-              poly_.push_back({static_cast<double>(q.X - x0), static_cast<double>(q.Y - y0)});
-            const double side = static_cast<double>(tile_side);
-            t.area += area_in_box(poly_, scratch_, 0, 0, side, side);
+        if (!corner_in_.empty() && corner(tx, ty) && corner(tx + 1, ty) && corner(tx, ty + 1) &&
+            corner(tx + 1, ty + 1)) {
+          t.area += tile_area;
+        } else {
+          for (const cl::Path& r : rings) {
+            if (inside) {
+              t.area += 0.5 * twice_area_from(r, static_cast<double>(x0), static_cast<double>(y0));
+            } else {
+              poly_.clear();
+              for (const cl::IntPoint& q : r)
+                poly_.push_back({static_cast<double>(q.X - x0), static_cast<double>(q.Y - y0)});
+              t.area += area_in_box(poly_, work_, scratch_, 0, 0, side, side);
+            }
           }
         }
         // Pieces are disjoint, so the sum never exceeds the tile but by rounding; a shortfall
@@ -466,6 +493,7 @@ class tiled_coverage {
           t.full = true;
           t.pieces.clear();
           t.pieces.shrink_to_fit();
+          t.square = {square(tx, ty)};
         }
       }
     pieces_.push_back({std::move(rings), box});
@@ -477,15 +505,13 @@ class tiled_coverage {
   template <class Visit>
   void gather(const bbox_i& box, Visit visit) {
     ++query_;
-    squares_.clear();
     const auto [tx0, ty0, tx1, ty1] = tile_range(box);
     const bool point = box.x0 == box.x1 && box.y0 == box.y1;
     for (int ty = ty0; ty <= ty1; ++ty)
       for (int tx = tx0; tx <= tx1; ++tx) {
         const tile& t = tiles_[index(tx, ty)];
         if (t.full) {
-          squares_.push_back({square(tx, ty)});
-          visit(squares_.back(), true);
+          visit(t.square, true);
           continue;
         }
         for (const std::uint32_t id : t.pieces) {
@@ -537,7 +563,7 @@ class tiled_coverage {
             if (q.square) {
               const cl::Path& sq = (*q.rings)[0];
               in_squares +=
-                  area_in_box(poly_, scratch_, static_cast<double>(sq[0].X - ox),
+                  area_in_box(poly_, work_, scratch_, static_cast<double>(sq[0].X - ox),
                               static_cast<double>(sq[0].Y - oy), static_cast<double>(sq[2].X - ox),
                               static_cast<double>(sq[2].Y - oy));
             }
@@ -559,9 +585,9 @@ class tiled_coverage {
     bool square;
   };
   std::vector<candidate> near_;
-  std::deque<cl::Paths> squares_;  ///< full tiles' squares handed out (stable addresses)
   std::vector<cl::Path> windows_;
-  polygon_d poly_, scratch_;
+  polygon_d poly_, work_, scratch_;
+  std::vector<char> corner_in_;
 
   int nx_, ny_;
   std::vector<tile> tiles_;
