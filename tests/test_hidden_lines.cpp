@@ -892,15 +892,24 @@ void PrintTo(const corpus_case& c, std::ostream* os) {
   *os << c.mesh << " " << c.view.name << " " << projection_name(c.parallel);
 }
 
-class HiddenLinesCorpus : public ::testing::TestWithParam<corpus_case> {};
+/// The case's mesh drawn in its view at 400 x 300 (the fixture's SetUp fails or skips when the
+/// corpus is missing).
+class HiddenLinesCorpus : public ::testing::TestWithParam<corpus_case> {
+ protected:
+  void SetUp() override {
+    const corpus_case& c = GetParam();
+    const std::string path = exbsp_test::corpus_dir() + c.mesh + ".off";
+    EXBSP_NEED_CORPUS(std::filesystem::exists(path), path);
+    const triangle_soup soup = read_mesh(path);
+    f = make_view(soup, {0, soup.face_count}, c.view, c.parallel, 400, 300);
+    d = draw(f);
+  }
+  frame f;
+  vector_drawing d;
+};
 
 TEST_P(HiddenLinesCorpus, DrawingAgreesWithTheRayCastOracle) {
   const corpus_case& c = GetParam();
-  const std::string path = exbsp_test::corpus_dir() + c.mesh + ".off";
-  EXBSP_NEED_CORPUS(std::filesystem::exists(path), path);
-  const triangle_soup soup = read_mesh(path);
-  frame f = make_view(soup, {0, soup.face_count}, c.view, c.parallel, 400, 300);
-  const vector_drawing d = draw(f);
   const hidden_line_report r = check_hidden_lines(f, d);
   print_report(c.mesh + " " + c.view.name + " " + projection_name(c.parallel), r);
   EXPECT_GT(r.checked(), 100u) << r.summary();
@@ -910,11 +919,6 @@ TEST_P(HiddenLinesCorpus, DrawingAgreesWithTheRayCastOracle) {
 
 TEST_P(HiddenLinesCorpus, FillsStopAtTheSolidOutlinesAndMeetAtSolidCreases) {
   const corpus_case& c = GetParam();
-  const std::string path = exbsp_test::corpus_dir() + c.mesh + ".off";
-  EXBSP_NEED_CORPUS(std::filesystem::exists(path), path);
-  const triangle_soup soup = read_mesh(path);
-  frame f = make_view(soup, {0, soup.face_count}, c.view, c.parallel, 400, 300);
-  const vector_drawing d = draw(f);
   const fill_check r = check_fills(f, d);
   std::cout << "[ hidden-lines ] " << c.mesh << " " << c.view.name << " "
             << projection_name(c.parallel) << ": fills against solid edges, " << r.checked
