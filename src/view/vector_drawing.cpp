@@ -354,32 +354,37 @@ class tiled_coverage {
     return true;
   }
 
-  /// Adds the counter-clockwise polygon p; appends its part not covered before to `visible`.
-  void add(const cl::Path& p, cl::Paths& visible) {
-    if (hides(p)) return;
+  static constexpr std::uint32_t no_piece = ~std::uint32_t{0};
+
+  /// Adds the counter-clockwise polygon p (moved from when wholly visible); returns the id of
+  /// its part not covered before (a piece: rings()), or no_piece when it is hidden.
+  std::uint32_t add(cl::Path& p) {
+    if (hides(p)) return no_piece;
     near_.clear();
     gather(bbox_of(p), [&](const cl::Paths& rings, bool square) {
       if (!separated(p, rings)) near_.push_back({&rings, square});
     });
-    const std::size_t before = visible.size();
     switch (near_.empty() ? outcome::visible : overlap_outcome(p)) {
-      case outcome::visible:
-        visible.push_back(p);
-        break;
+      case outcome::visible: {
+        cl::Paths whole(1);
+        whole[0].swap(p);
+        return insert(std::move(whole));
+      }
       case outcome::hidden:
-        break;
+        return no_piece;
       case outcome::unknown:
-        clipper_.Clear();
-        clipper_.AddPath(p, cl::ptSubject, true);
-        for (const candidate& c : near_) clipper_.AddPaths(*c.rings, cl::ptClip, true);
-        out_.clear();
-        clipper_.Execute(cl::ctDifference, out_, cl::pftNonZero, cl::pftNonZero);
-        visible.insert(visible.end(), out_.begin(), out_.end());
         break;
     }
-    if (visible.size() > before)
-      insert(cl::Paths(visible.begin() + static_cast<std::ptrdiff_t>(before), visible.end()));
+    clipper_.Clear();
+    clipper_.AddPath(p, cl::ptSubject, true);
+    for (const candidate& c : near_) clipper_.AddPaths(*c.rings, cl::ptClip, true);
+    cl::Paths out;
+    clipper_.Execute(cl::ctDifference, out, cl::pftNonZero, cl::pftNonZero);
+    return out.empty() ? no_piece : insert(std::move(out));
   }
+
+  /// The rings of piece `id` (outer rings counter-clockwise, holes clockwise).
+  const cl::Paths& rings(std::uint32_t id) const { return pieces_[id].rings; }
 
   /// The parts of the open polyline `line` outside the coverage.
   cl::Paths outside(const cl::Path& line) {
@@ -413,10 +418,15 @@ class tiled_coverage {
  private:
   struct piece {
     cl::Paths rings;  ///< outer rings counter-clockwise, holes clockwise
-    bbox_i box;
+  };
+  /// A piece as listed in a tile: its id and box (grid units fit 32 bits), so that the box
+  /// test reads the tile's own memory.
+  struct listed {
+    std::int32_t x0, y0, x1, y1;
+    std::uint32_t id;
   };
   struct tile {
-    std::vector<std::uint32_t> pieces;
+    std::vector<listed> pieces;
     double area = 0;  ///< of the pieces' parts inside the tile, square units
     bool full = false;
     cl::Paths square;  ///< once full: the tile's square, standing for its pieces
@@ -441,7 +451,7 @@ class tiled_coverage {
   }
 
   /// Lists the piece in the tiles its box meets and adds its area to theirs.
-  void insert(cl::Paths rings) {
+  std::uint32_t insert(cl::Paths rings) {
     bbox_i box = bbox_of(rings[0]);
     for (const cl::Path& r : rings) {
       const bbox_i b = bbox_of(r);
@@ -468,7 +478,9 @@ class tiled_coverage {
       for (int tx = tx0; tx <= tx1; ++tx) {
         tile& t = tiles_[index(tx, ty)];
         if (t.full) continue;
-        t.pieces.push_back(id);
+        t.pieces.push_back({static_cast<std::int32_t>(box.x0), static_cast<std::int32_t>(box.y0),
+                            static_cast<std::int32_t>(box.x1), static_cast<std::int32_t>(box.y1),
+                            id});
         const long long x0 = tx * tile_side, y0 = ty * tile_side;
         const bool inside =
             box.x0 >= x0 && box.x1 <= x0 + tile_side && box.y0 >= y0 && box.y1 <= y0 + tile_side;
@@ -496,8 +508,9 @@ class tiled_coverage {
           t.square = {square(tx, ty)};
         }
       }
-    pieces_.push_back({std::move(rings), box});
+    pieces_.push_back({std::move(rings)});
     stamp_.push_back(0);
+    return id;
   }
 
   /// Calls visit(rings, is_square) for each piece near `box` (each once) and for the square
@@ -514,16 +527,14 @@ class tiled_coverage {
           visit(t.square, true);
           continue;
         }
-        for (const std::uint32_t id : t.pieces) {
-          if (stamp_[id] == query_) continue;
-          stamp_[id] = query_;
-          const piece& pc = pieces_[id];
+        for (const listed& l : t.pieces) {
           // Boxes meeting only along a line cannot overlap (unless the query is a point).
-          const bool apart = point ? pc.box.x1 < box.x0 || pc.box.x0 > box.x1 ||
-                                         pc.box.y1 < box.y0 || pc.box.y0 > box.y1
-                                   : pc.box.x1 <= box.x0 || pc.box.x0 >= box.x1 ||
-                                         pc.box.y1 <= box.y0 || pc.box.y0 >= box.y1;
-          if (!apart) visit(pc.rings, false);
+          const bool apart =
+              point ? l.x1 < box.x0 || l.x0 > box.x1 || l.y1 < box.y0 || l.y0 > box.y1
+                    : l.x1 <= box.x0 || l.x0 >= box.x1 || l.y1 <= box.y0 || l.y0 >= box.y1;
+          if (apart || stamp_[l.id] == query_) continue;
+          stamp_[l.id] = query_;
+          visit(pieces_[l.id].rings, false);
         }
       }
   }
@@ -595,7 +606,6 @@ class tiled_coverage {
   std::vector<std::uint32_t> stamp_;
   std::uint32_t query_ = 0;
   cl::Clipper clipper_;
-  cl::Paths out_;
 };
 
 /// T-junctions: where a vertex of one polygon lies inside an edge of another (a BSP split
@@ -682,7 +692,7 @@ class t_junction_mender {
       for (const auto& [along, v] : on_edge_)
         if (!(mended_.back() == v)) mended_.push_back(v);
     }
-    p.swap(mended_);
+    if (mended_.size() != p.size()) p.assign(mended_.begin(), mended_.end());
   }
 
  private:
@@ -747,7 +757,7 @@ void append_curve(vector_drawing& d, vector_path&& piece) {
 
 /// Per face: the pieces of its visible region and the data for its colour.
 struct face_accumulator {
-  cl::Paths pieces;
+  std::vector<std::uint32_t> pieces;  ///< ids of its visible pieces in the coverage
   rgb8 color;
   double shown = 0;  ///< visible area of the fragment that gave the colour
   bool seen = false;
@@ -831,7 +841,6 @@ vector_drawing visible_drawing(const frame& f) {
   }
   t_junction_mender mender(snapped, static_cast<long long>(vp.width) * grid_per_pixel,
                            static_cast<long long>(vp.height) * grid_per_pixel);
-  cl::Paths visible;
   for (std::size_t k = f.polygons.size(); k-- > 0;) {
     // Lines of slot k + 1 lie behind polygons k + 1 .. n - 1: clip them now.
     while (next_line > 0 && f.lines[next_line - 1].slot > k) clip_line(f.lines[--next_line]);
@@ -839,14 +848,13 @@ vector_drawing visible_drawing(const frame& f) {
     cl::Path& poly = snapped[k];
     if (poly.empty() || coverage.hides(poly)) continue;
     mender.mend(poly);
-    visible.clear();
-    coverage.add(poly, visible);
-    if (visible.empty()) continue;
+    const std::uint32_t piece = coverage.add(poly);
+    if (piece == tiled_coverage::no_piece) continue;
     face_accumulator& acc = faces[p.face];
     // The colour of the fragment showing most of the face: a sliver fragment's normal, from
     // its rounded corners, may be far off (lighting is per fragment).
     double shown = 0;
-    for (const cl::Path& v : visible) shown += cl::Area(v);
+    for (const cl::Path& v : coverage.rings(piece)) shown += cl::Area(v);
     if (!acc.seen || shown > acc.shown) {
       acc.seen = true;
       acc.color = p.color;
@@ -858,7 +866,7 @@ vector_drawing visible_drawing(const frame& f) {
       acc.sz += w.z;
       ++acc.n;
     }
-    acc.pieces.insert(acc.pieces.end(), visible.begin(), visible.end());
+    acc.pieces.push_back(piece);
   }
   while (next_line > 0) clip_line(f.lines[--next_line]);
 
@@ -877,13 +885,15 @@ vector_drawing visible_drawing(const frame& f) {
   for (std::uint32_t face : face_ids) {
     face_accumulator& acc = faces[face];
     merged.clear();
-    if (acc.pieces.size() == 1 && convex_ccw(acc.pieces[0])) {
+    const cl::Paths& first = coverage.rings(acc.pieces[0]);
+    if (acc.pieces.size() == 1 && first.size() == 1 && convex_ccw(first[0])) {
       // One convex piece (most faces): its own union, but for the straight vertices Clipper
       // would drop.
-      merged.push_back(without_straight_vertices(acc.pieces[0]));
+      merged.push_back(without_straight_vertices(first[0]));
     } else {
       clipper.Clear();
-      clipper.AddPaths(acc.pieces, cl::ptSubject, true);
+      for (const std::uint32_t piece : acc.pieces)
+        clipper.AddPaths(coverage.rings(piece), cl::ptSubject, true);
       clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
     }
     vector_path r;
