@@ -7,6 +7,7 @@
 #include <polyclipping/clipper.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <future>
 #include <map>
@@ -796,13 +797,20 @@ vector_drawing visible_drawing(const frame& f) {
   vector_drawing d = empty_drawing(f);
   // The edges depend on the frame alone, not on the regions: they are found on a second thread
   // meanwhile (the frame is only read; an exception reaches the caller through get()).
+  using clock = std::chrono::steady_clock;
+  auto since = [](clock::time_point t0) {
+    return std::chrono::duration<double>(clock::now() - t0).count();
+  };
   std::future<std::vector<vector_path>> edges;
   if (opt.edges != vector_options::edges_kind::none)
-    edges = std::async(std::launch::async, [&f] {
+    edges = std::async(std::launch::async, [&f, &d, since] {
+      const clock::time_point t0 = clock::now();
       vector_drawing e;
       add_edge_paths(f, e);
+      d.seconds.edges = since(t0);  // read by the caller only after get()
       return std::move(e.paths);
     });
+  clock::time_point t0 = clock::now();
   tiled_coverage coverage(static_cast<long long>(vp.width) * grid_per_pixel,
                           static_cast<long long>(vp.height) * grid_per_pixel);
   std::uint32_t face_end = 0;
@@ -841,6 +849,8 @@ vector_drawing visible_drawing(const frame& f) {
   }
   t_junction_mender mender(snapped, static_cast<long long>(vp.width) * grid_per_pixel,
                            static_cast<long long>(vp.height) * grid_per_pixel);
+  d.seconds.snap = since(t0);
+  t0 = clock::now();
   for (std::size_t k = f.polygons.size(); k-- > 0;) {
     // Lines of slot k + 1 lie behind polygons k + 1 .. n - 1: clip them now.
     while (next_line > 0 && f.lines[next_line - 1].slot > k) clip_line(f.lines[--next_line]);
@@ -869,6 +879,8 @@ vector_drawing visible_drawing(const frame& f) {
     acc.pieces.push_back(piece);
   }
   while (next_line > 0) clip_line(f.lines[--next_line]);
+  d.seconds.coverage = since(t0);
+  t0 = clock::now();
 
   // One region per face: the union of its pieces, rounding slivers dropped.
   std::vector<std::uint32_t> face_ids;
@@ -909,6 +921,8 @@ vector_drawing visible_drawing(const frame& f) {
     }
     if (!r.rings.empty()) regions.push_back(std::move(r));
   }
+  d.seconds.regions = since(t0);
+  t0 = clock::now();
   // Underlays (notation): the union of a group of regions, in one colour, under them.
   // The union is taken per group of regions near each other (by the square of side
   // underlay_side holding the first point of their first ring) and the groups' unions are one
@@ -985,8 +999,11 @@ vector_drawing visible_drawing(const frame& f) {
     if (members.size() >= 2 && !drawn) add_underlay(members, color);
   }
   d.paths.insert(d.paths.end(), regions.begin(), regions.end());
+  d.seconds.underlays = since(t0);
   if (edges.valid()) {
+    t0 = clock::now();
     std::vector<vector_path> e = edges.get();
+    d.seconds.edges_wait = since(t0);
     d.paths.insert(d.paths.end(), std::make_move_iterator(e.begin()),
                    std::make_move_iterator(e.end()));
   }

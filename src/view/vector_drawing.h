@@ -113,12 +113,23 @@ struct drawing_placement {
 };
 
 /// A drawing: background, then the paths in drawing order.
+/// Where visible_drawing's time went, in seconds (wall clock), for benchmarks and progress.
+struct vector_phase_seconds {
+  double snap = 0;        ///< polygons to the grid, T-junction index
+  double coverage = 0;    ///< front to back: each polygon's visible piece (mending included)
+  double regions = 0;     ///< per face: the union of its pieces
+  double underlays = 0;   ///< seam underlays
+  double edges = 0;       ///< feature edges, exact visibility, edge paths (on their own thread)
+  double edges_wait = 0;  ///< time the regions then waited for the edges
+};
+
 struct vector_drawing {
   int width = 0, height = 0;  ///< pixels (the viewport)
   rgb8 background{255, 255, 255};
   bool painter = false;  ///< the painter's stack (one region per fragment, back to front)
   std::vector<vector_path> paths;
-  drawing_placement placement;  ///< set from the frame's view (view_setup::needs_placement)
+  drawing_placement placement;   ///< set from the frame's view (view_setup::needs_placement)
+  vector_phase_seconds seconds;  ///< visible_drawing: its phases' times (not output)
 
   /// True when the image is larger than the drawing or the drawing is not at its origin.
   bool placed() const {
