@@ -11,6 +11,7 @@
 #include <cmath>
 #include <future>
 #include <map>
+#include <optional>
 
 #include "core/errors.h"
 #include "view/clip_stage.h"
@@ -359,7 +360,7 @@ class tiled_coverage {
 
   /// Adds the counter-clockwise polygon p (moved from when wholly visible); returns the id of
   /// its part not covered before (a piece: rings()), or no_piece when it is hidden.
-  std::uint32_t add(cl::Path& p) {
+  std::uint32_t add(cl::Path& p, std::uint32_t mesh) {
     if (hides(p)) return no_piece;
     near_.clear();
     gather(bbox_of(p), [&](const cl::Paths& rings, bool square) {
@@ -369,7 +370,7 @@ class tiled_coverage {
       case outcome::visible: {
         cl::Paths whole(1);
         whole[0].swap(p);
-        return insert(std::move(whole));
+        return insert(std::move(whole), mesh);
       }
       case outcome::hidden:
         return no_piece;
@@ -381,7 +382,36 @@ class tiled_coverage {
     for (const candidate& c : near_) clipper_.AddPaths(*c.rings, cl::ptClip, true);
     cl::Paths out;
     clipper_.Execute(cl::ctDifference, out, cl::pftNonZero, cl::pftNonZero);
-    return out.empty() ? no_piece : insert(std::move(out));
+    return out.empty() ? no_piece : insert(std::move(out), mesh);
+  }
+
+  /// Rectangles (counter-clockwise) tiling the full tiles whose pieces all belong to `mesh`:
+  /// runs along each row of tiles.
+  cl::Paths full_tiles_of(std::uint32_t mesh) const {
+    cl::Paths out;
+    for (int ty = 0; ty < ny_; ++ty)
+      for (int tx = 0; tx < nx_;) {
+        if (!of_mesh(tx, ty, mesh)) {
+          ++tx;
+          continue;
+        }
+        int end = tx + 1;
+        while (end < nx_ && of_mesh(end, ty, mesh)) ++end;
+        const long long x0 = tx * tile_side, x1 = end * tile_side, y0 = ty * tile_side,
+                        y1 = y0 + tile_side;
+        out.push_back({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+        tx = end;
+      }
+    return out;
+  }
+
+  /// True when every tile the box meets is full of pieces of `mesh` only.
+  bool inside_full_tiles_of(const bbox_i& box, std::uint32_t mesh) const {
+    const auto [tx0, ty0, tx1, ty1] = tile_range(box);
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx)
+        if (!of_mesh(tx, ty, mesh)) return false;
+    return true;
   }
 
   /// The rings of piece `id` (outer rings counter-clockwise, holes clockwise).
@@ -430,10 +460,16 @@ class tiled_coverage {
     std::vector<listed> pieces;
     double area = 0;  ///< of the pieces' parts inside the tile, square units
     bool full = false;
-    cl::Paths square;  ///< once full: the tile's square, standing for its pieces
+    cl::Paths square;        ///< once full: the tile's square, standing for its pieces
+    std::int64_t mesh = -1;  ///< the mesh of every piece listed here; -1 none yet, -2 several
   };
 
   std::size_t index(int tx, int ty) const { return static_cast<std::size_t>(ty) * nx_ + tx; }
+
+  bool of_mesh(int tx, int ty, std::uint32_t mesh) const {
+    const tile& t = tiles_[index(tx, ty)];
+    return t.full && t.mesh == mesh;
+  }
 
   std::array<int, 4> tile_range(const bbox_i& b) const {
     auto clamp_x = [&](long long v) {
@@ -452,7 +488,7 @@ class tiled_coverage {
   }
 
   /// Lists the piece in the tiles its box meets and adds its area to theirs.
-  std::uint32_t insert(cl::Paths rings) {
+  std::uint32_t insert(cl::Paths rings, std::uint32_t mesh) {
     bbox_i box = bbox_of(rings[0]);
     for (const cl::Path& r : rings) {
       const bbox_i b = bbox_of(r);
@@ -479,6 +515,7 @@ class tiled_coverage {
       for (int tx = tx0; tx <= tx1; ++tx) {
         tile& t = tiles_[index(tx, ty)];
         if (t.full) continue;
+        t.mesh = t.mesh == -1 || t.mesh == mesh ? mesh : -2;
         t.pieces.push_back({static_cast<std::int32_t>(box.x0), static_cast<std::int32_t>(box.y0),
                             static_cast<std::int32_t>(box.x1), static_cast<std::int32_t>(box.y1),
                             id});
@@ -858,7 +895,7 @@ vector_drawing visible_drawing(const frame& f) {
     cl::Path& poly = snapped[k];
     if (poly.empty() || coverage.hides(poly)) continue;
     mender.mend(poly);
-    const std::uint32_t piece = coverage.add(poly);
+    const std::uint32_t piece = coverage.add(poly, f.mesh_of(p.face));
     if (piece == tiled_coverage::no_piece) continue;
     face_accumulator& acc = faces[p.face];
     // The colour of the fragment showing most of the face: a sliver fragment's normal, from
@@ -928,17 +965,31 @@ vector_drawing visible_drawing(const frame& f) {
   // underlay_side holding the first point of their first ring) and the groups' unions are one
   // path: a renderer fills a path's rings together (nonzero), so where two groups abut or
   // overlap no seam shows, and each union stays small (one union of a whole mesh cost 0.9 s
-  // on bunny00).
+  // on bunny00). A mesh's underlay starts with the coverage's full tiles holding its pieces
+  // only (row runs of squares: inside the union of its regions, but for rounding slivers),
+  // and its regions lying wholly in them join no union.
   constexpr long long underlay_side = 64 * grid_per_pixel;
-  auto add_underlay = [&](const std::vector<std::size_t>& members, rgb8 color) {
-    std::map<std::pair<long long, long long>, std::vector<std::size_t>> groups;
-    for (std::size_t k : members) {
-      const grid_point& q = regions[k].rings[0][0];
-      groups[{q.x / underlay_side, q.y / underlay_side}].push_back(k);
-    }
+  auto add_underlay = [&](const std::vector<std::size_t>& members, rgb8 color,
+                          std::optional<std::uint32_t> mesh) {
     vector_path u;
     u.kind = vector_path::kind_type::underlay;
     u.color = color;
+    if (mesh)
+      for (const cl::Path& r : coverage.full_tiles_of(*mesh)) u.rings.push_back(to_ring(r));
+    std::map<std::pair<long long, long long>, std::vector<std::size_t>> groups;
+    for (std::size_t k : members) {
+      if (mesh) {
+        bbox_i b{regions[k].rings[0][0].x, regions[k].rings[0][0].y, regions[k].rings[0][0].x,
+                 regions[k].rings[0][0].y};
+        for (const auto& ring : regions[k].rings)
+          for (const grid_point& q : ring)
+            b = {std::min(b.x0, q.x), std::min(b.y0, q.y), std::max(b.x1, q.x),
+                 std::max(b.y1, q.y)};
+        if (coverage.inside_full_tiles_of(b, *mesh)) continue;
+      }
+      const grid_point& q = regions[k].rings[0][0];
+      groups[{q.x / underlay_side, q.y / underlay_side}].push_back(k);
+    }
     for (const auto& [key, group] : groups) {
       clipper.Clear();
       for (std::size_t k : group)
@@ -983,7 +1034,7 @@ vector_drawing visible_drawing(const frame& f) {
     if (!(total > 0)) continue;
     auto mean = [&](double v) { return static_cast<std::uint8_t>(std::lround(v / total)); };
     const rgb8 color{mean(sum[0]), mean(sum[1]), mean(sum[2])};
-    add_underlay(members, color);
+    add_underlay(members, color, mesh);
     done.push_back({members, color});
   }
   // Then one per colour used by two or more regions: where faces of one colour meet, the
@@ -996,7 +1047,7 @@ vector_drawing visible_drawing(const frame& f) {
     const bool drawn = std::any_of(done.begin(), done.end(), [&](const auto& u) {
       return u.second == color && u.first == members;
     });
-    if (members.size() >= 2 && !drawn) add_underlay(members, color);
+    if (members.size() >= 2 && !drawn) add_underlay(members, color, std::nullopt);
   }
   d.paths.insert(d.paths.end(), regions.begin(), regions.end());
   d.seconds.underlays = since(t0);
