@@ -701,8 +701,11 @@ class t_junction_mender {
       for (long long s = 0; s < pieces; ++s) {
         const double t0 = static_cast<double>(s) / static_cast<double>(pieces),
                      t1 = static_cast<double>(s + 1) / static_cast<double>(pieces);
-        const long long x0 = a.X + std::llround(t0 * dx), x1 = a.X + std::llround(t1 * dx);
-        const long long y0 = a.Y + std::llround(t0 * dy), y1 = a.Y + std::llround(t1 * dy);
+        const bool whole = pieces == 1;  // most edges: the piece is the edge
+        const long long x0 = whole ? a.X : a.X + std::llround(t0 * dx),
+                        x1 = whole ? b.X : a.X + std::llround(t1 * dx);
+        const long long y0 = whole ? a.Y : a.Y + std::llround(t0 * dy),
+                        y1 = whole ? b.Y : a.Y + std::llround(t1 * dy);
         const long long cx0 = cell_x(std::min(x0, x1) - 2), cx1 = cell_x(std::max(x0, x1) + 2);
         const long long cy0 = cell_y(std::min(y0, y1) - 2), cy1 = cell_y(std::max(y0, y1) + 2);
         for (long long cy = cy0; cy <= cy1; ++cy)
