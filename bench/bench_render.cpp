@@ -7,7 +7,9 @@
 // traversal for the eye), "transform+clip" (modelview, projection, homogeneous clipping,
 // divide, viewport), "raster" (painter's algorithm at width x height, no z-buffer), "svg"
 // (the SVG document as a string: visible regions, visible and hidden edges) and "svg write" (atomic
-// file write). Each stage's median over the frames is reported. OSMesa draws the INPUT triangles
+// file write). Each stage's median over the frames is reported, and the svg stage's phases
+// ("svg_phase_seconds_median": snap, coverage, regions, underlays, the edges on their own
+// thread and the time the regions waited for them). OSMesa draws the INPUT triangles
 // (what a z-buffer viewer draws; it needs no BSP) with the same matrices and flat face colours from
 // a vertex buffer: glClear + glDrawArrays + glFinish per frame, median over the frames, and the
 // first frame (upload and pipeline compilation) separately. "pixel_agreement" is the fraction of
@@ -210,6 +212,7 @@ int main(int argc, char** argv) {
     line["build_seconds"] = seconds_since(t0);
     line["fragments"] = f.fragments.size();
     std::map<std::string, std::vector<double>> stage_times;
+    std::map<std::string, std::vector<double>> svg_phase_times;  ///< visible_drawing's phases
     for (std::size_t i = 0; i < frames; ++i) {
       t0 = clock_type::now();
       view::order_stage(f);
@@ -239,6 +242,14 @@ int main(int argc, char** argv) {
       t0 = clock_type::now();
       view::svg_stage(f);
       stage_times["svg"].push_back(seconds_since(t0));
+      const view::vector_phase_seconds& v = f.vector_seconds;
+      for (const auto& [name, s] : {std::pair<const char*, double>{"snap", v.snap},
+                                    {"coverage", v.coverage},
+                                    {"regions", v.regions},
+                                    {"underlays", v.underlays},
+                                    {"edges (own thread)", v.edges},
+                                    {"edges wait", v.edges_wait}})
+        svg_phase_times[name].push_back(s);
       t0 = clock_type::now();
       write_file_atomically(svg_path, f.svg);
       stage_times["svg write"].push_back(seconds_since(t0));
@@ -253,6 +264,9 @@ int main(int argc, char** argv) {
     }
     line["stage_seconds_median"] = stages;
     line["stage_seconds_min"] = stages_min;
+    json phases = json::object();
+    for (const auto& [name, times] : svg_phase_times) phases[name] = median(times);
+    line["svg_phase_seconds_median"] = phases;
     line["png_frame_seconds"] = frame_total;  // order + transform+clip + raster
     line["polygons"] = f.polygons.size();
     line["fully_clipped"] = f.fully_clipped;

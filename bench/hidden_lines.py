@@ -60,7 +60,8 @@ def cost_rows(build, frames, out):
         s = r["stage_seconds_median"]
         png = s["order"] + s["transform+clip"] + s["raster"]
         svg = s["order"] + s["transform+clip"] + s["svg"] + s["svg write"]
-        rows.append((mesh, r["triangles"], r["fragments"], png, svg, r["svg_bytes"]))
+        rows.append((mesh, r["triangles"], r["fragments"], png, svg, r["svg_bytes"],
+                     r.get("svg_phase_seconds_median", {}), s["svg"]))
         print(f"hidden_lines: {mesh}: PNG frame {fmt_s(png)}, SVG frame {fmt_s(svg)} "
               f"({svg / png:.1f}x), {r['svg_bytes'] / 1000:.0f} KB", flush=True)
     return rows
@@ -101,11 +102,19 @@ def main():
              "transform+clip + svg (visible regions, exact visible and hidden edges, the document) + write.", ""]
     lines.append("| mesh | triangles | fragments | PNG frame | SVG frame | SVG / PNG | SVG size |")
     lines.append("|---|---|---|---|---|---|---|")
-    for mesh, tris, frags, png, svg, size in cost:
+    for mesh, tris, frags, png, svg, size, _, _ in cost:
         lines.append(f"| {mesh} | {tris:,} | {frags:,} | {fmt_s(png)} | {fmt_s(svg)} | {svg / png:.1f}× | "
                      f"{size / 1000:.0f} KB |".replace(",", " "))
-    lines += ["", "The goal is an SVG frame at most 5× the PNG frame. The exact edges cost little; the visible "
-              "regions (Clipper's Booleans, fragment by fragment, front to back) take nearly all of it.", "",
+    phase_names = ["snap", "coverage", "regions", "underlays", "edges (own thread)", "edges wait"]
+    lines += ["", "The goal is an SVG frame at most 5× the PNG frame. Where the svg stage's time goes "
+              "(median seconds; the edges run on a second thread while the regions are made, so the stage "
+              "waits only for what is left of them; the rest of the stage is the SVG text):", "",
+              "| mesh | svg stage | " + " | ".join(phase_names) + " |",
+              "|---|---|" + "---|" * len(phase_names)]
+    for mesh, _, _, _, _, _, phases, stage in cost:
+        lines.append(f"| {mesh} | {fmt_s(stage)} | " +
+                     " | ".join(fmt_s(phases[n]) if n in phases else "–" for n in phase_names) + " |")
+    lines += ["",
               "**Seams** (bench/seams.py: exbsp's SVG rasterized by librsvg and Chromium against its own PNG, "
               "800×600, lit, edges none; a seam pixel lies inside the part and outside the colour range of its "
               "3×3 neighbours in the PNG):", ""]

@@ -17,6 +17,8 @@
 //   HiddenLinesCorpus   real CGAL meshes (data/meshes: joint, pinion, couplingdown, cross), in
 //                       a few views with the filtered oracle; skipped with a message when the
 //                       corpus is missing (fails with EXBSP_REQUIRE_CORPUS=1).
+//   HiddenLinesFills    the fills (visible regions) of the same views against their solid
+//                       edges: a region on each side a front face lies, none poking past.
 //   HiddenLinesProperty random boxes and prisms, placed by random rotations and translations,
 //                       in random standard and general views, parallel and perspective.
 // Every comparison prints its report line ("agreement N%") for the figures of the issue.
@@ -696,6 +698,176 @@ INSTANTIATE_TEST_SUITE_P(, HiddenLinesViews, ::testing::ValuesIn(all_view_cases(
                                   projection_name(i.param.parallel);
                          });
 
+// ---- fills against edges -----------------------------------------------------------------------
+
+/// Nonzero winding number of a path's rings at grid point g.
+int winding_at(const vector_path& p, const std::array<double, 2>& g) {
+  int w = 0;
+  for (const auto& r : p.rings)
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      const grid_point& a = r[k];
+      const grid_point& b = r[(k + 1) % r.size()];
+      const double ay = static_cast<double>(a.y), by = static_cast<double>(b.y);
+      if ((ay <= g[1]) == (by <= g[1])) continue;
+      const double x =
+          static_cast<double>(a.x) + (g[1] - ay) / (by - ay) * static_cast<double>(b.x - a.x);
+      if (x > g[0]) w += by > ay ? 1 : -1;
+    }
+  return w;
+}
+
+struct fill_check {
+  std::size_t checked = 0, wrong = 0;
+  std::string first;
+};
+
+/// The fills against the solid edges (issue 23: "an edge drawn solid bounds a visible region or
+/// is a visible crease inside one; no fill pokes past a visible outline"). At points of feature
+/// edges that the oracle finds visible (no other visible feature edge within 0.4 px), a point
+/// 0.15 px to each side of the edge's image must be covered by the region of the adjacent face
+/// lying on that side when that face is turned toward the eye (its image counter-clockwise),
+/// and by no region of an adjacent face when none of them lies there turned toward the eye.
+fill_check check_fills(const frame& f, const vector_drawing& d) {
+  hidden_line_options opt;
+  opt.ambiguity = 40;
+  opt.check_drawing = false;
+  const exbsp_test::hidden_line_oracle o(f, opt);
+  std::map<std::uint32_t, const vector_path*> region_of;
+  for (const vector_path& p : d.paths)
+    if (p.kind == vector_path::kind_type::region) region_of[p.face] = &p;
+  fill_check out;
+  constexpr double offset = 15, clear = 40;  // grid units
+  for (std::size_t e = 0; e < o.edges().size(); ++e) {
+    const exbsp_test::oracle_edge& edge = o.edges()[e];
+    exbsp_test::edge_image im;
+    if (!o.image_of(e, im)) continue;
+    const double dx = im.g1[0] - im.g0[0], dy = im.g1[1] - im.g0[1], len = im.length();
+    if (len < 8 * clear) continue;
+    const double nx = -dy / len, ny = dx / len;  // left of g0 -> g1
+    // Per adjacent face: its triangle through the edge (grid points), the side of the edge it
+    // lies on (+1 left, -1 right), and whether it is turned toward the eye. Triangles seen
+    // edge-on (under one square unit in the image) have no region and are left out.
+    struct side_of_face {
+      std::uint32_t face;
+      std::array<std::array<double, 2>, 3> g;
+      int side;
+      bool front;
+    };
+    std::vector<side_of_face> sides;
+    for (const soup_triangle& t : f.soup.triangles) {
+      if (std::find(edge.faces.begin(), edge.faces.end(), t.face) == edge.faces.end()) continue;
+      int ia = -1, ib = -1;
+      for (int k = 0; k < 3; ++k) {
+        if (f.soup.vertices[t.v[k]] == edge.a) ia = k;
+        if (f.soup.vertices[t.v[k]] == edge.b) ib = k;
+      }
+      if (ia < 0 || ib < 0) continue;
+      side_of_face sf{t.face, {}, 0, false};
+      bool ok = true;
+      for (int k = 0; k < 3; ++k) ok = ok && o.grid_of(f.soup.vertices[t.v[k]], sf.g[k]);
+      if (!ok) continue;
+      const double area2 = (sf.g[1][0] - sf.g[0][0]) * (sf.g[2][1] - sf.g[0][1]) -
+                           (sf.g[1][1] - sf.g[0][1]) * (sf.g[2][0] - sf.g[0][0]);
+      if (std::abs(area2) < 2) continue;
+      const std::array<double, 2>& c = sf.g[3 - ia - ib];
+      sf.side = (c[0] - im.g0[0]) * nx + (c[1] - im.g0[1]) * ny > 0 ? 1 : -1;
+      sf.front = area2 > 0;
+      sides.push_back(sf);
+    }
+    // Strictly inside the triangle, `offset` grid units from each side at least.
+    auto deep_inside = [&](const side_of_face& sf, const std::array<double, 2>& q) {
+      const double sign = sf.front ? 1 : -1;
+      for (int k = 0; k < 3; ++k) {
+        const auto& a = sf.g[k];
+        const auto& b = sf.g[(k + 1) % 3];
+        const double ex = b[0] - a[0], ey = b[1] - a[1], el = std::hypot(ex, ey);
+        if (sign * (ex * (q[1] - a[1]) - ey * (q[0] - a[0])) / el < offset / 2) return false;
+      }
+      return true;
+    };
+    const bool boundary = edge.faces.size() == 1;
+    for (double u = 0.1; u <= 0.9; u += 200 / len) {
+      const double t = im.t_at(u);
+      if (o.classify(e, t) != exbsp_test::point_visibility::visible) continue;
+      const std::array<double, 2> g{im.g0[0] + u * dx, im.g0[1] + u * dy};
+      if (o.visible_near(g, clear, e)) continue;
+      for (int side : {1, -1}) {
+        const std::array<double, 2> q{g[0] + side * offset * nx, g[1] + side * offset * ny};
+        // The face seen there: the adjacent face on this side turned toward the eye (or the
+        // only face of a boundary edge). Too narrow a triangle there: no verdict.
+        bool judged = true;
+        for (const side_of_face& sf : sides)
+          if (sf.side == side && (sf.front || boundary) && !deep_inside(sf, q)) judged = false;
+        if (!judged) continue;
+        ++out.checked;
+        for (const side_of_face& sf : sides) {
+          const bool want = sf.side == side && (sf.front || boundary);
+          const auto it = region_of.find(sf.face);
+          const bool covered = it != region_of.end() && winding_at(*it->second, q) != 0;
+          if (covered != want) {
+            ++out.wrong;
+            if (out.first.empty()) {
+              std::ostringstream m;
+              m << "edge " << e << " (" << to_string(edge.kind) << ") at u=" << u << ": face "
+                << sf.face << (want ? " should" : " should not") << " cover (" << q[0] << ", "
+                << q[1] << ")";
+              out.first = m.str();
+            }
+            break;
+          }
+        }
+      }
+    }
+  }
+  return out;
+}
+
+TEST(HiddenLinesFills, StopAtTheSolidOutlinesAndMeetAtSolidCreasesInEveryView) {
+  std::size_t checked = 0;
+  for (const view_case& c : all_view_cases()) {
+    const shape& s = synthetic_shape(c.shape_name);
+    frame f = make_view(s.soup, s.offsets, c.view, c.parallel);
+    const vector_drawing d = draw(f);
+    const fill_check r = check_fills(f, d);
+    checked += r.checked;
+    EXPECT_EQ(r.wrong, 0u) << c.shape_name << " " << c.view.name << " "
+                           << projection_name(c.parallel) << ": " << r.first;
+  }
+  std::cout << "[ hidden-lines ] fills against solid edges: " << checked << " points\n";
+  EXPECT_GT(checked, 1000u);
+}
+
+/// The drawing's regions moved `by` grid units away from their rings' centres (negative: in).
+vector_drawing moved_regions(vector_drawing d, long long by) {
+  for (vector_path& p : d.paths)
+    if (p.kind == vector_path::kind_type::region)
+      for (auto& ring : p.rings) {
+        long long cx = 0, cy = 0;
+        for (const grid_point& q : ring) {
+          cx += q.x;
+          cy += q.y;
+        }
+        cx /= static_cast<long long>(ring.size());
+        cy /= static_cast<long long>(ring.size());
+        for (grid_point& q : ring) {
+          q.x += q.x > cx ? by : -by;
+          q.y += q.y > cy ? by : -by;
+        }
+      }
+  return d;
+}
+
+TEST(HiddenLinesFills, RejectRegionsGrownPastTheirOutlineOrShrunkFromIt) {
+  // The check itself: the regions of a cube's corner view grown or shrunk by 0.3 px fail it.
+  const shape& s = synthetic_shape("Cube");
+  frame f = make_view(s.soup, s.offsets, standard_views()[6], true);
+  const vector_drawing d = draw(f);
+  ASSERT_EQ(check_fills(f, d).wrong, 0u);
+  ASSERT_GT(check_fills(f, d).checked, 50u);
+  EXPECT_GT(check_fills(f, moved_regions(d, 30)).wrong, 0u);
+  EXPECT_GT(check_fills(f, moved_regions(d, -30)).wrong, 0u);
+}
+
 // ---- exbsp's drawing: the CGAL corpus ----------------------------------------------------------
 
 /// Least agreement asked of real meshes. The filtered oracle's verdicts are exact, and a
@@ -721,20 +893,44 @@ void PrintTo(const corpus_case& c, std::ostream* os) {
   *os << c.mesh << " " << c.view.name << " " << projection_name(c.parallel);
 }
 
-class HiddenLinesCorpus : public ::testing::TestWithParam<corpus_case> {};
+/// The case's mesh drawn in its view at 400 x 300 (the fixture's SetUp fails or skips when the
+/// corpus is missing).
+class HiddenLinesCorpus : public ::testing::TestWithParam<corpus_case> {
+ protected:
+  void SetUp() override {
+    const corpus_case& c = GetParam();
+    const std::string path = exbsp_test::corpus_dir() + c.mesh + ".off";
+    EXBSP_NEED_CORPUS(std::filesystem::exists(path), path);
+    const triangle_soup soup = read_mesh(path);
+    f = make_view(soup, {0, soup.face_count}, c.view, c.parallel, 400, 300);
+    d = draw(f);
+  }
+  frame f;
+  vector_drawing d;
+};
 
 TEST_P(HiddenLinesCorpus, DrawingAgreesWithTheRayCastOracle) {
   const corpus_case& c = GetParam();
-  const std::string path = exbsp_test::corpus_dir() + c.mesh + ".off";
-  EXBSP_NEED_CORPUS(std::filesystem::exists(path), path);
-  const triangle_soup soup = read_mesh(path);
-  frame f = make_view(soup, {0, soup.face_count}, c.view, c.parallel, 400, 300);
-  const vector_drawing d = draw(f);
   const hidden_line_report r = check_hidden_lines(f, d);
   print_report(c.mesh + " " + c.view.name + " " + projection_name(c.parallel), r);
   EXPECT_GT(r.checked(), 100u) << r.summary();
   EXPECT_GE(r.agreement(), corpus_min_agreement) << r.summary();
   EXPECT_GE(r.run_agreement(), corpus_min_agreement) << r.summary();
+}
+
+TEST_P(HiddenLinesCorpus, FillsStopAtTheSolidOutlinesAndMeetAtSolidCreases) {
+  const corpus_case& c = GetParam();
+  const fill_check r = check_fills(f, d);
+  std::cout << "[ hidden-lines ] " << c.mesh << " " << c.view.name << " "
+            << projection_name(c.parallel) << ": fills against solid edges, " << r.checked
+            << " points, " << r.wrong << " wrong\n";
+  EXPECT_EQ(r.wrong, 0u) << r.first;
+  // cross's front parallel view: each outline edge lies exactly over a visible back edge (the
+  // ray from it runs along a side seen edge-on), so every point has a visible edge within
+  // 0.4 px and none is judged. Every other case judges hundreds.
+  if (r.checked == 0)
+    GTEST_SKIP() << "no point judged: every visible point lies within 0.4 px of another visible "
+                    "edge (coincident outlines)";
 }
 
 INSTANTIATE_TEST_SUITE_P(, HiddenLinesCorpus, ::testing::ValuesIn(all_corpus_cases()),

@@ -89,7 +89,8 @@ struct frame {
   /// Front-to-back bands painted in parallel (0: one per core). Default 1: on the shared 2-core
   /// machine of bench/RESULTS.md section 3, two bands were slower than one.
   unsigned raster_threads = 1;
-  vector_options vector;  ///< SVG / PDF: visible regions or painter's stack, edges
+  vector_options vector;                ///< SVG / PDF: visible regions or painter's stack, edges
+  vector_phase_seconds vector_seconds;  ///< svg / pdf stage (visible regions): phase times
 
   // Products.
   std::optional<bsp> tree;            ///< "build"

@@ -208,6 +208,7 @@ std::string drawing_note(const vector_drawing& d, std::size_t bytes) {
 std::string svg_stage(frame& f) {
   if (f.vector.mode == vector_options::mode_kind::visible) {
     const vector_drawing d = visible_drawing(f);
+    f.vector_seconds = d.seconds;
     f.svg = svg_document(d);
     return "visible regions: " + drawing_note(d, f.svg.size());
   }
@@ -223,6 +224,7 @@ std::string svg_stage(frame& f) {
 std::string pdf_stage(frame& f) {
   const bool visible = f.vector.mode == vector_options::mode_kind::visible;
   const vector_drawing d = visible ? visible_drawing(f) : painter_drawing(f);
+  f.vector_seconds = d.seconds;
   f.pdf = pdf_document(d);
   return std::string(visible ? "visible regions: " : "painter: ") + drawing_note(d, f.pdf.size());
 }

@@ -8,19 +8,26 @@
 #include <polyclipping/clipper.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <future>
 #include <map>
-#include <unordered_map>
-#include <unordered_set>
+#include <optional>
 
 #include "core/errors.h"
 #include "view/clip_stage.h"
 #include "view/edge_paths.h"
 #include "view/pipeline.h"
+#include "view/visible_cover.h"
 
 namespace exbsp::view {
 
 namespace cl = ClipperLib;
+using cover::bbox_i;
+using cover::convex_ccw;
+using cover::t_junction_mender;
+using cover::tiled_coverage;
+using cover::without_straight_vertices;
 
 const char* to_string(vector_options::mode_kind m) {
   return m == vector_options::mode_kind::painter ? "painter" : "visible";
@@ -125,266 +132,6 @@ void remove_spikes(cl::Path& ring) {
   ring.swap(out);
 }
 
-struct bbox_i {
-  long long x0, y0, x1, y1;
-};
-
-template <class Points>
-bbox_i bbox_of(const Points& pts) {
-  bbox_i b{pts[0].X, pts[0].Y, pts[0].X, pts[0].Y};
-  for (const auto& q : pts) {
-    b.x0 = std::min(b.x0, q.X);
-    b.y0 = std::min(b.y0, q.Y);
-    b.x1 = std::max(b.x1, q.X);
-    b.y1 = std::max(b.y1, q.Y);
-  }
-  return b;
-}
-
-/// Screen coverage indexed by square tiles. Every polygon added is stored, whole (never cut
-/// at tile lines, so no rounded point is made there), in the list of each tile its bounding
-/// box meets; a list is merged (union) every merge_every additions, and a tile found fully
-/// covered keeps only its square. The coverage near a polygon P is then the union of the
-/// lists (or squares) of P's tiles: any earlier polygon overlapping P shares a tile with it.
-/// Nonzero fill with every input polygon counter-clockwise makes a list mean its union.
-class tiled_coverage {
- public:
-  static constexpr long long tile_side = 16 * grid_per_pixel;
-  static constexpr int merge_every = 8;
-
-  tiled_coverage(long long width, long long height)
-      : nx_(static_cast<int>(std::max<long long>(1, (width + tile_side - 1) / tile_side))),
-        ny_(static_cast<int>(std::max<long long>(1, (height + tile_side - 1) / tile_side))),
-        tiles_(static_cast<std::size_t>(nx_) * ny_) {
-    for (int ty = 0; ty < ny_; ++ty)
-      for (int tx = 0; tx < nx_; ++tx) {
-        const long long x0 = tx * tile_side, y0 = ty * tile_side;
-        tiles_[index(tx, ty)].rect = {
-            {x0, y0}, {x0 + tile_side, y0}, {x0 + tile_side, y0 + tile_side}, {x0, y0 + tile_side}};
-      }
-  }
-
-  /// True when every tile p's bounding box meets is fully covered (p is hidden).
-  bool hides(const cl::Path& p) const {
-    const auto [tx0, ty0, tx1, ty1] = tile_range(bbox_of(p));
-    for (int ty = ty0; ty <= ty1; ++ty)
-      for (int tx = tx0; tx <= tx1; ++tx)
-        if (!tiles_[index(tx, ty)].full) return false;
-    return true;
-  }
-
-  /// Adds the counter-clockwise polygon p; appends its part not covered before to `visible`.
-  void add(const cl::Path& p, cl::Paths& visible) {
-    if (hides(p)) return;
-    const auto [tx0, ty0, tx1, ty1] = tile_range(bbox_of(p));
-    clip_.clear();
-    gather(tx0, ty0, tx1, ty1, clip_);
-    if (clip_.empty()) {
-      visible.push_back(p);
-    } else {
-      clipper_.Clear();
-      clipper_.AddPath(p, cl::ptSubject, true);
-      clipper_.AddPaths(clip_, cl::ptClip, true);
-      out_.clear();
-      clipper_.Execute(cl::ctDifference, out_, cl::pftNonZero, cl::pftNonZero);
-      visible.insert(visible.end(), out_.begin(), out_.end());
-    }
-    for (int ty = ty0; ty <= ty1; ++ty)
-      for (int tx = tx0; tx <= tx1; ++tx) {
-        tile& t = tiles_[index(tx, ty)];
-        if (t.full) continue;
-        t.covered.push_back(p);
-        if (++t.pending >= merge_every) merge(t);
-      }
-  }
-
-  /// The parts of the open polyline `line` outside the coverage.
-  cl::Paths outside(const cl::Path& line) {
-    const auto [tx0, ty0, tx1, ty1] = tile_range(bbox_of(line));
-    cl::Paths clip;
-    gather(tx0, ty0, tx1, ty1, clip);
-    if (clip.empty()) return {line};
-    clipper_.Clear();
-    clipper_.AddPath(line, cl::ptSubject, false);
-    clipper_.AddPaths(clip, cl::ptClip, true);
-    cl::PolyTree tree;
-    clipper_.Execute(cl::ctDifference, tree, cl::pftNonZero, cl::pftNonZero);
-    cl::Paths out;
-    cl::OpenPathsFromPolyTree(tree, out);
-    return out;
-  }
-
-  /// True when the point is strictly covered (nonzero winding of the coverage).
-  bool covers(const cl::IntPoint& q) {
-    const auto [tx0, ty0, tx1, ty1] = tile_range({q.X, q.Y, q.X, q.Y});
-    cl::Paths clip;
-    gather(tx0, ty0, tx1, ty1, clip);
-    int winding = 0;
-    for (const cl::Path& p : clip)
-      if (cl::PointInPolygon(q, p) == 1) winding += cl::Orientation(p) ? 1 : -1;
-    return winding != 0;
-  }
-
- private:
-  struct tile {
-    cl::Paths covered;  ///< merged paths and pending polygons (nonzero union)
-    cl::Path rect;
-    int pending = 0;
-    bool full = false;
-  };
-
-  std::size_t index(int tx, int ty) const { return static_cast<std::size_t>(ty) * nx_ + tx; }
-
-  std::array<int, 4> tile_range(const bbox_i& b) const {
-    auto clamp_x = [&](long long v) {
-      return static_cast<int>(std::clamp<long long>(v / tile_side, 0, nx_ - 1));
-    };
-    auto clamp_y = [&](long long v) {
-      return static_cast<int>(std::clamp<long long>(v / tile_side, 0, ny_ - 1));
-    };
-    return {clamp_x(std::max(0LL, b.x0)), clamp_y(std::max(0LL, b.y0)),
-            clamp_x(std::max(0LL, b.x1)), clamp_y(std::max(0LL, b.y1))};
-  }
-
-  void merge(tile& t) {
-    clipper_.Clear();
-    clipper_.AddPaths(t.covered, cl::ptSubject, true);
-    clipper_.Execute(cl::ctUnion, t.covered, cl::pftNonZero, cl::pftNonZero);
-    t.pending = 0;
-    // Holes thinner than min_region_width are rounding cracks, not gaps anything can be seen
-    // through: closing them keeps the coverage simple and lets the tile become full.
-    t.covered.erase(std::remove_if(t.covered.begin(), t.covered.end(),
-                                   [](const cl::Path& p) {
-                                     return !cl::Orientation(p) && mean_width(p) < min_region_width;
-                                   }),
-                    t.covered.end());
-    double area = 0;
-    for (const cl::Path& p : t.covered) area += cl::Area(p);
-    if (area < cl::Area(t.rect)) return;  // cannot cover the square yet
-    clipper_.Clear();
-    clipper_.AddPath(t.rect, cl::ptSubject, true);
-    clipper_.AddPaths(t.covered, cl::ptClip, true);
-    out_.clear();
-    clipper_.Execute(cl::ctDifference, out_, cl::pftNonZero, cl::pftNonZero);
-    if (out_.empty()) {
-      t.full = true;
-      t.covered = {t.rect};
-    }
-  }
-
-  /// The coverage of tiles [tx0, tx1] x [ty0, ty1]: each full tile's square, the others' lists,
-  /// each distinct path once. A polygon larger than a tile sits whole in the list of every tile
-  /// it meets; handing Clipper hundreds of copies of it (a cube face at 800x600 meets ~600 tiles)
-  /// made its intersection fix-up quadratic in the copies: minutes for 12 triangles.
-  void gather(int tx0, int ty0, int tx1, int ty1, cl::Paths& clip) const {
-    std::unordered_set<std::size_t> seen;
-    const std::size_t first = clip.size();
-    for (int ty = ty0; ty <= ty1; ++ty)
-      for (int tx = tx0; tx <= tx1; ++tx) {
-        const tile& t = tiles_[index(tx, ty)];
-        for (const cl::Path& p : t.covered) {
-          std::size_t h = p.size();
-          for (const cl::IntPoint& q : p)
-            h = (h * 1000003u) ^ std::hash<long long>{}(q.X * 31 + q.Y);
-          if (!seen.insert(h).second &&
-              std::any_of(clip.begin() + static_cast<std::ptrdiff_t>(first), clip.end(),
-                          [&](const cl::Path& o) { return o == p; }))
-            continue;
-          clip.push_back(p);
-        }
-      }
-  }
-
-  int nx_, ny_;
-  std::vector<tile> tiles_;
-  cl::Clipper clipper_;
-  cl::Paths clip_, out_;
-};
-
-/// T-junctions: where a vertex of one polygon lies inside an edge of another (a BSP split
-/// point on a neighbour's edge), rounding to the grid moves it up to half a unit off that edge
-/// and opens a crack through which what is behind would show. Every vertex lying less than
-/// one unit from the inside of an edge of another polygon is inserted into that edge, so the
-/// two share the boundary exactly. Vertices are found in a sorted index of 4-pixel cells,
-/// walking the cells along each edge; a polygon is mended only when it may be visible.
-class t_junction_mender {
- public:
-  explicit t_junction_mender(const std::vector<cl::Path>& polys) {
-    for (const cl::Path& p : polys)
-      for (const cl::IntPoint& q : p) index_.push_back({key(cell_of(q.X), cell_of(q.Y)), q});
-    std::sort(index_.begin(), index_.end(), [](const entry& a, const entry& b) {
-      return a.key != b.key ? a.key < b.key : a.p.X != b.p.X ? a.p.X < b.p.X : a.p.Y < b.p.Y;
-    });
-    index_.erase(
-        std::unique(index_.begin(), index_.end(),
-                    [](const entry& a, const entry& b) { return a.key == b.key && a.p == b.p; }),
-        index_.end());
-  }
-
-  /// Inserts into p's edges the vertices lying less than one unit from their insides.
-  void mend(cl::Path& p) {
-    mended_.clear();
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const cl::IntPoint a = p[i], b = p[(i + 1) % p.size()];
-      mended_.push_back(a);
-      const double dx = static_cast<double>(b.X - a.X), dy = static_cast<double>(b.Y - a.Y);
-      const double len2 = dx * dx + dy * dy, len = std::sqrt(len2);
-      on_edge_.clear();
-      cells_.clear();
-      // The cells met by the edge's one-unit neighbourhood: the edge in pieces of at most one
-      // cell, each piece's box grown by two units (one for the neighbourhood, one for the
-      // rounding of the piece's ends). Most edges are shorter than a cell: one to four cells.
-      const long long pieces = static_cast<long long>(len / cell) + 1;
-      for (long long s = 0; s < pieces; ++s) {
-        const double t0 = static_cast<double>(s) / static_cast<double>(pieces),
-                     t1 = static_cast<double>(s + 1) / static_cast<double>(pieces);
-        const long long x0 = a.X + std::llround(t0 * dx), x1 = a.X + std::llround(t1 * dx);
-        const long long y0 = a.Y + std::llround(t0 * dy), y1 = a.Y + std::llround(t1 * dy);
-        const long long cx0 = cell_of(std::min(x0, x1) - 2), cx1 = cell_of(std::max(x0, x1) + 2);
-        const long long cy0 = cell_of(std::min(y0, y1) - 2), cy1 = cell_of(std::max(y0, y1) + 2);
-        for (long long cx = cx0; cx <= cx1; ++cx)
-          for (long long cy = cy0; cy <= cy1; ++cy) cells_.push_back(key(cx, cy));
-      }
-      std::sort(cells_.begin(), cells_.end());
-      cells_.erase(std::unique(cells_.begin(), cells_.end()), cells_.end());
-      for (const std::uint64_t k : cells_) {
-        auto it = std::lower_bound(index_.begin(), index_.end(), k,
-                                   [](const entry& e, std::uint64_t v) { return e.key < v; });
-        for (; it != index_.end() && it->key == k; ++it) {
-          const cl::IntPoint& v = it->p;
-          const double vx = static_cast<double>(v.X - a.X), vy = static_cast<double>(v.Y - a.Y);
-          const double along = vx * dx + vy * dy;
-          if (along <= 0 || along >= len2) continue;
-          if (std::abs(vx * dy - vy * dx) >= len) continue;  // one unit or more off the line
-          on_edge_.push_back({along, v});
-        }
-      }
-      std::sort(on_edge_.begin(), on_edge_.end(),
-                [](const auto& x, const auto& y) { return x.first < y.first; });
-      for (const auto& [along, v] : on_edge_)
-        if (!(mended_.back() == v)) mended_.push_back(v);
-    }
-    p.swap(mended_);
-  }
-
- private:
-  static constexpr long long cell = 4 * grid_per_pixel;
-  struct entry {
-    std::uint64_t key;
-    cl::IntPoint p;
-  };
-  static std::uint64_t key(long long cx, long long cy) {
-    return static_cast<std::uint64_t>(cx + (1LL << 30)) << 32 |
-           static_cast<std::uint64_t>(cy + (1LL << 30));
-  }
-  static long long cell_of(long long v) { return v >= 0 ? v / cell : -((-v + cell - 1) / cell); }
-
-  std::vector<entry> index_;
-  std::vector<std::uint64_t> cells_;
-  std::vector<std::pair<double, cl::IntPoint>> on_edge_;
-  cl::Path mended_;
-};
-
 rgb8 shaded(const frame& f, rgb8 c, double x, double y, double z) {
   return f.shader ? f.shader->shade(c, x, y, z) : c;
 }
@@ -422,8 +169,9 @@ void append_curve(vector_drawing& d, vector_path&& piece) {
 
 /// Per face: the pieces of its visible region and the data for its colour.
 struct face_accumulator {
-  cl::Paths pieces;
+  std::vector<std::uint32_t> pieces;  ///< ids of its visible pieces in the coverage
   rgb8 color;
+  double shown = 0;  ///< visible area of the fragment that gave the colour
   bool seen = false;
   double sx = 0, sy = 0, sz = 0;
   std::size_t n = 0;
@@ -458,9 +206,27 @@ vector_drawing visible_drawing(const frame& f) {
     throw usage_error("svg: crease_deg must be in (0, 180], got " + std::to_string(opt.crease_deg));
   const viewport& vp = f.view.vp;
   vector_drawing d = empty_drawing(f);
+  // The edges depend on the frame alone, not on the regions: they are found on a second thread
+  // meanwhile (the frame is only read; an exception reaches the caller through get()).
+  using clock = std::chrono::steady_clock;
+  auto since = [](clock::time_point t0) {
+    return std::chrono::duration<double>(clock::now() - t0).count();
+  };
+  std::future<std::vector<vector_path>> edges;
+  if (opt.edges != vector_options::edges_kind::none)
+    edges = std::async(std::launch::async, [&f, &d, since] {
+      const clock::time_point t0 = clock::now();
+      vector_drawing e;
+      add_edge_paths(f, e);
+      d.seconds.edges = since(t0);  // read by the caller only after get()
+      return std::move(e.paths);
+    });
+  clock::time_point t0 = clock::now();
   tiled_coverage coverage(static_cast<long long>(vp.width) * grid_per_pixel,
                           static_cast<long long>(vp.height) * grid_per_pixel);
-  std::unordered_map<std::uint32_t, face_accumulator> faces;
+  std::uint32_t face_end = 0;
+  for (const screen_polygon& p : f.polygons) face_end = std::max(face_end, p.face + 1);
+  std::vector<face_accumulator> faces(face_end);
   std::vector<vector_path> curve_paths;
   auto clip_line = [&](const screen_line& l) {
     vector_path p = curve_path(f, l);
@@ -492,8 +258,10 @@ vector_drawing visible_drawing(const frame& f) {
     }
     if (!cl::Orientation(poly)) cl::ReversePath(poly);
   }
-  t_junction_mender mender(snapped);
-  cl::Paths visible;
+  t_junction_mender mender(snapped, static_cast<long long>(vp.width) * grid_per_pixel,
+                           static_cast<long long>(vp.height) * grid_per_pixel);
+  d.seconds.snap = since(t0);
+  t0 = clock::now();
   for (std::size_t k = f.polygons.size(); k-- > 0;) {
     // Lines of slot k + 1 lie behind polygons k + 1 .. n - 1: clip them now.
     while (next_line > 0 && f.lines[next_line - 1].slot > k) clip_line(f.lines[--next_line]);
@@ -501,13 +269,17 @@ vector_drawing visible_drawing(const frame& f) {
     cl::Path& poly = snapped[k];
     if (poly.empty() || coverage.hides(poly)) continue;
     mender.mend(poly);
-    visible.clear();
-    coverage.add(poly, visible);
-    if (visible.empty()) continue;
+    const std::uint32_t piece = coverage.add(poly, f.mesh_of(p.face));
+    if (piece == tiled_coverage::no_piece) continue;
     face_accumulator& acc = faces[p.face];
-    if (!acc.seen) {
+    // The colour of the fragment showing most of the face: a sliver fragment's normal, from
+    // its rounded corners, may be far off (lighting is per fragment).
+    double shown = 0;
+    for (const cl::Path& v : coverage.rings(piece)) shown += cl::Area(v);
+    if (!acc.seen || shown > acc.shown) {
       acc.seen = true;
       acc.color = p.color;
+      acc.shown = shown;
     }
     for (const window_point& w : p.v) {
       acc.sx += w.x;
@@ -515,14 +287,16 @@ vector_drawing visible_drawing(const frame& f) {
       acc.sz += w.z;
       ++acc.n;
     }
-    acc.pieces.insert(acc.pieces.end(), visible.begin(), visible.end());
+    acc.pieces.push_back(piece);
   }
   while (next_line > 0) clip_line(f.lines[--next_line]);
+  d.seconds.coverage = since(t0);
+  t0 = clock::now();
 
   // One region per face: the union of its pieces, rounding slivers dropped.
   std::vector<std::uint32_t> face_ids;
-  face_ids.reserve(faces.size());
-  for (const auto& [face, acc] : faces) face_ids.push_back(face);
+  for (std::uint32_t face = 0; face < face_end; ++face)
+    if (faces[face].seen) face_ids.push_back(face);
   std::sort(face_ids.begin(), face_ids.end(), [&](std::uint32_t a, std::uint32_t b) {
     const std::uint32_t ma = f.mesh_of(a), mb = f.mesh_of(b);
     return ma != mb ? ma < mb : a < b;
@@ -533,10 +307,18 @@ vector_drawing visible_drawing(const frame& f) {
   cl::Paths merged;
   for (std::uint32_t face : face_ids) {
     face_accumulator& acc = faces[face];
-    clipper.Clear();
-    clipper.AddPaths(acc.pieces, cl::ptSubject, true);
     merged.clear();
-    clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
+    const cl::Paths& first = coverage.rings(acc.pieces[0]);
+    if (acc.pieces.size() == 1 && first.size() == 1 && convex_ccw(first[0])) {
+      // One convex piece (most faces): its own union, but for the straight vertices Clipper
+      // would drop.
+      merged.push_back(without_straight_vertices(first[0]));
+    } else {
+      clipper.Clear();
+      for (const std::uint32_t piece : acc.pieces)
+        clipper.AddPaths(coverage.rings(piece), cl::ptSubject, true);
+      clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
+    }
     vector_path r;
     r.kind = vector_path::kind_type::region;
     r.face = face;
@@ -550,24 +332,53 @@ vector_drawing visible_drawing(const frame& f) {
     }
     if (!r.rings.empty()) regions.push_back(std::move(r));
   }
+  d.seconds.regions = since(t0);
+  t0 = clock::now();
   // Underlays (notation): the union of a group of regions, in one colour, under them.
-  auto add_underlay = [&](const std::vector<std::size_t>& members, rgb8 color) {
-    clipper.Clear();
-    for (std::size_t k : members)
-      for (const auto& ring : regions[k].rings) {
-        cl::Path p;
-        p.reserve(ring.size());
-        for (const grid_point& q : ring) p.push_back({q.x, q.y});
-        clipper.AddPath(p, cl::ptSubject, true);
-      }
-    merged.clear();
-    clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
+  // The union is taken per group of regions near each other (by the square of side
+  // underlay_side holding the first point of their first ring) and the groups' unions are one
+  // path: a renderer fills a path's rings together (nonzero), so where two groups abut or
+  // overlap no seam shows, and each union stays small (one union of a whole mesh cost 0.9 s
+  // on bunny00). A mesh's underlay starts with the coverage's full tiles holding its pieces
+  // only (row runs of squares: inside the union of its regions, but for rounding slivers),
+  // and its regions lying wholly in them join no union.
+  constexpr long long underlay_side = 64 * grid_per_pixel;
+  auto add_underlay = [&](const std::vector<std::size_t>& members, rgb8 color,
+                          std::optional<std::uint32_t> mesh) {
     vector_path u;
     u.kind = vector_path::kind_type::underlay;
     u.color = color;
-    for (cl::Path& ring : merged) {
-      remove_spikes(ring);
-      if (ring.size() >= 3) u.rings.push_back(to_ring(ring));
+    if (mesh)
+      for (const cl::Path& r : coverage.full_tiles_of(*mesh)) u.rings.push_back(to_ring(r));
+    std::map<std::pair<long long, long long>, std::vector<std::size_t>> groups;
+    for (std::size_t k : members) {
+      if (mesh) {
+        bbox_i b{regions[k].rings[0][0].x, regions[k].rings[0][0].y, regions[k].rings[0][0].x,
+                 regions[k].rings[0][0].y};
+        for (const auto& ring : regions[k].rings)
+          for (const grid_point& q : ring)
+            b = {std::min(b.x0, q.x), std::min(b.y0, q.y), std::max(b.x1, q.x),
+                 std::max(b.y1, q.y)};
+        if (coverage.inside_full_tiles_of(b, *mesh)) continue;
+      }
+      const grid_point& q = regions[k].rings[0][0];
+      groups[{q.x / underlay_side, q.y / underlay_side}].push_back(k);
+    }
+    for (const auto& [key, group] : groups) {
+      clipper.Clear();
+      for (std::size_t k : group)
+        for (const auto& ring : regions[k].rings) {
+          cl::Path p;
+          p.reserve(ring.size());
+          for (const grid_point& q : ring) p.push_back({q.x, q.y});
+          clipper.AddPath(p, cl::ptSubject, true);
+        }
+      merged.clear();
+      clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
+      for (cl::Path& ring : merged) {
+        remove_spikes(ring);
+        if (ring.size() >= 3) u.rings.push_back(to_ring(ring));
+      }
     }
     if (!u.rings.empty()) d.paths.push_back(std::move(u));
   };
@@ -597,7 +408,7 @@ vector_drawing visible_drawing(const frame& f) {
     if (!(total > 0)) continue;
     auto mean = [&](double v) { return static_cast<std::uint8_t>(std::lround(v / total)); };
     const rgb8 color{mean(sum[0]), mean(sum[1]), mean(sum[2])};
-    add_underlay(members, color);
+    add_underlay(members, color, mesh);
     done.push_back({members, color});
   }
   // Then one per colour used by two or more regions: where faces of one colour meet, the
@@ -610,10 +421,17 @@ vector_drawing visible_drawing(const frame& f) {
     const bool drawn = std::any_of(done.begin(), done.end(), [&](const auto& u) {
       return u.second == color && u.first == members;
     });
-    if (members.size() >= 2 && !drawn) add_underlay(members, color);
+    if (members.size() >= 2 && !drawn) add_underlay(members, color, std::nullopt);
   }
   d.paths.insert(d.paths.end(), regions.begin(), regions.end());
-  if (opt.edges != vector_options::edges_kind::none) add_edge_paths(f, d);
+  d.seconds.underlays = since(t0);
+  if (edges.valid()) {
+    t0 = clock::now();
+    std::vector<vector_path> e = edges.get();
+    d.seconds.edges_wait = since(t0);
+    d.paths.insert(d.paths.end(), std::make_move_iterator(e.begin()),
+                   std::make_move_iterator(e.end()));
+  }
   // Curve pieces were clipped front to back: put them back in back-to-front order.
   for (auto it = curve_paths.rbegin(); it != curve_paths.rend(); ++it)
     append_curve(d, std::move(*it));

@@ -10,14 +10,19 @@
 //
 // Visible regions: the polygons of the transform+clip stage, taken FRONT TO BACK (the reverse
 // of their back-to-front list, docs/contract.md "The BSP"), are snapped to the grid; each loses
-// what the polygons before it already cover (Clipper's integer Booleans: covered := covered ∪ P,
-// visible(P) := P \ covered), and the visible parts of one source face are merged into one
-// region (holes kept). The screen is cut into square tiles so that each Boolean sees only the
-// coverage near its polygon, and a tile found fully covered rejects everything behind it at
-// once. Rounding makes cracks under one grid unit wide where polygons in front meet at a
-// T-junction; what shows through them is dropped: spikes (zero-area antennas, under one unit
-// wide) are cut off the rings, and rings thinner than min_region_width (their area over half
-// their perimeter) are dropped (they cannot decide any pixel).
+// what the polygons before it already cover (visible(P) := P \ covered, covered := covered ∪
+// visible(P)), and the visible parts of one source face are merged into one region (holes
+// kept). The coverage is kept as its disjoint pieces, listed in 4-pixel tiles: P is fully
+// visible when a line through an edge separates it from every piece near it (exact integer
+// test: the shared edges of a mesh do), or when its overlaps with them have no area (T-junction
+// chains); it is hidden when the pieces' overlaps add up to its area (areas in doubles, by
+// Sutherland–Hodgman against convex windows). Only the rest (partly hidden P) goes to Clipper's
+// integer Booleans, with the pieces it overlaps; a tile whose pieces' areas fill it rejects
+// everything behind it at once. Rounding makes cracks under one grid unit wide where polygons
+// in front meet at a T-junction; what shows through them is dropped: spikes (zero-area
+// antennas, under one unit wide) are cut off the rings, and rings thinner than
+// min_region_width (their area over half their perimeter) are dropped (they cannot decide any
+// pixel).
 //
 // Underlays: anti-aliasing renderers (browsers, PDF viewers) blend each path's edge pixels
 // with what is below, so two regions sharing an edge let the background through it
@@ -25,11 +30,14 @@
 // underlays, filled unions of regions under them: one per mesh (part) in the area-weighted
 // mean colour of its regions (under a seam between two lit faces shows a colour near both),
 // then one per colour used by two or more regions (where faces of one colour meet, the seam
-// shows exactly that colour). They add no area (no outline grows, nothing is stroked); the
-// regions above stay one path per face.
+// shows exactly that colour). An underlay is one path whose rings are the unions of its
+// regions taken in 64-pixel squares (a renderer fills a path's rings together, so no seam
+// shows where two squares' unions meet). They add no area (no outline grows, nothing is
+// stroked); the regions above stay one path per face.
 //
 // Edges (the hidden-line drawing): the feature edges (geom/feature_edges.h) split exactly into
-// visible and hidden runs by the contract's rule (edge_visibility.h), drawn by edge_paths.h.
+// visible and hidden runs by the contract's rule (edge_visibility.h), drawn by edge_paths.h;
+// found on a second thread while the regions are made (they depend on the frame alone).
 //
 // Curves and lines: each clipped piece (curves.h, painter's slot k: behind polygons k..n-1)
 // keeps what is outside the coverage of those polygons; drawn over the regions.
@@ -107,12 +115,23 @@ struct drawing_placement {
 };
 
 /// A drawing: background, then the paths in drawing order.
+/// Where visible_drawing's time went, in seconds (wall clock), for benchmarks and progress.
+struct vector_phase_seconds {
+  double snap = 0;        ///< polygons to the grid, T-junction index
+  double coverage = 0;    ///< front to back: each polygon's visible piece (mending included)
+  double regions = 0;     ///< per face: the union of its pieces
+  double underlays = 0;   ///< seam underlays
+  double edges = 0;       ///< feature edges, exact visibility, edge paths (on their own thread)
+  double edges_wait = 0;  ///< time the regions then waited for the edges
+};
+
 struct vector_drawing {
   int width = 0, height = 0;  ///< pixels (the viewport)
   rgb8 background{255, 255, 255};
   bool painter = false;  ///< the painter's stack (one region per fragment, back to front)
   std::vector<vector_path> paths;
-  drawing_placement placement;  ///< set from the frame's view (view_setup::needs_placement)
+  drawing_placement placement;   ///< set from the frame's view (view_setup::needs_placement)
+  vector_phase_seconds seconds;  ///< visible_drawing: its phases' times (not output)
 
   /// True when the image is larger than the drawing or the drawing is not at its origin.
   bool placed() const {

@@ -1,0 +1,664 @@
+// Coverage of the visible-region drawing (notation in visible_cover.h and vector_drawing.h):
+// polygon tests on the integer grid (separation, convexity, ear triangles), overlap areas by
+// Sutherland–Hodgman in doubles, the tiled coverage of disjoint pieces, and the T-junction
+// mender. The Booleans are Clipper's (libpolyclipping), used only for partly hidden polygons.
+#include "view/visible_cover.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "view/vector_drawing.h"
+
+namespace exbsp::view::cover {
+
+namespace cl = ClipperLib;
+
+namespace {
+
+/// Twice the signed area of a ring, its points taken relative to `o` (small products, so the
+/// double sum is exact to far below one square unit).
+double twice_area_from(const cl::Path& p, double ox, double oy) {
+  double a = 0;
+  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
+    const double xi = static_cast<double>(p[i].X) - ox, yi = static_cast<double>(p[i].Y) - oy;
+    const double xj = static_cast<double>(p[j].X) - ox, yj = static_cast<double>(p[j].Y) - oy;
+    a += xj * yi - xi * yj;
+  }
+  return a;
+}
+
+}  // namespace
+
+bool convex_ccw(const cl::Path& r) {
+  const std::size_t n = r.size();
+  if (n < 3) return false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const cl::IntPoint& a = r[i];
+    const cl::IntPoint& b = r[(i + 1) % n];
+    const cl::IntPoint& c = r[(i + 2) % n];
+    if ((b.X - a.X) * (c.Y - b.Y) - (b.Y - a.Y) * (c.X - b.X) < 0) return false;
+  }
+  return true;
+}
+
+cl::Path without_straight_vertices(const cl::Path& r) {
+  cl::Path out(r);
+  for (bool changed = true; changed && out.size() > 3;) {
+    changed = false;
+    for (std::size_t i = 0; i < out.size() && out.size() > 3; ++i) {
+      const std::size_t n = out.size();
+      const cl::IntPoint& a = out[(i + n - 1) % n];
+      const cl::IntPoint& b = out[i];
+      const cl::IntPoint& c = out[(i + 1) % n];
+      if ((b.X - a.X) * (c.Y - b.Y) - (b.Y - a.Y) * (c.X - b.X) == 0) {
+        out.erase(out.begin() + static_cast<std::ptrdiff_t>(i));
+        changed = true;
+      }
+    }
+  }
+  return out;
+}
+
+namespace {
+
+/// Polygons in doubles, relative to an origin on the grid, for overlap areas: Sutherland–
+/// Hodgman clipping by convex windows. (Clipper's Booleans give exact integer polygons, which
+/// the output needs; the coverage only needs areas, at a twentieth of the cost.) A non-convex
+/// polygon clipped by a convex window keeps its area, even where the result touches itself.
+struct point_d {
+  double x, y;
+};
+using polygon_d = std::vector<point_d>;
+
+/// Keeps the part of `a` where dx (y - py) - dy (x - px) >= 0 (left of the directed line).
+void clip_half_plane(polygon_d& a, polygon_d& scratch, double px, double py, double dx, double dy) {
+  if (a.empty() || (dx == 0 && dy == 0)) return;
+  auto f = [&](const point_d& q) { return dx * (q.y - py) - dy * (q.x - px); };
+  scratch.clear();
+  for (std::size_t i = 0, j = a.size() - 1; i < a.size(); j = i++) {
+    const double fj = f(a[j]), fi = f(a[i]);
+    if ((fi >= 0) != (fj >= 0)) {
+      const double t = fj / (fj - fi);
+      scratch.push_back({a[j].x + (a[i].x - a[j].x) * t, a[j].y + (a[i].y - a[j].y) * t});
+    }
+    if (fi >= 0) scratch.push_back(a[i]);
+  }
+  a.swap(scratch);
+}
+
+double signed_area(const polygon_d& a) {
+  double twice = 0;
+  for (std::size_t i = 0, j = a.size() - 1; i < a.size(); j = i++)
+    twice += a[j].x * a[i].y - a[i].x * a[j].y;
+  return 0.5 * twice;
+}
+
+/// `ring` relative to (ox, oy), clipped by the convex counter-clockwise `window`.
+void clip_by_convex(const cl::Path& ring, const cl::Path& window, long long ox, long long oy,
+                    polygon_d& out, polygon_d& scratch) {
+  out.clear();
+  for (const cl::IntPoint& q : ring)
+    out.push_back({static_cast<double>(q.X - ox), static_cast<double>(q.Y - oy)});
+  for (std::size_t k = 0; k < window.size() && !out.empty(); ++k) {
+    const cl::IntPoint& w0 = window[k];
+    const cl::IntPoint& w1 = window[(k + 1) % window.size()];
+    clip_half_plane(out, scratch, static_cast<double>(w0.X - ox), static_cast<double>(w0.Y - oy),
+                    static_cast<double>(w1.X - w0.X), static_cast<double>(w1.Y - w0.Y));
+  }
+}
+
+/// Signed area of the part of `a` (relative coordinates) inside [x0, x1] x [y0, y1]; `work`
+/// and `scratch` are buffers.
+double area_in_box(const polygon_d& a, polygon_d& work, polygon_d& scratch, double x0, double y0,
+                   double x1, double y1) {
+  work.assign(a.begin(), a.end());
+  clip_half_plane(work, scratch, x0, y0, 0, -1);  // x >= x0
+  clip_half_plane(work, scratch, x1, y0, 0, 1);   // x <= x1
+  clip_half_plane(work, scratch, x0, y0, 1, 0);   // y >= y0
+  clip_half_plane(work, scratch, x0, y1, -1, 0);  // y <= y1
+  return work.empty() ? 0 : signed_area(work);
+}
+
+/// True when q is inside the convex counter-clockwise ring or on its boundary (exact).
+bool in_convex(const cl::Path& r, long long qx, long long qy) {
+  for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+    if ((r[i].X - r[j].X) * (qy - r[j].Y) - (r[i].Y - r[j].Y) * (qx - r[j].X) < 0) return false;
+  return true;
+}
+
+/// The counter-clockwise simple ring cut into convex counter-clockwise triangles by ear
+/// clipping (integer predicates, exact); false when no ear is found (a degenerate ring).
+/// Straight vertices (collinear with their neighbours) are dropped first.
+bool ear_triangles(const cl::Path& ring, std::vector<cl::Path>& out) {
+  auto cross = [](const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c) {
+    return (b.X - a.X) * (c.Y - a.Y) - (b.Y - a.Y) * (c.X - a.X);
+  };
+  cl::Path r = ring;
+  out.clear();
+  while (r.size() > 3) {
+    const std::size_t n = r.size();
+    bool cut = false;
+    for (std::size_t i = 0; i < n && !cut; ++i) {
+      const cl::IntPoint& a = r[(i + n - 1) % n];
+      const cl::IntPoint& b = r[i];
+      const cl::IntPoint& c = r[(i + 1) % n];
+      const long long turn = cross(a, b, c);
+      if (turn == 0) {  // straight or a spike: no area at b
+        r.erase(r.begin() + static_cast<std::ptrdiff_t>(i));
+        cut = true;
+        break;
+      }
+      if (turn < 0) continue;
+      bool empty = true;
+      for (std::size_t k = 0; k < n && empty; ++k) {
+        if (k == i || k == (i + 1) % n || k == (i + n - 1) % n) continue;
+        const cl::IntPoint& q = r[k];
+        empty = !(cross(a, b, q) >= 0 && cross(b, c, q) >= 0 && cross(c, a, q) >= 0);
+      }
+      if (!empty) continue;
+      out.push_back({a, b, c});
+      r.erase(r.begin() + static_cast<std::ptrdiff_t>(i));
+      cut = true;
+    }
+    if (!cut) return false;
+  }
+  if (r.size() == 3 && cross(r[0], r[1], r[2]) > 0) out.push_back(r);
+  return true;
+}
+
+/// True when a line through an edge of one of the point sets has all of `p` on one closed
+/// side and all of `q` on the other: then the interiors of any polygons with these vertices
+/// are disjoint (each lies in the convex hull of its vertices). Integer cross products, exact.
+bool separated(const cl::Path& p, const cl::Paths& q) {
+  auto try_edges = [&](const cl::Path& ring) {
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+      const cl::IntPoint a = ring[j], b = ring[i];
+      const long long dx = b.X - a.X, dy = b.Y - a.Y;
+      if (dx == 0 && dy == 0) continue;
+      auto side = [&](const cl::IntPoint& v) { return dx * (v.Y - a.Y) - dy * (v.X - a.X); };
+      long long p_min = 0, p_max = 0;
+      for (const cl::IntPoint& v : p) {
+        const long long c = side(v);
+        p_min = std::min(p_min, c);
+        p_max = std::max(p_max, c);
+      }
+      if (p_min < 0 && p_max > 0) continue;
+      bool ok = true;
+      for (const cl::Path& r : q) {
+        for (const cl::IntPoint& v : r) {
+          const long long c = side(v);
+          if ((p_max > 0 && c > 0) || (p_min < 0 && c < 0) || (p_max == 0 && p_min == 0)) {
+            ok = false;
+            break;
+          }
+        }
+        if (!ok) break;
+      }
+      if (ok) return true;
+    }
+    return false;
+  };
+  if (try_edges(p)) return true;
+  for (const cl::Path& r : q)
+    if (try_edges(r)) return true;
+  return false;
+}
+
+}  // namespace
+
+/// tiled_coverage's state: screen coverage as the list of visible pieces so far (disjoint: each is what was left of
+/// a polygon after removing the earlier ones), indexed by square tiles. A piece is listed in
+/// every tile its bounding box meets, whole (never cut at tile lines, so no rounded point is
+/// made there); each tile sums the area of the pieces inside it, and a tile whose sum reaches
+/// its own area is full: it rejects everything behind it at once, and stands for its pieces
+/// as one square. A new polygon P is fully visible when a line through an edge separates it
+/// from every nearby piece (integer cross products: exact; shared edges of a mesh separate);
+/// only otherwise does Clipper subtract the pieces it may overlap. Nonzero fill with every
+/// outer ring counter-clockwise (holes clockwise) makes a list of pieces mean their union.
+class tiled_coverage::impl {
+ public:
+  static constexpr long long tile_side = 4 * grid_per_pixel;
+
+  impl(long long width, long long height)
+      : nx_(static_cast<int>(std::max<long long>(1, (width + tile_side - 1) / tile_side))),
+        ny_(static_cast<int>(std::max<long long>(1, (height + tile_side - 1) / tile_side))),
+        tiles_(static_cast<std::size_t>(nx_) * ny_) {}
+
+  /// True when every tile p's bounding box meets is full (p is hidden).
+  bool hides(const cl::Path& p) const {
+    const auto [tx0, ty0, tx1, ty1] = tile_range(bbox_of(p));
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx)
+        if (!tiles_[index(tx, ty)].full) return false;
+    return true;
+  }
+
+  /// Adds the counter-clockwise polygon p (moved from when wholly visible); returns the id of
+  /// its part not covered before (a piece: rings()), or no_piece when it is hidden.
+  std::uint32_t add(cl::Path& p, std::uint32_t mesh) {
+    if (hides(p)) return no_piece;
+    near_.clear();
+    gather(bbox_of(p), [&](const cl::Paths& rings, bool square) {
+      if (!separated(p, rings)) near_.push_back({&rings, square});
+    });
+    switch (near_.empty() ? outcome::visible : overlap_outcome(p)) {
+      case outcome::visible: {
+        cl::Paths whole(1);
+        whole[0].swap(p);
+        return insert(std::move(whole), mesh);
+      }
+      case outcome::hidden:
+        return no_piece;
+      case outcome::unknown:
+        break;
+    }
+    clipper_.Clear();
+    clipper_.AddPath(p, cl::ptSubject, true);
+    for (const candidate& c : near_) clipper_.AddPaths(*c.rings, cl::ptClip, true);
+    cl::Paths out;
+    clipper_.Execute(cl::ctDifference, out, cl::pftNonZero, cl::pftNonZero);
+    return out.empty() ? no_piece : insert(std::move(out), mesh);
+  }
+
+  /// Rectangles (counter-clockwise) tiling the full tiles whose pieces all belong to `mesh`:
+  /// runs along each row of tiles.
+  cl::Paths full_tiles_of(std::uint32_t mesh) const {
+    cl::Paths out;
+    for (int ty = 0; ty < ny_; ++ty)
+      for (int tx = 0; tx < nx_;) {
+        if (!of_mesh(tx, ty, mesh)) {
+          ++tx;
+          continue;
+        }
+        int end = tx + 1;
+        while (end < nx_ && of_mesh(end, ty, mesh)) ++end;
+        const long long x0 = tx * tile_side, x1 = end * tile_side, y0 = ty * tile_side,
+                        y1 = y0 + tile_side;
+        out.push_back({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+        tx = end;
+      }
+    return out;
+  }
+
+  /// True when every tile the box meets is full of pieces of `mesh` only.
+  bool inside_full_tiles_of(const bbox_i& box, std::uint32_t mesh) const {
+    const auto [tx0, ty0, tx1, ty1] = tile_range(box);
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx)
+        if (!of_mesh(tx, ty, mesh)) return false;
+    return true;
+  }
+
+  /// The rings of piece `id` (outer rings counter-clockwise, holes clockwise).
+  const cl::Paths& rings(std::uint32_t id) const { return pieces_[id].rings; }
+
+  /// The parts of the open polyline `line` outside the coverage.
+  cl::Paths outside(const cl::Path& line) {
+    cl::Paths clip;
+    gather(bbox_of(line), [&](const cl::Paths& rings, bool) {
+      clip.insert(clip.end(), rings.begin(), rings.end());
+    });
+    if (clip.empty()) return {line};
+    clipper_.Clear();
+    clipper_.AddPath(line, cl::ptSubject, false);
+    clipper_.AddPaths(clip, cl::ptClip, true);
+    cl::PolyTree tree;
+    clipper_.Execute(cl::ctDifference, tree, cl::pftNonZero, cl::pftNonZero);
+    cl::Paths out;
+    cl::OpenPathsFromPolyTree(tree, out);
+    return out;
+  }
+
+  /// True when the point is strictly covered (nonzero winding of the coverage).
+  bool covers(const cl::IntPoint& q) {
+    cl::Paths clip;
+    gather({q.X, q.Y, q.X, q.Y}, [&](const cl::Paths& rings, bool) {
+      clip.insert(clip.end(), rings.begin(), rings.end());
+    });
+    int winding = 0;
+    for (const cl::Path& p : clip)
+      if (cl::PointInPolygon(q, p) == 1) winding += cl::Orientation(p) ? 1 : -1;
+    return winding != 0;
+  }
+
+ private:
+  struct piece {
+    cl::Paths rings;  ///< outer rings counter-clockwise, holes clockwise
+  };
+  /// A piece as listed in a tile: its id and box (grid units fit 32 bits), so that the box
+  /// test reads the tile's own memory.
+  struct listed {
+    std::int32_t x0, y0, x1, y1;
+    std::uint32_t id;
+  };
+  struct tile {
+    std::vector<listed> pieces;
+    double area = 0;  ///< of the pieces' parts inside the tile, square units
+    bool full = false;
+    cl::Paths square;        ///< once full: the tile's square, standing for its pieces
+    std::int64_t mesh = -1;  ///< the mesh of every piece listed here; -1 none yet, -2 several
+  };
+
+  std::size_t index(int tx, int ty) const { return static_cast<std::size_t>(ty) * nx_ + tx; }
+
+  bool of_mesh(int tx, int ty, std::uint32_t mesh) const {
+    const tile& t = tiles_[index(tx, ty)];
+    return t.full && t.mesh == mesh;
+  }
+
+  std::array<int, 4> tile_range(const bbox_i& b) const {
+    auto clamp_x = [&](long long v) {
+      return static_cast<int>(std::clamp<long long>(v / tile_side, 0, nx_ - 1));
+    };
+    auto clamp_y = [&](long long v) {
+      return static_cast<int>(std::clamp<long long>(v / tile_side, 0, ny_ - 1));
+    };
+    return {clamp_x(std::max(0LL, b.x0)), clamp_y(std::max(0LL, b.y0)),
+            clamp_x(std::max(0LL, b.x1)), clamp_y(std::max(0LL, b.y1))};
+  }
+
+  cl::Path square(int tx, int ty) const {
+    const long long x0 = tx * tile_side, y0 = ty * tile_side;
+    return {{x0, y0}, {x0 + tile_side, y0}, {x0 + tile_side, y0 + tile_side}, {x0, y0 + tile_side}};
+  }
+
+  /// Lists the piece in the tiles its box meets and adds its area to theirs.
+  std::uint32_t insert(cl::Paths rings, std::uint32_t mesh) {
+    bbox_i box = bbox_of(rings[0]);
+    for (const cl::Path& r : rings) {
+      const bbox_i b = bbox_of(r);
+      box = {std::min(box.x0, b.x0), std::min(box.y0, b.y0), std::max(box.x1, b.x1),
+             std::max(box.y1, b.y1)};
+    }
+    const auto id = static_cast<std::uint32_t>(pieces_.size());
+    const auto [tx0, ty0, tx1, ty1] = tile_range(box);
+    const double tile_area = static_cast<double>(tile_side) * static_cast<double>(tile_side);
+    const double side = static_cast<double>(tile_side);
+    // A convex piece over many tiles: the tiles whose four corners it holds are inside it
+    // (their whole area counts), found from one test per tile corner.
+    const bool convex = rings.size() == 1 && convex_ccw(rings[0]);
+    const int cw = tx1 - tx0 + 2;
+    corner_in_.clear();
+    if (convex && (tx1 - tx0 + 1) * (ty1 - ty0 + 1) > 4)
+      for (int cy = ty0; cy <= ty1 + 1; ++cy)
+        for (int cx = tx0; cx <= tx1 + 1; ++cx)
+          corner_in_.push_back(in_convex(rings[0], cx * tile_side, cy * tile_side));
+    auto corner = [&](int cx, int cy) {
+      return corner_in_[static_cast<std::size_t>((cy - ty0) * cw + (cx - tx0))];
+    };
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        tile& t = tiles_[index(tx, ty)];
+        if (t.full) continue;
+        t.mesh = t.mesh == -1 || t.mesh == mesh ? mesh : -2;
+        t.pieces.push_back({static_cast<std::int32_t>(box.x0), static_cast<std::int32_t>(box.y0),
+                            static_cast<std::int32_t>(box.x1), static_cast<std::int32_t>(box.y1),
+                            id});
+        const long long x0 = tx * tile_side, y0 = ty * tile_side;
+        const bool inside =
+            box.x0 >= x0 && box.x1 <= x0 + tile_side && box.y0 >= y0 && box.y1 <= y0 + tile_side;
+        if (!corner_in_.empty() && corner(tx, ty) && corner(tx + 1, ty) && corner(tx, ty + 1) &&
+            corner(tx + 1, ty + 1)) {
+          t.area += tile_area;
+        } else {
+          for (const cl::Path& r : rings) {
+            if (inside) {
+              t.area += 0.5 * twice_area_from(r, static_cast<double>(x0), static_cast<double>(y0));
+            } else {
+              poly_.clear();
+              for (const cl::IntPoint& q : r)
+                poly_.push_back({static_cast<double>(q.X - x0), static_cast<double>(q.Y - y0)});
+              t.area += area_in_box(poly_, work_, scratch_, 0, 0, side, side);
+            }
+          }
+        }
+        // Pieces are disjoint, so the sum never exceeds the tile but by rounding; a shortfall
+        // under half a square unit is no gap any region could be seen through.
+        if (t.area >= tile_area - 0.5) {
+          t.full = true;
+          t.pieces.clear();
+          t.pieces.shrink_to_fit();
+          t.square = {square(tx, ty)};
+        }
+      }
+    pieces_.push_back({std::move(rings)});
+    stamp_.push_back(0);
+    return id;
+  }
+
+  /// Calls visit(rings, is_square) for each piece near `box` (each once) and for the square
+  /// of each full tile `box` meets.
+  template <class Visit>
+  void gather(const bbox_i& box, Visit visit) {
+    ++query_;
+    const auto [tx0, ty0, tx1, ty1] = tile_range(box);
+    const bool point = box.x0 == box.x1 && box.y0 == box.y1;
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        const tile& t = tiles_[index(tx, ty)];
+        if (t.full) {
+          visit(t.square, true);
+          continue;
+        }
+        for (const listed& l : t.pieces) {
+          // Boxes meeting only along a line cannot overlap (unless the query is a point).
+          const bool apart =
+              point ? l.x1 < box.x0 || l.x0 > box.x1 || l.y1 < box.y0 || l.y0 > box.y1
+                    : l.x1 <= box.x0 || l.x0 >= box.x1 || l.y1 <= box.y0 || l.y0 >= box.y1;
+          if (apart || stamp_[l.id] == query_) continue;
+          stamp_[l.id] = query_;
+          visit(pieces_[l.id].rings, false);
+        }
+      }
+  }
+
+  enum class outcome { visible, hidden, unknown };
+
+  /// What the candidates near_ (pieces and full squares not separated from p) leave of p, when
+  /// areas decide it. p is cut into convex windows (itself, or its ear triangles), each
+  /// candidate clipped by them. Every overlap under min_overlap (times p's area when that is
+  /// under one square unit): p is visible (the T-junction chains of a mesh, which no single
+  /// line separates). The covered area (full squares, plus
+  /// the pieces outside them: pieces are disjoint, squares are disjoint, but a piece may reach
+  /// into a full square) within half a square unit of p's: hidden. Otherwise (a partial
+  /// overlap, or no convex windows) Clipper decides.
+  outcome overlap_outcome(const cl::Path& p) {
+    windows_.clear();
+    if (convex_ccw(p)) {
+      windows_.push_back(p);
+    } else {
+      if (!ear_triangles(p, windows_)) return outcome::unknown;
+      long long twice = 0;
+      for (const cl::Path& w : windows_)
+        twice += (w[1].X - w[0].X) * (w[2].Y - w[0].Y) - (w[1].Y - w[0].Y) * (w[2].X - w[0].X);
+      if (static_cast<double>(twice) != 2 * cl::Area(p)) return outcome::unknown;
+    }
+    const long long ox = p[0].X, oy = p[0].Y;
+    double covered = 0, largest = 0;
+    for (const candidate& c : near_) {
+      double overlap = 0, in_squares = 0;
+      for (const cl::Path& w : windows_)
+        for (const cl::Path& r : *c.rings) {
+          clip_by_convex(r, w, ox, oy, poly_, scratch_);
+          if (poly_.empty()) continue;
+          overlap += signed_area(poly_);
+          if (c.square) continue;
+          for (const candidate& q : near_)
+            if (q.square) {
+              const cl::Path& sq = (*q.rings)[0];
+              in_squares +=
+                  area_in_box(poly_, work_, scratch_, static_cast<double>(sq[0].X - ox),
+                              static_cast<double>(sq[0].Y - oy), static_cast<double>(sq[2].X - ox),
+                              static_cast<double>(sq[2].Y - oy));
+            }
+        }
+      largest = std::max(largest, overlap);
+      covered += overlap - in_squares;
+    }
+    const double area = cl::Area(p);
+    if (largest < min_overlap * std::min(1.0, area)) return outcome::visible;
+    if (covered >= area - 0.5) return outcome::hidden;
+    return outcome::unknown;
+  }
+
+  /// Overlaps under this many square units are rounding, not cover (1/10^7 pixel).
+  static constexpr double min_overlap = 1e-3;
+
+  struct candidate {
+    const cl::Paths* rings;
+    bool square;
+  };
+  std::vector<candidate> near_;
+  std::vector<cl::Path> windows_;
+  polygon_d poly_, work_, scratch_;
+  std::vector<char> corner_in_;
+
+  int nx_, ny_;
+  std::vector<tile> tiles_;
+  std::vector<piece> pieces_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t query_ = 0;
+  cl::Clipper clipper_;
+};
+
+
+tiled_coverage::tiled_coverage(long long width, long long height)
+    : impl_(std::make_unique<impl>(width, height)) {}
+tiled_coverage::~tiled_coverage() = default;
+bool tiled_coverage::hides(const cl::Path& p) const { return impl_->hides(p); }
+std::uint32_t tiled_coverage::add(cl::Path& p, std::uint32_t mesh) { return impl_->add(p, mesh); }
+const cl::Paths& tiled_coverage::rings(std::uint32_t id) const { return impl_->rings(id); }
+cl::Paths tiled_coverage::full_tiles_of(std::uint32_t mesh) const {
+  return impl_->full_tiles_of(mesh);
+}
+bool tiled_coverage::inside_full_tiles_of(const bbox_i& box, std::uint32_t mesh) const {
+  return impl_->inside_full_tiles_of(box, mesh);
+}
+cl::Paths tiled_coverage::outside(const cl::Path& line) { return impl_->outside(line); }
+bool tiled_coverage::covers(const cl::IntPoint& q) { return impl_->covers(q); }
+
+/// t_junction_mender's state. T-junctions: where a vertex of one polygon lies inside an edge of another (a BSP split
+/// point on a neighbour's edge), rounding to the grid moves it up to half a unit off that edge
+/// and opens a crack through which what is behind would show. Every vertex lying less than
+/// one unit from the inside of an edge of another polygon is inserted into that edge, so the
+/// two share the boundary exactly. Vertices are found in a grid of 2-pixel cells (each cell's
+/// distinct points, sorted, in one array: a counting sort), walking the cells along each edge;
+/// a polygon is mended only when it may be visible.
+class t_junction_mender::impl {
+ public:
+  impl(const std::vector<cl::Path>& polys, long long width, long long height)
+      : nx_(std::max<long long>(1, (width + cell - 1) / cell + 2)),
+        ny_(std::max<long long>(1, (height + cell - 1) / cell + 2)),
+        start_(static_cast<std::size_t>(nx_ * ny_) + 1, 0) {
+    for (const cl::Path& p : polys)
+      for (const cl::IntPoint& q : p) ++start_[cell_index(q.X, q.Y) + 1];
+    for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
+    points_.resize(start_.back());
+    std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
+    for (const cl::Path& p : polys)
+      for (const cl::IntPoint& q : p) points_[next[cell_index(q.X, q.Y)]++] = q;
+    // Each cell's points sorted and made distinct (shared corners appear once per polygon).
+    std::size_t out = 0;
+    for (std::size_t c = 0; c + 1 < start_.size(); ++c) {
+      const auto first = points_.begin() + static_cast<std::ptrdiff_t>(start_[c]);
+      const auto last = points_.begin() + static_cast<std::ptrdiff_t>(start_[c + 1]);
+      std::sort(first, last, [](const cl::IntPoint& a, const cl::IntPoint& b) {
+        return a.X != b.X ? a.X < b.X : a.Y < b.Y;
+      });
+      const auto end = std::unique(first, last);
+      start_[c] = out;
+      out = static_cast<std::size_t>(
+          std::copy(first, end, points_.begin() + static_cast<std::ptrdiff_t>(out)) -
+          points_.begin());
+    }
+    start_.back() = out;
+    points_.resize(out);
+  }
+
+  /// Inserts into p's edges the vertices lying less than one unit from their insides.
+  void mend(cl::Path& p) {
+    mended_.clear();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const cl::IntPoint a = p[i], b = p[(i + 1) % p.size()];
+      mended_.push_back(a);
+      const double dx = static_cast<double>(b.X - a.X), dy = static_cast<double>(b.Y - a.Y);
+      const double len2 = dx * dx + dy * dy, len = std::sqrt(len2);
+      on_edge_.clear();
+      cells_.clear();
+      // The cells met by the edge's one-unit neighbourhood: the edge in pieces of at most one
+      // cell, each piece's box grown by two units (one for the neighbourhood, one for the
+      // rounding of the piece's ends). Most edges are shorter than a cell: one to four cells.
+      const long long pieces = static_cast<long long>(len / cell) + 1;
+      for (long long s = 0; s < pieces; ++s) {
+        const double t0 = static_cast<double>(s) / static_cast<double>(pieces),
+                     t1 = static_cast<double>(s + 1) / static_cast<double>(pieces);
+        const bool whole = pieces == 1;  // most edges: the piece is the edge
+        const long long x0 = whole ? a.X : a.X + std::llround(t0 * dx),
+                        x1 = whole ? b.X : a.X + std::llround(t1 * dx);
+        const long long y0 = whole ? a.Y : a.Y + std::llround(t0 * dy),
+                        y1 = whole ? b.Y : a.Y + std::llround(t1 * dy);
+        const long long cx0 = cell_x(std::min(x0, x1) - 2), cx1 = cell_x(std::max(x0, x1) + 2);
+        const long long cy0 = cell_y(std::min(y0, y1) - 2), cy1 = cell_y(std::max(y0, y1) + 2);
+        for (long long cy = cy0; cy <= cy1; ++cy)
+          for (long long cx = cx0; cx <= cx1; ++cx)
+            cells_.push_back(static_cast<std::size_t>(cy * nx_ + cx));
+      }
+      if (pieces > 1) {
+        std::sort(cells_.begin(), cells_.end());
+        cells_.erase(std::unique(cells_.begin(), cells_.end()), cells_.end());
+      }
+      for (const std::size_t c : cells_)
+        for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) {
+          const cl::IntPoint& v = points_[k];
+          const double vx = static_cast<double>(v.X - a.X), vy = static_cast<double>(v.Y - a.Y);
+          const double along = vx * dx + vy * dy;
+          if (along <= 0 || along >= len2) continue;
+          if (std::abs(vx * dy - vy * dx) >= len) continue;  // one unit or more off the line
+          on_edge_.push_back({along, v});
+        }
+      std::sort(on_edge_.begin(), on_edge_.end(), [](const auto& x, const auto& y) {
+        return x.first != y.first
+                   ? x.first < y.first
+                   : (x.second.X != y.second.X ? x.second.X < y.second.X : x.second.Y < y.second.Y);
+      });
+      for (const auto& [along, v] : on_edge_)
+        if (!(mended_.back() == v)) mended_.push_back(v);
+    }
+    if (mended_.size() != p.size()) p.assign(mended_.begin(), mended_.end());
+  }
+
+ private:
+  static constexpr long long cell = 2 * grid_per_pixel;
+  // Cells are clamped into the grid, with one extra cell on every side for points rounded
+  // just outside the viewport: a point is always found in the cell it was filed under.
+  long long cell_x(long long v) const {
+    return std::clamp<long long>(floor_div(v, cell) + 1, 0, nx_ - 1);
+  }
+  long long cell_y(long long v) const {
+    return std::clamp<long long>(floor_div(v, cell) + 1, 0, ny_ - 1);
+  }
+  std::size_t cell_index(long long x, long long y) const {
+    return static_cast<std::size_t>(cell_y(y) * nx_ + cell_x(x));
+  }
+  static long long floor_div(long long v, long long d) {
+    return v >= 0 ? v / d : -((-v + d - 1) / d);
+  }
+
+  long long nx_, ny_;
+  std::vector<std::size_t> start_;  ///< cell c's points: points_[start_[c], start_[c + 1])
+  std::vector<cl::IntPoint> points_;
+  std::vector<std::size_t> cells_;
+  std::vector<std::pair<double, cl::IntPoint>> on_edge_;
+  cl::Path mended_;
+};
+
+
+t_junction_mender::t_junction_mender(const std::vector<cl::Path>& polys, long long width,
+                                     long long height)
+    : impl_(std::make_unique<impl>(polys, width, height)) {}
+t_junction_mender::~t_junction_mender() = default;
+void t_junction_mender::mend(cl::Path& p) { impl_->mend(p); }
+
+}  // namespace exbsp::view::cover

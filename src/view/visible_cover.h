@@ -1,0 +1,97 @@
+// The coverage behind the visible-region drawing (vector_drawing.h has the notation): the
+// polygons of a frame, snapped to the 1/100-pixel grid and taken front to back, each lose what
+// the ones before them cover. tiled_coverage keeps what is covered as disjoint visible pieces
+// in 4-pixel tiles and decides each new polygon by exact separation tests on the grid and
+// overlap areas (Sutherland–Hodgman in doubles), handing only the partly hidden ones to
+// Clipper; t_junction_mender inserts into a polygon's edges the vertices of others lying on
+// them, so that neighbours share their boundary point for point. Internal to view.
+#pragma once
+#include <polyclipping/clipper.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace exbsp::view::cover {
+
+/// A bounding box on the grid.
+struct bbox_i {
+  long long x0, y0, x1, y1;
+};
+
+/// The bounding box of a non-empty sequence of points with members X and Y.
+template <class Points>
+bbox_i bbox_of(const Points& pts) {
+  bbox_i b{pts[0].X, pts[0].Y, pts[0].X, pts[0].Y};
+  for (const auto& q : pts) {
+    b.x0 = std::min(b.x0, q.X);
+    b.y0 = std::min(b.y0, q.Y);
+    b.x1 = std::max(b.x1, q.X);
+    b.y1 = std::max(b.y1, q.Y);
+  }
+  return b;
+}
+
+/// True when the ring turns left (or goes straight) at every vertex: counter-clockwise and
+/// convex. Integer cross products, exact.
+bool convex_ccw(const ClipperLib::Path& r);
+
+/// The ring without its vertices collinear with their neighbours (exact integer test).
+ClipperLib::Path without_straight_vertices(const ClipperLib::Path& r);
+
+/// Screen coverage as disjoint pieces (each the part of a polygon that the earlier ones left
+/// visible), indexed by 4-pixel tiles (visible_cover.cpp explains the tests).
+class tiled_coverage {
+ public:
+  static constexpr std::uint32_t no_piece = ~std::uint32_t{0};
+
+  /// A viewport of width x height grid units.
+  tiled_coverage(long long width, long long height);
+  ~tiled_coverage();
+  tiled_coverage(const tiled_coverage&) = delete;
+  tiled_coverage& operator=(const tiled_coverage&) = delete;
+
+  /// True when every tile p's bounding box meets is full (p is hidden).
+  bool hides(const ClipperLib::Path& p) const;
+  /// Adds the counter-clockwise polygon p of mesh `mesh` (p is moved from when wholly
+  /// visible); returns the id of its part not covered before (a piece: rings()), or no_piece
+  /// when it is hidden.
+  std::uint32_t add(ClipperLib::Path& p, std::uint32_t mesh);
+  /// The rings of piece `id` (outer rings counter-clockwise, holes clockwise).
+  const ClipperLib::Paths& rings(std::uint32_t id) const;
+  /// Rectangles (counter-clockwise) tiling the full tiles whose pieces all belong to `mesh`:
+  /// runs along each row of tiles.
+  ClipperLib::Paths full_tiles_of(std::uint32_t mesh) const;
+  /// True when every tile the box meets is full of pieces of `mesh` only.
+  bool inside_full_tiles_of(const bbox_i& box, std::uint32_t mesh) const;
+  /// The parts of the open polyline `line` outside the coverage.
+  ClipperLib::Paths outside(const ClipperLib::Path& line);
+  /// True when the point is strictly covered (nonzero winding of the coverage).
+  bool covers(const ClipperLib::IntPoint& q);
+
+ private:
+  class impl;
+  std::unique_ptr<impl> impl_;
+};
+
+/// Inserts into polygons' edges the vertices of other polygons lying less than one grid unit
+/// from their insides (T-junctions: BSP split points on a neighbour's edge).
+class t_junction_mender {
+ public:
+  /// Indexes the vertices of `polys`, in a viewport of width x height grid units.
+  t_junction_mender(const std::vector<ClipperLib::Path>& polys, long long width,
+                    long long height);
+  ~t_junction_mender();
+  t_junction_mender(const t_junction_mender&) = delete;
+  t_junction_mender& operator=(const t_junction_mender&) = delete;
+
+  /// Inserts into p's edges the indexed vertices lying less than one unit from their insides.
+  void mend(ClipperLib::Path& p);
+
+ private:
+  class impl;
+  std::unique_ptr<impl> impl_;
+};
+
+}  // namespace exbsp::view::cover
