@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // Coverage of the visible-region drawing (notation in visible_cover.h and vector_drawing.h):
 // polygon tests on the integer grid (separation, convexity, ear triangles), overlap areas by
 // Sutherland–Hodgman in doubles, the tiled coverage of disjoint pieces, and the T-junction

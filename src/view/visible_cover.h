@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
 // The coverage behind the visible-region drawing (vector_drawing.h has the notation): the
 // polygons of a frame, snapped to the 1/100-pixel grid and taken front to back, each lose what
 // the ones before them cover. tiled_coverage keeps what is covered as disjoint visible pieces
