@@ -209,10 +209,10 @@ bool separated(const cl::Path& p, const cl::Paths& q) {
 
 }  // namespace
 
-/// tiled_coverage's state: screen coverage as the list of visible pieces so far (disjoint: each is what was left of
-/// a polygon after removing the earlier ones), indexed by square tiles. A piece is listed in
-/// every tile its bounding box meets, whole (never cut at tile lines, so no rounded point is
-/// made there); each tile sums the area of the pieces inside it, and a tile whose sum reaches
+/// tiled_coverage's state: screen coverage as the list of visible pieces so far (disjoint: each is
+/// what was left of a polygon after removing the earlier ones), indexed by square tiles. A piece is
+/// listed in every tile its bounding box meets, whole (never cut at tile lines, so no rounded point
+/// is made there); each tile sums the area of the pieces inside it, and a tile whose sum reaches
 /// its own area is full: it rejects everything behind it at once, and stands for its pieces
 /// as one square. A new polygon P is fully visible when a line through an edge separates it
 /// from every nearby piece (integer cross products: exact; shared edges of a mesh separate);
@@ -524,7 +524,6 @@ class tiled_coverage::impl {
   cl::Clipper clipper_;
 };
 
-
 tiled_coverage::tiled_coverage(long long width, long long height)
     : impl_(std::make_unique<impl>(width, height)) {}
 tiled_coverage::~tiled_coverage() = default;
@@ -540,11 +539,11 @@ bool tiled_coverage::inside_full_tiles_of(const bbox_i& box, std::uint32_t mesh)
 cl::Paths tiled_coverage::outside(const cl::Path& line) { return impl_->outside(line); }
 bool tiled_coverage::covers(const cl::IntPoint& q) { return impl_->covers(q); }
 
-/// t_junction_mender's state. T-junctions: where a vertex of one polygon lies inside an edge of another (a BSP split
-/// point on a neighbour's edge), rounding to the grid moves it up to half a unit off that edge
-/// and opens a crack through which what is behind would show. Every vertex lying less than
-/// one unit from the inside of an edge of another polygon is inserted into that edge, so the
-/// two share the boundary exactly. Vertices are found in a grid of 2-pixel cells (each cell's
+/// t_junction_mender's state. T-junctions: where a vertex of one polygon lies inside an edge of
+/// another (a BSP split point on a neighbour's edge), rounding to the grid moves it up to half a
+/// unit off that edge and opens a crack through which what is behind would show. Every vertex lying
+/// less than one unit from the inside of an edge of another polygon is inserted into that edge, so
+/// the two share the boundary exactly. Vertices are found in a grid of 2-pixel cells (each cell's
 /// distinct points, sorted, in one array: a counting sort), walking the cells along each edge;
 /// a polygon is mended only when it may be visible.
 class t_junction_mender::impl {
@@ -654,7 +653,6 @@ class t_junction_mender::impl {
   std::vector<std::pair<double, cl::IntPoint>> on_edge_;
   cl::Path mended_;
 };
-
 
 t_junction_mender::t_junction_mender(const std::vector<cl::Path>& polys, long long width,
                                      long long height)
