@@ -47,6 +47,7 @@
 #include "view/svg_writer.h"
 #include "view/vector_drawing.h"
 #include "view/vector_pdf.h"
+#include "view/visible_cover.h"
 #include "support/test_helpers.h"
 
 #include "support/osmesa_zbuffer.h"
@@ -490,6 +491,41 @@ TEST(VisibleRegions, OfARealMeshMatchThePngAndTheirUnderlayCoversExactlyThem) {
   }
   EXPECT_GT(covered, 15000u);
   EXPECT_EQ(differ, 0u) << "of " << covered << " covered pixel centres";
+}
+
+TEST(VisibleRegions, PiecesSharingEdgesUniteByTheirBoundary) {
+  using ClipperLib::Path;
+  using ClipperLib::Paths;
+  // Four unit squares of a 2 x 2 block, each as two triangles: one square ring of 4 corners.
+  std::vector<Path> pieces;
+  for (long long x = 0; x < 2; ++x)
+    for (long long y = 0; y < 2; ++y) {
+      pieces.push_back({{x, y}, {x + 1, y}, {x + 1, y + 1}});
+      pieces.push_back({{x, y}, {x + 1, y + 1}, {x, y + 1}});
+    }
+  std::vector<const Path*> rings;
+  for (const Path& p : pieces) rings.push_back(&p);
+  Paths out;
+  ASSERT_TRUE(cover::union_by_shared_edges(rings, out));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].size(), 4u);
+  EXPECT_DOUBLE_EQ(ClipperLib::Area(out[0]), 4.0);
+  // A ring of eight around a hole: an outline and a clockwise hole.
+  pieces.clear();
+  for (long long x = 0; x < 3; ++x)
+    for (long long y = 0; y < 3; ++y)
+      if (x != 1 || y != 1) pieces.push_back({{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}});
+  rings.clear();
+  for (const Path& p : pieces) rings.push_back(&p);
+  ASSERT_TRUE(cover::union_by_shared_edges(rings, out));
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_DOUBLE_EQ(ClipperLib::Area(out[0]) + ClipperLib::Area(out[1]), 8.0);
+  // Touching at a corner only, or along edges that do not match point for point: refused.
+  // (Rings that share no edge are returned as they are: disjoint, they are their union.)
+  const Path a{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, b{{1, 1}, {2, 1}, {2, 2}, {1, 2}};
+  EXPECT_FALSE(cover::union_by_shared_edges({&a, &b}, out));
+  const Path left{{0, 0}, {1, 0}, {1, 1}, {1, 2}, {0, 2}}, right{{1, 0}, {2, 0}, {2, 2}, {1, 2}};
+  EXPECT_FALSE(cover::union_by_shared_edges({&left, &right}, out));  // (1, 1) on one side only
 }
 
 // ---- edges ------------------------------------------------------------------------------

@@ -305,15 +305,26 @@ vector_drawing visible_drawing(const frame& f) {
   regions.reserve(face_ids.size());
   cl::Clipper clipper;
   cl::Paths merged;
+  std::vector<const cl::Path*> convex_rings;
   for (std::uint32_t face : face_ids) {
     face_accumulator& acc = faces[face];
     merged.clear();
     const cl::Paths& first = coverage.rings(acc.pieces[0]);
-    if (acc.pieces.size() == 1 && first.size() == 1 && convex_ccw(first[0])) {
-      // One convex piece (most faces): its own union, but for the straight vertices Clipper
-      // would drop.
+    // Convex pieces (most faces: the fragments of a face seen whole) meet along edges they
+    // share exactly, mended: their union is their boundary. Otherwise Clipper's union.
+    convex_rings.clear();
+    for (const std::uint32_t piece : acc.pieces) {
+      const cl::Paths& rs = coverage.rings(piece);
+      if (rs.size() != 1 || !convex_ccw(rs[0])) {
+        convex_rings.clear();
+        break;
+      }
+      convex_rings.push_back(&rs[0]);
+    }
+    if (acc.pieces.size() == 1 && !convex_rings.empty()) {
       merged.push_back(without_straight_vertices(first[0]));
-    } else {
+    } else if (convex_rings.empty() || !cover::union_by_shared_edges(convex_rings, merged)) {
+      merged.clear();
       clipper.Clear();
       for (const std::uint32_t piece : acc.pieces)
         clipper.AddPaths(coverage.rings(piece), cl::ptSubject, true);

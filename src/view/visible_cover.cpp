@@ -62,6 +62,69 @@ cl::Path without_straight_vertices(const cl::Path& r) {
   return out;
 }
 
+bool union_by_shared_edges(const std::vector<const cl::Path*>& rings, cl::Paths& out) {
+  struct edge {
+    cl::IntPoint a, b;
+  };
+  auto less = [](const cl::IntPoint& p, const cl::IntPoint& q) {
+    return p.X != q.X ? p.X < q.X : p.Y < q.Y;
+  };
+  auto edge_less = [&](const edge& e, const edge& f) {
+    return less(e.a, f.a) || (e.a == f.a && less(e.b, f.b));
+  };
+  std::vector<edge> edges;
+  long long twice = 0;
+  for (const cl::Path* r : rings)
+    for (std::size_t i = 0; i < r->size(); ++i) {
+      const cl::IntPoint& a = (*r)[i];
+      const cl::IntPoint& b = (*r)[(i + 1) % r->size()];
+      if (!(a == b)) edges.push_back({a, b});
+      twice += a.X * b.Y - b.X * a.Y;
+    }
+  std::sort(edges.begin(), edges.end(), edge_less);
+  // Cancel each edge against its reverse (sorted order: deterministic on every machine).
+  std::vector<char> gone(edges.size(), 0);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (gone[i]) continue;
+    const edge rev{edges[i].b, edges[i].a};
+    auto it = std::lower_bound(edges.begin(), edges.end(), rev, edge_less);
+    for (; it != edges.end() && it->a == rev.a && it->b == rev.b; ++it) {
+      const auto k = static_cast<std::size_t>(it - edges.begin());
+      if (!gone[k]) {
+        gone[i] = gone[k] = 1;
+        break;
+      }
+    }
+  }
+  std::vector<edge> left;
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    if (!gone[i]) left.push_back(edges[i]);
+  // Each start point must have exactly one edge left (sorted by start: neighbours).
+  for (std::size_t i = 1; i < left.size(); ++i)
+    if (left[i].a == left[i - 1].a) return false;
+  out.clear();
+  std::vector<char> used(left.size(), 0);
+  long long twice_out = 0;
+  for (std::size_t s = 0; s < left.size(); ++s) {
+    if (used[s]) continue;
+    cl::Path ring;
+    std::size_t k = s;
+    while (!used[k]) {
+      used[k] = 1;
+      ring.push_back(left[k].a);
+      twice_out += left[k].a.X * left[k].b.Y - left[k].b.X * left[k].a.Y;
+      const edge key{left[k].b, {}};
+      auto it = std::lower_bound(left.begin(), left.end(), key,
+                                 [&](const edge& e, const edge& f) { return less(e.a, f.a); });
+      if (it == left.end() || !(it->a == left[k].b)) return false;  // an open chain
+      k = static_cast<std::size_t>(it - left.begin());
+    }
+    if (k != s) return false;  // joined a chain that started elsewhere
+    out.push_back(without_straight_vertices(ring));
+  }
+  return twice_out == twice;
+}
+
 namespace {
 
 /// Polygons in doubles, relative to an origin on the grid, for overlap areas: Sutherland–
