@@ -279,8 +279,10 @@ bool separated(const cl::Path& p, const cl::Paths& q) {
 /// its own area is full: it rejects everything behind it at once, and stands for its pieces
 /// as one square. A new polygon P is fully visible when a line through an edge separates it
 /// from every nearby piece (integer cross products: exact; shared edges of a mesh separate);
-/// only otherwise does Clipper subtract the pieces it may overlap. Nonzero fill with every
-/// outer ring counter-clockwise (holes clockwise) makes a list of pieces mean their union.
+/// the pieces it is not separated from are then weighed by overlap area (overlap_outcome:
+/// none, visible; all of P, hidden), and only a partly hidden P goes to Clipper, with those
+/// pieces. Nonzero fill with every outer ring counter-clockwise (holes clockwise) makes a list
+/// of pieces mean their union.
 class tiled_coverage::impl {
  public:
   static constexpr long long tile_side = 4 * grid_per_pixel;
