@@ -700,22 +700,6 @@ INSTANTIATE_TEST_SUITE_P(, HiddenLinesViews, ::testing::ValuesIn(all_view_cases(
 
 // ---- fills against edges -----------------------------------------------------------------------
 
-/// Nonzero winding number of a path's rings at grid point g.
-int winding_at(const vector_path& p, const std::array<double, 2>& g) {
-  int w = 0;
-  for (const auto& r : p.rings)
-    for (std::size_t k = 0; k < r.size(); ++k) {
-      const grid_point& a = r[k];
-      const grid_point& b = r[(k + 1) % r.size()];
-      const double ay = static_cast<double>(a.y), by = static_cast<double>(b.y);
-      if ((ay <= g[1]) == (by <= g[1])) continue;
-      const double x =
-          static_cast<double>(a.x) + (g[1] - ay) / (by - ay) * static_cast<double>(b.x - a.x);
-      if (x > g[0]) w += by > ay ? 1 : -1;
-    }
-  return w;
-}
-
 struct fill_check {
   std::size_t checked = 0, wrong = 0;
   std::string first;
@@ -803,7 +787,8 @@ fill_check check_fills(const frame& f, const vector_drawing& d) {
         for (const side_of_face& sf : sides) {
           const bool want = sf.side == side && (sf.front || boundary);
           const auto it = region_of.find(sf.face);
-          const bool covered = it != region_of.end() && winding_at(*it->second, q) != 0;
+          const bool covered = it != region_of.end() &&
+                               exbsp_test::winding_number(it->second->rings, q[0], q[1]) != 0;
           if (covered != want) {
             ++out.wrong;
             if (out.first.empty()) {

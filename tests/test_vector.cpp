@@ -120,20 +120,9 @@ using exbsp_test::perspective_frame;
 
 // ---- the region oracle -------------------------------------------------------------------
 
-/// Nonzero winding number of the rings at grid point (x, y) (crossing count, half-open rule).
+/// Nonzero winding number of the rings at grid point (x, y) (test_helpers.h).
 int winding(const std::vector<std::vector<grid_point>>& rings, double x, double y) {
-  int w = 0;
-  for (const auto& r : rings)
-    for (std::size_t k = 0; k < r.size(); ++k) {
-      const grid_point& a = r[k];
-      const grid_point& b = r[(k + 1) % r.size()];
-      const double ay = static_cast<double>(a.y), by = static_cast<double>(b.y);
-      if ((ay <= y) == (by <= y)) continue;
-      const double t = (y - ay) / (by - ay);
-      const double xi = static_cast<double>(a.x) + t * static_cast<double>(b.x - a.x);
-      if (xi > x) w += by > ay ? 1 : -1;
-    }
-  return w;
+  return exbsp_test::winding_number(rings, x, y);
 }
 
 struct sampled {

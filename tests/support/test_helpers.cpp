@@ -135,4 +135,20 @@ bool corpus_required() {
   return v && std::string(v) == "1";
 }
 
+int winding_number(const std::vector<std::vector<exbsp::view::grid_point>>& rings, double x,
+                   double y) {
+  int w = 0;
+  for (const auto& r : rings)
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      const exbsp::view::grid_point& a = r[k];
+      const exbsp::view::grid_point& b = r[(k + 1) % r.size()];
+      const double ay = static_cast<double>(a.y), by = static_cast<double>(b.y);
+      if ((ay <= y) == (by <= y)) continue;
+      const double t = (y - ay) / (by - ay);
+      const double xi = static_cast<double>(a.x) + t * static_cast<double>(b.x - a.x);
+      if (xi > x) w += by > ay ? 1 : -1;
+    }
+  return w;
+}
+
 }  // namespace exbsp_test

@@ -124,6 +124,13 @@ inline double dist(const std::array<double, 3>& a, const std::array<double, 3>& 
   return norm(sub(a, b));
 }
 
+// --- vector drawings ---------------------------------------------------------------------------
+
+/// Nonzero winding number of `rings` (grid points of a vector drawing) at grid point (x, y):
+/// crossings of the horizontal ray to the right, half-open in y.
+int winding_number(const std::vector<std::vector<exbsp::view::grid_point>>& rings, double x,
+                   double y);
+
 // --- the CGAL corpus ---------------------------------------------------------------------------
 
 /// data/meshes/ of the source tree (with a trailing slash).
