@@ -49,7 +49,7 @@ endforeach()
 install(TARGETS exbsp RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # exbspConfig.cmake re-finds the libraries the requested components link (GMP and MPFR; for
-# the static render library also libpng, cairo and Clipper) with the same lookup files exbsp's
+# the static render library also libpng, cairo and Clipper; for the static gpl library dxflib) with the same lookup files exbsp's
 # build used, so the exported link interface names imported targets (exbsp::gmp, ...) and
 # never this machine's absolute paths.
 set(EXBSP_PACKAGE_STATIC ON)
@@ -60,6 +60,6 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/exbspConfig.cmake.in
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/exbspConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/exbspConfig.cmake ${PROJECT_BINARY_DIR}/exbspConfigVersion.cmake
-  ${PROJECT_SOURCE_DIR}/cmake/gmp.cmake ${PROJECT_SOURCE_DIR}/cmake/cairo.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/gmp.cmake ${PROJECT_SOURCE_DIR}/cmake/cairo.cmake ${PROJECT_SOURCE_DIR}/cmake/dxflib.cmake
   ${PROJECT_SOURCE_DIR}/cmake/polyclipping.cmake ${PROJECT_SOURCE_DIR}/cmake/imported_dependency.cmake
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/exbsp)

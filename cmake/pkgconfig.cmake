@@ -2,7 +2,7 @@
 # pkg-config modules, one per library component, installed into <libdir>/pkgconfig:
 #   exbsp-core    -lexbsp_core    Requires gmpxx; private: gmp, mpfr, the OpenMP flags
 #   exbsp-render  -lexbsp_render  Requires exbsp-core; private: libpng, cairo, polyclipping
-#   exbsp-gpl     -lexbsp_gpl     Requires exbsp-core (GPL-3.0-or-later, docs/licence.md)
+#   exbsp-gpl     -lexbsp_gpl     Requires exbsp-core; private: dxflib (GPL-3.0-or-later, docs/licence.md)
 # `pkg-config --cflags --libs exbsp-core` links the shared library; with EXBSP_BUILD_SHARED=OFF
 # use `pkg-config --static` for the private dependencies. Checked by tests/check_pkgconfig.sh.
 if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}" OR IS_ABSOLUTE "${CMAKE_INSTALL_INCLUDEDIR}")
@@ -23,9 +23,9 @@ set(EXBSP_PC_render_DESCRIPTION "exbsp render: viewing pipeline, raster, PNG/SVG
 set(EXBSP_PC_render_REQUIRES "exbsp-core")
 set(EXBSP_PC_render_REQUIRES_PRIVATE "libpng cairo polyclipping")
 set(EXBSP_PC_render_LIBS_PRIVATE "")
-set(EXBSP_PC_gpl_DESCRIPTION "exbsp gpl: section caps and 3D convex hulls (GPL-3.0-or-later)")
+set(EXBSP_PC_gpl_DESCRIPTION "exbsp gpl: section caps, 3D convex hulls and the DXF writer (GPL-3.0-or-later)")
 set(EXBSP_PC_gpl_REQUIRES "exbsp-core")
-set(EXBSP_PC_gpl_REQUIRES_PRIVATE "gmp mpfr")
+set(EXBSP_PC_gpl_REQUIRES_PRIVATE "gmp mpfr dxflib")
 set(EXBSP_PC_gpl_LIBS_PRIVATE "")
 foreach(component ${EXBSP_COMPONENTS})
   set(EXBSP_PC_COMPONENT ${component})

@@ -35,6 +35,7 @@
 #include "mesh/gmp_memory.h"
 #include "mesh/mesh_io.h"
 #include "scene/clip_input.h"
+#include "scene/drawing_command.h"
 #include "scene/mesh_scene.h"
 #include "scene/render.h"
 
@@ -432,6 +433,102 @@ int run_render(const render_cli& r) {
   return 0;
 }
 
+/// `exbsp drawing` options (strings parsed by the drawing library, which names the flag).
+struct drawing_cli {
+  std::string input, output, views = "front,top,left,iso", projection = "first-angle";
+  std::string sheet = "A3", scale = "auto", units = "mm", line_widths, title, number, date;
+  std::string formats = "pdf", kernel;
+  std::vector<std::string> sections;
+  bool lines_only = false, force = false, strict = false, quiet = false;
+  double crease_deg = 30;
+};
+
+/// `exbsp drawing`: a sheet of a mesh or scene, or a drawing set of a folder.
+int run_drawing(const drawing_cli& d) {
+  namespace dr = exbsp::drawing;
+  exbsp::scene::drawing_request request;
+  request.input = d.input;
+  request.output = d.output;
+  request.force = d.force;
+  request.strict = d.strict;
+  request.formats.clear();
+  {
+    std::string f;
+    for (char c : d.formats + ",") {
+      if (c != ',') {
+        f += c;
+        continue;
+      }
+      request.formats.push_back(f);
+      f.clear();
+    }
+  }
+  dr::drawing_options& o = request.options;
+  o.views = d.views.empty() ? std::vector<std::string>{} : dr::parse_views(d.views);
+  o.projection = dr::parse_projection(d.projection);
+  o.sheet = dr::parse_paper(d.sheet);
+  if (d.scale != "auto") o.scale = dr::parse_scale(d.scale);
+  dr::unit_mm(d.units);
+  o.units = d.units;
+  for (const std::string& s : d.sections) {
+    o.sections.push_back(dr::parse_section(s));
+    for (std::size_t i = 0; i + 1 < o.sections.size(); ++i)
+      if (o.sections[i].letter == o.sections.back().letter)
+        throw exbsp::usage_error("--section: letter " + o.sections.back().letter +
+                                 " is used twice");
+  }
+  o.lines_only = d.lines_only;
+  o.title = d.title;
+  o.number = d.number;
+  o.date = d.date;
+  o.crease_deg = d.crease_deg;
+  if (!(d.crease_deg > 0 && d.crease_deg <= 180))
+    throw exbsp::usage_error("--crease-deg: must be in (0, 180]");
+  if (!d.line_widths.empty()) {
+    const auto comma = d.line_widths.find(',');
+    char* end = nullptr;
+    const std::string a = d.line_widths.substr(0, comma);
+    const std::string b = comma == std::string::npos ? "" : d.line_widths.substr(comma + 1);
+    o.visible_width = std::strtod(a.c_str(), &end);
+    const bool ok_a = !a.empty() && *end == 0;
+    o.hidden_width = std::strtod(b.c_str(), &end);
+    const bool ok_b = !b.empty() && *end == 0;
+    if (!ok_a || !ok_b || !(o.visible_width > 0 && o.visible_width <= 5) ||
+        !(o.hidden_width > 0 && o.hidden_width <= 5))
+      throw exbsp::usage_error(
+          "--line-widths: expected VISIBLE,HIDDEN in mm (each in (0, 5]), "
+          "e.g. 0.35,0.18; got '" +
+          d.line_widths + "'");
+  }
+  if (!d.kernel.empty()) o.build.kernel = exbsp::parse_kernel(d.kernel);
+  o.build.max_fragments = default_fragment_budget(o.build.kernel);
+  progress_line progress;
+  if (d.quiet) progress.tty = false;
+  o.build.progress = [&progress](const exbsp::build_progress& p) { progress(p); };
+  std::ostringstream quiet_log;
+  exbsp::scene::drawing_summary summary;
+  try {
+    summary = exbsp::scene::drawing_command(
+        request, d.quiet ? static_cast<std::ostream&>(quiet_log) : std::cerr);
+  } catch (...) {
+    progress.finish();
+    throw;
+  }
+  progress.finish();
+  if (!d.quiet) {
+    char times[48];
+    std::snprintf(times, sizeof times, "%.2f s", summary.seconds);
+    std::cerr << "exbsp: wrote " << summary.written.size() << " file"
+              << (summary.written.size() == 1 ? "" : "s")
+              << (summary.written.size() == 1 ? " (" + summary.written[0] + ")" : std::string())
+              << (summary.skipped.empty()
+                      ? std::string()
+                      : ", kept " + std::to_string(summary.skipped.size()) + " finished before")
+              << ", " << summary.triangles << " triangles, " << times << "\n";
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -562,6 +659,55 @@ int main(int argc, char** argv) {
   clip->add_flag("-v,--verbose", clip_verbose,
                  "print each segment endpoint's Cohen-Sutherland outcode");
 
+  drawing_cli dc;
+  auto* drawing = app.add_subcommand("drawing",
+                                     "a drawing sheet (ISO views, sections, title block) of a "
+                                     "mesh, a scene or a folder of meshes, "
+                                     "as SVG, PDF or DXF");
+  drawing
+      ->add_option("INPUT", dc.input,
+                   "mesh (.off, .obj, .ply, .stl), scene (.json: its meshes as one part) or a "
+                   "folder (one sheet per mesh)")
+      ->required();
+  drawing
+      ->add_option("-o,--output", dc.output,
+                   "OUT.svg, OUT.pdf or OUT.dxf; for a folder input, an output folder")
+      ->required()
+      ->check(non_empty_path);
+  drawing
+      ->add_option("--views", dc.views,
+                   "views: front, top, left, right, bottom, rear, iso (comma-separated)")
+      ->capture_default_str();
+  drawing->add_option("--projection", dc.projection, "first-angle (ISO E) or third-angle (ISO A)")
+      ->capture_default_str();
+  drawing->add_option("--sheet", dc.sheet, "A4, A3, A2, A1, A0 (landscape) or WxH in mm")
+      ->capture_default_str();
+  drawing
+      ->add_option("--scale", dc.scale, "1:N, N:1, or auto (the largest ISO 5455 scale that fits)")
+      ->capture_default_str();
+  drawing->add_option("--units", dc.units, "model units: mm, cm, m or in")->capture_default_str();
+  drawing->add_option("--section", dc.sections,
+                      "X=a,b,c,d: section view X-X, the cut by a*x+b*y+c*z+d = 0 seen from the "
+                      "removed side (repeatable)");
+  drawing->add_flag("--lines-only", dc.lines_only, "no shaded fills: the classic line drawing");
+  drawing->add_option("--title", dc.title, "title block: title (default: the file name)");
+  drawing->add_option("--number", dc.number, "title block: drawing number");
+  drawing->add_option("--date", dc.date,
+                      "title block: date of issue (default: today, or SOURCE_DATE_EPOCH)");
+  drawing->add_option("--line-widths", dc.line_widths,
+                      "VISIBLE,HIDDEN line widths in mm (default 0.5,0.25)");
+  drawing->add_option("--crease-deg", dc.crease_deg, "feature edges: dihedral angle over this")
+      ->capture_default_str();
+  drawing
+      ->add_option("--formats", dc.formats,
+                   "folder input: the files of each sheet, e.g. pdf,svg,dxf")
+      ->capture_default_str();
+  drawing->add_flag("--force", dc.force, "folder input: redo sheets that are already finished");
+  drawing->add_option("--kernel", dc.kernel, "BSP kernel (default exact)")
+      ->check(CLI::IsMember(exbsp::kernel_names()));
+  drawing->add_flag("--strict", dc.strict, "unknown scene keys are errors (exit 2), not warnings");
+  drawing->add_flag("-q,--quiet", dc.quiet, "no progress lines and no summary line");
+
   {
     std::vector<std::string> args(argv + 1, argv + argc);
     const std::string typo = exbsp::cli::misspelling(app, args);
@@ -586,8 +732,9 @@ int main(int argc, char** argv) {
   }
 
   if (app.get_subcommands().empty()) {
-    std::cerr << "exbsp: error: a command is required: build, order, render, section or clip\n"
-              << "run 'exbsp --help' for usage\n";
+    std::cerr
+        << "exbsp: error: a command is required: build, order, render, section, clip or drawing\n"
+        << "run 'exbsp --help' for usage\n";
     return 2;
   }
   try {
@@ -608,9 +755,10 @@ int main(int argc, char** argv) {
     if (*render) {
       return finish_standard_output(run_render(r));
     }
+    if (*drawing) return run_drawing(dc);
   } catch (const exbsp::limit_error& e) {
     std::cerr << "exbsp: error: " << e.what() << "\n";
-    if (*build || *order || *render)
+    if (*build || *order || *render || *drawing)
       std::cerr << "exbsp: the limit is --max-fragments (default: from the available memory); "
                    "raise it with "
                    "--max-fragments N, or 0 for no limit\n";

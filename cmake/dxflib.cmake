@@ -1,0 +1,23 @@
+# SPDX-License-Identifier: LGPL-3.0-or-later
+# dxflib (RibbonSoft; Debian 12: libdxflib-dev, GPL-2.0-or-later): the DXF writer of
+# `exbsp drawing` (src/drawing/sheet_dxf.cpp), part of the GPL component exbsp::gpl
+# (docs/licence.md). dxflib ships a pkg-config file and no CMake package, so pkg-config finds
+# it (find_path/find_library as a fallback).
+#
+# Defines the imported target exbsp::dxflib. Installed with the package and included by
+# exbspConfig.cmake (the static libexbsp_gpl.a needs it at link time); in a consumer's
+# find_package(exbsp) a missing dxflib sets exbsp_FOUND to FALSE instead of failing.
+if(TARGET exbsp::dxflib)
+  return()
+endif()
+include(${CMAKE_CURRENT_LIST_DIR}/imported_dependency.cmake)
+find_package(PkgConfig QUIET)
+if(PKG_CONFIG_FOUND)
+  pkg_check_modules(EXBSP_PC_DXFLIB QUIET dxflib)
+endif()
+find_path(EXBSP_DXFLIB_INCLUDE_DIR dxflib/dl_dxf.h HINTS ${EXBSP_PC_DXFLIB_INCLUDEDIR}/..)
+find_library(EXBSP_DXFLIB_LIBRARY NAMES dxflib HINTS ${EXBSP_PC_DXFLIB_LIBRARY_DIRS})
+if(NOT EXBSP_DXFLIB_INCLUDE_DIR OR NOT EXBSP_DXFLIB_LIBRARY)
+  exbsp_missing_dependency("dxflib (dxflib/dl_dxf.h, libdxflib) not found: apt-get install libdxflib-dev (exbsp's scripts/setup does)")
+endif()
+exbsp_imported_library(exbsp::dxflib "${EXBSP_DXFLIB_LIBRARY}" "${EXBSP_DXFLIB_INCLUDE_DIR}")

@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// `exbsp drawing` (notation in drawing_command.h).
+#include "scene/drawing_command.h"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+
+#include "clip/section_cap.h"
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "core/file_name.h"
+#include "drawing/sheet_dxf.h"
+#include "drawing/sheet_writers.h"
+#include "mesh/mesh_io.h"
+#include "scene/scene.h"
+
+namespace exbsp::scene {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const mesh_extensions[] = {".off", ".obj", ".ply", ".stl"};
+
+bool is_mesh_file(const std::string& path) {
+  for (const char* e : mesh_extensions)
+    if (has_extension(path, e)) return true;
+  return false;
+}
+
+/// The format of an output file name, or "" when it has none of ours.
+std::string format_of(const std::string& path) {
+  for (const char* f : {"svg", "pdf", "dxf"})
+    if (has_extension(path, std::string(".") + f)) return f;
+  return "";
+}
+
+/// The cut of `part` by one section (exact, with its cap) as the drawing needs it.
+drawing::section_cut cut_of(const triangle_soup& part, const drawing::section_spec& spec) {
+  section_options opt;
+  opt.exact_text = false;
+  const section_result r = section_with_cap(part, spec.plane, opt);
+  drawing::section_cut c;
+  c.spec = spec;
+  c.cap_face = r.cap_face;
+  c.solid.face_count = part.face_count + 1;
+  c.solid.source = part.source;
+  c.solid.vertices.reserve(r.points.size());
+  for (const section_point& p : r.points) c.solid.vertices.push_back(p.v);
+  for (const section_triangle& t : r.kept) c.solid.triangles.push_back({t.p, t.face});
+  for (const section_triangle& t : r.cap) c.solid.triangles.push_back({t.p, t.face});
+  for (const section_chain& ch : r.outline) {
+    if (!ch.closed) continue;
+    std::vector<std::array<double, 3>> loop;
+    for (std::uint32_t i : ch.p) loop.push_back(r.points[i].v);
+    c.loops.push_back(std::move(loop));
+  }
+  if (r.cap.empty())
+    throw usage_error("--section " + spec.letter + ": the plane does not cut a closed part of the "
+                      "mesh (no cut face to hatch)");
+  return c;
+}
+
+/// Modification time of a file (0 when it does not exist).
+long long mtime_ns(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return 0;
+  return static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
+}
+
+}  // namespace
+
+drawing::sheet make_drawing_sheet(const std::string& input, const drawing::drawing_options& options,
+                                  bool strict, std::ostream* log, std::size_t* triangles) {
+  triangle_soup part;
+  std::string name = fs::path(input).filename().string();
+  if (has_extension(input, ".json")) {
+    const scene s = load_scene(input, log, strict);
+    part = load_geometry(s).soup;
+  } else {
+    part = read_mesh(input);
+  }
+  if (triangles) *triangles = part.triangles.size();
+  std::vector<drawing::section_cut> cuts;
+  for (const drawing::section_spec& spec : options.sections) {
+    if (log) *log << "exbsp: section " << spec.letter << ": cutting " << name << "\n";
+    cuts.push_back(cut_of(part, spec));
+  }
+  const auto progress = [log](const std::string& m) {
+    if (log) *log << "exbsp: " << m << "\n";
+  };
+  return drawing::make_sheet(part, name, cuts, options, progress);
+}
+
+std::string drawing_bytes(const drawing::sheet& sheet, const std::string& format,
+                          const drawing::drawing_options& options) {
+  if (format == "svg") return drawing::sheet_svg(sheet);
+  if (format == "pdf")
+    return drawing::sheet_pdf(sheet, options.date.empty() ? drawing::today_date() : options.date);
+  if (format == "dxf") return drawing::sheet_dxf(sheet);
+  throw usage_error("drawing: unknown output format '" + format + "' (expected svg, pdf or dxf)");
+}
+
+drawing_summary drawing_command(const drawing_request& request, std::ostream& log) {
+  const auto t0 = std::chrono::steady_clock::now();
+  drawing_summary summary;
+  drawing::drawing_options options = request.options;
+  if (options.date.empty()) options.date = drawing::today_date();  // one date for every file
+  std::error_code ec;
+  if (fs::is_directory(request.input, ec)) {
+    if (request.formats.empty()) throw usage_error("--formats: at least one of svg, pdf, dxf");
+    for (const std::string& f : request.formats)
+      if (f != "svg" && f != "pdf" && f != "dxf")
+        throw usage_error("--formats: unknown format '" + f + "' (expected svg, pdf or dxf)");
+    if (!format_of(request.output).empty())
+      throw usage_error("-o: a folder input makes one sheet per mesh: give an output folder, not " +
+                        request.output);
+    std::vector<std::string> meshes;
+    for (const auto& e : fs::directory_iterator(request.input, ec))
+      if (e.is_regular_file() && is_mesh_file(e.path().string())) meshes.push_back(e.path().string());
+    if (ec) throw input_error(request.input, 0, "cannot list the folder: " + ec.message());
+    std::sort(meshes.begin(), meshes.end());
+    if (meshes.empty())
+      throw input_error(request.input, 0, "no mesh file (.off, .obj, .ply, .stl) in the folder");
+    fs::create_directories(request.output, ec);
+    if (ec) throw output_error(request.output, "cannot make the output folder: " + ec.message());
+    std::size_t k = 0;
+    for (const std::string& mesh : meshes) {
+      ++k;
+      const std::string stem = fs::path(mesh).stem().string();
+      std::vector<std::string> todo;
+      for (const std::string& f : request.formats) {
+        const std::string out = (fs::path(request.output) / (stem + "." + f)).string();
+        if (!request.force && mtime_ns(out) > 0 && mtime_ns(out) >= mtime_ns(mesh))
+          summary.skipped.push_back(out);
+        else
+          todo.push_back(f);
+      }
+      log << "exbsp: sheet " << k << "/" << meshes.size() << ": " << stem
+          << (todo.empty() ? " (done before; skipped)" : "") << "\n";
+      if (todo.empty()) continue;
+      drawing::drawing_options o = options;
+      if (o.title.empty()) o.title = stem;
+      std::size_t tris = 0;
+      const drawing::sheet s = make_drawing_sheet(mesh, o, request.strict, nullptr, &tris);
+      summary.triangles += tris;
+      for (const std::string& f : todo) {
+        const std::string out = (fs::path(request.output) / (stem + "." + f)).string();
+        write_file_atomically(out, drawing_bytes(s, f, o));
+        summary.written.push_back(out);
+      }
+    }
+  } else {
+    const std::string format = format_of(request.output);
+    if (format.empty())
+      throw usage_error("-o: the output must end in .svg, .pdf or .dxf (a folder only for a "
+                        "folder input), got '" + request.output + "'");
+    if (!has_extension(request.input, ".json") && !is_mesh_file(request.input))
+      throw usage_error("drawing: the input must be a mesh (.off, .obj, .ply, .stl), a scene "
+                        "(.json) or a folder, got '" + request.input + "'");
+    const drawing::sheet s =
+        make_drawing_sheet(request.input, options, request.strict, &log, &summary.triangles);
+    write_file_atomically(request.output, drawing_bytes(s, format, options));
+    summary.written.push_back(request.output);
+  }
+  summary.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return summary;
+}
+
+}  // namespace exbsp::scene
