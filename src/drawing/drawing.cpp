@@ -52,16 +52,16 @@ struct view_spec {
 
 // The principal views and their cells (notation in drawing.h).
 constexpr view_spec principal[] = {
-    {"front", {0, -1, 0}, {0, 0, 1}, 0, 0, 0, 0},   {"top", {0, 0, 1}, {0, 1, 0}, 0, 1, 0, -1},
-    {"left", {-1, 0, 0}, {0, 0, 1}, 1, 0, -1, 0},   {"right", {1, 0, 0}, {0, 0, 1}, -1, 0, 1, 0},
+    {"front", {0, -1, 0}, {0, 0, 1}, 0, 0, 0, 0},    {"top", {0, 0, 1}, {0, 1, 0}, 0, 1, 0, -1},
+    {"left", {-1, 0, 0}, {0, 0, 1}, 1, 0, -1, 0},    {"right", {1, 0, 0}, {0, 0, 1}, -1, 0, 1, 0},
     {"bottom", {0, 0, -1}, {0, -1, 0}, 0, -1, 0, 1}, {"rear", {0, 1, 0}, {0, 0, 1}, 2, 0, 2, 0},
 };
 
 /// The cells tried, in order, for the iso view and the sections.
-constexpr int free_cells[][2] = {{1, -1}, {1, 1}, {-1, -1}, {-1, 1}, {2, -1}, {2, 1}, {0, -1},
-                                 {0, 1},  {-1, 0}, {1, 0},  {2, 0},  {3, 0},  {3, -1}, {3, 1},
-                                 {-1, 2}, {0, 2},  {1, 2},  {2, 2},  {3, 2},  {-1, -2}, {0, -2},
-                                 {1, -2}, {2, -2}, {3, -2}};
+constexpr int free_cells[][2] = {{1, -1}, {1, 1},   {-1, -1}, {-1, 1}, {2, -1}, {2, 1},
+                                 {0, -1}, {0, 1},   {-1, 0},  {1, 0},  {2, 0},  {3, 0},
+                                 {3, -1}, {3, 1},   {-1, 2},  {0, 2},  {1, 2},  {2, 2},
+                                 {3, 2},  {-1, -2}, {0, -2},  {1, -2}, {2, -2}, {3, -2}};
 
 /// One view to draw.
 struct planned_view {
@@ -169,7 +169,9 @@ class sheet_builder {
     const double half = len * std::tan(7.5 * 3.14159265358979323846 / 180);
     const point2 base{tip.x - dx * len, tip.y - dy * len};
     fill(layer, {0, 0, 0},
-         {{tip, {base.x - dy * half, base.y + dx * half}, {base.x + dy * half, base.y - dx * half}}});
+         {{tip,
+           {base.x - dy * half, base.y + dx * half},
+           {base.x + dy * half, base.y - dx * half}}});
   }
 
   /// The ISO 5456-2 symbol in the box [x0, x0 + w] x [y0, y0 + h] (centred), first- or
@@ -184,7 +186,10 @@ class sheet_builder {
     const double cone_x0 = first ? x_left : x_left + 2 * r2 + gap;
     const double circle_cx = first ? x_left + cone + gap + r2 : x_left + r2;
     line(layer_id::frame, line_style::continuous, thin,
-         {{cone_x0, cy - r1}, {cone_x0 + cone, cy - r2}, {cone_x0 + cone, cy + r2}, {cone_x0, cy + r1}},
+         {{cone_x0, cy - r1},
+          {cone_x0 + cone, cy - r2},
+          {cone_x0 + cone, cy + r2},
+          {cone_x0, cy + r1}},
          true);
     for (double r : {r1, r2}) {
       std::vector<point2> c;
@@ -227,8 +232,8 @@ view::vector_drawing draw_view(view::frame& f, const planned_view& v, double k, 
   const double cu = dot3(v.basis.u, {centre.x, centre.y, centre.z});
   const double cv = dot3(v.basis.v, {centre.x, centre.y, centre.z});
   const double l = v.left - cu, b = v.bottom - cv;
-  vs.projection = view::ortho(l, l + v.width_px / k, b, b + v.height_px / k, distance - 1.01 * radius,
-                              distance + 1.01 * radius);
+  vs.projection = view::ortho(l, l + v.width_px / k, b, b + v.height_px / k,
+                              distance - 1.01 * radius, distance + 1.01 * radius);
   vs.vp = {0, 0, v.width_px, v.height_px, 0, 1};
   vs.direction = -1.0 * v.towards_eye;
   vs.image_width = vs.image_height = 0;
@@ -373,7 +378,8 @@ sheet make_sheet(const triangle_soup& part, const std::string& name,
       if (v.principal) {
         triangle_soup box;  // the 8 corners of the bounding box
         for (int c = 0; c < 8; ++c)
-          box.vertices.push_back({c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]});
+          box.vertices.push_back(
+              {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]});
         box.triangles.push_back({{0, 1, 2}, 0});
         box.triangles.push_back({{3, 4, 5}, 0});
         box.triangles.push_back({{5, 6, 7}, 0});
@@ -418,8 +424,9 @@ sheet make_sheet(const triangle_soup& part, const std::string& name,
       std::string best;
       for (const drawing_scale& c : standard_scales())
         if (fits(c.factor(), nullptr)) best = c.text();
-      throw usage_error("--scale: at " + scale.text() + " the views do not fit the " + o.sheet.name +
-                        " sheet" + (best.empty() ? std::string() : "; the largest standard scale that fits is " + best));
+      throw usage_error(
+          "--scale: at " + scale.text() + " the views do not fit the " + o.sheet.name + " sheet" +
+          (best.empty() ? std::string() : "; the largest standard scale that fits is " + best));
     }
   } else {
     bool found = false;
@@ -469,8 +476,8 @@ sheet make_sheet(const triangle_soup& part, const std::string& name,
       }
     });
     const vector3 c{lo[0] / 2 + hi[0] / 2, lo[1] / 2 + hi[1] / 2, lo[2] / 2 + hi[2] / 2};
-    radius = std::max(std::hypot(hi[0] / 2 - lo[0] / 2, hi[1] / 2 - lo[1] / 2, hi[2] / 2 - lo[2] / 2),
-                      1e-300);
+    radius = std::max(
+        std::hypot(hi[0] / 2 - lo[0] / 2, hi[1] / 2 - lo[1] / 2, hi[2] / 2 - lo[2] / 2), 1e-300);
     return c;
   };
   std::optional<view::frame> part_frame;
@@ -520,7 +527,8 @@ sheet make_sheet(const triangle_soup& part, const std::string& name,
           out.fill(layer_id::fills, p.color, std::move(rings));
           break;
         case view::vector_path::kind_type::visible_edge:
-          for (auto& r : rings) out.line(layer_id::visible, line_style::continuous, vis_w, std::move(r));
+          for (auto& r : rings)
+            out.line(layer_id::visible, line_style::continuous, vis_w, std::move(r));
           sv.visible_chains += p.rings.size();
           break;
         case view::vector_path::kind_type::hidden_edge:

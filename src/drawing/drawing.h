@@ -62,15 +62,15 @@ struct paper {
 
 /// A section of the drawing: its letter and plane.
 struct section_spec {
-  std::string letter;               ///< "A".."Z" (one or two capitals)
-  std::array<double, 4> plane{};    ///< a, b, c, d
+  std::string letter;             ///< "A".."Z" (one or two capitals)
+  std::array<double, 4> plane{};  ///< a, b, c, d
 };
 
 /// A section's cut solid and cap, made by the caller (exbsp::gpl's section_with_cap: the cap
 /// is the GPL part of the library).
 struct section_cut {
   section_spec spec;
-  triangle_soup solid;  ///< kept triangles and the cap, closed where the part is
+  triangle_soup solid;         ///< kept triangles and the cap, closed where the part is
   std::uint32_t cap_face = 0;  ///< face id of the cap triangles in `solid`
   /// The cap's outline loops (exact points rounded once), each closed (last != first).
   std::vector<std::vector<std::array<double, 3>>> loops;
@@ -86,7 +86,8 @@ struct drawing_options {
   std::vector<section_spec> sections;
   bool lines_only = false;
   std::string title, number, date;  ///< title block fields (date: YYYY-MM-DD)
-  double visible_width = 0.5, hidden_width = 0.25;  ///< mm (ISO 128 pairs: 0.7/0.35, 0.5/0.25, 0.35/0.18)
+  double visible_width = 0.5,
+         hidden_width = 0.25;       ///< mm (ISO 128 pairs: 0.7/0.35, 0.5/0.25, 0.35/0.18)
   double crease_deg = 30;           ///< feature edges: dihedral angle over this
   view::rgb8 color{176, 190, 214};  ///< the part's colour in shaded views (lit per view)
   build_options build;              ///< the BSP builds (kernel, fragment limit, progress)
@@ -106,7 +107,8 @@ EXBSP_EXPORT projection_method parse_projection(const std::string& text,
                                                 const std::string& key = "--projection");
 /// "X=a,b,c,d" (X one or two capital letters, a..d finite doubles, (a, b, c) not zero).
 /// Throws usage_error naming `key`.
-EXBSP_EXPORT section_spec parse_section(const std::string& text, const std::string& key = "--section");
+EXBSP_EXPORT section_spec parse_section(const std::string& text,
+                                        const std::string& key = "--section");
 /// "front,top,left,iso": each a view_names() entry, no repeats. Throws usage_error.
 EXBSP_EXPORT std::vector<std::string> parse_views(const std::string& text,
                                                   const std::string& key = "--views");

@@ -36,8 +36,7 @@ bool inside_ring(const point2& p, const std::vector<point2>& r) {
   for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
     const point2& a = r[i];
     const point2& b = r[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
-      in = !in;
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
   }
   return in;
 }

@@ -21,7 +21,8 @@ struct hatch_segment {
 
 /// The hatch segments of the region `rings` (even-odd) with line spacing `spacing` (> 0), the
 /// lines placed at u = k * spacing (so hatching of different regions lines up).
-std::vector<hatch_segment> hatch_lines(const std::vector<std::vector<point2>>& rings, double spacing);
+std::vector<hatch_segment> hatch_lines(const std::vector<std::vector<point2>>& rings,
+                                       double spacing);
 
 /// Area of the region `rings` under the even-odd rule when no two rings cross: the sum of the
 /// rings' signed areas, each counted with the sign of its nesting depth parity.

@@ -47,26 +47,29 @@ std::vector<std::string> split(const std::string& text, char sep) {
 }  // namespace
 
 const std::vector<std::string>& view_names() {
-  static const std::vector<std::string> names{"front", "top",  "left", "right",
+  static const std::vector<std::string> names{"front",  "top",  "left", "right",
                                               "bottom", "rear", "iso"};
   return names;
 }
 
 paper parse_paper(const std::string& text, const std::string& key) {
   // ISO 216, landscape.
-  static const paper sizes[] = {{"A0", 1189, 841}, {"A1", 841, 594}, {"A2", 594, 420},
-                                {"A3", 420, 297},  {"A4", 297, 210}};
+  static const paper sizes[] = {
+      {"A0", 1189, 841}, {"A1", 841, 594}, {"A2", 594, 420}, {"A3", 420, 297}, {"A4", 297, 210}};
   for (const paper& p : sizes)
-    if (text == p.name || (text.size() == 2 && std::toupper(static_cast<unsigned char>(text[0])) ==
-                                                   'A' && text[1] == p.name[1]))
+    if (text == p.name ||
+        (text.size() == 2 && std::toupper(static_cast<unsigned char>(text[0])) == 'A' &&
+         text[1] == p.name[1]))
       return p;
   const std::size_t x = text.find('x');
   if (x != std::string::npos) {
     const auto w = finite_number(text.substr(0, x)), h = finite_number(text.substr(x + 1));
     if (w && h && *w >= 10 && *w <= 10000 && *h >= 10 && *h <= 10000) return {text, *w, *h};
   }
-  throw usage_error(key + ": expected A4, A3, A2, A1, A0 or WxH in millimetres (each 10..10000), "
-                          "got '" + text + "'");
+  throw usage_error(key +
+                    ": expected A4, A3, A2, A1, A0 or WxH in millimetres (each 10..10000), "
+                    "got '" +
+                    text + "'");
 }
 
 drawing_scale parse_scale(const std::string& text, const std::string& key) {
@@ -96,8 +99,10 @@ projection_method parse_projection(const std::string& text, const std::string& k
 
 section_spec parse_section(const std::string& text, const std::string& key) {
   const std::string expected =
-      key + ": expected X=a,b,c,d (X one or two capital letters; the plane a*x+b*y+c*z+d = 0, "
-            "the side >= 0 kept), got '" + text + "'";
+      key +
+      ": expected X=a,b,c,d (X one or two capital letters; the plane a*x+b*y+c*z+d = 0, "
+      "the side >= 0 kept), got '" +
+      text + "'";
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos || eq == 0 || eq > 2) throw usage_error(expected);
   section_spec s;
@@ -115,8 +120,8 @@ section_spec parse_section(const std::string& text, const std::string& key) {
     throw usage_error(key + ": the plane's normal (a, b, c) is zero in '" + text + "'");
   const double n = std::hypot(s.plane[0], s.plane[1], s.plane[2]);
   if (!std::isfinite(n) || !(n > 1e-150))
-    throw usage_error(key + ": the plane's normal (a, b, c) is too large or too small in '" +
-                      text + "'");
+    throw usage_error(key + ": the plane's normal (a, b, c) is too large or too small in '" + text +
+                      "'");
   return s;
 }
 

@@ -93,21 +93,22 @@ struct sheet_fill {
 struct sheet_text {
   enum class anchor_kind { start, middle, end };
   layer_id layer = layer_id::frame;
-  point2 at;           ///< baseline point, at the anchor
-  double height = 5;   ///< capital height, mm
+  point2 at;          ///< baseline point, at the anchor
+  double height = 5;  ///< capital height, mm
   anchor_kind anchor = anchor_kind::start;
-  std::string text;    ///< UTF-8
+  std::string text;  ///< UTF-8
 };
 
 /// Where one view is on the sheet (for tests, logs and the Python module).
 struct sheet_view {
-  std::string name;       ///< "front", "top", ..., "iso", "section A"
-  point2 lower_left;      ///< of its box (mm)
+  std::string name;              ///< "front", "top", ..., "iso", "section A"
+  point2 lower_left;             ///< of its box (mm)
   double width = 0, height = 0;  ///< its box (mm)
   /// Sheet mm of a model point p: lower_left + mm_per_model * (p . right - left, p . up - bottom).
   std::array<double, 3> right{}, up{}, towards_eye{};
-  double left = 0, bottom = 0;  ///< model coordinates of the box's lower-left corner (p . right, p . up)
-  double mm_per_model = 1;      ///< model units to paper millimetres (units times scale)
+  double left = 0,
+         bottom = 0;  ///< model coordinates of the box's lower-left corner (p . right, p . up)
+  double mm_per_model = 1;  ///< model units to paper millimetres (units times scale)
   std::size_t visible_chains = 0, hidden_chains = 0;
 };
 

@@ -37,7 +37,7 @@ constexpr layer_style dxf_layers[] = {
 
 /// DXF line weights are hundredths of a millimetre from a fixed list (the nearest one).
 int line_weight(double mm) {
-  static const int weights[] = {0,  5,  9,  13, 15, 18, 20,  25,  30,  35,  40,  50,
+  static const int weights[] = {0,  5,  9,  13, 15, 18,  20,  25,  30,  35,  40,  50,
                                 53, 60, 70, 80, 90, 100, 106, 120, 140, 158, 200, 211};
   int best = 25;
   double gap = INFINITY;
@@ -161,20 +161,21 @@ std::string sheet_dxf(const sheet& s) {
     dxf.writeLinetype(*dw, DL_LinetypeData("BYBLOCK", "", 0, 0, 0.0));
     dxf.writeLinetype(*dw, DL_LinetypeData("BYLAYER", "", 0, 0, 0.0));
     dxf.writeLinetype(*dw, DL_LinetypeData("CONTINUOUS", "Solid line", 0, 0, 0.0));
-    dxf.writeLinetype(*dw, DL_LinetypeData("HIDDEN", "ISO 128 dashed __ __ __", 0,
-                                           static_cast<int>(hidden.size()), total(hidden),
-                                           hidden.data()));
-    dxf.writeLinetype(*dw, DL_LinetypeData("DASHDOT", "ISO 128 long-dash dotted ____ . ____", 0,
-                                           static_cast<int>(chain.size()), total(chain),
-                                           chain.data()));
+    dxf.writeLinetype(
+        *dw, DL_LinetypeData("HIDDEN", "ISO 128 dashed __ __ __", 0,
+                             static_cast<int>(hidden.size()), total(hidden), hidden.data()));
+    dxf.writeLinetype(*dw,
+                      DL_LinetypeData("DASHDOT", "ISO 128 long-dash dotted ____ . ____", 0,
+                                      static_cast<int>(chain.size()), total(chain), chain.data()));
     dw->tableEnd();
     dw->tableLayers(1 + static_cast<int>(std::size(dxf_layers)));
     dxf.writeLayer(*dw, DL_LayerData("0", 0), DL_Attributes("", 7, 25, "CONTINUOUS", 1.0));
     for (const layer_style& l : dxf_layers) {
-      const double fallback = l.layer == layer_id::visible || l.layer == layer_id::frame ? 0.5 : 0.25;
-      dxf.writeLayer(*dw, DL_LayerData(layer_name(l.layer), 0),
-                     DL_Attributes("", 7, line_weight(layer_width(s, l.layer, fallback)),
-                                   l.linetype, 1.0));
+      const double fallback =
+          l.layer == layer_id::visible || l.layer == layer_id::frame ? 0.5 : 0.25;
+      dxf.writeLayer(
+          *dw, DL_LayerData(layer_name(l.layer), 0),
+          DL_Attributes("", 7, line_weight(layer_width(s, l.layer, fallback)), l.linetype, 1.0));
     }
     dw->tableEnd();
     dw->tableStyle(1);
@@ -197,7 +198,7 @@ std::string sheet_dxf(const sheet& s) {
     dw->dxfString(100, "AcDbSymbolTable");
     dw->dxfInt(70, 2);
     for (const auto& [handle, name] : {std::pair<int, const char*>{0x1F, "*Model_Space"},
-                                        std::pair<int, const char*>{0x1B, "*Paper_Space"}}) {
+                                       std::pair<int, const char*>{0x1B, "*Paper_Space"}}) {
       dw->dxfString(0, "BLOCK_RECORD");
       dw->dxfHex(5, handle);
       dw->dxfString(100, "AcDbSymbolTableRecord");
@@ -225,20 +226,19 @@ std::string sheet_dxf(const sheet& s) {
         const DL_Attributes attrib(layer, 256, l.width == layer_w ? -1 : line_weight(l.width),
                                    own_style ? (l.style == line_style::continuous ? "CONTINUOUS"
                                                 : l.style == line_style::dashed   ? "HIDDEN"
-                                                                                   : "DASHDOT")
+                                                                                  : "DASHDOT")
                                              : "BYLAYER",
                                    1.0);
         if (l.points.size() == 2 && !l.closed) {
-          dxf.writeLine(*dw,
-                        DL_LineData(l.points[0].x, l.points[0].y, 0, l.points[1].x, l.points[1].y, 0),
-                        attrib);
+          dxf.writeLine(
+              *dw, DL_LineData(l.points[0].x, l.points[0].y, 0, l.points[1].x, l.points[1].y, 0),
+              attrib);
           continue;
         }
         // Flag 128: the linetype pattern runs on along the whole polyline.
-        dxf.writePolyline(*dw,
-                          DL_PolylineData(static_cast<int>(l.points.size()), 0, 0,
-                                          (l.closed ? 1 : 0) | 128),
-                          attrib);
+        dxf.writePolyline(
+            *dw, DL_PolylineData(static_cast<int>(l.points.size()), 0, 0, (l.closed ? 1 : 0) | 128),
+            attrib);
         for (const point2& p : l.points) dxf.writeVertex(*dw, DL_VertexData(p.x, p.y, 0, 0));
         dxf.writePolylineEnd(*dw);
       }
@@ -257,7 +257,7 @@ std::string sheet_dxf(const sheet& s) {
         // Horizontal justification 0 left, 1 centre, 2 right (then the alignment point counts).
         const int hj = t.anchor == sheet_text::anchor_kind::start    ? 0
                        : t.anchor == sheet_text::anchor_kind::middle ? 1
-                                                                      : 2;
+                                                                     : 2;
         dxf.writeText(*dw,
                       DL_TextData(t.at.x, t.at.y, 0, t.at.x, t.at.y, 0, t.height, 1.0, 0, hj, 0,
                                   dxf_text(t.text), "Standard", 0.0),
@@ -271,7 +271,8 @@ std::string sheet_dxf(const sheet& s) {
   std::ifstream in(tmp.path(), std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();
-  if (!in.good() && !in.eof()) throw output_error(tmp.path(), "cannot read the DXF writer's output");
+  if (!in.good() && !in.eof())
+    throw output_error(tmp.path(), "cannot read the DXF writer's output");
   return bytes.str();
 }
 

@@ -89,10 +89,11 @@ std::string sheet_svg(const sheet& s) {
   std::string out;
   out.reserve(1 << 20);
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" "
-         "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\"" +
-         number(s.width) + "mm\" height=\"" + number(s.height) + "mm\" viewBox=\"0 0 " +
-         number(s.width) + " " + number(s.height) + "\">\n";
+  out +=
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+      "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\"" +
+      number(s.width) + "mm\" height=\"" + number(s.height) + "mm\" viewBox=\"0 0 " +
+      number(s.width) + " " + number(s.height) + "\">\n";
   out += "<title>" + xml_escape(s.title) + "</title>\n";
   out += "<rect width=\"" + number(s.width) + "\" height=\"" + number(s.height) +
          "\" fill=\"#ffffff\"/>\n";
@@ -128,7 +129,7 @@ std::string sheet_svg(const sheet& s) {
       if (t.layer != layer) continue;
       const char* anchor = t.anchor == sheet_text::anchor_kind::start    ? "start"
                            : t.anchor == sheet_text::anchor_kind::middle ? "middle"
-                                                                          : "end";
+                                                                         : "end";
       out += "<text x=\"" + number(t.at.x) + "\" y=\"" + number(h - t.at.y) + "\" font-family=\"" +
              font_family + ", Arial, sans-serif\" font-size=\"" +
              number(t.height / cap_height_per_em) + "\" text-anchor=\"" + anchor +

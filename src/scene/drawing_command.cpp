@@ -59,7 +59,8 @@ drawing::section_cut cut_of(const triangle_soup& part, const drawing::section_sp
     c.loops.push_back(std::move(loop));
   }
   if (r.cap.empty())
-    throw usage_error("--section " + spec.letter + ": the plane does not cut a closed part of the "
+    throw usage_error("--section " + spec.letter +
+                      ": the plane does not cut a closed part of the "
                       "mesh (no cut face to hatch)");
   return c;
 }
@@ -120,7 +121,8 @@ drawing_summary drawing_command(const drawing_request& request, std::ostream& lo
                         request.output);
     std::vector<std::string> meshes;
     for (const auto& e : fs::directory_iterator(request.input, ec))
-      if (e.is_regular_file() && is_mesh_file(e.path().string())) meshes.push_back(e.path().string());
+      if (e.is_regular_file() && is_mesh_file(e.path().string()))
+        meshes.push_back(e.path().string());
     if (ec) throw input_error(request.input, 0, "cannot list the folder: " + ec.message());
     std::sort(meshes.begin(), meshes.end());
     if (meshes.empty())
@@ -156,18 +158,21 @@ drawing_summary drawing_command(const drawing_request& request, std::ostream& lo
   } else {
     const std::string format = format_of(request.output);
     if (format.empty())
-      throw usage_error("-o: the output must end in .svg, .pdf or .dxf (a folder only for a "
-                        "folder input), got '" + request.output + "'");
+      throw usage_error(
+          "-o: the output must end in .svg, .pdf or .dxf (a folder only for a "
+          "folder input), got '" +
+          request.output + "'");
     if (!has_extension(request.input, ".json") && !is_mesh_file(request.input))
-      throw usage_error("drawing: the input must be a mesh (.off, .obj, .ply, .stl), a scene "
-                        "(.json) or a folder, got '" + request.input + "'");
+      throw usage_error(
+          "drawing: the input must be a mesh (.off, .obj, .ply, .stl), a scene "
+          "(.json) or a folder, got '" +
+          request.input + "'");
     const drawing::sheet s =
         make_drawing_sheet(request.input, options, request.strict, &log, &summary.triangles);
     write_file_atomically(request.output, drawing_bytes(s, format, options));
     summary.written.push_back(request.output);
   }
-  summary.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return summary;
 }
 

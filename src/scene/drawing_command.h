@@ -26,7 +26,7 @@ struct drawing_request {
   std::string output;  ///< OUT.svg / OUT.pdf / OUT.dxf, or a folder for a folder input
   std::vector<std::string> formats{"pdf"};  ///< folder input: the files of each sheet
   drawing::drawing_options options;
-  bool force = false;  ///< folder input: redo finished sheets
+  bool force = false;   ///< folder input: redo finished sheets
   bool strict = false;  ///< scenes: unknown keys are errors
 };
 
