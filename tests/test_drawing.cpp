@@ -62,7 +62,7 @@ drawing::drawing_options line_options(std::vector<std::string> views) {
 
 /// The lines of `layer` whose points all lie in the box of view `v`.
 std::vector<const drawing::sheet_polyline*> lines_in(const drawing::sheet& s,
-                                                      const drawing::sheet_view& v, layer_id layer) {
+                                                     const drawing::sheet_view& v, layer_id layer) {
   std::vector<const drawing::sheet_polyline*> out;
   for (const auto& l : s.lines) {
     if (l.layer != layer) continue;
@@ -141,8 +141,8 @@ TEST(DrawingOptions, IsoPaperSizesScalesUnitsAndTheirErrors) {
     EXPECT_LT(scales[i - 1].factor(), scales[i].factor());
   std::vector<std::string> names;
   for (const auto& s : scales) names.push_back(s.text());
-  for (const char* iso : {"1:1000", "1:500", "1:200", "1:100", "1:50", "1:20", "1:10", "1:5",
-                          "1:2", "1:1", "2:1", "5:1", "10:1", "20:1", "50:1"})
+  for (const char* iso : {"1:1000", "1:500", "1:200", "1:100", "1:50", "1:20", "1:10", "1:5", "1:2",
+                          "1:1", "2:1", "5:1", "10:1", "20:1", "50:1"})
     EXPECT_NE(std::find(names.begin(), names.end(), iso), names.end()) << iso;
   const auto s = drawing::parse_section("AB=0,1,0,-2.5");
   EXPECT_EQ(s.letter, "AB");
@@ -163,8 +163,8 @@ TEST(DrawingLayout, PrincipalViewsLineUpAndSitByTheProjectionMethod) {
   // left their y positions; first angle puts top below and left on the right, third angle the
   // opposite.
   const triangle_soup box = boxes_soup({{0, 0, 0, 40, 20, 10}});
-  for (const auto method : {drawing::projection_method::first_angle,
-                            drawing::projection_method::third_angle}) {
+  for (const auto method :
+       {drawing::projection_method::first_angle, drawing::projection_method::third_angle}) {
     auto o = line_options({"front", "top", "left"});
     o.projection = method;
     o.scale = drawing::drawing_scale{1, 1};
@@ -209,9 +209,11 @@ TEST(DrawingLayout, AutoScaleIsTheLargestStandardScaleThatFits) {
   // A 4 x 2 x 1 box: at 50:1 200 + 100 + 22 = 322 mm wide, 50 + 100 + 22 = 172 high (fits);
   // at 100:1 it is 622.
   auto o = line_options({"front", "top", "left"});
-  const drawing::sheet big = drawing::make_sheet(boxes_soup({{0, 0, 0, 1000, 400, 300}}), "big", {}, o);
+  const drawing::sheet big =
+      drawing::make_sheet(boxes_soup({{0, 0, 0, 1000, 400, 300}}), "big", {}, o);
   EXPECT_NEAR(view_named(big, "front").mm_per_model, 0.2, 1e-15);
-  const drawing::sheet small = drawing::make_sheet(boxes_soup({{0, 0, 0, 4, 2, 1}}), "small", {}, o);
+  const drawing::sheet small =
+      drawing::make_sheet(boxes_soup({{0, 0, 0, 4, 2, 1}}), "small", {}, o);
   EXPECT_NEAR(view_named(small, "front").mm_per_model, 50, 1e-12);
   o.scale = drawing::drawing_scale{1, 2};
   try {
@@ -251,7 +253,8 @@ TEST(DrawingHiddenLines, ABoxBehindABoxIsDashedInFrontAndSolidFromAbove) {
     EXPECT_EQ(l->width, 0.25);
     for (const point2& p : l->points) {
       double d = INFINITY;
-      for (int k = 0; k < 4; ++k) d = std::min(d, distance_to_segment(p, corners[k], corners[(k + 1) % 4]));
+      for (int k = 0; k < 4; ++k)
+        d = std::min(d, distance_to_segment(p, corners[k], corners[(k + 1) % 4]));
       EXPECT_LT(d, 0.003) << "hidden point off B's outline: " << p.x << "," << p.y;
     }
   }
@@ -280,8 +283,8 @@ TEST(DrawingHiddenLines, ABoxBehindABoxIsDashedInFrontAndSolidFromAbove) {
 TEST(DrawingHatch, EvenOddRegionsWithHolesAndLinesOnTheirBoundary) {
   // A 30 x 20 square with a 10 x 10 hole: area 500; hatch lines at 45 degrees, spacing 1:
   // their total length times the spacing approximates the area, every endpoint lies on a ring.
-  const std::vector<std::vector<point2>> rings = {
-      {{0, 0}, {30, 0}, {30, 20}, {0, 20}}, {{10, 5}, {10, 15}, {20, 15}, {20, 5}}};
+  const std::vector<std::vector<point2>> rings = {{{0, 0}, {30, 0}, {30, 20}, {0, 20}},
+                                                  {{10, 5}, {10, 15}, {20, 15}, {20, 5}}};
   EXPECT_NEAR(drawing::even_odd_area(rings), 500, 1e-12);
   const auto lines = drawing::hatch_lines(rings, 1.0);
   double length = 0;
@@ -329,7 +332,8 @@ TEST(DrawingSection, HatchedRegionIsTheExactCapAndTheCuttingPlaneSitsOnTheTopVie
   const auto hatch = lines_in(s, sv, layer_id::hatching);
   ASSERT_FALSE(hatch.empty());
   double length = 0;
-  for (const auto* l : hatch) length += std::hypot(l->points[1].x - l->points[0].x, l->points[1].y - l->points[0].y);
+  for (const auto* l : hatch)
+    length += std::hypot(l->points[1].x - l->points[0].x, l->points[1].y - l->points[0].y);
   // Spacing 2 mm (the region is 20 mm high: at least 8 lines across): length * spacing ~ area.
   EXPECT_NEAR(length * 2, 1600, 1600 * 0.05);
   // The cutting-plane line: a chain line on the top view at y = 7 (model), i.e. horizontal.
@@ -375,8 +379,7 @@ TEST(DrawingSection, OfARealMeshHatchesExactlyTheCapArea) {
     cap += std::sqrt(nx * nx + ny * ny + nz * nz) / 2;
   }
   ASSERT_GT(cap, 0);
-  const drawing::sheet s =
-      scene::make_drawing_sheet(path, o, false, nullptr);
+  const drawing::sheet s = scene::make_drawing_sheet(path, o, false, nullptr);
   ASSERT_EQ(s.hatch_regions.size(), 1u);
   const double k = view_named(s, "section B").mm_per_model;
   EXPECT_NEAR(drawing::even_odd_area(s.hatch_regions[0]) / (k * k), static_cast<double>(cap),
@@ -388,8 +391,10 @@ class DrawingCli : public exbsp_test::cli_fixture {};
 TEST_F(DrawingCli, SheetsInMillimetresWithLayersIsoLinesAndIdenticalRepeats) {
   write("part.off", boxes_off({{0, 0, 0, 40, 20, 10}, {10, 30, 2, 20, 40, 8}}));
   for (const char* ext : {"svg", "pdf", "dxf"}) {
-    const std::string args = std::string("drawing part.off --sheet A4 --lines-only --date 2026-01-01 "
-                                         "--section A=0,1,0,-5 -o a.") + ext;
+    const std::string args = std::string(
+                                 "drawing part.off --sheet A4 --lines-only --date 2026-01-01 "
+                                 "--section A=0,1,0,-5 -o a.") +
+                             ext;
     auto r = run(args);
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string first = exbsp_test::read_file(dir / (std::string("a.") + ext));
@@ -398,10 +403,12 @@ TEST_F(DrawingCli, SheetsInMillimetresWithLayersIsoLinesAndIdenticalRepeats) {
     EXPECT_EQ(first, exbsp_test::read_file(dir / (std::string("a.") + ext))) << ext;
   }
   const std::string svg = exbsp_test::read_file(dir / "a.svg");
-  EXPECT_NE(svg.find("width=\"297mm\" height=\"210mm\" viewBox=\"0 0 297 210\""), std::string::npos);
+  EXPECT_NE(svg.find("width=\"297mm\" height=\"210mm\" viewBox=\"0 0 297 210\""),
+            std::string::npos);
   for (const char* layer : {"visible", "hidden", "hatching", "cutting-planes", "frame"})
-    EXPECT_NE(svg.find(std::string("inkscape:groupmode=\"layer\" inkscape:label=\"") + layer + "\""),
-              std::string::npos)
+    EXPECT_NE(
+        svg.find(std::string("inkscape:groupmode=\"layer\" inkscape:label=\"") + layer + "\""),
+        std::string::npos)
         << layer;
   EXPECT_NE(svg.find("stroke-width=\"0.5\" stroke-linecap=\"round\""), std::string::npos);
   EXPECT_NE(svg.find("stroke-width=\"0.25\" stroke-linecap=\"butt\" stroke-linejoin=\"miter\" "

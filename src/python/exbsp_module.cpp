@@ -20,9 +20,13 @@
 #include "bsp/engine.h"
 #include "clip/section.h"
 #include "clip/section_cap.h"
+#include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/file_name.h"
 #include "core/version.h"
+#include "drawing/drawing.h"
 #include "mesh/mesh_io.h"
+#include "scene/drawing_command.h"
 
 namespace py = pybind11;
 
@@ -311,9 +315,93 @@ py::handle new_exception(py::module_& m, const char* name, const py::tuple& base
   return type;  // m keeps a reference
 }
 
+/// A path argument: str or os.PathLike, without NUL (a C string would be cut there).
+std::string path_argument(const py::handle& h, const std::string& what) {
+  py::object p = py::module_::import("os").attr("fspath")(h);
+  if (!py::isinstance<py::str>(p)) throw usage_error(what + ": expected a str path, got bytes");
+  const std::string s = p.cast<std::string>();
+  if (s.empty()) throw usage_error(what + ": empty path");
+  if (s.find('\0') != std::string::npos) throw usage_error(what + ": the path contains a NUL byte");
+  return s;
+}
+
+/// A list of strings from a str ("a,b") or a sequence of str.
+std::vector<std::string> string_list(const py::handle& h) {
+  if (py::isinstance<py::str>(h)) {
+    std::vector<std::string> out;
+    std::string item;
+    for (char c : h.cast<std::string>() + ",") {
+      if (c != ',') {
+        item += c;
+      } else if (!item.empty()) {
+        out.push_back(item);
+        item.clear();
+      }
+    }
+    return out;
+  }
+  return h.cast<std::vector<std::string>>();
+}
+
+/// exbsp.drawing: one sheet of a mesh or scene file, written to each of `outputs`.
+py::dict drawing(const py::object& input, const py::object& outputs, const py::object& views,
+                 const std::string& projection, const std::string& sheet, const std::string& scale,
+                 const std::string& units, const py::object& sections, bool lines_only,
+                 const std::string& title, const std::string& number, const std::string& date,
+                 std::array<double, 2> line_widths, double crease_deg, const std::string& kernel) {
+  namespace dr = exbsp::drawing;
+  const std::string in = path_argument(input, "input");
+  std::vector<std::string> outs;
+  if (py::isinstance<py::str>(outputs) || py::hasattr(outputs, "__fspath__"))
+    outs.push_back(path_argument(outputs, "outputs"));
+  else
+    for (const py::handle o : outputs) outs.push_back(path_argument(o, "outputs"));
+  if (outs.empty()) throw usage_error("outputs: at least one .svg, .pdf or .dxf file");
+  std::vector<std::string> formats;
+  for (const std::string& o : outs) {
+    std::string f;
+    for (const char* e : {"svg", "pdf", "dxf"})
+      if (exbsp::has_extension(o, std::string(".") + e)) f = e;
+    if (f.empty()) throw usage_error("outputs: " + o + " does not end in .svg, .pdf or .dxf");
+    formats.push_back(f);
+  }
+  dr::drawing_options o;
+  std::string view_text;
+  for (const std::string& v : string_list(views)) view_text += (view_text.empty() ? "" : ",") + v;
+  o.views = dr::parse_views(view_text, "views");
+  o.projection = dr::parse_projection(projection, "projection");
+  o.sheet = dr::parse_paper(sheet, "sheet");
+  if (scale != "auto") o.scale = dr::parse_scale(scale, "scale");
+  dr::unit_mm(units, "units");
+  o.units = units;
+  for (const std::string& s : string_list(sections))
+    o.sections.push_back(dr::parse_section(s, "sections"));
+  o.lines_only = lines_only;
+  o.title = title;
+  o.number = number;
+  o.date = date.empty() ? dr::today_date() : date;
+  o.visible_width = line_widths[0];
+  o.hidden_width = line_widths[1];
+  if (!(crease_deg > 0 && crease_deg <= 180)) throw usage_error("crease_deg: must be in (0, 180]");
+  o.crease_deg = crease_deg;
+  o.build.kernel = exbsp::parse_kernel(kernel);
+  std::size_t triangles = 0;
+  {
+    py::gil_scoped_release release;
+    const dr::sheet s = exbsp::scene::make_drawing_sheet(in, o, false, nullptr, &triangles);
+    for (std::size_t k = 0; k < outs.size(); ++k)
+      exbsp::write_file_atomically(outs[k], exbsp::scene::drawing_bytes(s, formats[k], o));
+  }
+  py::dict r;
+  r["written"] = outs;
+  r["triangles"] = triangles;
+  r["date"] = o.date;
+  return r;
+}
+
 }  // namespace
 
-PYBIND11_MODULE(exbsp, m) {
+PYBIND11_MODULE(_exbsp, m) {
   m.doc() = "Exact-predicate BSP trees and exact sections of triangle meshes (see docs/python.md).";
   m.attr("__version__") = exbsp::version_string;
   m.attr("version") = exbsp::version_string;
@@ -461,4 +549,16 @@ PYBIND11_MODULE(exbsp, m) {
       py::arg("data"), "A tree from the bytes Tree.serialize returns.");
   m.def("read_mesh", &read_mesh, py::arg("path"),
         "Reads an OFF/OBJ/PLY/STL file: (vertices, triangles, face_ids).");
+  m.def("drawing", &drawing, py::arg("input"), py::arg("outputs"), py::kw_only(),
+        py::arg("views") = std::vector<std::string>{"front", "top", "left", "iso"},
+        py::arg("projection") = "first-angle", py::arg("sheet") = "A3", py::arg("scale") = "auto",
+        py::arg("units") = "mm", py::arg("sections") = std::vector<std::string>{},
+        py::arg("lines_only") = false, py::arg("title") = "", py::arg("number") = "",
+        py::arg("date") = "", py::arg("line_widths") = std::array<double, 2>{0.5, 0.25},
+        py::arg("crease_deg") = 30.0, py::arg("kernel") = "exact",
+        "One drawing sheet (`exbsp drawing`) of a mesh or scene file, written to each of "
+        "`outputs` (.svg, .pdf, .dxf); see docs/python.md. Returns {'written', 'triangles', "
+        "'date'}.");
+  m.def("today_date", &exbsp::drawing::today_date,
+        "Today's date (UTC, YYYY-MM-DD), or SOURCE_DATE_EPOCH's: the date sheets carry.");
 }
