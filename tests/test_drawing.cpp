@@ -470,3 +470,133 @@ TEST_F(DrawingCli, AFolderBecomesADrawingSetAndFinishedSheetsAreNotRedone) {
   EXPECT_NE(r.err.find("wrote 2 files"), std::string::npos) << r.err;
   EXPECT_EQ(run("drawing parts -o sheets/x.pdf").status, 2);
 }
+
+namespace {
+
+/// The polylines of the <path> elements inside <g id="GROUP"> of an SVG (d attributes of
+/// M/L commands with absolute coordinates).
+std::vector<std::vector<point2>> svg_group_polylines(const std::string& svg,
+                                                     const std::string& group) {
+  std::vector<std::vector<point2>> out;
+  const std::size_t g = svg.find("<g id=\"" + group + "\"");
+  if (g == std::string::npos) return out;
+  const std::size_t end = svg.find("</g>", g);
+  std::size_t at = g;
+  while ((at = svg.find(" d=\"", at)) != std::string::npos && at < end) {
+    at += 4;
+    const std::size_t close = svg.find('"', at);
+    const std::string d = svg.substr(at, close - at);
+    std::vector<double> numbers;
+    for (std::size_t i = 0; i <= d.size(); ++i) {
+      if (i < d.size() && (d[i] == 'M' || d[i] == 'L' || d[i] == ' ' || d[i] == ',')) {
+        if (d[i] == 'M') {
+          if (numbers.size() >= 4) {
+            out.emplace_back();
+            for (std::size_t k = 0; k + 1 < numbers.size(); k += 2)
+              out.back().push_back({numbers[k], numbers[k + 1]});
+          }
+          numbers.clear();
+        }
+        continue;
+      }
+      if (i == d.size()) break;
+      std::size_t used = 0;
+      numbers.push_back(std::stod(d.substr(i), &used));
+      i += used - 1;
+    }
+    if (numbers.size() >= 4) {
+      out.emplace_back();
+      for (std::size_t k = 0; k + 1 < numbers.size(); k += 2)
+        out.back().push_back({numbers[k], numbers[k + 1]});
+    }
+    at = close;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_F(DrawingCli, ViewsAgreeWithRenderOfTheSameOrthographicView) {
+  // The front and top views of fandisk against `exbsp render` of a scene with the same
+  // orthographic view (gluLookAt along the view's axis, glOrtho on the view's box), edges
+  // visible+hidden: the render's edge vertices, taken from pixels to the sheet's millimetres,
+  // lie on the drawing's lines of the same kind, and the drawing's on the render's (0.01 mm).
+  const std::string path = exbsp_test::corpus_dir() + "fandisk.off";
+  EXBSP_NEED_CORPUS(std::filesystem::exists(path), path);
+  auto o = line_options({"front", "top"});
+  const drawing::sheet s = scene::make_drawing_sheet(path, o, false, nullptr);
+  for (const std::string name : {"front", "top"}) {
+    const auto& v = view_named(s, name);
+    // A viewport of about 10 pixels per mm of the view's box, and the box in model units.
+    const int w_px = static_cast<int>(std::lround(v.width * 10)),
+              h_px = static_cast<int>(std::lround(v.height * 10));
+    const double w_model = v.width / v.mm_per_model, h_model = v.height / v.mm_per_model;
+    // The eye 1000 units back along the view's axis from a point of its centre line.
+    const std::array<double, 3> c = {
+        (v.left + w_model / 2) * v.right[0] + (v.bottom + h_model / 2) * v.up[0],
+        (v.left + w_model / 2) * v.right[1] + (v.bottom + h_model / 2) * v.up[1],
+        (v.left + w_model / 2) * v.right[2] + (v.bottom + h_model / 2) * v.up[2]};
+    const double back = 1000;
+    char scene[2048];
+    std::snprintf(
+        scene, sizeof scene,
+        "{\"meshes\": [{\"file\": \"%s\"}],\n"
+        " \"camera\": {\"eye\": [%.17g, %.17g, %.17g], \"look_at\": [%.17g, %.17g, %.17g], "
+        "\"up\": [%.17g, %.17g, %.17g]},\n"
+        " \"projection\": {\"type\": \"orthographic\", \"left\": %.17g, \"right\": %.17g, "
+        "\"bottom\": %.17g, \"top\": %.17g, \"near\": 1, \"far\": 2000},\n"
+        " \"viewport\": {\"width\": %d, \"height\": %d},\n"
+        " \"svg\": {\"edges\": \"visible+hidden\"}}\n",
+        path.c_str(), c[0] + back * v.towards_eye[0], c[1] + back * v.towards_eye[1],
+        c[2] + back * v.towards_eye[2], c[0], c[1], c[2], v.up[0], v.up[1], v.up[2], -w_model / 2,
+        w_model / 2, -h_model / 2, h_model / 2, w_px, h_px);
+    write("view.json", scene);
+    const auto r = run("render view.json -o view.svg -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string svg = exbsp_test::read_file(dir / "view.svg");
+    const double mm_per_px_x = v.width / w_px, mm_per_px_y = v.height / h_px;
+    const auto to_sheet = [&](const std::string& group) {
+      std::vector<drawing::sheet_polyline> lines;
+      for (const auto& pl : svg_group_polylines(svg, group)) {
+        drawing::sheet_polyline l;
+        for (const point2& p : pl)
+          l.points.push_back(
+              {v.lower_left.x + p.x * mm_per_px_x, v.lower_left.y + (h_px - p.y) * mm_per_px_y});
+        lines.push_back(std::move(l));
+      }
+      return lines;
+    };
+    const auto pointers = [](const std::vector<drawing::sheet_polyline>& lines) {
+      std::vector<const drawing::sheet_polyline*> p;
+      for (const auto& l : lines) p.push_back(&l);
+      return p;
+    };
+    const auto rendered_visible_lines = to_sheet("visible-edges");
+    const auto rendered_hidden_lines = to_sheet("hidden-edges");
+    const auto rendered_visible = pointers(rendered_visible_lines);
+    const auto rendered_hidden = pointers(rendered_hidden_lines);
+    const auto drawn_visible = lines_in(s, v, layer_id::visible);
+    const auto drawn_hidden = lines_in(s, v, layer_id::hidden);
+    ASSERT_FALSE(drawn_visible.empty() || drawn_hidden.empty()) << name;
+    ASSERT_FALSE(rendered_visible.empty() || rendered_hidden.empty()) << name;
+    // Vertices of `a` farther than 0.01 mm from the lines of `b`. Hidden runs are also allowed
+    // to end differently within 0.02 mm of a visible line: where a hidden and a visible run
+    // nearly coincide, the hidden one loses what lies within 4 grid units of the visible one
+    // (edge_paths.h), and a grid unit is a hundredth of a pixel, whose size differs here.
+    const auto off = [&](const std::vector<const drawing::sheet_polyline*>& a,
+                         const std::vector<const drawing::sheet_polyline*>& b, bool hidden) {
+      std::size_t n = 0;
+      for (const auto* l : a)
+        for (const point2& p : l->points)
+          if (distance_to_lines(p, b) > 0.01 &&
+              !(hidden && std::min(distance_to_lines(p, drawn_visible),
+                                   distance_to_lines(p, rendered_visible)) < 0.02))
+            ++n;
+      return n;
+    };
+    EXPECT_EQ(off(rendered_visible, drawn_visible, false), 0u) << name;
+    EXPECT_EQ(off(drawn_visible, rendered_visible, false), 0u) << name;
+    EXPECT_EQ(off(rendered_hidden, drawn_hidden, true), 0u) << name;
+    EXPECT_EQ(off(drawn_hidden, rendered_hidden, true), 0u) << name;
+  }
+}
