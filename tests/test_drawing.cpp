@@ -600,3 +600,42 @@ TEST_F(DrawingCli, ViewsAgreeWithRenderOfTheSameOrthographicView) {
     EXPECT_EQ(off(drawn_hidden, rendered_hidden, true), 0u) << name;
   }
 }
+
+TEST_F(DrawingCli, ASceneGivesTitleBlockAndOptionsAndFlagsOverrideThem) {
+  // A scene's "drawing" block sets the sheet's options (no camera needed: a drawing has its own
+  // views); a flag given on the command line wins over the block; bad values name the JSON key.
+  write("part.off", boxes_off({{0, 0, 0, 40, 20, 10}}));
+  write("s.json",
+        R"({"meshes": [{"file": "part.off"}], "drawing": {"title": "Bracket", "number": "B-7",
+            "sheet": "A4", "projection": "third-angle", "views": ["front", "top"],
+            "lines_only": true, "date": "2026-02-03", "scale": "1:1"}})");
+  auto r = run("drawing s.json -o s.svg -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::string svg = exbsp_test::read_file(dir / "s.svg");
+  EXPECT_NE(svg.find("width=\"297mm\""), std::string::npos);
+  for (const char* text : {">Bracket<", ">B-7<", ">third angle<", ">2026-02-03<", ">1:1<", ">A4<"})
+    EXPECT_NE(svg.find(text), std::string::npos) << text;
+  EXPECT_EQ(svg.find("layer-fills\" fill=\"none\" stroke=\"#000000\">\n<path fill"),
+            std::string::npos)
+      << "lines_only from the scene: no fills";
+  r = run("drawing s.json -o s2.svg -q --sheet A3 --title Other");
+  ASSERT_EQ(r.status, 0) << r.err;
+  svg = exbsp_test::read_file(dir / "s2.svg");
+  EXPECT_NE(svg.find("width=\"420mm\""), std::string::npos);
+  EXPECT_NE(svg.find(">Other<"), std::string::npos);
+  EXPECT_NE(svg.find(">B-7<"), std::string::npos);
+  const std::pair<const char*, const char*> bad[] = {
+      {R"({"sheet": "A9"})", "/drawing/sheet"},
+      {R"({"titel": "x"})", "/drawing/titel"},
+      {R"({"sections": ["A=0,0,0,1"]})", "/drawing/sections/0"},
+      {R"({"line_widths": [0.5]})", "/drawing/line_widths"},
+      {R"({"lines_only": "yes"})", "/drawing/lines_only"},
+  };
+  for (const auto& [block, key] : bad) {
+    write("b.json", std::string(R"({"meshes": [{"file": "part.off"}], "drawing": )") + block + "}");
+    r = run("drawing b.json -o b.svg");
+    EXPECT_EQ(r.status, 2) << block;
+    EXPECT_NE(r.err.find(std::string("b.json: ") + key), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "b.svg"));
+  }
+}

@@ -443,14 +443,16 @@ struct drawing_cli {
   double crease_deg = 30;
 };
 
-/// `exbsp drawing`: a sheet of a mesh or scene, or a drawing set of a folder.
-int run_drawing(const drawing_cli& d) {
+/// `exbsp drawing`: a sheet of a mesh or scene, or a drawing set of a folder. `given`: the
+/// drawing options given as flags (they override a scene's "drawing" block).
+int run_drawing(const drawing_cli& d, std::vector<std::string> given) {
   namespace dr = exbsp::drawing;
   exbsp::scene::drawing_request request;
   request.input = d.input;
   request.output = d.output;
   request.force = d.force;
   request.strict = d.strict;
+  request.given = std::move(given);
   request.formats.clear();
   {
     std::string f;
@@ -755,7 +757,24 @@ int main(int argc, char** argv) {
     if (*render) {
       return finish_standard_output(run_render(r));
     }
-    if (*drawing) return run_drawing(dc);
+    if (*drawing) {
+      std::vector<std::string> given;
+      const std::pair<const char*, const char*> flags[] = {{"--title", "title"},
+                                                           {"--number", "number"},
+                                                           {"--date", "date"},
+                                                           {"--views", "views"},
+                                                           {"--projection", "projection"},
+                                                           {"--sheet", "sheet"},
+                                                           {"--scale", "scale"},
+                                                           {"--units", "units"},
+                                                           {"--section", "sections"},
+                                                           {"--lines-only", "lines_only"},
+                                                           {"--line-widths", "line_widths"},
+                                                           {"--crease-deg", "crease_deg"}};
+      for (const auto& [flag, name] : flags)
+        if (drawing->count(flag) > 0) given.emplace_back(name);
+      return run_drawing(dc, std::move(given));
+    }
   } catch (const exbsp::limit_error& e) {
     std::cerr << "exbsp: error: " << e.what() << "\n";
     if (*build || *order || *render || *drawing)

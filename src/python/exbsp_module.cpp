@@ -385,17 +385,36 @@ py::dict drawing(const py::object& input, const py::object& outputs, const py::o
   if (!(crease_deg > 0 && crease_deg <= 180)) throw usage_error("crease_deg: must be in (0, 180]");
   o.crease_deg = crease_deg;
   o.build.kernel = exbsp::parse_kernel(kernel);
+  // For a scene, its "drawing" block gives what the call leaves at the defaults.
+  const dr::drawing_options defaults;
+  std::vector<std::string> given;
+  if (!title.empty()) given.push_back("title");
+  if (!number.empty()) given.push_back("number");
+  if (!date.empty()) given.push_back("date");
+  if (o.views != defaults.views) given.push_back("views");
+  if (o.projection != defaults.projection) given.push_back("projection");
+  if (sheet != defaults.sheet.name) given.push_back("sheet");
+  if (scale != "auto") given.push_back("scale");
+  if (units != defaults.units) given.push_back("units");
+  if (!o.sections.empty()) given.push_back("sections");
+  if (lines_only) given.push_back("lines_only");
+  if (o.visible_width != defaults.visible_width || o.hidden_width != defaults.hidden_width)
+    given.push_back("line_widths");
+  if (crease_deg != defaults.crease_deg) given.push_back("crease_deg");
+  if (date.empty()) o.date.clear();
   std::size_t triangles = 0;
+  dr::drawing_options used;
   {
     py::gil_scoped_release release;
-    const dr::sheet s = exbsp::scene::make_drawing_sheet(in, o, false, nullptr, &triangles);
+    const dr::sheet s =
+        exbsp::scene::make_drawing_sheet(in, o, false, nullptr, &triangles, &given, &used);
     for (std::size_t k = 0; k < outs.size(); ++k)
-      exbsp::write_file_atomically(outs[k], exbsp::scene::drawing_bytes(s, formats[k], o));
+      exbsp::write_file_atomically(outs[k], exbsp::scene::drawing_bytes(s, formats[k], used));
   }
   py::dict r;
   r["written"] = outs;
   r["triangles"] = triangles;
-  r["date"] = o.date;
+  r["date"] = used.date;
   return r;
 }
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "clip/section_cap.h"
 #include "core/atomic_file.h"
@@ -14,6 +15,7 @@
 #include "core/file_name.h"
 #include "drawing/sheet_dxf.h"
 #include "drawing/sheet_writers.h"
+#include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"
 #include "scene/scene.h"
 
@@ -72,18 +74,76 @@ long long mtime_ns(const std::string& path) {
   return static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
 }
 
+/// `base` with the options named in `given` taken from `over`.
+drawing::drawing_options overridden(drawing::drawing_options base,
+                                    const drawing::drawing_options& over,
+                                    const std::vector<std::string>& given) {
+  const auto has = [&](const char* n) {
+    return std::find(given.begin(), given.end(), n) != given.end();
+  };
+  if (has("title")) base.title = over.title;
+  if (has("number")) base.number = over.number;
+  if (has("date")) base.date = over.date;
+  if (has("views")) base.views = over.views;
+  if (has("projection")) base.projection = over.projection;
+  if (has("sheet")) base.sheet = over.sheet;
+  if (has("scale")) base.scale = over.scale;
+  if (has("units")) base.units = over.units;
+  if (has("sections")) base.sections = over.sections;
+  if (has("lines_only")) base.lines_only = over.lines_only;
+  if (has("line_widths")) {
+    base.visible_width = over.visible_width;
+    base.hidden_width = over.hidden_width;
+  }
+  if (has("crease_deg")) base.crease_deg = over.crease_deg;
+  base.color = over.color;
+  base.build = over.build;
+  return base;
+}
+
 }  // namespace
 
-drawing::sheet make_drawing_sheet(const std::string& input, const drawing::drawing_options& options,
-                                  bool strict, std::ostream* log, std::size_t* triangles) {
+const std::vector<std::string>& drawing_option_names() {
+  static const std::vector<std::string> names{
+      "title", "number", "date",     "views",      "projection",  "sheet",
+      "scale", "units",  "sections", "lines_only", "line_widths", "crease_deg"};
+  return names;
+}
+
+drawing::sheet make_drawing_sheet(const std::string& input, const drawing::drawing_options& flags,
+                                  bool strict, std::ostream* log, std::size_t* triangles,
+                                  const std::vector<std::string>* given,
+                                  drawing::drawing_options* used) {
   triangle_soup part;
   std::string name = fs::path(input).filename().string();
+  drawing::drawing_options options = flags;
   if (has_extension(input, ".json")) {
-    const scene s = load_scene(input, log, strict);
+    // A drawing sets its own views: a scene need not have a camera, projection or viewport
+    // (the picture's keys); absent ones get harmless defaults so the scene validates as usual.
+    const std::string text = read_input_file(input);
+    check_json_nesting(text, input);
+    nlohmann::json doc;
+    try {
+      doc = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {
+      throw scene_error(input, "", std::string("invalid JSON: ") + e.what());
+    }
+    if (doc.is_object()) {
+      const bool has_camera = doc.contains("camera") && !doc["camera"].is_null();
+      if (!has_camera)
+        doc["camera"] = {{"eye", {0, 0, 1}}, {"look_at", {0, 0, 0}}, {"up", {0, 1, 0}}};
+      if (!has_camera && !doc.contains("projection"))
+        doc["projection"] = {{"type", "perspective"}, {"fovy_deg", 40}, {"near", 0.1}, {"far", 10}};
+      if (!doc.contains("viewport")) doc["viewport"] = {{"width", 64}, {"height", 64}};
+    }
+    const scene s = parse_scene(doc, input, log, strict);
     part = load_geometry(s).soup;
+    if (given) options = overridden(s.drawing, flags, *given);
   } else {
     part = read_mesh(input);
   }
+  if (options.date.empty()) options.date = drawing::today_date();
+  if (used) *used = options;
   if (triangles) *triangles = part.triangles.size();
   std::vector<drawing::section_cut> cuts;
   for (const drawing::section_spec& spec : options.sections) {
@@ -110,6 +170,7 @@ drawing_summary drawing_command(const drawing_request& request, std::ostream& lo
   drawing_summary summary;
   drawing::drawing_options options = request.options;
   if (options.date.empty()) options.date = drawing::today_date();  // one date for every file
+  const std::vector<std::string>& given = request.given;
   std::error_code ec;
   if (fs::is_directory(request.input, ec)) {
     if (request.formats.empty()) throw usage_error("--formats: at least one of svg, pdf, dxf");
@@ -147,11 +208,13 @@ drawing_summary drawing_command(const drawing_request& request, std::ostream& lo
       drawing::drawing_options o = options;
       if (o.title.empty()) o.title = stem;
       std::size_t tris = 0;
-      const drawing::sheet s = make_drawing_sheet(mesh, o, request.strict, nullptr, &tris);
+      drawing::drawing_options used;
+      const drawing::sheet s =
+          make_drawing_sheet(mesh, o, request.strict, nullptr, &tris, &given, &used);
       summary.triangles += tris;
       for (const std::string& f : todo) {
         const std::string out = (fs::path(request.output) / (stem + "." + f)).string();
-        write_file_atomically(out, drawing_bytes(s, f, o));
+        write_file_atomically(out, drawing_bytes(s, f, used));
         summary.written.push_back(out);
       }
     }
@@ -167,9 +230,10 @@ drawing_summary drawing_command(const drawing_request& request, std::ostream& lo
           "drawing: the input must be a mesh (.off, .obj, .ply, .stl), a scene "
           "(.json) or a folder, got '" +
           request.input + "'");
-    const drawing::sheet s =
-        make_drawing_sheet(request.input, options, request.strict, &log, &summary.triangles);
-    write_file_atomically(request.output, drawing_bytes(s, format, options));
+    drawing::drawing_options used;
+    const drawing::sheet s = make_drawing_sheet(request.input, request.options, request.strict,
+                                                &log, &summary.triangles, &given, &used);
+    write_file_atomically(request.output, drawing_bytes(s, format, used));
     summary.written.push_back(request.output);
   }
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

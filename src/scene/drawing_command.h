@@ -26,6 +26,9 @@ struct drawing_request {
   std::string output;  ///< OUT.svg / OUT.pdf / OUT.dxf, or a folder for a folder input
   std::vector<std::string> formats{"pdf"};  ///< folder input: the files of each sheet
   drawing::drawing_options options;
+  /// The options given explicitly (names of drawing_option_names()): for a scene input they
+  /// override its "drawing" block, the others come from the block (or options' defaults).
+  std::vector<std::string> given;
   bool force = false;   ///< folder input: redo finished sheets
   bool strict = false;  ///< scenes: unknown keys are errors
 };
@@ -37,9 +40,18 @@ struct drawing_summary {
   double seconds = 0;
 };
 
-/// The sheet of one mesh or scene file (sections cut), without writing it.
+/// "title", "number", "date", "views", "projection", "sheet", "scale", "units", "sections",
+/// "lines_only", "line_widths", "crease_deg": the options a scene's "drawing" block may set.
+const std::vector<std::string>& drawing_option_names();
+
+/// The sheet of one mesh or scene file (sections cut), without writing it. For a scene, the
+/// options are its "drawing" block with the `given` ones of `options` over it (`given` null:
+/// all of them); the date is today's when none is given. `used` (may be null) receives the
+/// options the sheet was made with.
 drawing::sheet make_drawing_sheet(const std::string& input, const drawing::drawing_options& options,
-                                  bool strict, std::ostream* log, std::size_t* triangles = nullptr);
+                                  bool strict, std::ostream* log, std::size_t* triangles = nullptr,
+                                  const std::vector<std::string>* given = nullptr,
+                                  drawing::drawing_options* used = nullptr);
 
 /// The bytes of `sheet` in `format` ("svg", "pdf" or "dxf") with the options' date.
 std::string drawing_bytes(const drawing::sheet& sheet, const std::string& format,

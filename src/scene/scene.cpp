@@ -228,6 +228,95 @@ void parse_clip_planes(const reader& r, const json& doc, scene& s) {
   }
 }
 
+/// "drawing": {"title", "number", "date", "views", "projection", "sheet", "scale", "units",
+/// "sections", "lines_only", "line_widths", "crease_deg"} (the options of `exbsp drawing`,
+/// drawing/drawing.h), each checked by the drawing library's own parser.
+void parse_drawing(const reader& r, const json& doc, scene& s) {
+  const json* d = r.optional(doc, "drawing");
+  if (!d) return;
+  r.object(*d, "/drawing");
+  r.reject_unknown(*d, "/drawing", "drawing",
+                   {"title", "number", "date", "views", "projection", "sheet", "scale", "units",
+                    "sections", "lines_only", "line_widths", "crease_deg"});
+  drawing::drawing_options& o = s.drawing;
+  // The library's parsers name their argument first ("KEY: ..."): name the JSON key instead.
+  const auto checked = [&](const std::string& key, auto&& parse) {
+    try {
+      return parse(std::string("\x01"));
+    } catch (const usage_error& e) {
+      std::string what = e.what();
+      if (what.rfind("\x01: ", 0) == 0) what = what.substr(3);
+      r.fail(key, what);
+    }
+  };
+  const auto text = [&](const json& v, const std::string& key) {
+    if (!v.is_string()) r.fail(key, std::string("must be a string (got ") + v.type_name() + ")");
+    return v.get<std::string>();
+  };
+  const auto texts = [&](const json& v, const std::string& key) {
+    std::vector<std::string> out;
+    if (v.is_string()) return std::vector<std::string>{v.get<std::string>()};
+    if (!v.is_array())
+      r.fail(key, std::string("must be an array of strings (got ") + v.type_name() + ")");
+    for (std::size_t k = 0; k < v.size(); ++k)
+      out.push_back(text(v[k], key + "/" + std::to_string(k)));
+    return out;
+  };
+  for (auto it = d->begin(); it != d->end(); ++it) {
+    const std::string name = it.key(), key = "/drawing/" + name;
+    const json& v = it.value();
+    if (v.is_null()) continue;
+    s.drawing_keys.push_back(name);
+    if (name == "title") {
+      o.title = text(v, key);
+    } else if (name == "number") {
+      o.number = text(v, key);
+    } else if (name == "date") {
+      o.date = text(v, key);
+    } else if (name == "views") {
+      std::string joined;
+      for (const std::string& t : texts(v, key)) joined += (joined.empty() ? "" : ",") + t;
+      o.views = checked(key, [&](const std::string& k) { return drawing::parse_views(joined, k); });
+    } else if (name == "projection") {
+      o.projection = checked(
+          key, [&](const std::string& k) { return drawing::parse_projection(text(v, key), k); });
+    } else if (name == "sheet") {
+      o.sheet =
+          checked(key, [&](const std::string& k) { return drawing::parse_paper(text(v, key), k); });
+    } else if (name == "scale") {
+      const std::string t = text(v, key);
+      if (t == "auto")
+        o.scale.reset();
+      else
+        o.scale = checked(key, [&](const std::string& k) { return drawing::parse_scale(t, k); });
+    } else if (name == "units") {
+      o.units = text(v, key);
+      checked(key, [&](const std::string& k) { return drawing::unit_mm(o.units, k); });
+    } else if (name == "sections") {
+      const auto list = texts(v, key);
+      o.sections.clear();
+      for (std::size_t k = 0; k < list.size(); ++k)
+        o.sections.push_back(checked(key + "/" + std::to_string(k), [&](const std::string& kk) {
+          return drawing::parse_section(list[k], kk);
+        }));
+    } else if (name == "lines_only") {
+      if (!v.is_boolean())
+        r.fail(key, std::string("must be true or false (got ") + v.type_name() + ")");
+      o.lines_only = v.get<bool>();
+    } else if (name == "line_widths") {
+      if (!v.is_array() || v.size() != 2) r.fail(key, "must be [visible, hidden] in mm");
+      o.visible_width = r.number(v[0], key + "/0");
+      o.hidden_width = r.number(v[1], key + "/1");
+      if (!(o.visible_width > 0 && o.visible_width <= 5 && o.hidden_width > 0 &&
+            o.hidden_width <= 5))
+        r.fail(key, "each width must be in (0, 5] mm");
+    } else if (name == "crease_deg") {
+      o.crease_deg = r.number(v, key);
+      if (!(o.crease_deg > 0 && o.crease_deg <= 180)) r.fail(key, "must be in (0, 180]");
+    }
+  }
+}
+
 }  // namespace
 
 scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings, bool strict) {
@@ -237,7 +326,7 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   r.warn_unknown(
       doc, "",
       {"meshes", "groups", "curves", "lines", "camera", "projection", "viewport", "image", "aspect",
-       "background", "effects", "trackball", "svg", "clip_planes", "caps"});
+       "background", "effects", "trackball", "svg", "clip_planes", "caps", "drawing"});
   scene s;
   s.path = path;
   detail::parse_mesh_tree(r, doc, path, s);
@@ -256,6 +345,7 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   parse_effects(r, doc, s);
   parse_vector(r, doc, s);
   parse_clip_planes(r, doc, s);
+  parse_drawing(r, doc, s);
   make_view_setup(s);  // reject cameras and projections whose matrices overflow, before any work
   return s;
 }

@@ -71,6 +71,7 @@
 #include <string>
 #include <vector>
 
+#include "drawing/drawing.h"
 #include "mesh/soup.h"
 #include "view/camera.h"
 #include "view/image.h"
@@ -149,6 +150,11 @@ struct scene {
   std::vector<std::array<double, 4>> clip_planes;  ///< "clip_planes" (A, B, C, D), keep >= 0
   bool caps = false;                               ///< "caps" present: draw the cut faces
   view::rgb8 cap_color{200, 60, 50};               ///< "caps": {"color"}
+  /// "drawing": the options of `exbsp drawing` for this scene (title block values, views,
+  /// sheet, scale, units, projection, sections, lines_only, line_widths, crease_deg), and the
+  /// names of the keys it gave (flags of the command override those).
+  drawing::drawing_options drawing;
+  std::vector<std::string> drawing_keys;
 };
 
 /// Validates a parsed JSON document. `path` names the file in messages and anchors relative
