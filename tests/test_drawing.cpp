@@ -469,6 +469,12 @@ TEST_F(DrawingCli, AFolderBecomesADrawingSetAndFinishedSheetsAreNotRedone) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("wrote 2 files"), std::string::npos) << r.err;
   EXPECT_EQ(run("drawing parts -o sheets/x.pdf").status, 2);
+  // A DXF holds the line drawing: made with the shaded fills (for the PDF) or without them (DXF
+  // alone skips them), it is the same file.
+  ASSERT_EQ(run("drawing parts -o both --formats pdf,dxf --date 2026-01-01 -q").status, 0);
+  ASSERT_EQ(run("drawing parts -o dxf --formats dxf --date 2026-01-01 -q").status, 0);
+  for (const char* f : {"a.dxf", "b.dxf"})
+    EXPECT_EQ(exbsp_test::read_file(dir / "both" / f), exbsp_test::read_file(dir / "dxf" / f)) << f;
 }
 
 namespace {

@@ -13,6 +13,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -402,6 +403,12 @@ py::dict drawing(const py::object& input, const py::object& outputs, const py::o
     given.push_back("line_widths");
   if (crease_deg != defaults.crease_deg) given.push_back("crease_deg");
   if (date.empty()) o.date.clear();
+  const bool dxf_only =
+      std::all_of(formats.begin(), formats.end(), [](const std::string& f) { return f == "dxf"; });
+  if (dxf_only) {
+    o = exbsp::scene::lines_only_if(o, true);
+    given.push_back("lines_only");
+  }
   std::size_t triangles = 0;
   dr::drawing_options used;
   {

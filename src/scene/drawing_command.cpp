@@ -103,6 +103,11 @@ drawing::drawing_options overridden(drawing::drawing_options base,
 
 }  // namespace
 
+drawing::drawing_options lines_only_if(drawing::drawing_options o, bool only_dxf) {
+  if (only_dxf) o.lines_only = true;
+  return o;
+}
+
 const std::vector<std::string>& drawing_option_names() {
   static const std::vector<std::string> names{
       "title", "number", "date",     "views",      "projection",  "sheet",
@@ -209,8 +214,10 @@ drawing_summary drawing_command(const drawing_request& request, std::ostream& lo
       if (o.title.empty()) o.title = stem;
       std::size_t tris = 0;
       drawing::drawing_options used;
-      const drawing::sheet s =
-          make_drawing_sheet(mesh, o, request.strict, nullptr, &tris, &given, &used);
+      const bool dxf_only =
+          std::all_of(todo.begin(), todo.end(), [](const std::string& f) { return f == "dxf"; });
+      const drawing::sheet s = make_drawing_sheet(mesh, lines_only_if(o, dxf_only), request.strict,
+                                                  nullptr, &tris, &given, &used);
       summary.triangles += tris;
       for (const std::string& f : todo) {
         const std::string out = (fs::path(request.output) / (stem + "." + f)).string();
@@ -231,8 +238,11 @@ drawing_summary drawing_command(const drawing_request& request, std::ostream& lo
           "(.json) or a folder, got '" +
           request.input + "'");
     drawing::drawing_options used;
-    const drawing::sheet s = make_drawing_sheet(request.input, request.options, request.strict,
-                                                &log, &summary.triangles, &given, &used);
+    std::vector<std::string> g = given;
+    if (format == "dxf") g.push_back("lines_only");
+    const drawing::sheet s =
+        make_drawing_sheet(request.input, lines_only_if(request.options, format == "dxf"),
+                           request.strict, &log, &summary.triangles, &g, &used);
     write_file_atomically(request.output, drawing_bytes(s, format, used));
     summary.written.push_back(request.output);
   }

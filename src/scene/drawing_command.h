@@ -53,6 +53,11 @@ drawing::sheet make_drawing_sheet(const std::string& input, const drawing::drawi
                                   const std::vector<std::string>* given = nullptr,
                                   drawing::drawing_options* used = nullptr);
 
+/// `o`, with lines_only set when `only_dxf`: a DXF holds the line drawing only (fills stay in
+/// SVG and PDF), so a sheet made only for DXF skips the visible regions; its edges, and so the
+/// DXF's bytes, are the same either way.
+drawing::drawing_options lines_only_if(drawing::drawing_options o, bool only_dxf);
+
 /// The bytes of `sheet` in `format` ("svg", "pdf" or "dxf") with the options' date.
 std::string drawing_bytes(const drawing::sheet& sheet, const std::string& format,
                           const drawing::drawing_options& options);
