@@ -645,3 +645,29 @@ TEST_F(DrawingCli, ASceneGivesTitleBlockAndOptionsAndFlagsOverrideThem) {
     EXPECT_FALSE(std::filesystem::exists(dir / "b.svg"));
   }
 }
+
+TEST(DrawingLayout, AYUpModelDrawnWithUpYIsTheZUpModelsSheet) {
+  // The z-up box [0,40] x [0,20] x [0,10] and the same box in y-up axes, (x, y, z) = (x, z_cad,
+  // -y_cad): [0,40] x [0,10] x [-20,0]. With up = "y" the second gives the first one's sheet.
+  auto o = line_options({"front", "top", "left", "iso"});
+  o.scale = drawing::drawing_scale{1, 1};
+  const drawing::sheet z_up = drawing::make_sheet(boxes_soup({{0, 0, 0, 40, 20, 10}}), "box", {}, o);
+  o.up = "y";
+  const drawing::sheet y_up = drawing::make_sheet(boxes_soup({{0, 0, -20, 40, 10, 0}}), "box", {}, o);
+  ASSERT_EQ(z_up.views.size(), y_up.views.size());
+  for (std::size_t k = 0; k < z_up.views.size(); ++k) {
+    const auto& a = z_up.views[k];
+    const auto& b = y_up.views[k];
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_NEAR(a.lower_left.x, b.lower_left.x, 1e-9) << a.name;
+    EXPECT_NEAR(a.lower_left.y, b.lower_left.y, 1e-9) << a.name;
+    const extent ea = extent_of(lines_in(z_up, a, layer_id::visible));
+    const extent eb = extent_of(lines_in(y_up, b, layer_id::visible));
+    EXPECT_NEAR(ea.x0, eb.x0, 0.003) << a.name;
+    EXPECT_NEAR(ea.x1, eb.x1, 0.003) << a.name;
+    EXPECT_NEAR(ea.y0, eb.y0, 0.003) << a.name;
+    EXPECT_NEAR(ea.y1, eb.y1, 0.003) << a.name;
+  }
+  o.up = "x";
+  EXPECT_THROW(drawing::make_sheet(boxes_soup({{0, 0, 0, 1, 1, 1}}), "box", {}, o), usage_error);
+}

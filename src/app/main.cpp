@@ -436,7 +436,8 @@ int run_render(const render_cli& r) {
 /// `exbsp drawing` options (strings parsed by the drawing library, which names the flag).
 struct drawing_cli {
   std::string input, output, views = "front,top,left,iso", projection = "first-angle";
-  std::string sheet = "A3", scale = "auto", units = "mm", line_widths, title, number, date;
+  std::string sheet = "A3", scale = "auto", units = "mm", up = "z", line_widths, title, number,
+              date;
   std::string formats = "pdf", kernel;
   std::vector<std::string> sections;
   bool lines_only = false, force = false, strict = false, quiet = false;
@@ -472,6 +473,7 @@ int run_drawing(const drawing_cli& d, std::vector<std::string> given) {
   if (d.scale != "auto") o.scale = dr::parse_scale(d.scale);
   dr::unit_mm(d.units);
   o.units = d.units;
+  o.up = d.up;
   for (const std::string& s : d.sections) {
     o.sections.push_back(dr::parse_section(s));
     for (std::size_t i = 0; i + 1 < o.sections.size(); ++i)
@@ -688,6 +690,12 @@ int main(int argc, char** argv) {
       ->add_option("--scale", dc.scale, "1:N, N:1, or auto (the largest ISO 5455 scale that fits)")
       ->capture_default_str();
   drawing->add_option("--units", dc.units, "model units: mm, cm, m or in")->capture_default_str();
+  drawing
+      ->add_option("--up", dc.up,
+                   "the model's up axis: z (CAD: front looks from -y) or y (front looks from +z, "
+                   "as render --view front)")
+      ->check(CLI::IsMember({"z", "y"}))
+      ->capture_default_str();
   drawing->add_option("--section", dc.sections,
                       "X=a,b,c,d: section view X-X, the cut by a*x+b*y+c*z+d = 0 seen from the "
                       "removed side (repeatable)");

@@ -309,6 +309,11 @@ sheet make_sheet(const triangle_soup& part, const std::string& name,
   });
   if (!any) throw input_error(name, 0, "the mesh has no triangle to draw");
   const double unit = unit_mm(o.units);
+  if (o.up != "z" && o.up != "y") throw usage_error("--up: expected z or y, got '" + o.up + "'");
+  // The views are defined on z-up axes; a y-up model's axes are (x, y, z) = (x, z_cad, -y_cad).
+  const auto to_model = [&](const vector3& cad) {
+    return o.up == "z" ? cad : vector3{cad.x, cad.z, -cad.y};
+  };
 
   // The views, their bases and extents.
   std::vector<planned_view> views;
@@ -316,15 +321,15 @@ sheet make_sheet(const triangle_soup& part, const std::string& name,
     planned_view v;
     v.name = n;
     if (n == "iso") {
-      v.towards_eye = unit_vector({1, -1, 1});
-      v.up = {0, 0, 1};
+      v.towards_eye = to_model(unit_vector({1, -1, 1}));
+      v.up = to_model({0, 0, 1});
     } else {
       const view_spec* spec = nullptr;
       for (const view_spec& p : principal)
         if (n == p.name) spec = &p;
       if (!spec) throw usage_error("--views: unknown view '" + n + "'");
-      v.towards_eye = spec->towards_eye;
-      v.up = spec->up;
+      v.towards_eye = to_model(spec->towards_eye);
+      v.up = to_model(spec->up);
       v.principal = v.hidden_edges = true;
       const bool first = o.projection == projection_method::first_angle;
       v.col = first ? spec->first_col : spec->third_col;
@@ -340,7 +345,11 @@ sheet make_sheet(const triangle_soup& part, const std::string& name,
     v.name = "section " + cuts[i].spec.letter;
     v.section = static_cast<int>(i);
     v.towards_eye = -1.0 * n;  // the viewer on the removed side looks at the cut face
-    v.up = std::fabs(n.z) < 0.99 ? vector3{0, 0, 1} : vector3{0, n.z > 0 ? -1.0 : 1.0, 0};
+    // Up: the drawing's up axis, or (a cut across it, seen from below or above) as the bottom
+    // and top views have it.
+    const vector3 z = to_model({0, 0, 1});
+    const double nz = dot(n, z);
+    v.up = std::fabs(nz) < 0.99 ? z : to_model({0, nz > 0 ? -1.0 : 1.0, 0});
     v.basis = view::look_direction_basis(n, v.up);
     views.push_back(v);
   }

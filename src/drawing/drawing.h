@@ -4,9 +4,11 @@
 // Notation: model axes as CAD uses them, z up: the front view looks at the part from -y (the
 // viewer stands at -y, up +z, right +x), top from +z (up +y), left from -x (the view of the
 // left side: up +z, right -y), right from +x, bottom from -z (up -y), rear from +y; iso looks
-// from (1, -1, 1) (up: +z made perpendicular). Each view is an orthographic projection of the
-// exact BSP (built once per solid), with the contract's exact hidden lines, mapped to the sheet
-// by the scale: mm_per_model = unit (mm per model unit) * scale.
+// from (1, -1, 1) (up: +z made perpendicular). With up = "y" these axes (x, y, z) are the
+// model's (x, -z, y): the front view looks from +z with +y up, as `exbsp render --view front`. Each
+// view is an orthographic projection of the exact BSP (built once per solid), with the contract's
+// exact hidden lines, mapped to the sheet by the scale: mm_per_model = unit (mm per model unit) *
+// scale.
 //
 // Layout (ISO 5456-2): the views sit in the cells of a grid around the front view. First-angle:
 // top below, bottom above, left view on the right, right view on the left, rear right of the
@@ -83,6 +85,9 @@ struct drawing_options {
   paper sheet{"A3", 420, 297};
   std::optional<drawing_scale> scale;  ///< empty: auto
   std::string units = "mm";            ///< model units: mm, cm, m, in
+  /// The model's up axis: "z" (CAD, the contract's default) or "y" (most OBJ/OFF/PLY files, and
+  /// `exbsp render`): with "y" the front view looks from +z, the top view from +y.
+  std::string up = "z";
   std::vector<section_spec> sections;
   bool lines_only = false;
   std::string title, number, date;  ///< title block fields (date: YYYY-MM-DD)

@@ -347,9 +347,10 @@ std::vector<std::string> string_list(const py::handle& h) {
 /// exbsp.drawing: one sheet of a mesh or scene file, written to each of `outputs`.
 py::dict drawing(const py::object& input, const py::object& outputs, const py::object& views,
                  const std::string& projection, const std::string& sheet, const std::string& scale,
-                 const std::string& units, const py::object& sections, bool lines_only,
-                 const std::string& title, const std::string& number, const std::string& date,
-                 std::array<double, 2> line_widths, double crease_deg, const std::string& kernel) {
+                 const std::string& units, const std::string& up, const py::object& sections,
+                 bool lines_only, const std::string& title, const std::string& number,
+                 const std::string& date, std::array<double, 2> line_widths, double crease_deg,
+                 const std::string& kernel) {
   namespace dr = exbsp::drawing;
   const std::string in = path_argument(input, "input");
   std::vector<std::string> outs;
@@ -375,6 +376,8 @@ py::dict drawing(const py::object& input, const py::object& outputs, const py::o
   if (scale != "auto") o.scale = dr::parse_scale(scale, "scale");
   dr::unit_mm(units, "units");
   o.units = units;
+  if (up != "z" && up != "y") throw usage_error("up: expected 'z' or 'y', got '" + up + "'");
+  o.up = up;
   for (const std::string& s : string_list(sections))
     o.sections.push_back(dr::parse_section(s, "sections"));
   o.lines_only = lines_only;
@@ -397,6 +400,7 @@ py::dict drawing(const py::object& input, const py::object& outputs, const py::o
   if (sheet != defaults.sheet.name) given.push_back("sheet");
   if (scale != "auto") given.push_back("scale");
   if (units != defaults.units) given.push_back("units");
+  if (up != defaults.up) given.push_back("up");
   if (!o.sections.empty()) given.push_back("sections");
   if (lines_only) given.push_back("lines_only");
   if (o.visible_width != defaults.visible_width || o.hidden_width != defaults.hidden_width)
@@ -578,10 +582,11 @@ PYBIND11_MODULE(_exbsp, m) {
   m.def("drawing", &drawing, py::arg("input"), py::arg("outputs"), py::kw_only(),
         py::arg("views") = std::vector<std::string>{"front", "top", "left", "iso"},
         py::arg("projection") = "first-angle", py::arg("sheet") = "A3", py::arg("scale") = "auto",
-        py::arg("units") = "mm", py::arg("sections") = std::vector<std::string>{},
-        py::arg("lines_only") = false, py::arg("title") = "", py::arg("number") = "",
-        py::arg("date") = "", py::arg("line_widths") = std::array<double, 2>{0.5, 0.25},
-        py::arg("crease_deg") = 30.0, py::arg("kernel") = "exact",
+        py::arg("units") = "mm", py::arg("up") = "z",
+        py::arg("sections") = std::vector<std::string>{}, py::arg("lines_only") = false,
+        py::arg("title") = "", py::arg("number") = "", py::arg("date") = "",
+        py::arg("line_widths") = std::array<double, 2>{0.5, 0.25}, py::arg("crease_deg") = 30.0,
+        py::arg("kernel") = "exact",
         "One drawing sheet (`exbsp drawing`) of a mesh or scene file, written to each of "
         "`outputs` (.svg, .pdf, .dxf); see docs/python.md. Returns {'written', 'triangles', "
         "'date'}.");

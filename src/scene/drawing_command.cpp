@@ -89,6 +89,7 @@ drawing::drawing_options overridden(drawing::drawing_options base,
   if (has("sheet")) base.sheet = over.sheet;
   if (has("scale")) base.scale = over.scale;
   if (has("units")) base.units = over.units;
+  if (has("up")) base.up = over.up;
   if (has("sections")) base.sections = over.sections;
   if (has("lines_only")) base.lines_only = over.lines_only;
   if (has("line_widths")) {
@@ -110,8 +111,8 @@ drawing::drawing_options lines_only_if(drawing::drawing_options o, bool only_dxf
 
 const std::vector<std::string>& drawing_option_names() {
   static const std::vector<std::string> names{
-      "title", "number", "date",     "views",      "projection",  "sheet",
-      "scale", "units",  "sections", "lines_only", "line_widths", "crease_deg"};
+      "title", "number", "date",     "views",      "projection",  "sheet",     "scale",
+      "units", "up",     "sections", "lines_only", "line_widths", "crease_deg"};
   return names;
 }
 

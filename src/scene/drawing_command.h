@@ -40,7 +40,7 @@ struct drawing_summary {
   double seconds = 0;
 };
 
-/// "title", "number", "date", "views", "projection", "sheet", "scale", "units", "sections",
+/// "title", "number", "date", "views", "projection", "sheet", "scale", "units", "up", "sections",
 /// "lines_only", "line_widths", "crease_deg": the options a scene's "drawing" block may set.
 const std::vector<std::string>& drawing_option_names();
 

@@ -237,7 +237,7 @@ void parse_drawing(const reader& r, const json& doc, scene& s) {
   r.object(*d, "/drawing");
   r.reject_unknown(*d, "/drawing", "drawing",
                    {"title", "number", "date", "views", "projection", "sheet", "scale", "units",
-                    "sections", "lines_only", "line_widths", "crease_deg"});
+                    "up", "sections", "lines_only", "line_widths", "crease_deg"});
   drawing::drawing_options& o = s.drawing;
   // The library's parsers name their argument first ("KEY: ..."): name the JSON key instead.
   const auto checked = [&](const std::string& key, auto&& parse) {
@@ -292,6 +292,9 @@ void parse_drawing(const reader& r, const json& doc, scene& s) {
     } else if (name == "units") {
       o.units = text(v, key);
       checked(key, [&](const std::string& k) { return drawing::unit_mm(o.units, k); });
+    } else if (name == "up") {
+      o.up = text(v, key);
+      if (o.up != "z" && o.up != "y") r.fail(key, "expected \"z\" or \"y\", got \"" + o.up + "\"");
     } else if (name == "sections") {
       const auto list = texts(v, key);
       o.sections.clear();
