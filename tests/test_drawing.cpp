@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -651,9 +652,11 @@ TEST(DrawingLayout, AYUpModelDrawnWithUpYIsTheZUpModelsSheet) {
   // -y_cad): [0,40] x [0,10] x [-20,0]. With up = "y" the second gives the first one's sheet.
   auto o = line_options({"front", "top", "left", "iso"});
   o.scale = drawing::drawing_scale{1, 1};
-  const drawing::sheet z_up = drawing::make_sheet(boxes_soup({{0, 0, 0, 40, 20, 10}}), "box", {}, o);
+  const drawing::sheet z_up =
+      drawing::make_sheet(boxes_soup({{0, 0, 0, 40, 20, 10}}), "box", {}, o);
   o.up = "y";
-  const drawing::sheet y_up = drawing::make_sheet(boxes_soup({{0, 0, -20, 40, 10, 0}}), "box", {}, o);
+  const drawing::sheet y_up =
+      drawing::make_sheet(boxes_soup({{0, 0, -20, 40, 10, 0}}), "box", {}, o);
   ASSERT_EQ(z_up.views.size(), y_up.views.size());
   for (std::size_t k = 0; k < z_up.views.size(); ++k) {
     const auto& a = z_up.views[k];
@@ -670,4 +673,29 @@ TEST(DrawingLayout, AYUpModelDrawnWithUpYIsTheZUpModelsSheet) {
   }
   o.up = "x";
   EXPECT_THROW(drawing::make_sheet(boxes_soup({{0, 0, 0, 1, 1, 1}}), "box", {}, o), usage_error);
+}
+
+TEST_F(DrawingCli, ASavedTreeDrawsTheSameSheetWithoutABuild) {
+  // `build --save` then `drawing T.exbsp`: the part's views come from the loaded tree (no
+  // build), and the lines are those of the mesh's own sheet; a section still cuts the input.
+  write("part.off", boxes_off({{0, 0, 0, 40, 20, 10}, {10, 30, 2, 20, 40, 8}}));
+  ASSERT_EQ(run("build part.off --save t.exbsp").status, 0);
+  auto o = line_options({"front", "top", "left", "iso"});
+  o.sections = {drawing::parse_section("A=0,1,0,-5")};
+  const drawing::sheet from_mesh =
+      scene::make_drawing_sheet((dir / "part.off").string(), o, false, nullptr);
+  std::ostringstream log;
+  const drawing::sheet from_tree =
+      scene::make_drawing_sheet((dir / "t.exbsp").string(), o, false, &log);
+  EXPECT_EQ(log.str().find("building the BSP of t.exbsp"), std::string::npos) << log.str();
+  ASSERT_EQ(from_mesh.lines.size(), from_tree.lines.size());
+  for (std::size_t i = 0; i < from_mesh.lines.size(); ++i) {
+    ASSERT_EQ(from_mesh.lines[i].points.size(), from_tree.lines[i].points.size()) << i;
+    for (std::size_t k = 0; k < from_mesh.lines[i].points.size(); ++k) {
+      EXPECT_EQ(from_mesh.lines[i].points[k].x, from_tree.lines[i].points[k].x);
+      EXPECT_EQ(from_mesh.lines[i].points[k].y, from_tree.lines[i].points[k].y);
+    }
+  }
+  const auto r = run("drawing t.exbsp -o t.pdf -q");
+  EXPECT_EQ(r.status, 0) << r.err;
 }

@@ -29,6 +29,7 @@ class bsp_impl {
   /// Writes the body of a saved tree (tree_file.h): the common part, then the kernel's own.
   virtual void write_tree(tree_file::writer& out) const = 0;
   virtual std::size_t node_count() const = 0;
+  virtual const triangle_soup& input() const = 0;
   virtual bsp_node node(std::size_t k) const = 0;
   /// The traversal for an eye point (direction = false) or a direction of projection.
   virtual void traverse(const vec3d& at, bool direction, bsp_visitor& visitor,

@@ -629,6 +629,7 @@ class bsp_kernel_impl final : public bsp_impl {
   }
 
   std::size_t node_count() const override { return tree_.nodes().size(); }
+  const triangle_soup& input() const override { return input_.soup; }
   bsp_node node(std::size_t k) const override {
     if (k >= tree_.nodes().size()) throw usage_error("node: index out of range");
     const auto& nd = tree_.nodes()[k];

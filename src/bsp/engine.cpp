@@ -105,6 +105,7 @@ bsp& bsp::operator=(bsp&&) noexcept = default;
 bsp::~bsp() = default;
 
 const build_stats& bsp::stats() const { return impl_->stats(); }
+const triangle_soup& bsp::input() const { return impl_->input(); }
 kernel_id bsp::kernel() const { return impl_->kernel(); }
 std::size_t bsp::fragment_count() const { return impl_->fragment_count(); }
 fragment_d bsp::fragment(std::size_t i) const { return impl_->fragment(i); }

@@ -171,6 +171,9 @@ class EXBSP_EXPORT bsp {
 
   const build_stats& stats() const;
   kernel_id kernel() const;
+  /// The soup the tree was built from (a loaded tree: the soup its file holds), its face ids
+  /// those of the fragments.
+  const triangle_soup& input() const;
 
   /// Fragments in storage order (node by node); indices below refer to this order.
   std::size_t fragment_count() const;

@@ -288,9 +288,11 @@ std::string today_date() {
   return buf;
 }
 
-sheet make_sheet(const triangle_soup& part, const std::string& name,
-                 const std::vector<section_cut>& cuts, const drawing_options& o,
-                 const sheet_progress& progress) {
+namespace {
+
+sheet make_sheet_of(const triangle_soup& part, std::optional<bsp> part_tree,
+                    const std::string& name, const std::vector<section_cut>& cuts,
+                    const drawing_options& o, const sheet_progress& progress) {
   const auto say = [&](const std::string& m) {
     if (progress) progress(m);
   };
@@ -501,6 +503,14 @@ sheet make_sheet(const triangle_soup& part, const std::string& name,
           solid_frame(solid, o, cuts[static_cast<std::size_t>(v.section)].cap_face));
       f = &*section_frame;
     } else {
+      if (!part_frame && part_tree) {  // a saved tree: its views need no build
+        part_frame.emplace();
+        part_frame->soup = part;
+        part_frame->face_colors.assign(part.face_count, o.color);
+        part_frame->tree.emplace(std::move(*part_tree));
+        part_tree.reset();
+        view::adopt_tree_stage(*part_frame);
+      }
       if (!part_frame) {
         say("building the BSP of " + name);
         part_frame.emplace(solid_frame(part, o, std::nullopt));
@@ -675,6 +685,20 @@ sheet make_sheet(const triangle_soup& part, const std::string& name,
   out.field(tx + wide, ty + row1 + row2, narrow, row3, "Drawn by",
             std::string("exbsp ") + version_string);
   return s;
+}
+
+}  // namespace
+
+sheet make_sheet(const triangle_soup& part, const std::string& name,
+                 const std::vector<section_cut>& cuts, const drawing_options& options,
+                 const sheet_progress& progress) {
+  return make_sheet_of(part, std::nullopt, name, cuts, options, progress);
+}
+
+sheet make_sheet(bsp tree, const std::string& name, const std::vector<section_cut>& cuts,
+                 const drawing_options& options, const sheet_progress& progress) {
+  const triangle_soup part = tree.input();
+  return make_sheet_of(part, std::move(tree), name, cuts, options, progress);
 }
 
 }  // namespace exbsp::drawing

@@ -137,4 +137,10 @@ EXBSP_EXPORT sheet make_sheet(const triangle_soup& part, const std::string& name
                               const std::vector<section_cut>& cuts, const drawing_options& options,
                               const sheet_progress& progress = {});
 
+/// make_sheet of the part a built tree holds (tree.input(); e.g. a saved tree, bsp::load): the
+/// part's views use `tree` as it is, without a build (sections still cut and build their own).
+EXBSP_EXPORT sheet make_sheet(bsp tree, const std::string& name,
+                              const std::vector<section_cut>& cuts, const drawing_options& options,
+                              const sheet_progress& progress = {});
+
 }  // namespace exbsp::drawing

@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <nlohmann/json.hpp>
 
+#include "bsp/engine.h"
 #include "clip/section_cap.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
@@ -121,6 +123,7 @@ drawing::sheet make_drawing_sheet(const std::string& input, const drawing::drawi
                                   const std::vector<std::string>* given,
                                   drawing::drawing_options* used) {
   triangle_soup part;
+  std::optional<bsp> tree;  // a saved tree: the part's views use it without a build
   std::string name = fs::path(input).filename().string();
   drawing::drawing_options options = flags;
   if (has_extension(input, ".json")) {
@@ -145,6 +148,9 @@ drawing::sheet make_drawing_sheet(const std::string& input, const drawing::drawi
     const scene s = parse_scene(doc, input, log, strict);
     part = load_geometry(s).soup;
     if (given) options = overridden(s.drawing, flags, *given);
+  } else if (bsp::is_saved_tree(input)) {
+    tree.emplace(bsp::load(input));
+    part = tree->input();
   } else {
     part = read_mesh(input);
   }
@@ -159,6 +165,7 @@ drawing::sheet make_drawing_sheet(const std::string& input, const drawing::drawi
   const auto progress = [log](const std::string& m) {
     if (log) *log << "exbsp: " << m << "\n";
   };
+  if (tree) return drawing::make_sheet(std::move(*tree), name, cuts, options, progress);
   return drawing::make_sheet(part, name, cuts, options, progress);
 }
 
@@ -233,10 +240,11 @@ drawing_summary drawing_command(const drawing_request& request, std::ostream& lo
           "-o: the output must end in .svg, .pdf or .dxf (a folder only for a "
           "folder input), got '" +
           request.output + "'");
-    if (!has_extension(request.input, ".json") && !is_mesh_file(request.input))
+    if (!has_extension(request.input, ".json") && !is_mesh_file(request.input) &&
+        !bsp::is_saved_tree(request.input))
       throw usage_error(
-          "drawing: the input must be a mesh (.off, .obj, .ply, .stl), a scene "
-          "(.json) or a folder, got '" +
+          "drawing: the input must be a mesh (.off, .obj, .ply, .stl), a scene (.json), a saved "
+          "tree (.exbsp, from build --save) or a folder, got '" +
           request.input + "'");
     drawing::drawing_options used;
     std::vector<std::string> g = given;

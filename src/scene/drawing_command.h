@@ -3,7 +3,8 @@
 // in SVG, PDF or DXF.
 //
 // Inputs: a mesh file (.off, .obj, .ply, .stl); a scene (.json: all its meshes with their
-// transforms as one part; its camera and effects do not apply to a drawing); a folder: one
+// transforms as one part; its camera and effects do not apply to a drawing); a saved tree
+// (.exbsp, `build --save`: its views use the tree without a build); a folder: one
 // sheet per mesh file in it (sorted by name, not recursive), written to OUTDIR/NAME.EXT for each
 // of `formats`. Sections are cut exactly (section_with_cap, exbsp::gpl) before the views.
 //

@@ -94,6 +94,15 @@ std::string build_stage(frame& f) {
          s.heuristic;
 }
 
+std::string adopt_tree_stage(frame& f) {
+  if (!f.tree) throw usage_error("adopt_tree_stage: the frame holds no tree");
+  f.fragments = f.tree->fragments_double();
+  index_points(f);
+  const build_stats& s = f.tree->stats();
+  return std::to_string(s.input_triangles) + " triangles, " + std::to_string(s.fragments) +
+         " fragments (a saved tree, not rebuilt), kernel " + s.kernel;
+}
+
 std::string order_stage(frame& f) {
   // A new view: the products of the effect and curve stages of the previous view are stale.
   f.fragment_colors.clear();

@@ -17,6 +17,11 @@ namespace exbsp::view {
 /// view). Throws usage_error / limit_error from bsp::build.
 EXBSP_EXPORT std::string build_stage(frame& f);
 
+/// "build" for a tree made elsewhere (a saved tree, bsp::load): f.tree is set; fills the
+/// products build_stage would (fragments, points) without building. Throws usage_error when
+/// f.tree is empty.
+EXBSP_EXPORT std::string adopt_tree_stage(frame& f);
+
 /// "order": f.order = back-to-front fragment indices: order_from_eye(camera eye) for
 /// perspective and frustum, order_for_direction(f.view.direction) for orthographic and oblique.
 /// Clears the per-view products of effect and curve stages (fragment_colors, lines, fog).
