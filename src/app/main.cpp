@@ -97,12 +97,9 @@ std::string max_fragments_help() {
          std::to_string(bytes_per_fragment(exbsp::kernel_id::epeck)) + " for epeck and gmpq)";
 }
 
-/// The most threads --threads accepts: 4 per hardware thread, at most 1024 (libgomp crashes
-/// or fails on team sizes in the tens of thousands).
-unsigned max_threads() {
-  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  return std::min(1024u, 4 * hw);
-}
+/// The most threads --threads accepts (the library's limit: 4 per hardware thread, at most
+/// 1024; libgomp crashes or fails on team sizes in the tens of thousands).
+unsigned max_threads() { return exbsp::max_build_threads(); }
 
 /// OMP_NUM_THREADS is read by libgomp before main; a value it accepts but cannot honour
 /// (100000) crashes the first parallel region. Anything but a number in 1..max_threads()

@@ -116,6 +116,13 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   // Heuristic seeds come from each node's path key, not from a creation counter, and the
   // frontier size is fixed, so the tree is the same for any number of threads.
   build_context ctx(options, heuristic, start);
+  // This thread also reports from inside long heuristic steps (cancellation, parallel.h).
+  detail::build_poller poller{[&ctx] {
+                                ctx.report(ctx.placed.load(std::memory_order_relaxed),
+                                           ctx.nodes.load(std::memory_order_relaxed));
+                              },
+                              start + std::chrono::milliseconds(100)};
+  const detail::scoped_poller polling(options.progress ? &poller : nullptr);
   ctx.sources = soup.triangles.size();
   for (const vec3d& v : soup.vertices)
     for (int k = 0; k < 3; ++k) {

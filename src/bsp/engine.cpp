@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // exbsp::bsp facade: kernel dispatch, names, and the kernel-independent helpers.
 #include "bsp/engine.h"
+#include "bsp/parallel.h"
 
 #include <cmath>
 
@@ -82,8 +83,14 @@ heuristic_id heuristic_for(const build_options& options) {
 }
 }  // namespace detail
 
+unsigned max_build_threads() { return static_cast<unsigned>(detail::team_limit()); }
+
 bsp bsp::build(const triangle_soup& soup, const build_options& options) {
   detail::heuristic_for(options);  // fail fast on a bad name
+  if (options.threads > max_build_threads())
+    throw usage_error("threads: " + std::to_string(options.threads) +
+                      " is out of range (0 for all cores, or 1.." +
+                      std::to_string(max_build_threads()) + ")");
   switch (options.kernel) {
     case kernel_id::exact:
       return bsp(make_bsp_exact(soup, options));

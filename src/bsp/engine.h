@@ -50,6 +50,10 @@ EXBSP_EXPORT const std::vector<std::string>& heuristic_names();
 /// The default heuristic (the best one the benchmarks found; see bench/RESULTS.md).
 EXBSP_EXPORT const char* default_heuristic();
 
+/// The most threads a build uses and build_options::threads accepts: 4 per hardware thread,
+/// at most 1024. (threads = 0, all cores, also stays within it whatever OMP_NUM_THREADS says.)
+EXBSP_EXPORT unsigned max_build_threads();
+
 /// Progress of a running build, reported to build_options::progress.
 struct build_progress {
   std::size_t fragments_placed;  ///< fragments already stored at nodes
@@ -88,7 +92,8 @@ struct build_options {
   std::string heuristic = default_heuristic();
   std::uint64_t seed = 0;         ///< for randomised heuristics; same seed, same tree
   std::size_t max_fragments = 0;  ///< 0: no limit; otherwise throw limit_error beyond it
-  unsigned threads = 0;           ///< worker threads for candidate evaluation (0: all cores)
+  unsigned threads = 0;  ///< worker threads for candidate evaluation (0: all cores); at most
+                         ///< max_build_threads() (usage_error beyond)
   /// Fewer fragments than this pending below the top levels: the subtrees are built on the
   /// calling thread (threads only slow a build of milliseconds). 0: always in parallel.
   /// Never changes the tree.

@@ -420,7 +420,7 @@ void exact_geometry::prepare_output(const std::vector<fragment>& fragments) cons
     // the first one kept). Each thread writes only its own points' entries of rounded_.
     detail::parallel_failure failure;
     const auto n = static_cast<long long>(constructed.size());
-#pragma omp parallel for schedule(dynamic, 64) if (n >= 1024)
+#pragma omp parallel for schedule(dynamic, 64) if (n >= 1024) num_threads(detail::threads_for(0))
     for (long long i = 0; i < n; ++i)
       failure.run([&] {
         const std::uint32_t id = constructed[static_cast<std::size_t>(i)];

@@ -72,6 +72,7 @@ std::size_t choose_min_split(std::size_t n, const Classify& cls, unsigned thread
 #pragma omp parallel for schedule(dynamic, 8) if (n > 64) num_threads(threads_for(threads))
   for (long long ii = 0; ii < nn; ++ii) {
     failure.run([&] {
+      poll();  // cancellation (parallel.h)
       const auto i = static_cast<std::uint64_t>(ii);
       if (same_plane[i].load(std::memory_order_relaxed)) return;
       if (key(0, i) >= best.load(std::memory_order_relaxed)) return;
@@ -251,6 +252,7 @@ std::size_t choose_scored(std::size_t n, const Classify& cls, const Ids& ids,
         sampled_candidate_positions(n, std::max(1u, o.sampled_candidates), o.seed, node_key);
     const std::size_t m = sample_size(n, o.sampled_samples);
     for (std::size_t i : candidates) {
+      poll();  // cancellation (parallel.h)
       candidate_score_input in = input_for(i);
       count_sides(
           i, cls, m, [&](std::size_t k) { return sample_position(k, n, m); }, in);
@@ -264,6 +266,7 @@ std::size_t choose_scored(std::size_t n, const Classify& cls, const Ids& ids,
 #pragma omp parallel for schedule(dynamic, 8) if (n > 64) num_threads(threads_for(o.threads))
     for (long long ii = 0; ii < nn; ++ii) {
       failure.run([&] {
+        poll();  // cancellation (parallel.h)
         const auto i = static_cast<std::size_t>(ii);
         candidate_score_input in = input_for(i);
         count_sides(

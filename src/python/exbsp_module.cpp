@@ -14,6 +14,9 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <thread>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +37,74 @@ namespace py = pybind11;
 namespace {
 
 using exbsp::usage_error;
+
+/// True while the interpreter shuts down. A callback from a build in a daemon thread must not
+/// take the GIL then: Python ends such threads with pthread_exit, whose unwinding through the
+/// engine's frames aborts the process ("FATAL: exception not rethrown"). The build is
+/// cancelled instead (the C++ exception unwinds normally; nobody is left to see it).
+bool interpreter_finalizing() {
+#if PY_VERSION_HEX >= 0x030D0000
+  return Py_IsFinalizing() != 0;
+#else
+  return _Py_IsFinalizing() != 0;
+#endif
+}
+
+/// Calls into the engine in progress (they run without the GIL), and whether the interpreter is
+/// exiting. A thread that takes the GIL back while the interpreter finalizes is ended by
+/// pthread_exit, whose unwinding through the engine (or an OpenMP region) aborts the process:
+/// at exit (an atexit hook, before finalization) no new call starts, builds are cancelled at
+/// their next callback, and the interpreter waits until every call has left the engine.
+std::atomic<int> calls_in_engine{0};
+std::atomic<bool> shutting_down{false};
+
+/// Counts one call into the engine; refuses new calls once the interpreter exits.
+class counted_call {
+ public:
+  counted_call() {
+    if (shutting_down.load()) throw exbsp::build_cancelled("the interpreter is exiting");
+    calls_in_engine.fetch_add(1);
+  }
+  ~counted_call() { calls_in_engine.fetch_sub(1); }
+  counted_call(const counted_call&) = delete;
+  counted_call& operator=(const counted_call&) = delete;
+};
+
+/// A call into the engine: counted, with the GIL released for its lifetime (taken back before
+/// the count drops, so that a thread the exit hook waited for is back in Python).
+class engine_call {
+ public:
+  engine_call() = default;
+
+ private:
+  counted_call count_;
+  py::gil_scoped_release release_;
+};
+
+/// The exit hook (registered with atexit): stops new calls, cancels builds, waits (up to a
+/// minute) for the calls in progress to return.
+void finish_engine_calls() {
+  shutting_down.store(true);
+  py::gil_scoped_release release;
+  for (int k = 0; k < 60000 && calls_in_engine.load() > 0; ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
+/// Raises build_cancelled in a build callback (which holds the GIL) once the interpreter exits.
+void check_not_exiting() {
+  if (shutting_down.load() || interpreter_finalizing())
+    throw exbsp::build_cancelled("the interpreter is exiting");
+}
+
+/// A path argument: str or os.PathLike, without NUL (a C string would be cut there).
+std::string path_argument(const py::handle& h, const std::string& what) {
+  py::object p = py::module_::import("os").attr("fspath")(h);
+  if (!py::isinstance<py::str>(p)) throw usage_error(what + ": expected a str path, got bytes");
+  const std::string s = p.cast<std::string>();
+  if (s.empty()) throw usage_error(what + ": empty path");
+  if (s.find('\0') != std::string::npos) throw usage_error(what + ": the path contains a NUL byte");
+  return s;
+}
 
 /// The value of a Python integer or numpy integer (not a float); `what` names it in messages.
 long long integer(py::handle h, const std::string& what) {
@@ -90,8 +161,9 @@ exbsp::triangle_soup soup_from(
                         std::string(py::str(a.dtype())) + ")");
     if (a.ndim() != 2 || a.shape(1) < 3)
       throw usage_error("faces must be an (m, k) array with k >= 3");
-    const auto rows = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
-    if (!rows) throw py::error_already_set();
+    // The converting constructor, not array_t::ensure: ensure clears the Python error of a
+    // failed conversion (a MemoryError for a large array), leaving nothing to raise.
+    const py::array_t<long long, py::array::c_style | py::array::forcecast> rows(a);
     const auto m = static_cast<std::size_t>(rows.shape(0)),
                k = static_cast<std::size_t>(rows.shape(1));
     polygons.assign(m, std::vector<std::uint32_t>(k));
@@ -213,7 +285,9 @@ exbsp::bsp build(const py::array_t<double, py::array::c_style | py::array::force
     if (!PyCallable_Check(score.ptr())) throw usage_error("score must be callable");
     // Called from the build's threads without the GIL: take it for each call.
     o.score = [score](const exbsp::candidate_score_input& in) {
+      if (interpreter_finalizing()) throw exbsp::build_cancelled();
       py::gil_scoped_acquire gil;
+      check_not_exiting();
       const py::object result = score(in);
       const double value = PyFloat_AsDouble(result.ptr());  // a number (TypeError for "1.5")
       if (value == -1.0 && PyErr_Occurred()) throw py::error_already_set();
@@ -224,11 +298,29 @@ exbsp::bsp build(const py::array_t<double, py::array::c_style | py::array::force
   // its threads; on the calls that come on this (the main) thread a pending signal raises
   // KeyboardInterrupt and the build stops (PyErr_CheckSignals does nothing on other threads).
   o.progress = [](const exbsp::build_progress&) {
+    if (interpreter_finalizing()) throw exbsp::build_cancelled();
     py::gil_scoped_acquire gil;
+    check_not_exiting();
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
   };
-  py::gil_scoped_release no_gil;
+  engine_call no_gil;
   return exbsp::bsp::build(soup, o);
+}
+
+/// The Tree behind `self`. pybind11 hands a method the storage of an instance that was never
+/// constructed (exbsp.Tree.__new__(exbsp.Tree), or one whose __setstate__ failed) as if it
+/// held a tree, and using it crashes the interpreter: every method of Tree takes `self` and
+/// checks here first (TypeError instead).
+const exbsp::bsp& tree_of(py::handle self) {
+  if (!py::isinstance<exbsp::bsp>(self))
+    throw py::type_error("expected an exbsp.Tree, got " + std::string(py::str(self.get_type())));
+  auto* inst = reinterpret_cast<py::detail::instance*>(self.ptr());
+  const auto vh = inst->get_value_and_holder(py::detail::get_type_info(typeid(exbsp::bsp)), false);
+  if (!vh || !vh.holder_constructed() || !vh.value_ptr())
+    throw py::type_error(
+        "this exbsp.Tree was never initialised (trees come from exbsp.build, exbsp.load, "
+        "exbsp.deserialize or pickle)");
+  return *static_cast<const exbsp::bsp*>(vh.value_ptr());
 }
 
 std::size_t checked_index(const exbsp::bsp& t, py::ssize_t i) {
@@ -248,7 +340,7 @@ py::dict section(const py::array_t<double, py::array::c_style | py::array::force
   options.exact_text = exact;
   exbsp::section_result r;
   {
-    py::gil_scoped_release no_gil;
+    engine_call no_gil;
     r = cap ? exbsp::section_with_cap(soup, plane, options) : exbsp::section(soup, plane, options);
   }
   const auto points = make_array<double>({static_cast<py::ssize_t>(r.points.size()), 3},
@@ -293,10 +385,11 @@ py::dict section(const py::array_t<double, py::array::c_style | py::array::force
 }
 
 /// exbsp.read_mesh: (vertices (n, 3) float64, triangles (t, 3) uint32, face_ids (t,) uint32).
-py::tuple read_mesh(const std::string& path) {
+py::tuple read_mesh(const py::object& path_object) {
+  const std::string path = path_argument(path_object, "path");
   exbsp::triangle_soup soup;
   {
-    py::gil_scoped_release no_gil;
+    engine_call no_gil;
     soup = exbsp::read_mesh(path);
   }
   const auto v = make_array<double>({static_cast<py::ssize_t>(soup.vertices.size()), 3},
@@ -314,16 +407,6 @@ py::handle new_exception(py::module_& m, const char* name, const py::tuple& base
   if (!type) throw py::error_already_set();
   m.attr(name) = type;
   return type;  // m keeps a reference
-}
-
-/// A path argument: str or os.PathLike, without NUL (a C string would be cut there).
-std::string path_argument(const py::handle& h, const std::string& what) {
-  py::object p = py::module_::import("os").attr("fspath")(h);
-  if (!py::isinstance<py::str>(p)) throw usage_error(what + ": expected a str path, got bytes");
-  const std::string s = p.cast<std::string>();
-  if (s.empty()) throw usage_error(what + ": empty path");
-  if (s.find('\0') != std::string::npos) throw usage_error(what + ": the path contains a NUL byte");
-  return s;
 }
 
 /// A list of strings from a str ("a,b") or a sequence of str.
@@ -416,7 +499,7 @@ py::dict drawing(const py::object& input, const py::object& outputs, const py::o
   std::size_t triangles = 0;
   dr::drawing_options used;
   {
-    py::gil_scoped_release release;
+    engine_call release;
     const dr::sheet s =
         exbsp::scene::make_drawing_sheet(in, o, false, nullptr, &triangles, &given, &used);
     for (std::size_t k = 0; k < outs.size(); ++k)
@@ -438,6 +521,7 @@ PYBIND11_MODULE(_exbsp, m) {
   m.attr("HEURISTICS") = py::tuple(py::cast(exbsp::heuristic_names()));
   m.attr("KERNELS") = py::tuple(py::cast(exbsp::kernel_names()));
   m.attr("DEFAULT_HEURISTIC") = exbsp::default_heuristic();
+  py::module_::import("atexit").attr("register")(py::cpp_function(&finish_engine_calls));
 
   // Exception classes; the translator keeps them alive for the module's lifetime.
   // Handles, not objects: no Py_DECREF after the interpreter has finalized (the module holds them).
@@ -501,19 +585,21 @@ PYBIND11_MODULE(_exbsp, m) {
 
   py::class_<exbsp::bsp>(
       m, "Tree", "A built BSP tree (exbsp.build). Immutable; safe to share between threads.")
-      .def_property_readonly("stats", [](const exbsp::bsp& t) { return stats_dict(t.stats()); })
-      .def_property_readonly("kernel",
-                             [](const exbsp::bsp& t) { return exbsp::to_string(t.kernel()); })
-      .def("__len__", &exbsp::bsp::fragment_count)
+      .def_property_readonly("stats",
+                             [](py::handle self) { return stats_dict(tree_of(self).stats()); })
+      .def_property_readonly(
+          "kernel", [](py::handle self) { return exbsp::to_string(tree_of(self).kernel()); })
+      .def("__len__", [](py::handle self) { return tree_of(self).fragment_count(); })
       .def(
           "order",
-          [](const exbsp::bsp& t, const std::optional<exbsp::vec3d>& eye,
+          [](py::handle self, const std::optional<exbsp::vec3d>& eye,
              const std::optional<exbsp::vec3d>& direction, bool back_to_front) {
+            const exbsp::bsp& t = tree_of(self);
             if (eye.has_value() == direction.has_value())
               throw usage_error("order: give exactly one of eye=(x, y, z) or direction=(x, y, z)");
             std::vector<std::uint32_t> order;
             {
-              py::gil_scoped_release no_gil;
+              engine_call no_gil;
               order = eye ? t.order_from_eye(*eye, back_to_front)
                           : t.order_for_direction(*direction, back_to_front);
             }
@@ -525,7 +611,8 @@ PYBIND11_MODULE(_exbsp, m) {
           "projection.")
       .def(
           "fragments",
-          [](const exbsp::bsp& t) {
+          [](py::handle self) {
+            const exbsp::bsp& t = tree_of(self);
             const std::vector<exbsp::fragment_d> f = t.fragments_double();
             const auto n = static_cast<py::ssize_t>(f.size());
             const auto v = make_array<double>(
@@ -537,26 +624,36 @@ PYBIND11_MODULE(_exbsp, m) {
           "(vertices (k, 3, 3) float64, face ids (k,) uint32) of the fragments in storage order.")
       .def(
           "exact",
-          [](const exbsp::bsp& t, py::ssize_t i) {
+          [](py::handle self, py::ssize_t i) {
+            const exbsp::bsp& t = tree_of(self);
             const exbsp::exact_triangle e = t.fragment_exact(checked_index(t, i));
             return py::make_tuple(exact_point(e[0]), exact_point(e[1]), exact_point(e[2]));
           },
           py::arg("i"), "Fragment i's corners as ((Fraction,) * 3,) * 3 (exact kernels only).")
       .def(
           "ancestors",
-          [](const exbsp::bsp& t, py::ssize_t i) {
+          [](py::handle self, py::ssize_t i) {
+            const exbsp::bsp& t = tree_of(self);
             py::list out;
             for (const auto& a : t.ancestors(checked_index(t, i)))
               out.append(py::make_tuple(a.plane_face, a.side));
             return out;
           },
           py::arg("i"), "[(input triangle whose plane it is, side +1/-1), ...] from the root down.")
-      .def("save", &exbsp::bsp::save, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
-           "Writes the tree to a file (docs/tree-file.md); exbsp.load reads it back.")
       .def(
-          "serialize", [](const exbsp::bsp& t) { return py::bytes(t.serialize()); },
+          "save",
+          [](py::handle self, const py::object& path) {
+            const exbsp::bsp& t = tree_of(self);
+            const std::string p = path_argument(path, "path");
+            engine_call no_gil;
+            t.save(p);
+          },
+          py::arg("path"),
+          "Writes the tree to a file (docs/tree-file.md); exbsp.load reads it back.")
+      .def(
+          "serialize", [](py::handle self) { return py::bytes(tree_of(self).serialize()); },
           "The bytes save writes.")
-      .def(py::pickle([](const exbsp::bsp& t) { return py::bytes(t.serialize()); },
+      .def(py::pickle([](py::handle self) { return py::bytes(tree_of(self).serialize()); },
                       [](const py::bytes& b) {
                         return exbsp::bsp::deserialize(std::string(b), "<pickled exbsp.Tree>");
                       }));
@@ -571,8 +668,15 @@ PYBIND11_MODULE(_exbsp, m) {
         py::arg("cap") = true, py::arg("exact") = true, py::arg("face_ids") = py::none(),
         "Cuts a mesh exactly by the plane A*x + B*y + C*z + D = 0, keeping >= 0; see "
         "docs/python.md.");
-  m.def("load", &exbsp::bsp::load, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
-        "Reads a tree saved by Tree.save or `exbsp build --save` (InputError when it is bad).");
+  m.def(
+      "load",
+      [](const py::object& path) {
+        const std::string p = path_argument(path, "path");
+        engine_call no_gil;
+        return exbsp::bsp::load(p);
+      },
+      py::arg("path"),
+      "Reads a tree saved by Tree.save or `exbsp build --save` (InputError when it is bad).");
   m.def(
       "deserialize",
       [](const py::bytes& b) { return exbsp::bsp::deserialize(std::string(b), "<bytes>"); },
