@@ -745,3 +745,122 @@ TEST_F(Hostile, strict_makes_unknown_scene_keys_errors_and_the_warning_lists_exp
 }
 
 }  // namespace
+
+namespace {
+
+const char* const tetra_off =
+    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+
+/// A scene around the tetrahedron `tetra.off` with `camera`, `effects` and mesh `extra` keys.
+std::string tetra_scene(const std::string& camera, const std::string& effects = "{}",
+                        const std::string& mesh = "\"file\": \"tetra.off\"") {
+  return "{\"meshes\": [{" + mesh + "}], \"camera\": " + camera +
+         ", \"projection\": {\"type\": \"perspective\", \"fovy_deg\": 40, \"near\": 1, \"far\": "
+         "100}, \"viewport\": {\"width\": 32, \"height\": 32}, \"effects\": " +
+         effects + "}";
+}
+
+}  // namespace
+
+TEST_F(Hostile, clip_coordinates_whose_intermediate_values_overflow_exit_2_naming_the_key) {
+  // +-1.7e308 gave null coordinates (Cohen-Sutherland, Liang-Barsky) and a polygon lost a
+  // vertex; coefficients near 1e200 gave a message with an internal function name.
+  const std::pair<std::string, std::string> cases[] = {
+      {R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [[[-1.7e308, -1.7e308], [1.7e308, 1.7e308]]]})",
+       "/segments/0/0/0"},
+      {R"({"region": {"rect": [0, 0, 1, 1]}, "polygons": [[[-1.7e308, 0.5], [1.7e308, 0.5], [1.7e308, 0.6]]]})",
+       "/polygons/0/0/0"},
+      {R"({"region": {"convex": [[0, 0], [1e200, 0], [0, 1e200]]}, "polygons": [[[0, 0], [1, 0], [0, 1]]]})",
+       "/region/convex/1/0"},
+      {R"({"region": {"halfspaces": [[1e200, 1, 0, 1]]}, "segments": [[[0, 0, 0], [1, 1, 1]]]})",
+       "/region/halfspaces/0/0"},
+  };
+  for (const auto& [doc, key] : cases) {
+    write("c.json", doc);
+    for (const char* algorithm : {"cohen-sutherland", "liang-barsky"}) {
+      const result r = run(std::string("clip c.json --algorithm ") + algorithm + " -o out.json");
+      EXPECT_EQ(r.status, 2) << doc << "\n" << r.err;
+      EXPECT_NE(r.err.find("c.json: " + key + ": must be at most 1e100"), std::string::npos)
+          << r.err;
+      EXPECT_EQ(r.err.find("sutherland_hodgman_clip"), std::string::npos) << r.err;
+      EXPECT_FALSE(fs::exists(dir / "out.json"));
+    }
+  }
+  // At the bound the answer is finite and exact enough: no null.
+  write("ok.json",
+        R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [[[-1e100, -1e100], [1e100, 1e100]]]})");
+  const result ok = run("clip ok.json -o ok_out.json");
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(read_file(dir / "ok_out.json").find("null"), std::string::npos);
+}
+
+TEST_F(Hostile, standard_input_is_bounded_like_a_named_file) {
+  // /dev/zero as standard input was read until the memory cap (exit 3 after seconds): a
+  // device is refused at once, as a named one is; a pipe stops at a quarter of the memory.
+  if (!fs::exists("/dev/zero")) GTEST_SKIP() << "SKIPPED: no /dev/zero";
+  const auto start = std::chrono::steady_clock::now();
+  const result r = run_with_input("build - --format stl", "/dev/zero");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("<stdin>: cannot read a character device"), std::string::npos) << r.err;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10);
+  if (under_asan()) GTEST_SKIP() << "RLIMIT_AS cannot be used under AddressSanitizer";
+  // The pipe replaces the fixture's own standard input (/dev/null) inside the shell.
+  const result piped =
+      run("build - --format off",
+          "sh -c 'head -c 600000000 /dev/zero | prlimit --as=2000000000 \"$0\" \"$@\"'");
+  EXPECT_EQ(piped.status, 3) << piped.err;
+  EXPECT_NE(piped.err.find("<stdin>: standard input is larger than"), std::string::npos)
+      << piped.err;
+}
+
+TEST_F(Hostile, scene_values_that_overflow_are_handled_or_name_their_key) {
+  write("tetra.off", tetra_off);
+  const std::string eye = R"({"eye": [3, 3, 3], "look_at": [0, 0, 0], "up": [0, 1, 0]})";
+  // A rotation axis of 1e200 is a direction like any other; an eye at 1e300 sees nothing (far
+  // plane) but is a camera; an up vector of 1e200 is one too.
+  for (const std::string& scene :
+       {tetra_scene(eye, "{}",
+                    R"("file": "tetra.off", "transforms": [{"rotate": [30, 1e200, 0, 0]}])"),
+        tetra_scene(R"({"eye": [1e300, 3, 3], "look_at": [0, 0, 0], "up": [0, 1, 0]})"),
+        tetra_scene(R"({"eye": [3, 3, 3], "look_at": [0, 0, 0], "up": [0, 1e200, 0]})")}) {
+    write("s.json", scene);
+    const result r = run("render s.json -o s.png -q");
+    EXPECT_EQ(r.status, 0) << scene << "\n" << r.err;
+  }
+  const std::pair<std::string, std::string> bad[] = {
+      {tetra_scene(
+           eye,
+           R"({"depth_of_field": {"aperture": 1e308, "focal_length": 1, "focus_distance": 5}})"),
+       "s.json: /effects/depth_of_field/aperture: "},
+      {tetra_scene(
+           R"({"polar": {"distance": 1e308, "twist_deg": 0, "elevation_deg": 0, "azimuth_deg": 0}})"),
+       "s.json: /camera: the view sends vertex"},
+      {tetra_scene(eye, "{}", R"("file": "tet\u0000ra.off")"),
+       "s.json: /meshes/0/file: contains a NUL character"},
+  };
+  fs::remove(dir / "s.png");
+  for (const auto& [scene, message] : bad) {
+    write("s.json", scene);
+    const result r = run("render s.json -o s.png -q");
+    EXPECT_EQ(r.status, 2) << scene;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "s.png"));
+  }
+}
+
+TEST_F(Hostile, an_orbit_that_fails_at_a_frame_leaves_no_frame_behind) {
+  // Frame 2's name is taken by a directory: the write fails there, and frames 0 and 1 of this
+  // run are removed (no partial output).
+  write("tetra.off", tetra_off);
+  write("s.json", tetra_scene(R"({"eye": [3, 3, 3], "look_at": [0, 0, 0], "up": [0, 1, 0]})"));
+  fs::create_directory(dir / "o_0002.png");
+  const result r = run("render s.json --orbit-drag 10,10:20,10 --frames 4 -o o.png -q");
+  EXPECT_EQ(r.status, 2) << r.err;
+  for (const char* f : {"o_0000.png", "o_0001.png", "o_0003.png"})
+    EXPECT_FALSE(fs::exists(dir / f)) << f;
+  fs::remove(dir / "o_0002.png");
+  const result ok = run("render s.json --orbit-drag 10,10:20,10 --frames 4 -o o.png -q");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  for (const char* f : {"o_0000.png", "o_0001.png", "o_0002.png", "o_0003.png"})
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+}

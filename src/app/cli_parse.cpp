@@ -3,10 +3,15 @@
 #include "app/cli_parse.h"
 
 #include <CLI/CLI.hpp>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <fstream>
+#include <iostream>
 #include <iterator>
 #include <numeric>
 #include <sstream>
@@ -90,8 +95,8 @@ std::array<int, 2> parse_size(const std::string& text, const std::string& option
   return size;
 }
 
-triangle_soup read_mesh_input(const std::string& path, const std::string& format,
-                              std::istream& in) {
+triangle_soup read_mesh_input(const std::string& path, const std::string& format, std::istream& in,
+                              std::uint64_t max_stdin_bytes) {
   mesh_format f{};
   if (!format.empty()) {
     if (format == "off")
@@ -108,12 +113,52 @@ triangle_soup read_mesh_input(const std::string& path, const std::string& format
   if (path == "-") {
     if (format.empty())
       throw usage_error("reading a mesh from standard input ('-') needs --format off|obj|ply|stl");
-    std::ostringstream data;
-    data << in.rdbuf();
-    return read_mesh_data(data.str(), f, "<stdin>");
+    if (&in == &std::cin) {
+      struct stat st {};
+      if (::fstat(STDIN_FILENO, &st) == 0 && (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) &&
+          !::isatty(STDIN_FILENO))
+        throw input_error("<stdin>", 0,
+                          std::string("cannot read ") +
+                              (S_ISCHR(st.st_mode) ? "a character device" : "a block device") +
+                              " (standard input must be a file, a pipe or a terminal)");
+      if (::fstat(STDIN_FILENO, &st) == 0 && S_ISDIR(st.st_mode))
+        throw input_error("<stdin>", 0, "cannot read a directory");
+    }
+    std::uint64_t limit = max_stdin_bytes;
+    if (limit == 0) limit = available_memory_bytes() / 4;
+    if (limit == 0) limit = std::uint64_t{1} << 34;  // 16 GiB when the memory is unknown
+    std::string data;
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+      data.append(buffer, static_cast<std::size_t>(in.gcount()));
+      if (data.size() > limit)
+        throw limit_error("<stdin>: standard input is larger than " + std::to_string(limit) +
+                          " bytes (a quarter of the available memory); give the mesh as a file");
+    }
+    if (in.bad()) throw input_error("<stdin>", 0, "cannot read standard input");
+    return read_mesh_data(data, f, "<stdin>");
   }
   if (format.empty()) return read_mesh(path);
   return read_mesh_data(read_input_file(path), f, path);
+}
+
+std::uint64_t available_memory_bytes() {
+  std::uint64_t available = 0;
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  std::uint64_t kib = 0;
+  std::string unit;
+  while (meminfo >> key >> kib >> unit)
+    if (key == "MemAvailable:") {
+      available = kib * 1024;
+      break;
+    }
+  struct rlimit as {};
+  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
+    const auto cap = static_cast<std::uint64_t>(as.rlim_cur);
+    available = available ? std::min(available, cap) : cap;
+  }
+  return available;
 }
 
 std::size_t edit_distance(const std::string& a, const std::string& b) {

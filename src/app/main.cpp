@@ -56,26 +56,7 @@ std::uint64_t bytes_per_fragment(exbsp::kernel_id kernel) {
   return kernel == exbsp::kernel_id::epeck || kernel == exbsp::kernel_id::gmpq ? 1300 : 640;
 }
 
-/// Bytes this process may still use: MemAvailable (/proc/meminfo), and no more than the
-/// address-space limit (RLIMIT_AS) when there is one. 0 when unknown.
-std::uint64_t available_memory_bytes() {
-  std::uint64_t available = 0;
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key;
-  std::uint64_t kib = 0;
-  std::string unit;
-  while (meminfo >> key >> kib >> unit)
-    if (key == "MemAvailable:") {
-      available = kib * 1024;
-      break;
-    }
-  struct rlimit as {};
-  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
-    const auto cap = static_cast<std::uint64_t>(as.rlim_cur);
-    available = available ? std::min(available, cap) : cap;
-  }
-  return available;
-}
+using exbsp::cli::available_memory_bytes;
 
 /// The default --max-fragments: half the available memory at bytes_per_fragment(kernel) each
 /// (the other half for the input, the output and the allocator's slack), at least 10,000;
@@ -782,7 +763,8 @@ int main(int argc, char** argv) {
     }
   } catch (const exbsp::limit_error& e) {
     std::cerr << "exbsp: error: " << e.what() << "\n";
-    if (*build || *order || *render || *drawing)
+    if ((*build || *order || *render) &&
+        std::string(e.what()).find("--max-fragments") != std::string::npos)
       std::cerr << "exbsp: the limit is --max-fragments (default: from the available memory); "
                    "raise it with "
                    "--max-fragments N, or 0 for no limit\n";

@@ -26,6 +26,9 @@ using view::reader;
 
 namespace {
 
+/// The largest coordinate or coefficient `exbsp clip` accepts (notation in point()).
+constexpr double max_clip_magnitude = 1e100;
+
 const json& array_of(const reader& r, const json& v, const std::string& key, const char* what) {
   if (!v.is_array())
     r.fail(key, std::string("must be an array of ") + what + " (got " + v.type_name() + ")");
@@ -38,7 +41,16 @@ std::array<double, N> point(const reader& r, const json& v, const std::string& k
     r.fail(key, "must be a point of " + std::to_string(N) + " numbers (the region is " +
                     std::to_string(N) + "D)");
   std::array<double, N> p{};
-  for (std::size_t k = 0; k < N; ++k) p[k] = r.number(v[k], key + "/" + std::to_string(k));
+  for (std::size_t k = 0; k < N; ++k) {
+    const std::string at = key + "/" + std::to_string(k);
+    p[k] = r.number(v[k], at);
+    // The clippers' intermediate values (differences, products of a difference and a
+    // coordinate, plane values) must stay finite: beyond this they overflow to infinity and the
+    // answer would hold NaN ("null") or lose vertices.
+    if (!(std::fabs(p[k]) <= max_clip_magnitude))
+      r.fail(at, "must be at most 1e100 in magnitude (got " + view::number_text(p[k]) +
+                     "): the clippers' intermediate values would overflow");
+  }
   return p;
 }
 

@@ -204,6 +204,20 @@ drawing_summary drawing_command(const drawing_request& request, std::ostream& lo
     fs::create_directories(request.output, ec);
     if (ec) throw output_error(request.output, "cannot make the output folder: " + ec.message());
     std::size_t k = 0;
+    // An error stops the set; the sheets finished before it stay (each was renamed into place
+    // whole) and are listed, and a rerun resumes after them.
+    struct report_on_error {
+      const std::vector<std::string>& written;
+      std::ostream& log;
+      bool done = false;
+      ~report_on_error() {
+        if (done || written.empty()) return;
+        log << "exbsp: the set stopped at an error; " << written.size()
+            << " file(s) finished before it are kept (a rerun skips them):";
+        for (const std::string& w : written) log << " " << w;
+        log << "\n";
+      }
+    } report{summary.written, log};
     for (const std::string& mesh : meshes) {
       ++k;
       const std::string stem = fs::path(mesh).stem().string();
@@ -233,6 +247,7 @@ drawing_summary drawing_command(const drawing_request& request, std::ostream& lo
         summary.written.push_back(out);
       }
     }
+    report.done = true;
   } else {
     const std::string format = format_of(request.output);
     if (format.empty())

@@ -34,6 +34,18 @@ std::string seconds_text(double s) {
 view::vector3 to_vector(const vec3d& v) { return {v[0], v[1], v[2]}; }
 vec3d to_array(const view::vector3& v) { return {v.x, v.y, v.z}; }
 
+/// Runs the stages of `p`. A usage_error from a stage is something the scene asked for that
+/// cannot be done (a lens too wide for the camera, a crease angle out of range): it becomes a
+/// scene_error naming the scene file. Other errors (input, output, limits) pass unchanged.
+void run_stages(const view::pipeline& p, view::frame& f, std::ostream* log,
+                const std::string& scene_path) {
+  try {
+    p.run(f, log);
+  } catch (const usage_error& e) {
+    throw scene_error(scene_path, "", e.what());
+  }
+}
+
 /// The write stage for `path`.
 view::stage write_stage(const std::string& path, view::output_kind kind) {
   return {"write", [path, kind](view::frame& fr) {
@@ -187,7 +199,7 @@ render_summary render_command(const render_request& request, std::ostream& log) 
     if (f.view.needs_placement()) p.add("place", view::place_stage);
     const view::stage w = write_stage(out, kind);
     p.add(w.name, w.run);
-    p.run(f, stage_log);
+    run_stages(p, f, stage_log, s.path);
     summary.non_finite = f.non_finite;
     if (request.verbose)
       for (std::size_t k : f.rejected_meshes)
@@ -217,8 +229,17 @@ render_summary render_command(const render_request& request, std::ostream& log) 
         << " points; one BSP build, one traversal per view\n";
   view::pipeline build;
   build.add("build", view::build_stage);
-  build.run(f, stage_log);
+  run_stages(build, f, stage_log, s.path);
   note_build();
+  // An error at frame k removes frames 0 .. k-1 of this run: no partial output.
+  struct partial_frames {
+    std::vector<std::string>* written;
+    bool done = false;
+    ~partial_frames() {
+      if (!done)
+        for (const std::string& path : *written) std::remove(path.c_str());
+    }
+  } cleanup{&summary.outputs};
   for (std::size_t k = 0; k < views.size(); ++k) {
     f.view = views[k];
     if (request.verbose) {
@@ -231,10 +252,11 @@ render_summary render_command(const render_request& request, std::ostream& log) 
     if (f.view.needs_placement()) p.add("place", view::place_stage);
     const view::stage w = write_stage(frame_path(out, k), kind);
     p.add(w.name, w.run);
-    p.run(f, stage_log);
+    run_stages(p, f, stage_log, s.path);
     summary.non_finite = std::max(summary.non_finite, f.non_finite);
     summary.outputs.push_back(frame_path(out, k));
   }
+  cleanup.done = true;
   summary.frames = views.size();
   summary.total_seconds = elapsed();
   return summary;

@@ -70,9 +70,9 @@ struct render_summary {
 
 /// Loads the scene, builds one BSP of all its meshes, renders and writes output_path
 /// atomically (no partial file on error). With an orbit, writes the frames OUT_0000.png ...
-/// from one build. Log lines go to `log`. Returns what was done.
-/// Throws scene_error / input_error / output_error (exit 2), limit_error (exit 3), usage_error
-/// for a bad output name or orbit request (exit 2).
+/// from one build; an error at any frame removes the frames this call wrote before it. Log lines go
+/// to `log`. Returns what was done. Throws scene_error / input_error / output_error (exit 2),
+/// limit_error (exit 3), usage_error for a bad output name or orbit request (exit 2).
 render_summary render_command(const render_request& request, std::ostream& log);
 
 /// OUT.png -> OUT_0000.png (k with at least 4 digits, before the extension).

@@ -460,12 +460,21 @@ scene_geometry load_geometry(const scene& s) {
       const view::hpoint clip =
           view_matrices.projection * (view_matrices.model_view * view::to_point(p));
       if (!(std::fabs(clip.x) <= max_clip && std::fabs(clip.y) <= max_clip &&
-            std::fabs(clip.z) <= max_clip && std::fabs(clip.w) <= max_clip))
+            std::fabs(clip.z) <= max_clip && std::fabs(clip.w) <= max_clip)) {
+        // A vertex of ordinary size sent beyond the doubles by the view: the camera (an eye or
+        // distance too far) or the projection is to blame, not the mesh.
+        if (std::max({std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])}) <= 1e150)
+          throw scene_error(s.path, "/camera",
+                            "the view sends vertex " + std::to_string(k) + " of " + m.path +
+                                " beyond " + number_text(max_clip) +
+                                " in clip coordinates (the largest double / 16): the eye, its "
+                                "distance or the projection's bounds are too large");
         throw scene_error(s.path, culprit,
                           "vertex " + std::to_string(k) + " of " + m.path +
                               " is too large to view: its clip coordinates exceed " +
                               number_text(max_clip) +
                               " (the largest double / 16; scale the mesh down)");
+      }
     }
     const std::uint32_t first_face = g.soup.face_count, own_faces = part.face_count;
     if (!s.clip_planes.empty())

@@ -83,6 +83,9 @@ mesh_spec parse_mesh_entry(const reader& r, const json& entry, const std::string
   if (!file.is_string() || file.get<std::string>().empty())
     r.fail(key + "/file", "must be a non-empty string (a mesh file path)");
   spec.file = file.get<std::string>();
+  // A file name cannot hold a NUL ("\u0000" in JSON): the system would read the name up to it.
+  if (spec.file.find('\0') != std::string::npos)
+    r.fail(key + "/file", "contains a NUL character (\\u0000), which no file name can hold");
   const std::filesystem::path fp(spec.file);
   spec.path = fp.is_absolute() ? fp.string() : (base / fp).string();
   if (const json* c = r.optional(m, "color")) spec.color = r.color(*c, key + "/color");

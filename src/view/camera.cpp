@@ -17,12 +17,18 @@ camera_basis look_at_basis(const point3& eye, const point3& look_at, const vecto
 
 camera_basis look_direction_basis(const vector3& g, const vector3& up) {
   if (!is_finite(g) || !is_finite(up)) throw usage_error("look_at: non-finite camera input");
+  if (g.x == 0 && g.y == 0 && g.z == 0)
+    throw usage_error("look_at: eye and look_at are the same point");
+  if (up.x == 0 && up.y == 0 && up.z == 0) throw usage_error("look_at: the up vector is zero");
+  // Lengths whose squares overflow or underflow (an eye at 1e300) go through normalized(),
+  // which scales first; ordinary ones keep the plain formulas (and their roundings).
+  const auto ordinary = [](double len) { return len > 1e-150 && len < 1e150; };
   const double glen = length(g);
-  if (!(glen > 0)) throw usage_error("look_at: eye and look_at are the same point");
-  const double tlen = length(up);
-  if (!(tlen > 0)) throw usage_error("look_at: the up vector is zero");
-  const vector3 w = (-1.0 / glen) * g;
-  const vector3 txw = cross(up, w);
+  const vector3 w = ordinary(glen) ? (-1.0 / glen) * g : normalized(-1.0 * g);
+  const double up_len = length(up);
+  const vector3 t = ordinary(up_len) ? up : normalized(up);
+  const double tlen = ordinary(up_len) ? up_len : 1.0;
+  const vector3 txw = cross(t, w);
   const double s = length(txw);
   if (!(s > 1e-9 * tlen))
     throw usage_error("look_at: the up vector is parallel to the view direction");

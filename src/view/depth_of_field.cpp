@@ -132,6 +132,13 @@ void parse_depth_of_field_parameters(const reader& r, const json& p, const std::
   if (!(std::isfinite(d.aperture) && d.aperture > 0))
     r.fail(key + "/f_number", "gives an impossible aperture");
   d.focus_distance = r.positive(r.require(p, key, "focus_distance"), key + "/focus_distance");
+  // The lens samples shift the eye by up to half the aperture: a lens a thousand times wider
+  // than the distance it focuses at is no lens, and wider still the shifted cameras are lost
+  // to rounding (checked here, before any build).
+  if (!(d.aperture <= 1000 * d.focus_distance))
+    r.fail(aperture ? key + "/aperture" : key + "/f_number",
+           "gives an aperture of " + number_text(d.aperture) +
+               ", more than 1000 times focus_distance");
   if (!(d.focus_distance > d.focal_length))
     r.fail(key + "/focus_distance",
            "must be greater than focal_length (a thin lens cannot focus closer than f)");

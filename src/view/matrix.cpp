@@ -10,8 +10,15 @@ namespace exbsp::view {
 
 vector3 normalized(const vector3& a) {
   const double len = length(a);
-  if (!(len > 0) || !std::isfinite(len)) throw usage_error("normalized: zero or non-finite vector");
-  return {a.x / len, a.y / len, a.z / len};
+  if (len > 1e-150 && len < 1e150) return {a.x / len, a.y / len, a.z / len};
+  // |a|^2 would overflow or underflow (an axis of 1e200, a direction of 1e-200): scale by the
+  // largest component first, which is exact in direction.
+  const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)});
+  if (!(m > 0) || !std::isfinite(m) || !is_finite(a))
+    throw usage_error("normalized: zero or non-finite vector");
+  const vector3 s{a.x / m, a.y / m, a.z / m};
+  const double l = length(s);
+  return {s.x / l, s.y / l, s.z / l};
 }
 
 mat4 mat4::identity() {
