@@ -113,3 +113,17 @@ def ensure_matplotlib():
         if os.path.exists(system) and os.path.realpath(sys.executable) != os.path.realpath(system):
             os.execv(system, [system] + sys.argv)
         sys.exit("bench: matplotlib is missing: run scripts/setup (apt-get install python3-matplotlib)")
+
+
+def replace_results_section(begin, end, section):
+    """Writes `section` (its first line `begin`, its last `end`) into bench/RESULTS.md in place of
+    the text between those markers, or appends it when they are missing."""
+    path = os.path.join(HERE, "RESULTS.md")
+    with open(path) as f:
+        text = f.read()
+    if begin in text and end in text:
+        text = text[:text.index(begin)] + section + text[text.index(end) + len(end):]
+    else:
+        text = text.rstrip("\n") + "\n\n" + section + "\n"
+    with open(path, "w") as f:
+        f.write(text)

@@ -26,7 +26,7 @@ import time
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(here)
 sys.path.insert(0, here)
-from common import CAD, available, mesh_path  # noqa: E402
+from common import CAD, available, mesh_path, replace_results_section  # noqa: E402
 from hidden_lines import machine  # noqa: E402
 
 BEGIN, END = "<!-- drawing-sets:begin -->", "<!-- drawing-sets:end -->"
@@ -120,15 +120,7 @@ def main():
     lines += ["", "The BSP build of each part already uses both cores (OpenMP), so two workers on "
               "this 2-core machine gain less than 2×; on a cluster each worker has its own cores.", END]
     section = "\n".join(lines)
-    path = os.path.join(here, "RESULTS.md")
-    with open(path) as f:
-        text = f.read()
-    if BEGIN in text and END in text:
-        text = text[:text.index(BEGIN)] + section + text[text.index(END) + len(END):]
-    else:
-        text = text.rstrip("\n") + "\n\n" + section + "\n"
-    with open(path, "w") as f:
-        f.write(text)
+    replace_results_section(BEGIN, END, section)
     print(section)
     return 0 if identical else 1
 

@@ -25,6 +25,8 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(here)
+sys.path.insert(0, here)
+from common import replace_results_section  # noqa: E402
 
 BEGIN, END = "<!-- hidden-lines:begin -->", "<!-- hidden-lines:end -->"
 
@@ -130,15 +132,7 @@ def main():
         lines.append("")
     lines.append(END)
     section = "\n".join(lines)
-    results = os.path.join(here, "RESULTS.md")
-    with open(results) as f:
-        text = f.read()
-    if BEGIN in text and END in text:
-        text = text[:text.index(BEGIN)] + section + text[text.index(END) + len(END):]
-    else:
-        text = text.rstrip("\n") + "\n\n" + section + "\n"
-    with open(results, "w") as f:
-        f.write(text)
+    replace_results_section(BEGIN, END, section)
     print(section)
     return 0
 

@@ -174,8 +174,9 @@ class sheet_builder {
            {base.x + dy * half, base.y - dx * half}}});
   }
 
-  /// The ISO 5456-2 symbol in the box [x0, x0 + w] x [y0, y0 + h] (centred), first- or
-  /// third-angle: a truncated cone whose small end faces left, and its view from the left.
+  /// The ISO 5456-2 symbol centred at (cx, cy) with size h (the cone's small diameter), first-
+  /// or third-angle: a truncated cone whose small end faces left, and its view from the left
+  /// (on the right of the cone in first angle, on its left in third angle).
   void projection_symbol(double cx, double cy, double h, projection_method m) {
     // Proportions of ISO 5456-2: small diameter h, large 2h, cone length 2h, gap h between.
     const double r1 = h / 2, r2 = h;

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "core/errors.h"
+#include "view/cairo_pdf_stream.h"
 
 namespace exbsp::drawing {
 
@@ -73,11 +74,6 @@ std::string xml_escape(const std::string& t) {
     }
   }
   return o;
-}
-
-cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
 }
 
 constexpr const char* font_family = "DejaVu Sans";
@@ -146,9 +142,7 @@ std::string sheet_pdf(const sheet& s, const std::string& date) {
   const double pt = 72 / 25.4;
   const double h = s.height;
   {
-    std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-        cairo_pdf_surface_create_for_stream(append_bytes, &bytes, s.width * pt, s.height * pt),
-        cairo_surface_destroy);
+    const auto surface = view::pdf_stream_surface(bytes, s.width * pt, s.height * pt);
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "exbsp");
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, s.title.c_str());
     const std::string stamp = date + "T00:00:00Z";
@@ -201,15 +195,7 @@ std::string sheet_pdf(const sheet& s, const std::string& date) {
         cairo_new_path(cr);
       }
     }
-    cairo_show_page(cr);
-    const cairo_status_t status = cairo_status(cr);
-    if (status != CAIRO_STATUS_SUCCESS)
-      throw usage_error(std::string("PDF output: cairo: ") + cairo_status_to_string(status));
-    context.reset();
-    cairo_surface_finish(surface.get());
-    const cairo_status_t finished = cairo_surface_status(surface.get());
-    if (finished != CAIRO_STATUS_SUCCESS)
-      throw usage_error(std::string("PDF output: cairo: ") + cairo_status_to_string(finished));
+    view::finish_pdf(context, surface.get());
   }
   return bytes;
 }

@@ -8,16 +8,12 @@
 #include <memory>
 
 #include "core/errors.h"
+#include "view/cairo_pdf_stream.h"
 #include "view/svg_writer.h"
 
 namespace exbsp::view {
 
 namespace {
-
-cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
 
 void set_color(cairo_t* cr, rgb8 c) {
   cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0);
@@ -32,11 +28,8 @@ std::string pdf_document(const vector_drawing& d) {
   const bool placed = d.placed();
   const drawing_placement& place = d.placement;
   {
-    std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-        cairo_pdf_surface_create_for_stream(append_bytes, &bytes,
-                                            placed ? place.image_width : d.width,
-                                            placed ? place.image_height : d.height),
-        cairo_surface_destroy);
+    const auto surface = pdf_stream_surface(bytes, placed ? place.image_width : d.width,
+                                            placed ? place.image_height : d.height);
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "exbsp");
     std::unique_ptr<cairo_t, decltype(&cairo_destroy)> context(cairo_create(surface.get()),
                                                                cairo_destroy);
@@ -92,15 +85,7 @@ std::string pdf_document(const vector_drawing& d) {
           break;
       }
     }
-    cairo_show_page(cr);
-    const cairo_status_t status = cairo_status(cr);
-    if (status != CAIRO_STATUS_SUCCESS)
-      throw usage_error(std::string("PDF output: cairo: ") + cairo_status_to_string(status));
-    context.reset();
-    cairo_surface_finish(surface.get());
-    const cairo_status_t finished = cairo_surface_status(surface.get());
-    if (finished != CAIRO_STATUS_SUCCESS)
-      throw usage_error(std::string("PDF output: cairo: ") + cairo_status_to_string(finished));
+    view::finish_pdf(context, surface.get());
   }
   return bytes;
 }
