@@ -354,7 +354,20 @@ bsp bsp::deserialize(std::string_view bytes, const std::string& name) {
       break;  // checked above
   }
   if (in.remaining()) in.fail("end", std::to_string(in.remaining()) + " bytes after the last node");
-  return bsp(std::move(impl));
+  bsp tree(std::move(impl));
+  // Only the canonical form is accepted: the bytes this tree would save. A file with the same
+  // content spelled otherwise (points numbered in another order, a non-reduced rational, ...)
+  // passes every check above but would save back differently; it was not written by exbsp, or
+  // was altered and checksummed again.
+  const std::string again = tree.serialize();
+  if (again != bytes) {
+    std::size_t at = 0;
+    while (at < again.size() && at < bytes.size() && again[at] == bytes[at]) ++at;
+    fail("byte " + std::to_string(at) +
+         ": not in the canonical form exbsp writes (saving the tree it holds gives other bytes "
+         "from here on): the file was not written by exbsp, or was altered and checksummed again");
+  }
+  return tree;
 }
 
 void bsp::save(const std::string& path) const { write_file_atomically(path, serialize()); }

@@ -20,8 +20,7 @@ inline std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> pdf_st
     static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
     return CAIRO_STATUS_SUCCESS;
   };
-  return {cairo_pdf_surface_create_for_stream(append, &out, width, height),
-          cairo_surface_destroy};
+  return {cairo_pdf_surface_create_for_stream(append, &out, width, height), cairo_surface_destroy};
 }
 
 /// Ends the page and the document: shows the page, destroys the context, finishes the surface.

@@ -138,3 +138,33 @@ def test_paths_with_a_nul_byte_are_refused(tmp_path):
     with pytest.raises(exbsp.UsageError, match="NUL"):
         exbsp.read_mesh(str(tmp_path / "m.off") + "\0")
     assert len(exbsp.load(tmp_path / "s.exbsp")) == len(tree)
+
+
+def test_a_saved_tree_not_in_canonical_form_is_refused():
+    # An exact tree with one constructed point appended that no fragment uses: every check of
+    # the format passes (the point is a valid SEG(p, q, plane): a copy of an existing one), but
+    # saving the loaded tree would drop it and give other bytes. Only the canonical form loads.
+    import struct
+    import zlib
+    rng = np.random.default_rng(7)
+    v = rng.random((60, 3))
+    f = [[3 * i, 3 * i + 1, 3 * i + 2] for i in range(20)]
+    data = bytearray(exbsp.build(v, f, heuristic="naive").serialize())
+    assert exbsp.deserialize(bytes(data)).serialize() == bytes(data)  # the real file loads
+    at = 24 + 8 * 8 + 8
+    (n,) = struct.unpack_from("<I", data, at)
+    at += 4 + n + 12 + 4
+    (vertices,) = struct.unpack_from("<Q", data, at)
+    at += 8 + 24 * vertices
+    (triangles,) = struct.unpack_from("<Q", data, at)
+    at += 8 + 16 * triangles
+    (points,) = struct.unpack_from("<Q", data, at)
+    assert points > 0, "the build made no split point"
+    first = at + 8
+    end = first + 12 * points
+    forged = data[:at] + struct.pack("<Q", points + 1) + data[first:end] + data[first:first + 12] + data[end:]
+    body = len(forged) - 28
+    struct.pack_into("<Q", forged, 16, body)
+    struct.pack_into("<I", forged, len(forged) - 4, zlib.crc32(bytes(forged[:-4])))
+    with pytest.raises(exbsp.InputError, match="canonical"):
+        exbsp.deserialize(bytes(forged))
