@@ -5,6 +5,12 @@
 // the code under test), the hatched section against the exact cap's area, the files' sizes,
 // units, layers, line widths and byte-identical repeats, errors, and folder runs.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <thread>
 
 #include <algorithm>
 #include <cmath>
@@ -698,4 +704,46 @@ TEST_F(DrawingCli, ASavedTreeDrawsTheSameSheetWithoutABuild) {
   }
   const auto r = run("drawing t.exbsp -o t.pdf -q");
   EXPECT_EQ(r.status, 0) << r.err;
+}
+
+TEST(DrawingDxf, ASignalDuringTheWriteLeavesNoTemporaryFile) {
+  // dxflib writes to a file name: its temporary file (TMPDIR/exbsp-dxf-*) is removed on a
+  // signal like write_file_atomically's own. A watcher sends SIGTERM as soon as it appears.
+  const std::filesystem::path dir = exbsp_test::make_temp_dir("dxf-signal");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::setenv("TMPDIR", dir.c_str(), 1);
+    std::thread watcher([&dir] {
+      for (;;) {
+        for (const auto& e : std::filesystem::directory_iterator(dir))
+          if (e.path().filename().string().rfind("exbsp-dxf-", 0) == 0) {
+            ::kill(::getpid(), SIGTERM);
+            return;
+          }
+        std::this_thread::sleep_for(std::chrono::microseconds(100));
+      }
+    });
+    watcher.detach();
+    drawing::sheet s;
+    for (int i = 0; i < 2000000; ++i)
+      s.lines.push_back({layer_id::visible,
+                         drawing::line_style::continuous,
+                         0.5,
+                         false,
+                         {{0.001 * i, 1}, {0.001 * i, 2}, {0.001 * i + 1, 3}}});
+    try {
+      (void)drawing::sheet_dxf(s);
+    } catch (...) {
+    }
+    ::_exit(0);  // reached only when the signal came too late
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the write finished before the signal";
+  EXPECT_EQ(WTERMSIG(status), SIGTERM);
+  std::vector<std::string> left;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) left.push_back(e.path().string());
+  EXPECT_TRUE(left.empty()) << left.front();
+  std::filesystem::remove_all(dir);
 }

@@ -251,4 +251,14 @@ void write_file_atomically(const std::string& path, const producer& produce) {
   }
 }
 
+removed_on_signal::removed_on_signal(std::string path) : path_(std::move(path)) {
+  install_signal_cleanup();
+  slot_ = register_pending(path_);
+}
+
+removed_on_signal::~removed_on_signal() {
+  unregister_pending(slot_);
+  ::unlink(path_.c_str());
+}
+
 }  // namespace exbsp

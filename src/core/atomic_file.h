@@ -36,6 +36,23 @@ using output_sink = std::function<void(std::string_view)>;
 EXBSP_EXPORT void write_file_atomically(const std::string& path,
                                         const std::function<void(const output_sink&)>& produce);
 
+/// A temporary file made by the caller (for a library that writes only to a file name, such
+/// as dxflib): removed when this object is destroyed and, while it exists, by the signal
+/// handler of write_file_atomically's own temporary files (the same signals). The file
+/// itself is the caller's to create.
+class EXBSP_EXPORT removed_on_signal {
+ public:
+  explicit removed_on_signal(std::string path);
+  ~removed_on_signal();
+  removed_on_signal(const removed_on_signal&) = delete;
+  removed_on_signal& operator=(const removed_on_signal&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  int slot_;
+};
+
 /// Number of temporary output files currently being written (registered for removal on a
 /// signal). For tests: 0 whenever no write_file_atomically call is running.
 EXBSP_EXPORT int pending_temporary_files();

@@ -15,6 +15,7 @@
 #include <memory>
 #include <sstream>
 
+#include "core/atomic_file.h"
 #include "core/errors.h"
 
 namespace exbsp::drawing {
@@ -72,20 +73,23 @@ double layer_width(const sheet& s, layer_id layer, double fallback) {
   return best;
 }
 
+/// dxflib writes only to a file name: a private temporary file (mkstemp in TMPDIR), removed
+/// afterwards and on a signal (core/atomic_file.h).
 class temporary_file {
  public:
-  temporary_file() {
-    const char* dir = std::getenv("TMPDIR");
-    path_ = std::string(dir && *dir ? dir : "/tmp") + "/exbsp-dxf-XXXXXX";
-    const int fd = mkstemp(path_.data());
-    if (fd < 0) throw output_error(path_, "cannot make a temporary file for the DXF writer");
-    ::close(fd);
-  }
-  ~temporary_file() { std::remove(path_.c_str()); }
-  const std::string& path() const { return path_; }
+  temporary_file() : file_(make()) {}
+  const std::string& path() const { return file_.path(); }
 
  private:
-  std::string path_;
+  static std::string make() {
+    const char* dir = std::getenv("TMPDIR");
+    std::string path = std::string(dir && *dir ? dir : "/tmp") + "/exbsp-dxf-XXXXXX";
+    const int fd = mkstemp(path.data());
+    if (fd < 0) throw output_error(path, "cannot make a temporary file for the DXF writer");
+    ::close(fd);
+    return path;
+  }
+  removed_on_signal file_;
 };
 
 /// DXF text: ASCII as it is, every other UTF-8 character as DXF's \U+XXXX escape (the file's
