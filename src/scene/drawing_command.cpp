@@ -17,7 +17,6 @@
 #include "core/file_name.h"
 #include "drawing/sheet_dxf.h"
 #include "drawing/sheet_writers.h"
-#include "mesh/json_limits.h"
 #include "mesh/mesh_io.h"
 #include "scene/scene.h"
 
@@ -129,14 +128,7 @@ drawing::sheet make_drawing_sheet(const std::string& input, const drawing::drawi
   if (has_extension(input, ".json")) {
     // A drawing sets its own views: a scene need not have a camera, projection or viewport
     // (the picture's keys); absent ones get harmless defaults so the scene validates as usual.
-    const std::string text = read_input_file(input);
-    check_json_nesting(text, input);
-    nlohmann::json doc;
-    try {
-      doc = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& e) {
-      throw scene_error(input, "", std::string("invalid JSON: ") + e.what());
-    }
+    nlohmann::json doc = parse_scene_json(read_input_file(input), input);
     if (doc.is_object()) {
       const bool has_camera = doc.contains("camera") && !doc["camera"].is_null();
       if (!has_camera)

@@ -353,16 +353,18 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   return s;
 }
 
-scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings,
-                       bool strict) {
+json parse_scene_json(const std::string& text, const std::string& path) {
   check_json_nesting(text, path);  // before nlohmann builds (and later copies) the document
-  json doc;
   try {
-    doc = json::parse(text);
+    return json::parse(text);
   } catch (const json::exception& e) {  // syntax errors, and numbers too large for a double
     throw scene_error(path, "", std::string("invalid JSON: ") + e.what());
   }
-  return parse_scene(doc, path, warnings, strict);
+}
+
+scene parse_scene_text(const std::string& text, const std::string& path, std::ostream* warnings,
+                       bool strict) {
+  return parse_scene(parse_scene_json(text, path), path, warnings, strict);
 }
 
 scene load_scene(const std::string& path, std::ostream* warnings, bool strict) {

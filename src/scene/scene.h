@@ -166,8 +166,12 @@ struct scene {
 scene parse_scene(const nlohmann::json& doc, const std::string& path,
                   std::ostream* warnings = nullptr, bool strict = false);
 
-/// parse_scene on JSON text; a syntax error is a scene_error with an empty key; nesting deeper
-/// than max_json_depth (mesh/json_limits.h) an input_error naming the line, before parsing.
+/// The JSON document of a scene's text, not yet validated: nesting deeper than max_json_depth
+/// (mesh/json_limits.h) is an input_error naming the line, before parsing; a syntax error a
+/// scene_error with an empty key.
+nlohmann::json parse_scene_json(const std::string& text, const std::string& path);
+
+/// parse_scene on JSON text (parse_scene_json, same errors).
 scene parse_scene_text(const std::string& text, const std::string& path,
                        std::ostream* warnings = nullptr, bool strict = false);
 
