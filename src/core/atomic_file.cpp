@@ -19,6 +19,7 @@
 #include <cerrno>
 #include <climits>
 #include <csignal>
+#include <memory>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -256,9 +257,37 @@ removed_on_signal::removed_on_signal(std::string path) : path_(std::move(path)) 
   slot_ = register_pending(path_);
 }
 
+std::unique_ptr<removed_on_signal> removed_on_signal::create(const std::string& pattern) {
+  // The name is registered before the file exists (a signal on any thread in between unlinks a
+  // name that is not there yet, which is harmless), then created with O_EXCL, as mkstemp does.
+  const std::string suffix = "XXXXXX";
+  if (pattern.size() < suffix.size() ||
+      pattern.compare(pattern.size() - suffix.size(), suffix.size(), suffix) != 0)
+    throw output_error(pattern, "a temporary file pattern must end in XXXXXX");
+  static const char letters[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+  std::random_device random;
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    std::string path = pattern.substr(0, pattern.size() - suffix.size());
+    for (std::size_t k = 0; k < suffix.size(); ++k)
+      path += letters[random() % (sizeof letters - 1)];
+    auto file = std::make_unique<removed_on_signal>(path);
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    if (fd >= 0) {
+      ::close(fd);
+      return file;
+    }
+    const int err = errno;
+    file->path_.clear();  // not ours: the destructor must not remove it
+    if (err != EEXIST)
+      throw output_error(pattern,
+                         std::string("cannot make a temporary file: ") + std::strerror(err));
+  }
+  throw output_error(pattern, "cannot make a temporary file: 100 names taken");
+}
+
 removed_on_signal::~removed_on_signal() {
   unregister_pending(slot_);
-  ::unlink(path_.c_str());
+  if (!path_.empty()) ::unlink(path_.c_str());
 }
 
 }  // namespace exbsp

@@ -7,6 +7,7 @@
 // clobbered file. It lives in exbsp_core, below every other module.
 #pragma once
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <exbsp/core/export.h>
@@ -43,6 +44,11 @@ EXBSP_EXPORT void write_file_atomically(const std::string& path,
 class EXBSP_EXPORT removed_on_signal {
  public:
   explicit removed_on_signal(std::string path);
+  /// Creates a new empty file (mode 0600) from `pattern`, whose XXXXXX becomes a random suffix
+  /// as with mkstemp. The name is registered before the file is created, so a signal at any
+  /// moment leaves nothing behind. Throws output_error naming the pattern when it cannot be
+  /// created.
+  static std::unique_ptr<removed_on_signal> create(const std::string& pattern);
   ~removed_on_signal();
   removed_on_signal(const removed_on_signal&) = delete;
   removed_on_signal& operator=(const removed_on_signal&) = delete;

@@ -77,19 +77,15 @@ double layer_width(const sheet& s, layer_id layer, double fallback) {
 /// afterwards and on a signal (core/atomic_file.h).
 class temporary_file {
  public:
-  temporary_file() : file_(make()) {}
-  const std::string& path() const { return file_.path(); }
+  temporary_file()
+      : file_(removed_on_signal::create(std::string(std::getenv("TMPDIR") && *std::getenv("TMPDIR")
+                                                        ? std::getenv("TMPDIR")
+                                                        : "/tmp") +
+                                        "/exbsp-dxf-XXXXXX")) {}
+  const std::string& path() const { return file_->path(); }
 
  private:
-  static std::string make() {
-    const char* dir = std::getenv("TMPDIR");
-    std::string path = std::string(dir && *dir ? dir : "/tmp") + "/exbsp-dxf-XXXXXX";
-    const int fd = mkstemp(path.data());
-    if (fd < 0) throw output_error(path, "cannot make a temporary file for the DXF writer");
-    ::close(fd);
-    return path;
-  }
-  removed_on_signal file_;
+  std::unique_ptr<removed_on_signal> file_;
 };
 
 /// DXF text: ASCII as it is, every other UTF-8 character as DXF's \U+XXXX escape (the file's
