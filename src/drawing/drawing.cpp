@@ -93,11 +93,37 @@ void for_used_vertices(const triangle_soup& s, F&& f) {
     if (used[i]) f(s.vertices[i]);
 }
 
-/// Extent of `s` in the basis (tight: every used vertex).
-void measure(planned_view& v, const triangle_soup& s) {
+/// The axis-aligned bounding box of the vertices a soup's triangles use.
+struct bounds {
+  vec3d lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  bool finite = true;  ///< no coordinate is NaN or infinite
+  bool empty() const { return !(lo[0] <= hi[0]); }
+  /// Its centre, and (radius) the radius of its bounding sphere (halves first: no overflow).
+  vector3 centre(double& radius) const {
+    radius = std::max(
+        std::hypot(hi[0] / 2 - lo[0] / 2, hi[1] / 2 - lo[1] / 2, hi[2] / 2 - lo[2] / 2), 1e-300);
+    return {lo[0] / 2 + hi[0] / 2, lo[1] / 2 + hi[1] / 2, lo[2] / 2 + hi[2] / 2};
+  }
+};
+
+bounds bounds_of(const triangle_soup& s) {
+  bounds b;
+  for_used_vertices(s, [&](const vec3d& p) {
+    for (std::size_t a = 0; a < 3; ++a) {
+      b.finite = b.finite && std::isfinite(p[a]);
+      b.lo[a] = std::min(b.lo[a], p[a]);
+      b.hi[a] = std::max(b.hi[a], p[a]);
+    }
+  });
+  return b;
+}
+
+/// Extent in the view's basis of the points `each` visits (each(f) calls f(p) per point).
+template <class ForEach>
+void measure(planned_view& v, ForEach&& each) {
   v.lo_r = v.lo_u = std::numeric_limits<double>::infinity();
   v.hi_r = v.hi_u = -std::numeric_limits<double>::infinity();
-  for_used_vertices(s, [&](const vec3d& p) {
+  each([&](const vec3d& p) {
     const double r = dot3(v.basis.u, p), u = dot3(v.basis.v, p);
     v.lo_r = std::min(v.lo_r, r);
     v.hi_r = std::max(v.hi_r, r);
@@ -303,14 +329,12 @@ sheet make_sheet_of(const triangle_soup& part, std::optional<bsp> part_tree,
     throw usage_error("make_sheet: one cut per section is needed");
   if (!(o.visible_width > 0 && o.visible_width <= 5 && o.hidden_width > 0 && o.hidden_width <= 5))
     throw usage_error("--line-widths: each width must be in (0, 5] mm");
-  bool any = false;
-  for_used_vertices(part, [&](const vec3d& p) {
-    any = true;
-    for (double c : p)
-      if (!std::isfinite(c) || std::fabs(c) > 1e150)
-        throw input_error(name, 0, "coordinates too large to draw (over 1e150 in magnitude)");
-  });
-  if (!any) throw input_error(name, 0, "the mesh has no triangle to draw");
+  const bounds part_box = bounds_of(part);
+  if (part_box.empty()) throw input_error(name, 0, "the mesh has no triangle to draw");
+  for (std::size_t a = 0; a < 3; ++a)
+    if (!part_box.finite ||
+        !(std::fabs(part_box.lo[a]) <= 1e150 && std::fabs(part_box.hi[a]) <= 1e150))
+      throw input_error(name, 0, "coordinates too large to draw (over 1e150 in magnitude)");
   const double unit = unit_mm(o.units);
   if (o.up != "z" && o.up != "y") throw usage_error("--up: expected z or y, got '" + o.up + "'");
   // The views are defined on z-up axes; a y-up model's axes are (x, y, z) = (x, z_cad, -y_cad).
@@ -374,31 +398,18 @@ sheet make_sheet_of(const triangle_soup& part, std::optional<bsp> part_tree,
   }
   // Extents: principal views use the part's bounding box (so that views line up), the others
   // their own solid's vertices.
-  {
-    double lo[3], hi[3];
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = std::numeric_limits<double>::infinity();
-      hi[a] = -lo[a];
-    }
-    for_used_vertices(part, [&](const vec3d& p) {
-      for (int a = 0; a < 3; ++a) {
-        lo[a] = std::min(lo[a], p[static_cast<std::size_t>(a)]);
-        hi[a] = std::max(hi[a], p[static_cast<std::size_t>(a)]);
-      }
-    });
-    for (planned_view& v : views) {
-      if (v.principal) {
-        triangle_soup box;  // the 8 corners of the bounding box
+  for (planned_view& v : views) {
+    if (v.principal) {  // the 8 corners of the bounding box
+      measure(v, [&](const auto& visit) {
         for (int c = 0; c < 8; ++c)
-          box.vertices.push_back(
-              {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]});
-        box.triangles.push_back({{0, 1, 2}, 0});
-        box.triangles.push_back({{3, 4, 5}, 0});
-        box.triangles.push_back({{5, 6, 7}, 0});
-        measure(v, box);
-      } else {
-        measure(v, v.section >= 0 ? cuts[static_cast<std::size_t>(v.section)].solid : part);
-      }
+          visit(vec3d{c & 1 ? part_box.hi[0] : part_box.lo[0],
+                      c & 2 ? part_box.hi[1] : part_box.lo[1],
+                      c & 4 ? part_box.hi[2] : part_box.lo[2]});
+      });
+    } else {
+      const triangle_soup& solid =
+          v.section >= 0 ? cuts[static_cast<std::size_t>(v.section)].solid : part;
+      measure(v, [&](const auto& visit) { for_used_vertices(solid, visit); });
     }
   }
 
@@ -479,19 +490,7 @@ sheet make_sheet_of(const triangle_soup& part, std::optional<bsp> part_tree,
   sheet_builder out(s);
   const double vis_w = o.visible_width, hid_w = o.hidden_width;
   // The solids: the part (built once for all its views), then each section's cut solid.
-  auto centre_of = [](const planned_view&, const triangle_soup& solid, double& radius) {
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for_used_vertices(solid, [&](const vec3d& p) {
-      for (int a = 0; a < 3; ++a) {
-        lo[a] = std::min(lo[a], p[static_cast<std::size_t>(a)]);
-        hi[a] = std::max(hi[a], p[static_cast<std::size_t>(a)]);
-      }
-    });
-    const vector3 c{lo[0] / 2 + hi[0] / 2, lo[1] / 2 + hi[1] / 2, lo[2] / 2 + hi[2] / 2};
-    radius = std::max(
-        std::hypot(hi[0] / 2 - lo[0] / 2, hi[1] / 2 - lo[1] / 2, hi[2] / 2 - lo[2] / 2), 1e-300);
-    return c;
-  };
+
   std::optional<view::frame> part_frame;
   for (planned_view& v : views) {
     const triangle_soup& solid =
@@ -519,7 +518,7 @@ sheet make_sheet_of(const triangle_soup& part, std::optional<bsp> part_tree,
       f = &*part_frame;
     }
     double radius = 0;
-    const vector3 centre = centre_of(v, solid, radius);
+    const vector3 centre = (v.section >= 0 ? bounds_of(solid) : part_box).centre(radius);
     say("view " + v.name);
     const view::vector_drawing d = draw_view(*f, v, k, radius, centre, o);
     sheet_view sv;
