@@ -35,13 +35,13 @@
 #include <string>
 #include <vector>
 
+#include <exbsp/view/camera.h>
+#include <exbsp/view/projection.h>
+#include <exbsp/view/stages.h>
 #include "bench_view.h"
 #include "generators.h"
 #include "core/atomic_file.h"
-#include "view/camera.h"
-#include "view/projection.h"
 #include "view/paint.h"
-#include "view/stages.h"
 
 #if EXBSP_HAVE_OSMESA
 #define GL_GLEXT_PROTOTYPES 1

@@ -12,9 +12,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "clip/section.h"
-#include "clip/section_cap.h"
-#include "mesh/mesh_io.h"
+#include <exbsp/clip/section.h>
+#include <exbsp/clip/section_cap.h>
+#include <exbsp/mesh/mesh_io.h>
 
 int main(int argc, char** argv) {
   CLI::App app{"bench_section: wall time of exact sections (clip/section.h)"};

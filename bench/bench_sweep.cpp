@@ -28,6 +28,7 @@
 #include <thread>
 #include <vector>
 
+#include <exbsp/core/errors.h>
 #include "alloc_counter.h"
 #include "bsp/bsp_tree.h"
 #include "bsp/geometry_cgal.h"
@@ -38,7 +39,6 @@
 #include "bsp/kernel_gmpq.h"
 #include "defects.h"
 #include "generators.h"
-#include "core/errors.h"
 
 namespace exbsp::bench {
 namespace {

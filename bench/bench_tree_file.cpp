@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
-#include "core/errors.h"
-#include "mesh/gmp_memory.h"
-#include "mesh/mesh_io.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/gmp_memory.h>
+#include <exbsp/mesh/mesh_io.h>
 
 namespace {
 

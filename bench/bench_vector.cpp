@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // bench_vector: vector output per frame (SVG and PDF) for the painter's stack and the
-// visible-region drawing (src/view/vector_drawing.h), with and without edges.
+// visible-region drawing (include/exbsp/view/vector_drawing.h), with and without edges.
 //
 // Per input: one BSP build, then for each mode `frames` frames of order + transform+clip +
 // the vector stage ("svg" or "pdf") for a fixed perspective camera (the view of bench_render:
@@ -20,13 +20,13 @@
 #include <string>
 #include <vector>
 
+#include <exbsp/view/camera.h>
+#include <exbsp/view/projection.h>
+#include <exbsp/view/stages.h>
 #include "bench_view.h"
 #include "generators.h"
-#include "view/camera.h"
 #include "view/effects.h"
 #include "view/lighting.h"
-#include "view/projection.h"
-#include "view/stages.h"
 
 namespace {
 

@@ -5,10 +5,10 @@
 #pragma once
 #include <cmath>
 
+#include <exbsp/view/camera.h>
+#include <exbsp/view/pipeline.h>
+#include <exbsp/view/projection.h>
 #include "generators.h"
-#include "view/camera.h"
-#include "view/pipeline.h"
-#include "view/projection.h"
 
 namespace exbsp::bench {
 

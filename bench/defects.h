@@ -24,9 +24,9 @@
 #include <cstddef>
 #include <cstdint>
 
+#include <exbsp/mesh/soup.h>
 #include "bsp/bsp_tree.h"
 #include "bsp/geometry_cgal.h"
-#include "mesh/soup.h"
 
 namespace exbsp::bench {
 

@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "mesh/mesh_io.h"
+#include <exbsp/mesh/mesh_io.h>
 
 namespace exbsp::bench {
 

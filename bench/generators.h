@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "mesh/soup.h"
+#include <exbsp/mesh/soup.h>
 #include "support/inputs.h"
 
 namespace exbsp::bench {

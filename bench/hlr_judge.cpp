@@ -52,14 +52,14 @@
 #include <string>
 #include <vector>
 
-#include "mesh/mesh_io.h"
+#include <exbsp/mesh/mesh_io.h>
+#include <exbsp/view/camera.h>
+#include <exbsp/view/standard_pipeline.h>
+#include <exbsp/view/vector_drawing.h>
 #include "scene/scene.h"
 #include "support/hidden_line_oracle.h"
-#include "view/camera.h"
 #include "view/edge_paths.h"
-#include "view/standard_pipeline.h"
 #include "view/svg_writer.h"
-#include "view/vector_drawing.h"
 #include "support/hidden_line_views.h"
 
 namespace {

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "support/generators.h"
 
 namespace {

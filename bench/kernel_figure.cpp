@@ -17,12 +17,12 @@
 #include <memory>
 #include <string>
 
-#include "bsp/engine.h"
-#include "core/errors.h"
-#include "mesh/mesh_io.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
+#include <exbsp/view/png_io.h>
 #include "scene/mesh_scene.h"
 #include "view/effects.h"
-#include "view/png_io.h"
 
 using namespace exbsp;
 

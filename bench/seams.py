@@ -5,7 +5,7 @@ Chromium, compared pixel by pixel with exbsp's own PNG of the same view (the pai
 no anti-aliasing). Anti-aliasing renderers blend the pixels along each region's boundary with
 what lies below it; where two regions meet, the background can show through ("conflation"),
 a faint light line between faces. exbsp draws underlays under its regions against that
-(src/view/vector_drawing.h).
+(include/exbsp/view/vector_drawing.h).
 
     /usr/bin/python3 bench/seams.py [--exbsp build/src/app/exbsp] [--meshes fandisk,joint]
         [--size 800x600] [--out bench/out/seams] [--markdown bench/seams.md]

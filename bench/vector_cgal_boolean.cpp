@@ -10,12 +10,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include "bench_view.h"
-#include "mesh/mesh_io.h"
-#include "view/camera.h"
+#include <exbsp/mesh/mesh_io.h>
+#include <exbsp/view/camera.h>
 #include "view/effects.h"
-#include "view/pipeline.h"
-#include "view/projection.h"
-#include "view/stages.h"
+#include <exbsp/view/pipeline.h>
+#include <exbsp/view/projection.h>
+#include <exbsp/view/stages.h>
 using K = CGAL::Epeck;
 using Pgn = CGAL::Polygon_2<K>;
 using PS = CGAL::Polygon_set_2<K>;

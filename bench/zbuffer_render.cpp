@@ -19,8 +19,8 @@
 #include <iostream>
 #include <string>
 
+#include <exbsp/view/png_io.h>
 #include "support/osmesa_zbuffer.h"
-#include "view/png_io.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -3,36 +3,20 @@
 # and libexbsp_gpl (static, and shared with EXBSP_BUILD_SHARED), the exbsp command line, a CMake
 # package (find_package(exbsp [COMPONENTS core render gpl openmesh])) and pkg-config files.
 #
-# Only the headers listed here are installed, under <prefix>/include/exbsp/<module>/; they
-# include each other by relative paths ("../mesh/soup.h"), so a consumer's include path holds
-# <prefix>/include alone and #include <exbsp/bsp/engine.h> (or <exbsp/exbsp.h>) works. No
-# installed header includes CGAL, Boost, OpenMP, nlohmann-json or a private exbsp header
-# (tests/install_consumer.sh compiles each one alone against the installed tree). The others
-# (bsp_tree_impl.h, kernel_*.h, geometry_*.h, reader_util.h, ...) stay in src/.
+# The public headers are the folder include/exbsp/, installed as it is under
+# <prefix>/include/exbsp/, with the generated <exbsp/core/version.h> and <exbsp/core/export.h>.
+# They include each other as <exbsp/module/x.h>, so a consumer's include path holds
+# <prefix>/include alone. No installed header includes CGAL (but adapters/cgal_face_graph.h),
+# Boost, OpenMP, nlohmann-json or a private exbsp header (src/): tests/install_consumer.sh
+# compiles each one alone against the installed tree, and tests/test_layout.cpp checks the
+# include lines. adapters/openmesh.h is installed only when OpenMesh was found.
 include(CMakePackageConfigHelpers)
-set(EXBSP_PUBLIC_HEADERS
-  core/errors.h
-  mesh/soup.h mesh/mesh_io.h mesh/gmp_memory.h
-  bsp/engine.h bsp/traversal.h bsp/exact_gmp.h
-  clip/clip_types.h clip/bbox.h clip/cohen_sutherland.h clip/liang_barsky.h
-  clip/sutherland_hodgman.h clip/convex_region.h clip/homogeneous.h clip/homogeneous_segment.h
-  clip/section.h clip/section_cap.h clip/convex_hull.h
-  view/matrix.h view/camera.h view/phigs.h view/projection.h view/viewport.h view/transforms.h
-  view/image.h view/png_io.h view/effect_settings.h view/screen_line.h view/screen_polygon.h
-  view/vector_drawing.h view/sample_shader.h view/pipeline.h view/stages.h view/standard_pipeline.h
-  view/trackball.h view/bezier.h
-  scene/procedural.h
-  adapters/triangle_list.h adapters/cgal_face_graph.h
-  exbsp.h)
-if(EXBSP_HAVE_OPENMESH)
-  list(APPEND EXBSP_PUBLIC_HEADERS adapters/openmesh.h)
+set(EXBSP_INSTALL_EXCLUDE)
+if(NOT EXBSP_HAVE_OPENMESH)
+  set(EXBSP_INSTALL_EXCLUDE PATTERN openmesh.h EXCLUDE)
 endif()
-foreach(header ${EXBSP_PUBLIC_HEADERS})
-  get_filename_component(dir ${header} DIRECTORY)
-  install(FILES ${PROJECT_SOURCE_DIR}/src/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/exbsp/${dir})
-endforeach()
-install(FILES ${PROJECT_BINARY_DIR}/generated/core/version.h ${PROJECT_BINARY_DIR}/include/exbsp/core/export.h
-  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/exbsp/core)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/exbsp ${PROJECT_BINARY_DIR}/include/exbsp
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h" ${EXBSP_INSTALL_EXCLUDE})
 
 # One export set per component, so that exbspConfig.cmake loads only the requested ones.
 foreach(component ${EXBSP_COMPONENTS})

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: LGPL-3.0-or-later
 # OpenMesh (Debian ships a CMake config): optional. When found, exbsp builds the adapter target
-# exbsp_openmesh (src/adapters/openmesh.h: OpenMesh meshes to and from exbsp) and installs it as
+# exbsp_openmesh (include/exbsp/adapters/openmesh.h: OpenMesh meshes to and from exbsp) and installs it as
 # the package component `openmesh` (find_package(exbsp COMPONENTS openmesh) -> exbsp::openmesh).
 # The tests use OpenMesh as an oracle and test the adapter, so EXBSP_BUILD_TESTS requires it.
 # Sets EXBSP_HAVE_OPENMESH and EXBSP_OPENMESH_TARGET.

@@ -27,13 +27,13 @@
 #include <set>
 #include <vector>
 
-#include "adapters/cgal_face_graph.h"
-#include "adapters/openmesh.h"
-#include "bsp/engine.h"
-#include "clip/section.h"
-#include "clip/section_cap.h"
-#include "core/errors.h"
-#include "mesh/soup.h"
+#include <exbsp/adapters/cgal_face_graph.h>
+#include <exbsp/adapters/openmesh.h>
+#include <exbsp/bsp/engine.h>
+#include <exbsp/clip/section.h>
+#include <exbsp/clip/section_cap.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/soup.h>
 
 namespace {
 

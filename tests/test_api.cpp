@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
-#include "bsp/exact_gmp.h"
-#include "core/errors.h"
-#include "mesh/soup.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/bsp/exact_gmp.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/soup.h>
 
 namespace {
 

@@ -13,8 +13,8 @@
 #include <random>
 #include <vector>
 
+#include <exbsp/bsp/engine.h>
 #include "bsp/batch_classify.h"
-#include "bsp/engine.h"
 #include "bsp/kernel_gmpq.h"
 
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
-// Tests of src/view/bezier.h: Bernstein weights, de Casteljau evaluation, convex hull,
+// Tests of include/exbsp/view/bezier.h: Bernstein weights, de Casteljau evaluation, convex hull,
 // end-point interpolation, subdivision, derivative, adaptive flattening, precondition errors.
 // Notation: degree n, control points P_0 .. P_n, B(t) the curve, t in [0, 1].
 // Random coordinates are integers / 1000 in [-1000, 1000]; error bounds are relative to the
@@ -13,8 +13,8 @@
 #include <limits>
 #include <vector>
 
-#include "core/errors.h"
-#include "view/bezier.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/view/bezier.h>
 #include "support/test_helpers.h"
 
 namespace {

@@ -8,12 +8,12 @@
 #include <cstdlib>
 #include <numeric>
 
+#include <exbsp/bsp/engine.h>
+#include <exbsp/core/errors.h>
 #include "bsp/bsp_tree.h"
 #include "bsp/geometry_cgal.h"
-#include "bsp/engine.h"
 #include "bsp/kernel_epeck.h"
 #include "bsp/kernel_gmpq.h"
-#include "core/errors.h"
 #include "support/test_helpers.h"
 
 namespace {

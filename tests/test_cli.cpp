@@ -22,13 +22,13 @@
 #include <tuple>
 #include <vector>
 
-#include "bsp/engine.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/core/version.h>
+#include <exbsp/mesh/mesh_io.h>
+#include <exbsp/view/png_io.h>
 #include "support/cli_support.h"
 #include "app/cli_parse.h"
-#include "core/errors.h"
-#include "core/version.h"
-#include "mesh/mesh_io.h"
-#include "view/png_io.h"
 
 namespace {
 

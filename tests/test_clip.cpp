@@ -16,12 +16,12 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "clip/bbox.h"
-#include "clip/cohen_sutherland.h"
-#include "clip/homogeneous.h"
-#include "clip/liang_barsky.h"
-#include "clip/sutherland_hodgman.h"
-#include "core/errors.h"
+#include <exbsp/clip/bbox.h>
+#include <exbsp/clip/cohen_sutherland.h>
+#include <exbsp/clip/homogeneous.h>
+#include <exbsp/clip/liang_barsky.h>
+#include <exbsp/clip/sutherland_hodgman.h>
+#include <exbsp/core/errors.h>
 #include "support/exact_triangle_clip.h"
 
 namespace {

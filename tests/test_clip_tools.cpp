@@ -12,11 +12,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include <exbsp/clip/convex_hull.h>
+#include <exbsp/clip/convex_region.h>
+#include <exbsp/clip/sutherland_hodgman.h>
+#include <exbsp/core/errors.h>
 #include "support/cli_support.h"
-#include "clip/convex_hull.h"
-#include "clip/convex_region.h"
-#include "clip/sutherland_hodgman.h"
-#include "core/errors.h"
 #include "scene/clip_input.h"
 #include "support/test_helpers.h"
 

@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
 #include "core/file_name.h"
-#include "mesh/mesh_io.h"
 
 namespace {
 

@@ -20,12 +20,12 @@
 #include <string>
 #include <vector>
 
-#include "clip/section_cap.h"
+#include <exbsp/clip/section_cap.h>
+#include <exbsp/mesh/mesh_io.h>
 #include "drawing/drawing.h"
 #include "drawing/hatch.h"
 #include "drawing/sheet_dxf.h"
 #include "drawing/sheet_writers.h"
-#include "mesh/mesh_io.h"
 #include "scene/drawing_command.h"
 #include "support/cli_support.h"
 #include "support/test_helpers.h"

@@ -7,14 +7,14 @@
 
 #include <cmath>
 
+#include <exbsp/view/camera.h>
+#include <exbsp/view/pipeline.h>
+#include <exbsp/view/projection.h>
 #include "geom/feature_edges.h"
 #include "geom/homogeneous_det.h"
 #include "geom/weld.h"
 #include "support/test_helpers.h"
-#include "view/camera.h"
 #include "view/edge_visibility.h"
-#include "view/pipeline.h"
-#include "view/projection.h"
 
 namespace {
 

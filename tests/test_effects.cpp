@@ -18,12 +18,14 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/view/bezier.h>
+#include <exbsp/view/camera.h>
+#include <exbsp/view/projection.h>
+#include <exbsp/view/stages.h>
 #include "scene/render.h"
 #include "scene/scene.h"
 #include "view/antialias.h"
-#include "view/bezier.h"
-#include "view/camera.h"
 #include "view/clip_stage.h"
 #include "view/curves.h"
 #include "view/depth_of_field.h"
@@ -32,9 +34,7 @@
 #include "view/lighting.h"
 #include "view/line_raster.h"
 #include "view/paint.h"
-#include "view/projection.h"
 #include "view/rasterizer.h"
-#include "view/stages.h"
 #include "support/test_helpers.h"
 
 namespace {

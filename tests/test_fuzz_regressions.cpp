@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "scene/scene.h"
 #include "support/test_helpers.h"
 

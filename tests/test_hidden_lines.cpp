@@ -38,10 +38,10 @@
 #include <string>
 #include <vector>
 
-#include "mesh/mesh_io.h"
+#include <exbsp/mesh/mesh_io.h>
+#include <exbsp/view/standard_pipeline.h>
+#include <exbsp/view/vector_drawing.h>
 #include "scene/scene.h"
-#include "view/standard_pipeline.h"
-#include "view/vector_drawing.h"
 #include "support/hidden_line_oracle.h"
 #include "support/hidden_line_views.h"
 #include "support/test_helpers.h"

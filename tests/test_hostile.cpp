@@ -28,14 +28,14 @@
 #include <thread>
 #include <vector>
 
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/gmp_memory.h>
+#include <exbsp/mesh/mesh_io.h>
 #include "support/cli_support.h"
 #include "support/inputs.h"
 #include "support/test_helpers.h"
 #include "core/atomic_file.h"
-#include "core/errors.h"
-#include "mesh/gmp_memory.h"
 #include "mesh/json_limits.h"
-#include "mesh/mesh_io.h"
 #include "scene/scene.h"
 
 #if defined(__SANITIZE_ADDRESS__)

@@ -31,9 +31,9 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
-#include "mesh/mesh_io.h"
-#include "mesh/soup.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
+#include <exbsp/mesh/soup.h>
 
 namespace {
 

@@ -53,12 +53,12 @@
 #include <tuple>
 #include <vector>
 
+#include <exbsp/view/image.h>
+#include <exbsp/view/matrix.h>
+#include <exbsp/view/png_io.h>
 #include "scene/demo_scene.h"
 #include "scene/scene.h"
 #include "view/effects.h"
-#include "view/image.h"
-#include "view/matrix.h"
-#include "view/png_io.h"
 #include "support/test_helpers.h"
 
 #include "support/osmesa_zbuffer.h"

@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
-#include "core/errors.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/core/errors.h>
 #include "support/inputs.h"
 #include "support/observable.h"
 

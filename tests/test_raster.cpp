@@ -20,15 +20,15 @@
 #include <utility>
 #include <vector>
 
+#include <exbsp/core/errors.h>
+#include <exbsp/view/stages.h>
+#include <exbsp/view/transforms.h>
 #include "scene/demo_scene.h"
-#include "core/errors.h"
 #include "scene/scene.h"
 #include "view/clip_stage.h"
 #include "view/effects.h"
 #include "view/paint.h"
 #include "view/rasterizer.h"
-#include "view/stages.h"
-#include "view/transforms.h"
 
 namespace {
 

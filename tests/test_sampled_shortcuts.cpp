@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
+#include <exbsp/bsp/engine.h>
 #include "bsp/heuristics.h"  // built with OpenMP (tests/CMakeLists.txt)
 #include "support/generators.h"
 #include "support/observable.h"

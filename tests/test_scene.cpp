@@ -20,17 +20,17 @@
 #include <tuple>
 #include <vector>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/scene/procedural.h>
+#include <exbsp/view/png_io.h>
+#include <exbsp/view/stages.h>
 #include "scene/demo_scene.h"
-#include "scene/procedural.h"
 #include "scene/render.h"
 #include "scene/scene.h"
 #include "view/effects.h"
-#include "view/png_io.h"
 #include "view/backface_culling.h"
 #include "view/clip_stage.h"
 #include "view/rasterizer.h"
-#include "view/stages.h"
 #include "support/test_helpers.h"
 
 namespace {

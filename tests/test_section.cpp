@@ -27,18 +27,18 @@
 #include <set>
 #include <sstream>
 
-#include "clip/section.h"
-#include "clip/section_cap.h"
-#include "core/errors.h"
+#include <exbsp/clip/section.h>
+#include <exbsp/clip/section_cap.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
+#include <exbsp/view/png_io.h>
 #include "geom/rational.h"
-#include "mesh/mesh_io.h"
 #include "scene/render.h"
 #include "scene/scene.h"
 #include "support/cli_support.h"
 #include "support/exact_triangle_clip.h"
 #include "support/inputs.h"
 #include "support/test_helpers.h"
-#include "view/png_io.h"
 
 namespace {
 

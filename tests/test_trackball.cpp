@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
-// Tests of src/view/trackball.h: unit quaternions, Shoemake's arcball, camera orbit.
+// Tests of include/exbsp/view/trackball.h: unit quaternions, Shoemake's arcball, camera orbit.
 // Notation: q = (w, x, y, z); rotation v' = q v q*; arcball drag p -> q is (p.q, p x q), which
 // turns by twice the arc from p to q, so it maps p to 2 (p.q) q - p. Eye coordinates: x right,
 // y up, z towards the viewer. q and -q are the same rotation: "same_rotation" compares up to sign.
@@ -13,8 +13,8 @@
 #include <random>
 #include <vector>
 
-#include "core/errors.h"
-#include "view/trackball.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/view/trackball.h>
 #include "support/test_helpers.h"
 
 namespace {

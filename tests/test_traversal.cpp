@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
-// Tests of the public tree walk (src/bsp/traversal.h): bsp::node, side_of_plane,
+// Tests of the public tree walk (include/exbsp/bsp/traversal.h): bsp::node, side_of_plane,
 // traverse_from_eye / traverse_for_direction against order_from_eye, ancestors() and the
 // exact input. Degenerate cases first: the empty tree, eyes exactly on node planes, points a
 // double test would put on a plane.
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
-#include "bsp/traversal.h"
-#include "core/errors.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/bsp/traversal.h>
+#include <exbsp/core/errors.h>
 
 namespace {
 

@@ -14,13 +14,13 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
 #include "support/cli_support.h"
-#include "core/errors.h"
 #include "support/generators.h"
 #include "support/inputs.h"
 #include "support/test_helpers.h"
-#include "mesh/mesh_io.h"
 
 namespace {
 

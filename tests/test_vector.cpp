@@ -32,20 +32,20 @@
 #include <set>
 #include <sstream>
 
-#include "core/errors.h"
-#include "mesh/mesh_io.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
+#include <exbsp/view/camera.h>
+#include <exbsp/view/png_io.h>
+#include <exbsp/view/projection.h>
+#include <exbsp/view/stages.h>
+#include <exbsp/view/vector_drawing.h>
 #include "scene/demo_scene.h"
 #include "scene/render.h"
 #include "scene/scene.h"
-#include "view/camera.h"
 #include "view/effects.h"
 #include "view/lighting.h"
 #include "view/placement.h"
-#include "view/png_io.h"
-#include "view/projection.h"
-#include "view/stages.h"
 #include "view/svg_writer.h"
-#include "view/vector_drawing.h"
 #include "view/vector_pdf.h"
 #include "view/visible_cover.h"
 #include "support/test_helpers.h"

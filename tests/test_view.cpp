@@ -26,25 +26,25 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
-#include "core/errors.h"
-#include "mesh/soup.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/soup.h>
+#include <exbsp/view/camera.h>
+#include <exbsp/view/image.h>
+#include <exbsp/view/matrix.h>
+#include <exbsp/view/pipeline.h>
+#include <exbsp/view/png_io.h>
+#include <exbsp/view/projection.h>
+#include <exbsp/view/stages.h>
+#include <exbsp/view/transforms.h>
+#include <exbsp/view/viewport.h>
 #include "core/atomic_file.h"
 #include "view/backface_culling.h"
-#include "view/camera.h"
 #include "view/clip_stage.h"
 #include "view/effects.h"
-#include "view/image.h"
-#include "view/matrix.h"
 #include "view/orient2d.h"
-#include "view/pipeline.h"
-#include "view/png_io.h"
-#include "view/projection.h"
 #include "view/rasterizer.h"
-#include "view/stages.h"
 #include "view/svg_writer.h"
-#include "view/transforms.h"
-#include "view/viewport.h"
 #include "support/test_helpers.h"
 
 namespace {

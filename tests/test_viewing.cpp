@@ -19,17 +19,17 @@
 #include <random>
 #include <sstream>
 
-#include "clip/homogeneous_segment.h"
-#include "core/errors.h"
+#include <exbsp/clip/homogeneous_segment.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/view/camera.h>
+#include <exbsp/view/phigs.h>
+#include <exbsp/view/png_io.h>
+#include <exbsp/view/projection.h>
+#include <exbsp/view/trackball.h>
+#include <exbsp/view/transforms.h>
 #include "scene/render.h"
 #include "scene/scene.h"
-#include "view/camera.h"
 #include "view/effects.h"
-#include "view/phigs.h"
-#include "view/png_io.h"
-#include "view/projection.h"
-#include "view/trackball.h"
-#include "view/transforms.h"
 #include "support/test_helpers.h"
 
 namespace {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Option-value parsing, mesh input and typo suggestions for the command line (cli_parse.h).
 #include "app/cli_parse.h"
+#include "app/resources.h"
 
 #include <CLI/CLI.hpp>
 #include <sys/resource.h>
@@ -16,8 +17,8 @@
 #include <numeric>
 #include <sstream>
 
-#include "core/errors.h"
-#include "mesh/mesh_io.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
 
 namespace exbsp::cli {
 
@@ -142,23 +143,11 @@ triangle_soup read_mesh_input(const std::string& path, const std::string& format
   return read_mesh_data(read_input_file(path), f, path);
 }
 
-std::uint64_t available_memory_bytes() {
-  std::uint64_t available = 0;
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key;
-  std::uint64_t kib = 0;
-  std::string unit;
-  while (meminfo >> key >> kib >> unit)
-    if (key == "MemAvailable:") {
-      available = kib * 1024;
-      break;
-    }
-  struct rlimit as {};
-  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
-    const auto cap = static_cast<std::uint64_t>(as.rlim_cur);
-    available = available ? std::min(available, cap) : cap;
-  }
-  return available;
+std::string name_list(const std::vector<std::string>& names, const char* last) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? std::string(" ") + last + " " : ", ") + names[i];
+  return out;
 }
 
 std::size_t edit_distance(const std::string& a, const std::string& b) {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "clip/section.h"
-#include "mesh/soup.h"
+#include <exbsp/clip/section.h>
+#include <exbsp/mesh/soup.h>
 
 namespace CLI {
 class App;
@@ -37,14 +37,13 @@ std::array<int, 2> parse_size(const std::string& text, const std::string& option
 /// extension. Throws input_error naming the file ("<stdin>" for "-") and line.
 /// Standard input is bounded like a named file: when `in` is std::cin, a device that is not a
 /// terminal (/dev/zero, /dev/urandom) is refused as a named device is, and at most
-/// `max_stdin_bytes` are read (limit_error beyond; 0: available_memory_bytes() / 4, the text
-/// of a mesh being a fraction of what its soup and tree then take).
+/// `max_stdin_bytes` are read (limit_error beyond; 0: available_memory_bytes() / 4 (resources.h),
+/// the text of a mesh being a fraction of what its soup and tree then take).
 triangle_soup read_mesh_input(const std::string& path, const std::string& format, std::istream& in,
                               std::uint64_t max_stdin_bytes = 0);
 
-/// The memory this process may still use: MemAvailable, or the address-space limit when it is
-/// lower (0 when neither is known).
-std::uint64_t available_memory_bytes();
+/// "a, b and c" (`last`: "and" or "or").
+std::string name_list(const std::vector<std::string>& names, const char* last);
 
 /// Levenshtein distance (insertions, deletions, substitutions; each costs 1). Written here
 /// because neither CLI11 nor the standard library offer one, and it is ten lines.

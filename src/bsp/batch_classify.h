@@ -23,9 +23,9 @@
 #include <emmintrin.h>
 #endif
 
+#include <exbsp/core/errors.h>
 #include "bsp/fast_orientation.h"
 #include "geom/split_pattern.h"
-#include "core/errors.h"
 
 namespace exbsp {
 namespace detail {

@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "bsp/engine.h"
+#include <exbsp/bsp/engine.h>
 #include "bsp/exact_output.h"
 
 namespace exbsp {
@@ -48,11 +48,5 @@ void require_eye(const vec3d& eye, const char* function);
 /// usage_error unless d is finite and not zero.
 void require_direction(const vec3d& d, const char* function);
 }  // namespace detail
-
-std::unique_ptr<bsp_impl> make_bsp_exact(const triangle_soup&, const build_options&);
-std::unique_ptr<bsp_impl> make_bsp_epeck(const triangle_soup&, const build_options&);
-std::unique_ptr<bsp_impl> make_bsp_epick(const triangle_soup&, const build_options&);
-std::unique_ptr<bsp_impl> make_bsp_double(const triangle_soup&, const build_options&);
-std::unique_ptr<bsp_impl> make_bsp_gmpq(const triangle_soup&, const build_options&);
 
 }  // namespace exbsp

@@ -18,11 +18,11 @@
 #include <cstdint>
 #include <vector>
 
+#include <exbsp/bsp/engine.h>
+#include <exbsp/mesh/soup.h>
 #include "bsp/batch_classify.h"
-#include "bsp/engine.h"
 #include "geom/split_pattern.h"
 #include "bsp/tree_file.h"
-#include "mesh/soup.h"
 
 namespace exbsp {
 

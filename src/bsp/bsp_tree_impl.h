@@ -15,13 +15,15 @@
 #include <string>
 #include <utility>
 
+#include <exbsp/core/errors.h>
 #include "bsp/bsp_impl.h"
 #include "bsp/bsp_tree.h"
 #include "bsp/exact_output.h"
+#include "bsp/heuristic_table.h"
 #include "bsp/heuristics.h"
+#include "bsp/kernels.h"
 #include "bsp/parallel.h"
 #include "bsp/tree_file_impl.h"
-#include "core/errors.h"
 
 namespace exbsp {
 
@@ -81,7 +83,8 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
     : geom_(soup) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
-  const detail::heuristic_id heuristic = detail::heuristic_for(options);
+  build_options scored;  // a heuristic row's score, when the heuristic is one (heuristic_table.h)
+  const auto [heuristic, effective] = detail::heuristic_for(options, scored);
   stats_.kernel = to_string(G::id);
   stats_.heuristic = options.heuristic;
   stats_.seed = options.seed;
@@ -115,7 +118,7 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   // subtrees in parallel, each into its own node list and piece pool, merged in frontier order.
   // Heuristic seeds come from each node's path key, not from a creation counter, and the
   // frontier size is fixed, so the tree is the same for any number of threads.
-  build_context ctx(options, heuristic, start);
+  build_context ctx(*effective, heuristic, start);
   // This thread also reports from inside long heuristic steps (cancellation, parallel.h).
   detail::build_poller poller{[&ctx] {
                                 ctx.report(ctx.placed.load(std::memory_order_relaxed),
@@ -679,9 +682,11 @@ class bsp_kernel_impl final : public bsp_impl {
 
 }  // namespace exbsp
 
-/// Explicit instantiation of the tree for one geometry G, with the factory make_bsp_<NAME>.
-/// Used once per kernel translation unit.
+/// Explicit instantiation of the tree for one geometry G, with the factories make_bsp_<NAME>
+/// and tree_file::load_<NAME> that the kernel's row names (kernels.h). Used once per kernel
+/// translation unit.
 #define EXBSP_INSTANTIATE_BSP(G, NAME)                                                           \
+  EXBSP_DECLARE_BSP_FACTORIES(NAME)                                                              \
   namespace exbsp {                                                                              \
   template class basic_bsp_tree<G>;                                                              \
   std::unique_ptr<bsp_impl> make_bsp_##NAME(const triangle_soup& soup, const build_options& o) { \

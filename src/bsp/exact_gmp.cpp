@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // fragment_exact_mpq: the kernel's exact values copied into mpq_class (bsp_impl::visit_exact).
-#include "bsp/exact_gmp.h"
+#include <exbsp/bsp/exact_gmp.h>
 
 #include "bsp/bsp_impl.h"
 

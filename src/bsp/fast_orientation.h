@@ -13,7 +13,7 @@
 #include <cfloat>
 #include <cmath>
 
-#include "mesh/soup.h"
+#include <exbsp/mesh/soup.h>
 
 namespace exbsp {
 

@@ -14,11 +14,11 @@
 #include <optional>
 #include <vector>
 
+#include <exbsp/core/errors.h>
 #include "bsp/exact_output.h"
 #include "bsp/fast_orientation.h"
 #include "bsp/kernel_traits.h"
 #include "bsp/tree_file.h"
-#include "core/errors.h"
 #include "geom/cut_plane.h"
 #include "geom/split_pattern.h"
 

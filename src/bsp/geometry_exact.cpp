@@ -12,10 +12,10 @@
 #include <cmath>
 #include <limits>
 
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/gmp_memory.h>
 #include "bsp/exact_output.h"
 #include "geom/rational.h"
-#include "core/errors.h"
-#include "mesh/gmp_memory.h"
 
 namespace exbsp {
 

@@ -30,7 +30,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "bsp/engine.h"
+#include <exbsp/bsp/engine.h>
 #include "bsp/exact_output.h"
 #include "bsp/fast_orientation.h"
 #include "geom/split_pattern.h"

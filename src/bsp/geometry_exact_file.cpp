@@ -6,9 +6,9 @@
 #include <limits>
 #include <string>
 
+#include <exbsp/core/errors.h>
 #include "bsp/geometry_exact.h"
 #include "bsp/tree_file.h"
-#include "core/errors.h"
 
 namespace exbsp {
 

@@ -24,11 +24,11 @@
 #include <string>
 #include <vector>
 
+#include <exbsp/bsp/engine.h>
+#include <exbsp/core/errors.h>
 #include "bsp/batch_classify.h"
-#include "bsp/engine.h"
 #include "bsp/parallel.h"
 #include "geom/split_pattern.h"
-#include "core/errors.h"
 
 namespace exbsp {
 namespace detail {
@@ -42,7 +42,7 @@ inline std::uint64_t mix64(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
-/// Heuristic indices; the first four follow heuristic_names().
+/// The tree's choosers (heuristic_table.h: each heuristic's row names one).
 enum heuristic_id : int {
   heuristic_naive,
   heuristic_min_split,
@@ -50,10 +50,6 @@ enum heuristic_id : int {
   heuristic_random,
   heuristic_custom
 };
-
-/// The heuristic `options` ask for (engine.cpp). Throws usage_error for an unknown name,
-/// for "custom" without options.score and for options.score with another heuristic.
-heuristic_id heuristic_for(const build_options& options);
 
 // min-split: the position whose plane straddles the fewest others, ties to the earliest.
 // Candidates are ranked by the key (count, index). The best complete key so far bounds the

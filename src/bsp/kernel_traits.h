@@ -6,7 +6,7 @@
 #pragma once
 #include <gmp.h>
 
-#include "bsp/engine.h"
+#include <exbsp/bsp/engine.h>
 
 namespace exbsp {
 

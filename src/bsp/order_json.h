@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
+#include <exbsp/bsp/engine.h>
 #include "core/atomic_file.h"
 
 namespace exbsp {

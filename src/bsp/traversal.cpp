@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // The tree walk of the public API (notation in traversal.h); the walk itself is
 // basic_bsp_tree::walk, shared with order_from_eye.
-#include "bsp/traversal.h"
+#include <exbsp/bsp/traversal.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <exbsp/bsp/engine.h>
 #include "bsp/bsp_impl.h"
-#include "bsp/engine.h"
 
 namespace exbsp {
 

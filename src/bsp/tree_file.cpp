@@ -15,34 +15,15 @@
 #include <limits>
 #include <utility>
 
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
 #include "bsp/bsp_impl.h"
+#include "bsp/kernels.h"
 #include "core/atomic_file.h"
-#include "core/errors.h"
-#include "mesh/mesh_io.h"
 
 namespace exbsp {
 namespace tree_file {
 namespace {
-
-/// The file's kernel codes: stable numbers, independent of kernel_id's order.
-constexpr std::uint32_t code_exact = 1, code_epeck = 2, code_gmpq = 3, code_epick = 4,
-                        code_double = 5;
-
-std::uint32_t kernel_code(kernel_id k) {
-  switch (k) {
-    case kernel_id::exact:
-      return code_exact;
-    case kernel_id::epeck:
-      return code_epeck;
-    case kernel_id::gmpq:
-      return code_gmpq;
-    case kernel_id::epick:
-      return code_epick;
-    case kernel_id::double_:
-      return code_double;
-  }
-  throw usage_error("save: unknown kernel");
-}
 
 /// CRC-32 (the polynomial and conventions of zlib, PNG and zip: Boost.CRC's crc_32_type).
 std::uint32_t crc32_of(std::string_view bytes) {
@@ -283,7 +264,7 @@ std::string bsp::serialize() const {
   writer out;
   out.bytes(magic, magic_size);
   out.u32(format_version);
-  out.u32(kernel_code(kernel()));
+  out.u32(kernel_row_of(kernel()).file_code);
   out.u64(0);  // body size, patched below
   impl_->write_tree(out);
   std::string& bytes = out.data();
@@ -311,8 +292,8 @@ bsp bsp::deserialize(std::string_view bytes, const std::string& name) {
     fail("byte 8: version: format version " + std::to_string(version) +
          " is not supported (this exbsp reads version " + std::to_string(format_version) + ")");
   const std::uint32_t code = read_u32_at(bytes, 12);
-  if (code < code_exact || code > code_double)
-    fail("byte 12: kernel: unknown kernel code " + std::to_string(code));
+  const kernel_row* row = kernel_row_of_file_code(code);
+  if (!row) fail("byte 12: kernel: unknown kernel code " + std::to_string(code));
   const std::uint64_t body = read_u64_at(bytes, 16);
   const std::uint64_t actual = bytes.size() - header_size - trailer_size;
   if (body > actual)
@@ -333,26 +314,7 @@ bsp bsp::deserialize(std::string_view bytes, const std::string& name) {
   }
   reader in(bytes.substr(header_size, static_cast<std::size_t>(body)), name, header_size);
   common_part common = read_common(in);
-  std::unique_ptr<bsp_impl> impl;
-  switch (code) {
-    case code_exact:
-      impl = load_exact(in, std::move(common));
-      break;
-    case code_epeck:
-      impl = load_epeck(in, std::move(common));
-      break;
-    case code_gmpq:
-      impl = load_gmpq(in, std::move(common));
-      break;
-    case code_epick:
-      impl = load_epick(in, std::move(common));
-      break;
-    case code_double:
-      impl = load_double(in, std::move(common));
-      break;
-    default:
-      break;  // checked above
-  }
+  std::unique_ptr<bsp_impl> impl = row->load(in, std::move(common));
   if (in.remaining()) in.fail("end", std::to_string(in.remaining()) + " bytes after the last node");
   bsp tree(std::move(impl));
   // Only the canonical form is accepted: the bytes this tree would save. A file with the same

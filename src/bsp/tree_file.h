@@ -14,8 +14,8 @@
 #include <string_view>
 #include <vector>
 
-#include "bsp/engine.h"
-#include "mesh/soup.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/mesh/soup.h>
 
 namespace exbsp {
 
@@ -118,15 +118,6 @@ void read_rational(reader& in, const char* field, mpq_ptr out);
 
 /// "field[i]" for messages.
 std::string indexed(const char* field, std::size_t i);
-
-/// The loading constructors of each kernel's tree (bsp_tree_impl.h, EXBSP_INSTANTIATE_BSP):
-/// read the kernel's part of the body from `in` (positioned after the common part) for the
-/// soup and stats of `common`, validating everything.
-std::unique_ptr<bsp_impl> load_exact(reader& in, common_part&& common);
-std::unique_ptr<bsp_impl> load_epeck(reader& in, common_part&& common);
-std::unique_ptr<bsp_impl> load_epick(reader& in, common_part&& common);
-std::unique_ptr<bsp_impl> load_double(reader& in, common_part&& common);
-std::unique_ptr<bsp_impl> load_gmpq(reader& in, common_part&& common);
 
 }  // namespace tree_file
 }  // namespace exbsp

@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
+#include <exbsp/core/errors.h>
 #include "bsp/bsp_tree.h"
 #include "bsp/tree_file.h"
-#include "core/errors.h"
 
 namespace exbsp {
 

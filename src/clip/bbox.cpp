@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Bounding boxes (see bbox.h). `b` is the box being grown, one point after the other.
-#include "clip/bbox.h"
+#include <exbsp/clip/bbox.h>
 
 #include <cstddef>
 

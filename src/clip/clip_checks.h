@@ -7,8 +7,8 @@
 #include <cstddef>
 #include <string>
 
-#include "clip/clip_types.h"
-#include "core/errors.h"
+#include <exbsp/clip/clip_types.h>
+#include <exbsp/core/errors.h>
 
 namespace exbsp::clip::detail {
 

@@ -10,7 +10,7 @@
 // the coordinate is snapped to the boundary, which moves it towards the exact value. Each
 // clip pass consumes one allowed bit, so there are at most 2N clip passes before a final
 // accept or reject.
-#include "clip/cohen_sutherland.h"
+#include <exbsp/clip/cohen_sutherland.h>
 
 #include <cstddef>
 

@@ -2,7 +2,7 @@
 // The half-spaces of the convex hull of a 3D point set (notation in convex_region.h), by
 // CGAL's convex_hull_3 into a Surface_mesh. Both CGAL packages are GPL-3.0-or-later, so this
 // file is the GPL component exbsp::gpl (libexbsp_gpl; docs/licence.md).
-#include "clip/convex_hull.h"
+#include <exbsp/clip/convex_hull.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -10,8 +10,8 @@
 
 #include <string>
 
+#include <exbsp/core/errors.h>
 #include "clip/clip_checks.h"
-#include "core/errors.h"
 
 namespace exbsp::clip {
 

@@ -2,7 +2,7 @@
 // Convex regions as half-spaces (notation in convex_region.h). The convexity test comes from
 // CGAL (is_convex_2 with exact predicates) rather than hand code; the 3D convex hull is in
 // convex_hull.cpp (the GPL component: CGAL's convex_hull_3 is GPL-3.0-or-later).
-#include "clip/convex_region.h"
+#include <exbsp/clip/convex_region.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>

@@ -3,7 +3,7 @@
 // Plane j (0..5) is w + x, w - x, w + y, w - y, w + z, w - z >= 0: axis j / 2, and the
 // coordinate enters with sign + for even j, - for odd j. `in`/`out` are the polygons before
 // and after one plane; `f` holds the plane values of `in`'s vertices.
-#include "clip/homogeneous.h"
+#include <exbsp/clip/homogeneous.h>
 
 #include <cmath>
 #include <string>

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Segment clipping in clip space: Liang–Barsky and Cohen–Sutherland (notation in
 // homogeneous_segment.h).
-#include "clip/homogeneous_segment.h"
+#include <exbsp/clip/homogeneous_segment.h>
 
 #include <cmath>
 
-#include "clip/homogeneous.h"
-#include "clip/liang_barsky.h"
+#include <exbsp/clip/homogeneous.h>
+#include <exbsp/clip/liang_barsky.h>
 
 namespace exbsp::clip {
 

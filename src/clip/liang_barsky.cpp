@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Liang–Barsky clipping (see liang_barsky.h for the p/q notation).
 // Boundaries are numbered 2k: min[k], 2k+1: max[k] (parametric_interval's entry / exit).
-#include "clip/liang_barsky.h"
+#include <exbsp/clip/liang_barsky.h>
 
 #include <cstddef>
 

@@ -16,7 +16,7 @@
 // combinatorics as the tree's (geom/split_pattern.h), and the cut points are
 // geom::plane_segment_intersection's (test_section checks that the pieces equal the clipping
 // oracle's, tests/support/exact_triangle_clip.h, exactly).
-#include "clip/section.h"
+#include <exbsp/clip/section.h>
 
 #include "clip/section_impl.h"
 
@@ -28,7 +28,7 @@
 #include <limits>
 #include <unordered_map>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "geom/cut_plane.h"
 #include "geom/rational.h"
 #include "geom/split_pattern.h"

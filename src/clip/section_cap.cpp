@@ -10,7 +10,7 @@
 // packages are GPL-3.0-or-later (docs/licence.md). The rest of the section (split, outline,
 // refinement) is in the LGPL core, section.cpp, which calls build_cap through
 // section_detail::section.
-#include "clip/section_cap.h"
+#include <exbsp/clip/section_cap.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>

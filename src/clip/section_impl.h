@@ -20,7 +20,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "clip/section.h"
+#include <exbsp/clip/section.h>
 #include <exbsp/core/export.h>
 #include "geom/cut_plane.h"
 

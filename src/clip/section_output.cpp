@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "clip/section.h"
+#include <exbsp/clip/section.h>
 #include "core/json_text.h"
 
 namespace exbsp {

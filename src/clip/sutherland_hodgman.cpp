@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Sutherland–Hodgman clipping (see sutherland_hodgman.h for the notation).
 // `in` and `out` are the polygons before and after one half-space; `f` holds f(in[i]).
-#include "clip/sutherland_hodgman.h"
+#include <exbsp/clip/sutherland_hodgman.h>
 
 #include <algorithm>
 #include <cmath>

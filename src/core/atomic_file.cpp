@@ -26,7 +26,7 @@
 #include <mutex>
 #include <random>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp {
 

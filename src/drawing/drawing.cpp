@@ -14,14 +14,14 @@
 #include <limits>
 #include <map>
 
-#include "core/errors.h"
-#include "core/version.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/core/version.h>
+#include <exbsp/view/camera.h>
+#include <exbsp/view/projection.h>
+#include <exbsp/view/stages.h>
 #include "drawing/hatch.h"
-#include "view/camera.h"
 #include "view/edge_paths.h"
 #include "view/lighting.h"
-#include "view/projection.h"
-#include "view/stages.h"
 
 namespace exbsp::drawing {
 

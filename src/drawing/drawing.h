@@ -39,10 +39,10 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
-#include "drawing/sheet.h"
-#include "mesh/soup.h"
+#include <exbsp/bsp/engine.h>
 #include <exbsp/core/export.h>
+#include <exbsp/mesh/soup.h>
+#include "drawing/sheet.h"
 
 namespace exbsp::drawing {
 

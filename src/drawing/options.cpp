@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "drawing/drawing.h"
 
 namespace exbsp::drawing {

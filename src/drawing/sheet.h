@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "view/image.h"
+#include <exbsp/view/image.h>
 
 namespace exbsp::drawing {
 

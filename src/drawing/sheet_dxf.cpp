@@ -15,8 +15,8 @@
 #include <memory>
 #include <sstream>
 
+#include <exbsp/core/errors.h>
 #include "core/atomic_file.h"
-#include "core/errors.h"
 
 namespace exbsp::drawing {
 

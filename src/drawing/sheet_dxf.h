@@ -13,8 +13,8 @@
 #pragma once
 #include <string>
 
-#include "drawing/sheet.h"
 #include <exbsp/core/export.h>
+#include "drawing/sheet.h"
 
 namespace exbsp::drawing {
 

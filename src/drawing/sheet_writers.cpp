@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "view/cairo_pdf_stream.h"
 
 namespace exbsp::drawing {

@@ -19,9 +19,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "geom/homogeneous_det.h"
-#include "mesh/soup.h"
 #include <exbsp/core/export.h>
+#include <exbsp/mesh/soup.h>
+#include "geom/homogeneous_det.h"
 
 namespace exbsp::geom {
 

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "mesh/soup.h"
+#include <exbsp/mesh/soup.h>
 
 namespace exbsp::geom {
 

@@ -3,7 +3,7 @@
 // allocation functions never to return NULL; throwing is the only way out besides abort().
 // GMP is compiled with -fexceptions on Debian (libgmp is built so C++ exceptions may cross
 // it, which gmpxx relies on), so the exception reaches the caller's catch.
-#include "mesh/gmp_memory.h"
+#include <exbsp/mesh/gmp_memory.h>
 
 #include <gmp.h>
 

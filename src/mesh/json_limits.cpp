@@ -4,7 +4,7 @@
 // outside strings. Lines are counted at '\n', and at a '\r' not followed by '\n'.
 #include "mesh/json_limits.h"
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp {
 

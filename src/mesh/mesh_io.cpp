@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Mesh input entry points: choose the reader by extension, load the whole file into memory
 // and hand it to the format reader (read_off.cpp, read_obj.cpp, read_ply.cpp, read_stl.cpp).
-#include "mesh/mesh_io.h"
+#include <exbsp/mesh/mesh_io.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -10,7 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "core/file_name.h"
 #include "mesh/reader_util.h"
 

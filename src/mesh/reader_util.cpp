@@ -11,7 +11,7 @@
 #include <cstring>
 #include <system_error>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::mesh_detail {
 

@@ -16,7 +16,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "mesh/soup.h"
+#include <exbsp/mesh/soup.h>
 
 namespace exbsp::mesh_detail {
 

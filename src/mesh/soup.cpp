@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
-#include "mesh/soup.h"
+#include <exbsp/mesh/soup.h>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp {
 

@@ -21,15 +21,15 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
-#include "clip/section.h"
-#include "clip/section_cap.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/clip/section.h>
+#include <exbsp/clip/section_cap.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/core/version.h>
+#include <exbsp/mesh/mesh_io.h>
 #include "core/atomic_file.h"
-#include "core/errors.h"
 #include "core/file_name.h"
-#include "core/version.h"
 #include "drawing/drawing.h"
-#include "mesh/mesh_io.h"
 #include "scene/drawing_command.h"
 
 namespace py = pybind11;

@@ -8,14 +8,14 @@
 #include <limits>
 #include <sstream>
 
-#include "clip/cohen_sutherland.h"
-#include "clip/convex_hull.h"
-#include "clip/convex_region.h"
-#include "clip/liang_barsky.h"
-#include "core/errors.h"
+#include <exbsp/clip/cohen_sutherland.h>
+#include <exbsp/clip/convex_hull.h>
+#include <exbsp/clip/convex_region.h>
+#include <exbsp/clip/liang_barsky.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
 #include "core/file_name.h"
 #include "mesh/json_limits.h"
-#include "mesh/mesh_io.h"
 #include "core/atomic_file.h"
 #include "view/json_reader.h"
 

@@ -35,8 +35,8 @@
 #include <string>
 #include <vector>
 
-#include "clip/clip_types.h"
-#include "clip/sutherland_hodgman.h"
+#include <exbsp/clip/clip_types.h>
+#include <exbsp/clip/sutherland_hodgman.h>
 
 namespace exbsp::scene {
 

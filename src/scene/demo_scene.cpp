@@ -12,8 +12,8 @@
 #include <memory>
 #include <tuple>
 
-#include "scene/procedural.h"
-#include "view/transforms.h"
+#include <exbsp/scene/procedural.h>
+#include <exbsp/view/transforms.h>
 
 namespace exbsp::scene {
 

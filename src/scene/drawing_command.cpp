@@ -10,14 +10,14 @@
 #include <optional>
 #include <nlohmann/json.hpp>
 
-#include "bsp/engine.h"
-#include "clip/section_cap.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/clip/section_cap.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
 #include "core/atomic_file.h"
-#include "core/errors.h"
 #include "core/file_name.h"
 #include "drawing/sheet_dxf.h"
 #include "drawing/sheet_writers.h"
-#include "mesh/mesh_io.h"
 #include "scene/scene.h"
 
 namespace exbsp::scene {

@@ -11,8 +11,8 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "core/errors.h"
-#include "view/matrix.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/view/matrix.h>
 
 namespace exbsp::scene {
 

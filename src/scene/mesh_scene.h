@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/soup.h"
+#include <exbsp/mesh/soup.h>
 #include "scene/scene.h"
 
 namespace exbsp::scene {

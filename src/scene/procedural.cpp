@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Procedural meshes (notation in procedural.h). Polygons are listed counter-clockwise seen
 // from outside, so n = (b - a) x (c - a) points outward.
-#include "scene/procedural.h"
+#include <exbsp/scene/procedural.h>
 
 #include <cmath>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::scene {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // `exbsp render`: scene (or the built-in demo) -> one soup -> the stage list of
-// view/effects.h -> atomic PNG, SVG or PDF write; with an orbit, one build and one run of the
-// per-view stages per frame (notation in render.h).
+// view/effects.h -> atomic write by the output's format (output_formats.h: PNG, SVG, PDF); with an
+// orbit, one build and one run of the per-view stages per frame (notation in render.h).
 #include "scene/render.h"
 
 #include <algorithm>
@@ -10,16 +10,14 @@
 #include <cstdio>
 #include <string_view>
 
-#include "core/atomic_file.h"
-#include "core/errors.h"
-#include "core/file_name.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/view/stages.h>
+#include <exbsp/view/trackball.h>
 #include "scene/demo_scene.h"
+#include "scene/output_formats.h"
 #include "view/effects.h"
 #include "view/mesh_reject.h"
 #include "view/placement.h"
-#include "view/png_io.h"
-#include "view/stages.h"
-#include "view/trackball.h"
 
 namespace exbsp {
 
@@ -46,13 +44,10 @@ void run_stages(const view::pipeline& p, view::frame& f, std::ostream* log,
   }
 }
 
-/// The write stage for `path`.
-view::stage write_stage(const std::string& path, view::output_kind kind) {
-  return {"write", [path, kind](view::frame& fr) {
-            if (kind == view::output_kind::png)
-              view::write_png(fr.picture, path);
-            else
-              write_file_atomically(path, kind == view::output_kind::svg ? fr.svg : fr.pdf);
+/// The write stage for `path`, by the format's writer.
+view::stage write_stage(const std::string& path, const output_format_row& format) {
+  return {"write", [path, &format](view::frame& fr) {
+            format.write(fr, path);
             return path;
           }};
 }
@@ -128,16 +123,8 @@ std::vector<std::pair<view::camera, view::vector3>> orbit_cameras(
 render_summary render_command(const render_request& request, std::ostream& log) {
   const std::string out =
       request.output_path.empty() ? std::string("exbsp.png") : request.output_path;
-  view::output_kind kind;
-  if (out == "-" || has_extension(out, ".png")) {
-    kind = view::output_kind::png;
-  } else if (has_extension(out, ".svg")) {
-    kind = view::output_kind::svg;
-  } else if (has_extension(out, ".pdf")) {
-    kind = view::output_kind::pdf;
-  } else {
-    throw usage_error("render: the output file must end in .png, .svg or .pdf: " + out);
-  }
+  const output_format_row& format = output_format_for(out);
+  const view::output_kind kind = format.product;
   const bool orbit = !request.orbit_drag.empty();
   if (!orbit && request.frames != 0) throw usage_error("render: --frames needs --orbit-drag");
   if (orbit && out == "-")
@@ -197,7 +184,7 @@ render_summary render_command(const render_request& request, std::ostream& log) 
     const view::pipeline standard = view::standard_pipeline(s.effects, kind, curves);
     for (const view::stage& st : standard.stages()) p.add(st.name, st.run);
     if (f.view.needs_placement()) p.add("place", view::place_stage);
-    const view::stage w = write_stage(out, kind);
+    const view::stage w = write_stage(out, format);
     p.add(w.name, w.run);
     run_stages(p, f, stage_log, s.path);
     summary.non_finite = f.non_finite;
@@ -250,7 +237,7 @@ render_summary render_command(const render_request& request, std::ostream& log) 
     }
     view::pipeline p = per_view;
     if (f.view.needs_placement()) p.add("place", view::place_stage);
-    const view::stage w = write_stage(frame_path(out, k), kind);
+    const view::stage w = write_stage(frame_path(out, k), format);
     p.add(w.name, w.run);
     run_stages(p, f, stage_log, s.path);
     summary.non_finite = std::max(summary.non_finite, f.non_finite);

@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-#include "bsp/engine.h"
+#include <exbsp/bsp/engine.h>
 #include "scene/scene.h"
 
 namespace exbsp {

@@ -10,15 +10,15 @@
 #include <limits>
 #include <sstream>
 
-#include "clip/section.h"
-#include "clip/section_cap.h"
-#include "core/errors.h"
+#include <exbsp/clip/section.h>
+#include <exbsp/clip/section_cap.h>
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
+#include <exbsp/view/projection.h>
 #include "mesh/json_limits.h"
-#include "mesh/mesh_io.h"
 #include "scene/scene_parts.h"
 #include "view/effects.h"
 #include "view/json_reader.h"
-#include "view/projection.h"
 
 namespace exbsp::scene {
 

@@ -71,13 +71,13 @@
 #include <string>
 #include <vector>
 
+#include <exbsp/mesh/soup.h>
+#include <exbsp/view/camera.h>
+#include <exbsp/view/image.h>
+#include <exbsp/view/matrix.h>
+#include <exbsp/view/phigs.h>
+#include <exbsp/view/pipeline.h>
 #include "drawing/drawing.h"
-#include "mesh/soup.h"
-#include "view/camera.h"
-#include "view/image.h"
-#include "view/matrix.h"
-#include "view/phigs.h"
-#include "view/pipeline.h"
 
 namespace exbsp::scene {
 

@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "view/trackball.h"
-#include "view/transforms.h"
+#include <exbsp/view/trackball.h>
+#include <exbsp/view/transforms.h>
 
 namespace exbsp::scene::detail {
 

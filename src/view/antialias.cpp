@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <string>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "view/paint.h"
 
 namespace exbsp::view {

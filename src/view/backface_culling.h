@@ -8,7 +8,7 @@
 #pragma once
 #include <string>
 
-#include "view/pipeline.h"
+#include <exbsp/view/pipeline.h>
 
 namespace exbsp::view {
 

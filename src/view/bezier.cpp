@@ -8,12 +8,12 @@
 // Bernstein weights are products of doubles kept as mantissa * 2^exponent (frexp), so the
 // binomial C(n,i) (which overflows a double for n > 1029) and t^i (which underflows early)
 // never leave the representable range before the final ldexp.
-#include "view/bezier.h"
+#include <exbsp/view/bezier.h>
 
 #include <cmath>
 #include <string>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp {
 namespace {

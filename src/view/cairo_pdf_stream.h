@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::view {
 

@@ -2,10 +2,10 @@
 // gluLookAt. Notation (camera.h): g = look_at - eye, t = up, w = -g/|g|,
 // u = t x w / |t x w|, v = w x u, Mv = R_uvw T(-eye). polar_view and pilot_view are products
 // of glRotated-style rotations (transforms.h) exactly as camera.h writes them.
-#include "view/camera.h"
+#include <exbsp/view/camera.h>
 
-#include "core/errors.h"
-#include "view/transforms.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/view/transforms.h>
 
 namespace exbsp::view {
 

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // The clipping stage: delegates to exbsp_clip's homogeneous (4D) Sutherland–Hodgman clipper
-// (src/clip/homogeneous.h), which clips against w+x, w-x, w+y, w-y, w+z, w-z >= 0 before the
-// divide, interpolates each crossing from the lexicographically smaller end point (shared
-// edges give bit-identical vertices) and puts the crossing exactly on its plane.
-// Segments (curves, lines): clip/homogeneous_segment.h, Liang–Barsky or Cohen–Sutherland.
-// This file is the only place that knows which clipper the pipeline uses.
+// (include/exbsp/clip/homogeneous.h), which clips against w+x, w-x, w+y, w-y, w+z, w-z >= 0 before
+// the divide, interpolates each crossing from the lexicographically smaller end point (shared edges
+// give bit-identical vertices) and puts the crossing exactly on its plane. Segments (curves,
+// lines): clip/homogeneous_segment.h, Liang–Barsky or Cohen–Sutherland. This file is the only place
+// that knows which clipper the pipeline uses.
 #include "view/clip_stage.h"
 
-#include "clip/homogeneous.h"
-#include "clip/homogeneous_segment.h"
+#include <exbsp/clip/homogeneous.h>
+#include <exbsp/clip/homogeneous_segment.h>
 
 namespace exbsp::view {
 

@@ -10,8 +10,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "view/matrix.h"
-#include "view/screen_line.h"
+#include <exbsp/view/matrix.h>
+#include <exbsp/view/screen_line.h>
 
 namespace exbsp::view {
 

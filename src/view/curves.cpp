@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "core/errors.h"
-#include "view/bezier.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/view/bezier.h>
 #include "view/clip_stage.h"
 
 namespace exbsp::view {

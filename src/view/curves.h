@@ -52,8 +52,8 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
-#include "view/pipeline.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/view/pipeline.h>
 
 namespace exbsp::view {
 

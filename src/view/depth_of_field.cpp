@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::view {
 

@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
+#include <exbsp/view/pipeline.h>
 #include "view/json_reader.h"
-#include "view/pipeline.h"
 
 namespace exbsp::view {
 

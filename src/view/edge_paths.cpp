@@ -6,10 +6,10 @@
 #include <cmath>
 #include <unordered_map>
 
+#include <exbsp/view/pipeline.h>
+#include <exbsp/view/vector_drawing.h>
 #include "view/clip_stage.h"
 #include "view/edge_visibility.h"
-#include "view/pipeline.h"
-#include "view/vector_drawing.h"
 
 namespace exbsp::view {
 

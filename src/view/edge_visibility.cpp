@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <exbsp/view/pipeline.h>
 #include "view/clip_stage.h"
-#include "view/pipeline.h"
 
 namespace exbsp::view {
 

@@ -4,14 +4,14 @@
 
 #include <algorithm>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/view/stages.h>
 #include "view/antialias.h"
 #include "view/backface_culling.h"
 #include "view/curves.h"
 #include "view/depth_of_field.h"
 #include "view/fog.h"
 #include "view/lighting.h"
-#include "view/stages.h"
 
 namespace exbsp::view {
 

@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
+#include <exbsp/view/pipeline.h>
+#include <exbsp/view/standard_pipeline.h>
 #include "view/json_reader.h"
-#include "view/pipeline.h"
-#include "view/standard_pipeline.h"
 
 namespace exbsp::view {
 

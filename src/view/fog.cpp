@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::view {
 

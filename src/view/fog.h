@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "view/effect_settings.h"
+#include <exbsp/view/effect_settings.h>
+#include <exbsp/view/pipeline.h>
+#include <exbsp/view/sample_shader.h>
 #include "view/json_reader.h"
-#include "view/pipeline.h"
-#include "view/sample_shader.h"
 
 namespace exbsp::view {
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // RGB image storage (top row first). See image.h.
-#include "view/image.h"
+#include <exbsp/view/image.h>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::view {
 

@@ -15,9 +15,9 @@
 #include <sstream>
 #include <string>
 
-#include "core/errors.h"
-#include "view/image.h"
-#include "view/matrix.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/view/image.h>
+#include <exbsp/view/matrix.h>
 
 namespace exbsp::view {
 

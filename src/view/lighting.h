@@ -12,8 +12,8 @@
 #pragma once
 #include <string>
 
+#include <exbsp/view/pipeline.h>
 #include "view/json_reader.h"
-#include "view/pipeline.h"
 
 namespace exbsp::view {
 

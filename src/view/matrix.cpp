@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Homogeneous 4x4 matrices (row-major storage, column vectors: p' = M p). See matrix.h.
-#include "view/matrix.h"
+#include <exbsp/view/matrix.h>
 
 #include <algorithm>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::view {
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "clip/bbox.h"
-#include "clip/homogeneous.h"
+#include <exbsp/clip/bbox.h>
+#include <exbsp/clip/homogeneous.h>
 
 namespace exbsp::view {
 

@@ -7,7 +7,7 @@
 #include <exception>
 #include <thread>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "view/line_raster.h"
 #include "view/rasterizer.h"
 

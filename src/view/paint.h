@@ -18,7 +18,7 @@
 // point (vp.x + (i + 1/2) / s, vp.y + (j + 1/2) / s). Lines are s pixels wide, so they stay one
 // output pixel wide after a box downsample by s.
 #pragma once
-#include "view/pipeline.h"
+#include <exbsp/view/pipeline.h>
 
 namespace exbsp::view {
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // PHIGS view orientation and view mapping (notation in phigs.h).
-#include "view/phigs.h"
+#include <exbsp/view/phigs.h>
 
 #include <cmath>
 #include <string>
 
-#include "core/errors.h"
-#include "view/projection.h"
-#include "view/transforms.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/view/projection.h>
+#include <exbsp/view/transforms.h>
 
 namespace exbsp::view {
 

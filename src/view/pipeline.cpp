@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // The stage list runner (pipeline.h): runs named stages in order and times them.
-#include "view/pipeline.h"
+#include <exbsp/view/pipeline.h>
 
 #include <chrono>
 #include <cstdio>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::view {
 

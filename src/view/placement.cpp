@@ -2,7 +2,7 @@
 // The viewport's picture inside the image (notation in placement.h).
 #include "view/placement.h"
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::view {
 

@@ -3,7 +3,7 @@
 // only trivially destructible locals (pointers), and the callbacks never let a C++ exception
 // cross libpng; error text is stored in a context struct and turned into an exception after
 // libpng has been torn down.
-#include "view/png_io.h"
+#include <exbsp/view/png_io.h>
 
 #include <png.h>
 
@@ -14,7 +14,7 @@
 #include <cstring>
 #include <string_view>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "core/atomic_file.h"
 
 namespace exbsp::view {

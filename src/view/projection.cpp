@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // glOrtho, glFrustum, gluPerspective and the PHIGS-style oblique shear (notation in projection.h).
-#include "view/projection.h"
+#include <exbsp/view/projection.h>
 
 #include <cmath>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::view {
 

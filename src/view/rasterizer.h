@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-#include "view/image.h"
+#include <exbsp/view/image.h>
 #include "view/orient2d.h"
 
 namespace exbsp::view {

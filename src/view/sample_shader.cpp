@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // The depth plane of a window-space polygon (notation in sample_shader.h).
-#include "view/sample_shader.h"
+#include <exbsp/view/sample_shader.h>
 
 #include <cmath>
 

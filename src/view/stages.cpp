@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Standard pipeline stages (notation in stages.h).
-#include "view/stages.h"
+#include <exbsp/view/stages.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "view/clip_stage.h"
 #include "view/paint.h"
 #include "view/svg_writer.h"

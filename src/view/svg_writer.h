@@ -35,10 +35,10 @@
 #include <string>
 #include <vector>
 
-#include "view/sample_shader.h"
-#include "view/screen_line.h"
-#include "view/screen_polygon.h"
-#include "view/vector_drawing.h"
+#include <exbsp/view/sample_shader.h>
+#include <exbsp/view/screen_line.h>
+#include <exbsp/view/screen_polygon.h>
+#include <exbsp/view/vector_drawing.h>
 
 namespace exbsp::view {
 

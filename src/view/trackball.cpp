@@ -4,13 +4,13 @@
 // y up, z towards the viewer. For pure unit quaternions p, q the arcball quaternion
 // (p.q, p x q) equals q p* (because q p = -q.p + q x p), which is why drags compose:
 // (c b*)(b a*) = c a*.
-#include "view/trackball.h"
+#include <exbsp/view/trackball.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp {
 namespace {

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Modelling transforms and the matrix stack. Notation: row-major mat4, p' = M p (matrix.h).
 // rotate() is the Rodrigues matrix c I + (1 - c) a a^T + s [a]x for the unit axis a.
-#include "view/transforms.h"
+#include <exbsp/view/transforms.h>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::view {
 

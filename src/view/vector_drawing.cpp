@@ -3,7 +3,7 @@
 // vector_drawing.h). The 2D Booleans are Clipper's (libpolyclipping): integer coordinates, so
 // the grid points of the drawing are its exact input and output; a measurement against CGAL's
 // Boolean_set_operations_2 on an exact kernel is in bench/vector_output.md.
-#include "view/vector_drawing.h"
+#include <exbsp/view/vector_drawing.h>
 
 #include <polyclipping/clipper.hpp>
 
@@ -14,10 +14,10 @@
 #include <map>
 #include <optional>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/view/pipeline.h>
 #include "view/clip_stage.h"
 #include "view/edge_paths.h"
-#include "view/pipeline.h"
 #include "view/visible_cover.h"
 
 namespace exbsp::view {

@@ -7,7 +7,7 @@
 
 #include <memory>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "view/cairo_pdf_stream.h"
 #include "view/svg_writer.h"
 

@@ -11,7 +11,7 @@
 #pragma once
 #include <string>
 
-#include "view/vector_drawing.h"
+#include <exbsp/view/vector_drawing.h>
 
 namespace exbsp::view {
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Viewport transform: ndc [-1, 1]^3 -> window coordinates (notation in viewport.h).
-#include "view/viewport.h"
+#include <exbsp/view/viewport.h>
 
 namespace exbsp::view {
 

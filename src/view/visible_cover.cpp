@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "view/vector_drawing.h"
+#include <exbsp/view/vector_drawing.h>
 
 namespace exbsp::view::cover {
 

@@ -13,7 +13,7 @@
 #include <new>
 #include <typeinfo>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 
 namespace exbsp::fuzz {
 

@@ -20,9 +20,9 @@
 #include <string>
 #include <string_view>
 
+#include <exbsp/mesh/mesh_io.h>
+#include <exbsp/mesh/soup.h>
 #include "fuzz_check.h"
-#include "mesh/mesh_io.h"
-#include "mesh/soup.h"
 #include "support/inputs.h"
 
 namespace exbsp::fuzz {

@@ -34,10 +34,10 @@
 #include <string>
 #include <vector>
 
+#include <exbsp/view/matrix.h>
 #include "fuzz_check.h"
 #include "scene/scene.h"
 #include "view/effects.h"
-#include "view/matrix.h"
 
 namespace {
 

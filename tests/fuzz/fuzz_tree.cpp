@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/mesh/gmp_memory.h>
 #include "fuzz_check.h"
-#include "mesh/gmp_memory.h"
 
 namespace {
 

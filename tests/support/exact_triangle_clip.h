@@ -33,7 +33,7 @@
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
 
-#include "core/errors.h"
+#include <exbsp/core/errors.h>
 #include "geom/cut_plane.h"
 #include "geom/split_pattern.h"
 

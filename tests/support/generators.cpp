@@ -11,7 +11,7 @@
 #include <memory>
 #include <sstream>
 
-#include "mesh/mesh_io.h"
+#include <exbsp/mesh/mesh_io.h>
 #include "support/inputs.h"
 #include "support/test_helpers.h"
 

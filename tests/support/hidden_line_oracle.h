@@ -52,9 +52,9 @@
 #include <string>
 #include <vector>
 
-#include "mesh/soup.h"
-#include "view/pipeline.h"
-#include "view/vector_drawing.h"
+#include <exbsp/mesh/soup.h>
+#include <exbsp/view/pipeline.h>
+#include <exbsp/view/vector_drawing.h>
 
 namespace exbsp_test {
 

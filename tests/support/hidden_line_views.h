@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "mesh/soup.h"
-#include "view/pipeline.h"
+#include <exbsp/mesh/soup.h>
+#include <exbsp/view/pipeline.h>
 
 namespace exbsp_test {
 

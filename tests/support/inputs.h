@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <string>
 
-#include "mesh/soup.h"
+#include <exbsp/mesh/soup.h>
 
 namespace exbsp_test {
 

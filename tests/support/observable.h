@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "bsp/engine.h"
-#include "mesh/soup.h"
+#include <exbsp/bsp/engine.h>
+#include <exbsp/mesh/soup.h>
 
 namespace exbsp_test {
 

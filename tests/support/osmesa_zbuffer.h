@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "view/image.h"
+#include <exbsp/view/image.h>
 
 // LeakSanitizer: OSMesaMakeCurrent allocates per-context buffers that libOSMesa keeps in a
 // global list and never frees, even after OSMesaDestroyContext (Mesa 22.3); those are Mesa's

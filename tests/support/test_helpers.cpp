@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include <exbsp/view/projection.h>
 #include "view/backface_culling.h"
 #include "view/clip_stage.h"
-#include "view/projection.h"
 #include "view/rasterizer.h"
 
 namespace exbsp_test {

@@ -19,12 +19,12 @@
 #include <tuple>
 #include <vector>
 
-#include "core/errors.h"
-#include "mesh/soup.h"
-#include "view/camera.h"
-#include "view/pipeline.h"
-#include "view/image.h"
-#include "view/matrix.h"
+#include <exbsp/core/errors.h>
+#include <exbsp/mesh/soup.h>
+#include <exbsp/view/camera.h>
+#include <exbsp/view/image.h>
+#include <exbsp/view/matrix.h>
+#include <exbsp/view/pipeline.h>
 
 namespace exbsp_test {
 

@@ -23,14 +23,14 @@
 #include <type_traits>
 #include <vector>
 
+#include <exbsp/bsp/engine.h>
+#include <exbsp/mesh/soup.h>
 #include "bsp/bsp_tree.h"
-#include "bsp/engine.h"
 #include "bsp/geometry_cgal.h"
 #include "bsp/kernel_double.h"
 #include "bsp/kernel_epeck.h"
 #include "bsp/kernel_epick.h"
 #include "bsp/kernel_gmpq.h"
-#include "mesh/soup.h"
 
 namespace exbsp_test {
 

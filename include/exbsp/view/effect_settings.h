@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Parameters of the effects a scene may name under "effects" (docs/contract.md "Scenes"), as plain
+// data carried by the frame (pipeline.h). The scene parser (src/scene/scene.cpp) validates
+// them and fills in the documented defaults; an effect's stage reads only its own struct, and
+// only when the scene named the effect. README.md "## Effects" describes each one.
+//
+// Notation: world units are the units of the scene's coordinates; "eye distance" is measured
+// from the camera's eye point; colours are 0..255 per channel.
+#pragma once
+#include <exbsp/core/export.h>
+#include <exbsp/view/image.h>
+#include <exbsp/view/matrix.h>
+#include <exbsp/view/viewport.h>
+
+namespace exbsp::view {
+
+/// "lighting": flat Lambert shading from one directional light,
+///   colour = base * (ambient + intensity * max(0, N . L)), clamped to 255 and rounded,
+/// N the unit face normal, L = direction / |direction| (pointing from the surface TOWARDS
+/// the light, as OpenGL's GL_POSITION (x, y, z, 0)).
+struct lighting_settings {
+  vector3 direction{0, 0, 1};  ///< towards the light, any length > 0
+  double intensity = 0.8;      ///< >= 0
+  double ambient = 0.2;        ///< >= 0
+  /// true: N is flipped to face the viewer (a sheet is lit the same from both sides);
+  /// false: N = (b - a) x (c - a) as given by the winding, so a face seen from behind is lit
+  /// as its front would be.
+  bool two_sided = true;
+};
+
+/// How fog grows with eye distance d.
+enum class fog_mode {
+  linear,      ///< visibility v = clamp((end - d) / (end - start), 0, 1)
+  exponential  ///< v = exp(-density * d)
+};
+
+/// "fog": colour = v * surface + (1 - v) * fog colour, per pixel. The background counts as
+/// infinitely far away (v = 0) and is painted in the fog colour, so with end <= far (linear)
+/// or a density that makes v tiny at the far plane (exp), geometry fades into the background
+/// before the far plane can cut it: the far-plane "pop" is hidden.
+struct fog_settings {
+  fog_mode mode = fog_mode::linear;
+  double start = 0, end = 1;  ///< linear: 0 <= start < end (world units of eye distance)
+  double density = 1;         ///< exponential: > 0, per world unit
+  rgb8 color{255, 255, 255};  ///< the scene's background unless given
+};
+
+/// "depth_of_field": a thin lens of focal length f and aperture (diameter) A focused at
+/// distance u_f > f. A point at depth u (along the gaze) is imaged as a disk, the circle of
+/// confusion, of diameter c = A f |u - u_f| / (u (u_f - f)) on the sensor (lens law
+/// 1/f = 1/u + 1/v). Rendered by accumulating `samples` painter's renders with the eye moved
+/// over the lens disk (depth_of_field.h).
+struct depth_of_field_settings {
+  double focal_length = 0.05;  ///< f > 0, world units
+  double aperture = 0.01;      ///< A > 0, lens diameter in world units (f / f_number)
+  double focus_distance = 1;   ///< u_f > f, world units along the gaze
+  int samples = 32;            ///< lens samples, 2..1024
+};
+
+/// "antialias": samples x samples supersampling with a box filter.
+struct antialias_settings {
+  int samples = 4;  ///< N in 1..8: N x N sub-pixels per pixel
+};
+
+/// Parameters of every effect (only the named ones are used).
+struct effect_settings {
+  lighting_settings lighting;
+  fog_settings fog;
+  depth_of_field_settings depth_of_field;
+  antialias_settings antialias;
+};
+
+/// What the defaults and checks of effect parameters depend on in a scene.
+struct effect_scene {
+  bool parallel = false;  ///< orthographic or oblique projection (no lens, planar fog distance)
+  double near_dist = 1, far_dist = 100;
+  rgb8 background{255, 255, 255};
+  int width = 1, height = 1;  ///< the viewport
+  int max_side = 16384;       ///< the largest image side a scene may ask for
+};
+
+/// What the "fog" stage computes for a view (its sample shader reads it): the settings and
+/// the inverse of the projection, to turn a window point (x, y, depth) back into eye space.
+struct EXBSP_EXPORT fog_shading {
+  fog_settings settings;
+  mat4 inverse_projection = mat4::identity();
+  viewport vp;
+  /// true: d = |p_eye| (perspective and frustum views); false: d = -z_eye, the distance from
+  /// the eye plane (orthographic and oblique views, whose eye is at infinity).
+  bool radial = true;
+};
+
+}  // namespace exbsp::view

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// The viewing pipeline as an explicit list of named stages over one `frame`.
+//
+// Data flow (docs/architecture.md): world-space soup -> BSP build -> fragments converted once to
+// double -> back-to-front order for the view -> [world-space effects: backface_culling,
+// lighting] -> modelview, projection, homogeneous clip, divide, viewport -> [curves] ->
+// [screen effects: fog, a sample shader] -> rasterizer (painter's algorithm; antialias replaces it)
+// or SVG -> [image effects: depth_of_field] -> write. Only the stages a scene asks for are in the
+// list, so an effect that is not named costs nothing, and the curves stage exists only when the
+// scene has curves. Effects plug in at four hooks (effects.h); the render command adds the write
+// stage.
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <exbsp/bsp/engine.h>
+#include <exbsp/core/export.h>
+#include <exbsp/mesh/soup.h>
+#include <exbsp/view/camera.h>
+#include <exbsp/view/effect_settings.h>
+#include <exbsp/view/image.h>
+#include <exbsp/view/matrix.h>
+#include <exbsp/view/sample_shader.h>
+#include <exbsp/view/screen_line.h>
+#include <exbsp/view/screen_polygon.h>
+#include <exbsp/view/vector_drawing.h>
+#include <exbsp/view/viewport.h>
+
+namespace exbsp::view {
+
+/// The four projection types of a scene (docs/contract.md "Scenes").
+enum class projection_kind { perspective, frustum, orthographic, oblique };
+/// "perspective", "frustum", "orthographic", "oblique".
+EXBSP_EXPORT const char* to_string(projection_kind k);
+
+/// Everything the stages need to know about the view.
+struct EXBSP_EXPORT view_setup {
+  projection_kind kind = projection_kind::perspective;
+  camera cam;                          ///< gluLookAt input; cam.eye orders perspective views
+  mat4 model_view = mat4::identity();  ///< look_at(cam)
+  mat4 projection = mat4::identity();  ///< eye -> clip coordinates
+  viewport vp;
+  /// Parallel kinds only: unit direction of projection in WORLD space, from the eye into the
+  /// scene (the gaze for orthographic, the oblique direction for oblique).
+  vector3 direction;
+  /// The output image and where the viewport's picture goes in it (window coordinates: x, y
+  /// of its lower-left corner). 0 x 0: the image is the viewport. The render command's
+  /// "place" stage composes it (placement.h).
+  int image_width = 0, image_height = 0;
+  int place_x = 0, place_y = 0;
+
+  /// True when the image is larger than the viewport.
+  bool needs_placement() const {
+    return image_width > 0 &&
+           (image_width != vp.width || image_height != vp.height || place_x != 0 || place_y != 0);
+  }
+
+  bool is_parallel() const {
+    return kind == projection_kind::orthographic || kind == projection_kind::oblique;
+  }
+};
+
+/// How the painter (paint.h) walks the polygons: the reference back-to-front walk, or
+/// front-to-back with a coverage mask. Both give the same image.
+enum class paint_order { back_to_front, front_to_back };
+
+/// The data flowing through the stages. Inputs are set by the caller; each stage fills the
+/// products it is responsible for.
+struct frame {
+  // Inputs.
+  triangle_soup soup;             ///< all meshes, transformed to world space, appended
+  build_options build;            ///< BSP options (default: epeck, default heuristic)
+  std::vector<rgb8> face_colors;  ///< colour by face id of `soup`
+  view_setup view;
+  rgb8 background{255, 255, 255};
+  effect_settings settings;        ///< parameters of the named effects (the others are ignored)
+  std::vector<curve_spec> curves;  ///< world-space Bézier curves and polylines ("curves" stage)
+  std::vector<std::uint32_t>
+      mesh_face_offsets;  ///< first face id of mesh k (size meshes + 1; "reject")
+  paint_order painter = paint_order::front_to_back;  ///< walk of "raster" and "antialias" (paint.h)
+  /// Front-to-back bands painted in parallel (0: one per core). Default 1: on the shared 2-core
+  /// machine of bench/RESULTS.md section 3, two bands were slower than one.
+  unsigned raster_threads = 1;
+  vector_options vector;                ///< SVG / PDF: visible regions or painter's stack, edges
+  vector_phase_seconds vector_seconds;  ///< svg / pdf stage (visible regions): phase times
+
+  // Products.
+  std::optional<bsp> tree;            ///< "build"
+  std::vector<fragment_d> fragments;  ///< "build": fragments_double(), converted once
+  std::vector<vec3d> points;          ///< "build": the distinct vertices of `fragments` (bitwise)
+  std::vector<std::array<std::uint32_t, 3>>
+      fragment_points;  ///< "build": corner k of fragment i is points[fragment_points[i][k]]
+  std::vector<std::uint32_t> order;      ///< "order": fragment indices, back to front
+  std::vector<screen_polygon> polygons;  ///< "transform+clip": visible polygons, back to front
+  image picture;                         ///< "raster"
+  std::string svg;                       ///< "svg": the SVG document
+  std::string pdf;                       ///< "pdf": the PDF document
+  std::vector<rgb8>
+      fragment_colors;             ///< "lighting": colour by fragment index (empty: face colours)
+  std::vector<screen_line> lines;  ///< "curves": clipped curve pieces in painter's slots
+  std::optional<fog_shading> fog;  ///< "fog": its parameters for this view
+  std::optional<sample_shader>
+      shader;  ///< screen effects ("fog"): the painters' per-sample colour change
+
+  // Counters for --verbose.
+  std::size_t culled = 0;         ///< fragments removed by backface_culling
+  std::size_t fully_clipped = 0;  ///< fragments entirely outside the view volume
+  std::size_t non_finite =
+      0;  ///< fragments with a NaN or infinite corner (inexact kernels), left out
+  std::vector<std::size_t> rejected_meshes;  ///< "reject": meshes dropped by their bounding boxes
+
+  /// Colour of a face id (grey when the id has no colour).
+  rgb8 color_of(std::uint32_t face) const {
+    return face < face_colors.size() ? face_colors[face] : rgb8{160, 160, 160};
+  }
+  /// Mesh index of a face id (mesh_face_offsets: first face of mesh k; mesh 0 when empty).
+  std::uint32_t mesh_of(std::uint32_t face) const {
+    if (mesh_face_offsets.empty()) return 0;
+    const auto it = std::upper_bound(mesh_face_offsets.begin(), mesh_face_offsets.end(), face);
+    return static_cast<std::uint32_t>(
+        std::max<std::ptrdiff_t>(0, it - mesh_face_offsets.begin() - 1));
+  }
+};
+
+/// One stage: a name and a function that updates the frame and returns a short note
+/// (counts) for the verbose log.
+struct stage {
+  std::string name;
+  std::function<std::string(frame&)> run;
+};
+
+/// An ordered list of stages.
+class EXBSP_EXPORT pipeline {
+ public:
+  /// Appends a stage.
+  void add(std::string name, std::function<std::string(frame&)> run);
+  /// Inserts a stage right after the first stage called `after`; throws usage_error when
+  /// there is none.
+  void insert_after(const std::string& after, std::string name,
+                    std::function<std::string(frame&)> run);
+  const std::vector<stage>& stages() const { return stages_; }
+  /// Stage names in order.
+  std::vector<std::string> names() const;
+  /// Runs every stage in order. With a log, prints one line per stage:
+  /// "stage NAME: SECONDS s (NOTE)". Exceptions from a stage propagate unchanged.
+  void run(frame& f, std::ostream* log) const;
+
+ private:
+  std::vector<stage> stages_;
+};
+
+}  // namespace exbsp::view

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// `exbsp build MESH|T.exbsp [--save T.exbsp] [--json]`: builds (or loads) a tree and prints its
+// statistics.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "app/commands/command.h"
+#include "app/commands/common.h"
+
+namespace exbsp::cli {
+
+namespace {
+
+nlohmann::json stats_json(const build_stats& s) {
+  return {{"input_triangles", s.input_triangles},
+          {"degenerate_input", s.degenerate_input},
+          {"fragments", s.fragments},
+          {"splits", s.splits},
+          {"nodes", s.nodes},
+          {"depth", s.depth},
+          {"build_seconds", s.build_seconds},
+          {"peak_rss_bytes", s.peak_rss_bytes},
+          {"kernel", s.kernel},
+          {"heuristic", s.heuristic}};
+}
+
+class build_subcommand final : public command {
+ public:
+  explicit build_subcommand(CLI::App& app) {
+    sub = app.add_subcommand("build", "build the BSP tree of MESH and print its statistics");
+    add_build_options(sub, o_);
+    sub->add_option("--save", o_.save,
+                    "write the tree to a saved-tree file T.exbsp, for order and build")
+        ->check(non_empty_path());
+    sub->add_flag("--json", json_,
+                  "print one JSON object: input_triangles, degenerate_input, fragments, splits, "
+                  "nodes, depth, build_seconds, kernel, heuristic, ...");
+  }
+
+  bool builds_tree() const override { return true; }
+
+  int run() override {
+    progress_line progress;
+    double load_seconds = -1;
+    const bsp tree = build_tree(o_, progress, &load_seconds);
+    if (!o_.save.empty()) tree.save(o_.save);
+    const auto& s = tree.stats();
+    if (json_) {
+      nlohmann::json j = stats_json(s);
+      j["mesh"] = o_.mesh == "-" ? "<stdin>" : o_.mesh;
+      j["seed"] = s.seed;
+      if (load_seconds >= 0)
+        j["load_seconds"] = load_seconds;  // a saved tree: build_seconds is its build's
+      // A file name need not be UTF-8 (Linux names are bytes): invalid bytes become U+FFFD in
+      // the JSON instead of an exception from the writer (issue 28).
+      std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+    } else {
+      if (load_seconds >= 0) std::cout << "saved tree loaded in " << load_seconds << " s; ";
+      std::cout << (o_.mesh == "-" ? "<stdin>" : o_.mesh) << ": " << s.input_triangles
+                << " input triangles (" << s.degenerate_input << " degenerate, skipped) -> "
+                << s.fragments << " fragments, " << s.splits << " splits, " << s.nodes
+                << " nodes, depth " << s.depth << "; " << s.kernel << ", " << s.heuristic << ", "
+                << s.build_seconds << " s\n";
+    }
+    return finish_standard_output(0);
+  }
+
+ private:
+  build_cli o_;
+  bool json_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<command> make_build_command(CLI::App& app) {
+  return std::make_unique<build_subcommand>(app);
+}
+
+}  // namespace exbsp::cli

@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// What several commands share (common.h).
+#include "app/commands/common.h"
+
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <vector>
+
+#include <exbsp/core/errors.h>
+#include "app/cli_parse.h"
+#include "app/resources.h"
+#include "bsp/heuristic_table.h"
+#include "bsp/kernels.h"
+
+namespace exbsp::cli {
+
+const CLI::Validator& non_empty_path() {
+  static const CLI::Validator v(
+      [](const std::string& s) {
+        return s.empty() ? std::string("empty file name") : std::string();
+      },
+      "FILE");
+  return v;
+}
+
+const CLI::Validator& not_negative() {
+  static const CLI::Validator v(
+      [](const std::string& s) {
+        const std::size_t i = s.find_first_not_of(" \t");
+        return i != std::string::npos && s[i] == '-' ? "must not be negative, got " + s
+                                                     : std::string();
+      },
+      "");
+  return v;
+}
+
+std::string kernel_help() {
+  std::string text = "number type: ";
+  const auto& rows = kernel_table();
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    text += (i == 0 ? "" : ", ") + rows[i].name + " (" + rows[i].description + ")";
+  return text;
+}
+
+std::string render_kernel_help() {
+  std::vector<std::string> exact, inexact;
+  for (const kernel_row& r : kernel_table())
+    if (r.name != to_string(build_options{}.kernel)) (r.exact ? exact : inexact).push_back(r.name);
+  return "BSP kernel (default " + to_string(build_options{}.kernel) + "); " +
+         name_list(exact, "and") + "; " + name_list(inexact, "and") +
+         " only to see what rounding does";
+}
+
+std::string heuristic_help() {
+  std::string text = "splitter choice: ";
+  const auto& rows = heuristic_table();
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    text += (i == 0 ? "" : ", ") + rows[i].name + " (" + rows[i].description + ")";
+  return text;
+}
+
+void add_format_option(CLI::App* cmd, std::string& format) {
+  cmd->add_option(
+         "--format", format,
+         "mesh format: off, obj, ply or stl (needed for '-', standard input; otherwise the "
+         "file's extension decides)")
+      ->check(CLI::IsMember({"off", "obj", "ply", "stl"}));
+}
+
+void add_build_options(CLI::App* cmd, build_cli& o) {
+  o.command = cmd;
+  cmd->add_option("MESH", o.mesh,
+                  "mesh file: .off, .obj, .ply or .stl ('-': standard input, with --format), or a "
+                  "saved tree "
+                  "(.exbsp, from build --save)")
+      ->required();
+  add_format_option(cmd, o.format);
+  cmd->add_option("--kernel", o.kernel, kernel_help())
+      ->check(CLI::IsMember(kernel_names()))
+      ->capture_default_str();
+  cmd->add_option("--heuristic", o.heuristic, heuristic_help())
+      ->check(CLI::IsMember(heuristic_names()))
+      ->capture_default_str();
+  cmd->add_option("--seed", o.seed, "seed of the randomised heuristics")
+      ->check(not_negative())
+      ->capture_default_str();
+  cmd->add_option("--max-fragments", o.max_fragments, max_fragments_help())->check(not_negative());
+  cmd->add_option("--threads", o.threads, "threads for candidate evaluation (0: all cores)")
+      ->check(CLI::Range(0u, max_threads()));
+}
+
+progress_line::progress_line() : tty(::isatty(2) != 0) {}
+
+void progress_line::operator()(const build_progress& p) {
+  if (!tty || p.seconds < 1.0) return;
+  const double share =
+      p.fragments_total ? 100.0 * static_cast<double>(p.fragments_placed) / p.fragments_total : 0;
+  std::fprintf(stderr,
+               "\r\033[Kexbsp: building: %3.0f%% (%zu of %zu fragments placed), %zu nodes, %.1f s",
+               share, p.fragments_placed, p.fragments_total, p.nodes, p.seconds);
+  std::fflush(stderr);
+  shown = true;
+}
+
+void progress_line::finish() {
+  if (shown) std::fprintf(stderr, "\r\033[K");
+  shown = false;
+}
+
+namespace {
+
+/// A saved tree (docs/tree-file.md): --kernel, --heuristic and --seed may only repeat what the
+/// tree was built with (they cannot change a built tree); --threads and --max-fragments, which
+/// only steer a build, are ignored.
+bsp load_tree(const build_cli& o, double* load_seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  bsp tree = bsp::load(o.mesh);
+  if (load_seconds)
+    *load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const build_stats& s = tree.stats();
+  const auto conflict = [&](const char* option, const std::string& given,
+                            const std::string& saved) {
+    if (o.command && o.command->count(option) && given != saved)
+      throw usage_error(o.mesh + " is a saved tree built with " + option + " " + saved + "; " +
+                        option + " " + given + " cannot change it (build from the mesh instead)");
+  };
+  conflict("--kernel", o.kernel, s.kernel);
+  conflict("--heuristic", o.heuristic, s.heuristic);
+  conflict("--seed", std::to_string(o.seed), std::to_string(s.seed));
+  return tree;
+}
+
+}  // namespace
+
+bsp build_tree(const build_cli& o, progress_line& progress, double* load_seconds) {
+  // A saved tree by its extension or magic; never standard input or a mesh given --format.
+  if (o.format.empty() && o.mesh != "-" && bsp::is_saved_tree(o.mesh))
+    return load_tree(o, load_seconds);
+  const triangle_soup soup = read_mesh_input(o.mesh, o.format, std::cin);
+  build_options options;
+  options.kernel = parse_kernel(o.kernel);
+  options.heuristic = o.heuristic;
+  options.seed = o.seed;
+  options.max_fragments =
+      o.max_fragments ? *o.max_fragments : default_fragment_budget(options.kernel);
+  options.threads = o.threads;
+  options.progress = [&progress](const build_progress& p) { progress(p); };
+  try {
+    bsp tree = bsp::build(soup, options);
+    progress.finish();
+    return tree;
+  } catch (...) {
+    progress.finish();
+    throw;
+  }
+}
+
+int finish_standard_output(int status) {
+  errno = 0;
+  std::cout.flush();
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+  if (failed)
+    throw output_error("(standard output)",
+                       std::string("cannot write output: write failed") +
+                           (errno ? std::string(": ") + std::strerror(errno) : std::string()));
+  return status;
+}
+
+}  // namespace exbsp::cli

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// `exbsp render [SCENE.json|MESH]`: a scene, a mesh with a view fitted to it (scene::mesh_scene)
+// or the built-in demo to PNG, SVG or PDF; a progress line during long builds and a one-line
+// summary on standard error.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include <exbsp/core/errors.h>
+#include "app/cli_parse.h"
+#include "app/commands/command.h"
+#include "app/commands/common.h"
+#include "app/resources.h"
+#include "core/file_name.h"
+#include "scene/mesh_scene.h"
+#include "scene/output_formats.h"
+#include "scene/render.h"
+
+namespace exbsp::cli {
+
+namespace {
+
+class render_subcommand final : public command {
+ public:
+  explicit render_subcommand(CLI::App& app) {
+    sub = app.add_subcommand("render",
+                             "render SCENE.json, a mesh with a view fitted to it, or the "
+                             "built-in demo scene to PNG, SVG or PDF");
+    sub->add_option(
+        "INPUT", input_,
+        "scene file (.json), or a mesh (.off, .obj, .ply, .stl; '-': standard input with "
+        "--format) drawn lit with a view fitted to its bounding box; omit for the built-in demo");
+    sub->add_option("-o,--output", output_,
+                    "output " + output_extensions() + " ('-': PNG on standard output)")
+        ->check(non_empty_path())
+        ->capture_default_str();
+    add_format_option(sub, format_);
+    sub->add_option("--view", view_,
+                    "a mesh's fitted view: iso, front, back, left, right, top or bottom")
+        ->check(CLI::IsMember(scene::mesh_view_names()))
+        ->capture_default_str();
+    sub->add_option("--size", size_, "a mesh's image size WIDTHxHEIGHT in pixels")
+        ->capture_default_str();
+    sub->add_option("--edges", edges_,
+                    "a mesh's edges in SVG/PDF output: none, visible or visible+hidden")
+        ->check(CLI::IsMember({"none", "visible", "visible+hidden"}))
+        ->capture_default_str();
+    sub->add_option("--kernel", kernel_, render_kernel_help())
+        ->check(CLI::IsMember(kernel_names()));
+    sub->add_option("--max-fragments", max_fragments_, max_fragments_help())->check(not_negative());
+    sub->add_flag("--strict", strict_, "unknown scene keys are errors (exit 2), not warnings");
+    sub->add_flag("-v,--verbose", verbose_, "print the pipeline stages that ran and their timings");
+    sub->add_flag("-q,--quiet", quiet_, "no progress line and no summary line");
+    sub->add_option("--orbit-drag", orbit_drag_,
+                    "trackball orbit: screen pixel path X0,Y0:X1,Y1:... (y down) dragged over an "
+                    "arcball; writes OUT_0000.png, OUT_0001.png, ... from one BSP build");
+    sub->add_option(
+           "--trackball", trackball_,
+           "orbit rotation: arcball (Shoemake, twice the arc; default) or virtual (the classic "
+           "virtual trackball: the point under the cursor follows it); overrides the scene's "
+           "\"trackball\"")
+        ->check(CLI::IsMember({"arcball", "virtual"}));
+    sub->add_option(
+           "--frames", frames_,
+           "number of orbit frames (the drag path resampled evenly; default: one per point)")
+        ->check(not_negative());
+  }
+
+  bool builds_tree() const override { return true; }
+
+  int run() override {
+    render_request request{input_, output_, verbose_};
+    request.strict = strict_;
+    if (!orbit_drag_.empty()) request.orbit_drag = parse_drag_path(orbit_drag_);
+    request.frames = frames_;
+    request.trackball = trackball_;
+    request.kernel = kernel_;
+    request.max_fragments = max_fragments_
+                                ? *max_fragments_
+                                : default_fragment_budget(kernel_.empty() ? build_options{}.kernel
+                                                                          : parse_kernel(kernel_));
+    const bool mesh_input = !input_.empty() && !has_extension(input_, ".json");
+    if (!mesh_input && !format_.empty())
+      throw usage_error("--format applies to a mesh input, not to " +
+                        (input_.empty() ? std::string("the demo scene") : "the scene " + input_));
+    if (mesh_input) {
+      scene::mesh_view_options options;
+      const auto size = parse_size(size_);
+      options.width = size[0];
+      options.height = size[1];
+      options.view = view_;
+      options.edges = edges_;
+      const std::string name = input_ == "-" ? "<stdin>" : input_;
+      auto soup = std::make_shared<const triangle_soup>(read_mesh_input(input_, format_, std::cin));
+      request.preloaded = scene::mesh_scene(std::move(soup), name, options);
+    }
+    progress_line progress;
+    if (quiet_) progress.tty = false;
+    request.progress = [&progress](const build_progress& p) { progress(p); };
+    render_summary summary;
+    try {
+      summary = render_command(request, std::cerr);
+    } catch (...) {
+      progress.finish();
+      throw;
+    }
+    progress.finish();
+    if (summary.non_finite > 0)
+      std::cerr << "exbsp: warning: " << summary.non_finite
+                << " fragments with a NaN or infinite corner (the " << summary.kernel
+                << " kernel's rounded split points) were left out of the picture\n";
+    if (!quiet_) {
+      char times[96];
+      std::snprintf(times, sizeof times, "build %.2f s, total %.2f s", summary.build_seconds,
+                    summary.total_seconds);
+      const auto shown = [](const std::string& path) {
+        return path == "-" ? std::string("standard output") : path;
+      };
+      std::cerr << "exbsp: wrote "
+                << (summary.outputs.size() == 1
+                        ? shown(summary.outputs[0])
+                        : std::to_string(summary.frames) + " frames (" + summary.outputs.front() +
+                              " ... " + summary.outputs.back() + ")")
+                << ": " << summary.triangles << " triangles -> " << summary.fragments
+                << " fragments"
+                << (summary.kernel.empty() ? std::string() : " (" + summary.kernel + ")") << ", "
+                << times << "\n";
+    }
+    return finish_standard_output(0);
+  }
+
+ private:
+  std::string input_;  ///< scene (.json), mesh, '-' or empty (the demo)
+  std::string output_ = "exbsp.png";
+  std::string format_, view_ = "iso", size_ = "800x600", edges_ = "visible";
+  std::string orbit_drag_, trackball_, kernel_;
+  std::size_t frames_ = 0;
+  std::optional<std::size_t> max_fragments_;
+  bool strict_ = false, verbose_ = false, quiet_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<command> make_render_command(CLI::App& app) {
+  return std::make_unique<render_subcommand>(app);
+}
+
+}  // namespace exbsp::cli

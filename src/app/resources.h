@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// The command line's memory and thread policy: how much the process may use, the default
+// --max-fragments derived from it, the --threads limit and the repair of OMP_NUM_THREADS. The
+// library itself has no policy (0 means no limit); these defaults belong to the command line.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <exbsp/bsp/engine.h>
+
+namespace exbsp::cli {
+
+/// The memory this process may still use: MemAvailable, or the address-space limit when it is
+/// lower (0 when neither is known).
+std::uint64_t available_memory_bytes();
+
+/// The default --max-fragments: half the available memory at the kernel's bytes per fragment
+/// (kernel_info: the other half for the input, the output and the allocator's slack), at least
+/// 10,000; 0 (no limit) when the available memory is unknown.
+std::size_t default_fragment_budget(kernel_id kernel);
+
+/// The --max-fragments help text, shared by build, order and render (from the kernel table).
+std::string max_fragments_help();
+
+/// The most threads --threads accepts (the library's limit: 4 per hardware thread, at most
+/// 1024; libgomp crashes or fails on team sizes in the tens of thousands).
+unsigned max_threads();
+
+/// OMP_NUM_THREADS is read by libgomp before main; a value it accepts but cannot honour
+/// (100000) crashes the first parallel region. Anything but a number in 1..max_threads()
+/// (first entry of a nesting list) is replaced by the hardware thread count, with a warning.
+void sanitize_omp_num_threads();
+
+/// Starts OpenMP's thread pool now: libgomp cannot report an allocation failure (it prints
+/// "Out of memory allocating N bytes" and exits 1), so the pool and its team are made while
+/// memory is plentiful, and later parallel regions of the same size reuse them.
+void start_thread_pool();
+
+}  // namespace exbsp::cli
