@@ -182,12 +182,7 @@ void counted_build(const triangle_soup& soup, const std::string& heuristic, cons
   alloc_counter::stop();
   const build_stats& s = tree->stats();
   json& r = st.result;
-  r["input_triangles"] = s.input_triangles;
-  r["degenerate_input"] = s.degenerate_input;
-  r["fragments"] = s.fragments;
-  r["splits"] = s.splits;
-  r["nodes"] = s.nodes;
-  r["depth"] = s.depth;
+  for_each_stat_count(s, [&r](const char* name, std::size_t value) { r[name] = value; });
   r["counted_build_seconds"] = s.build_seconds;
   r["peak_heap_bytes"] = alloc_counter::peak();
   r["tree_heap_bytes"] = alloc_counter::live();
@@ -225,12 +220,7 @@ void timed_build(const triangle_soup& soup, const std::string& heuristic, const 
   const double cpu = process_cpu_seconds() - cpu0;
   if (!st.result.contains("fragments")) {
     const build_stats& s = tree->stats();
-    st.result["input_triangles"] = s.input_triangles;
-    st.result["degenerate_input"] = s.degenerate_input;
-    st.result["fragments"] = s.fragments;
-    st.result["splits"] = s.splits;
-    st.result["nodes"] = s.nodes;
-    st.result["depth"] = s.depth;
+    for_each_stat_count(s, [&st](const char* name, std::size_t value) { st.result[name] = value; });
   }
   st.wall.push_back(wall);
   st.cpu.push_back(cpu);

@@ -23,6 +23,7 @@
 #include <exbsp/view/camera.h>
 #include <exbsp/view/projection.h>
 #include <exbsp/view/stages.h>
+#include "scene/effect_parameters.h"
 #include "scene/render.h"
 #include "scene/scene.h"
 #include "view/antialias.h"
@@ -1051,6 +1052,23 @@ TEST(CurveDepth, EveryPieceIsDrawnAtThePositionOfTheCellHoldingIt) {
     }
     EXPECT_GT(checked, placed.pieces.size() / 2);
   }
+}
+
+}  // namespace
+
+namespace {
+
+// JSON stops at scene: each effect of view's catalogue has its parameter reader in
+// scene/effect_parameters.cpp, and every reader belongs to an effect of the catalogue.
+TEST(EffectCatalog, every_effect_has_a_scene_parameter_reader_and_no_reader_is_orphaned) {
+  std::set<std::string> catalogue;
+  for (const exbsp::view::effect_description& d : exbsp::view::effect_catalog()) {
+    catalogue.insert(d.name);
+    EXPECT_NE(exbsp::scene::effect_parameters(d.name), nullptr) << d.name;
+  }
+  for (const std::string& name : exbsp::scene::effects_with_parameters())
+    EXPECT_TRUE(catalogue.count(name)) << name << " has a reader but no catalogue entry";
+  EXPECT_EQ(exbsp::scene::effect_parameters("no_such_effect"), nullptr);
 }
 
 }  // namespace

@@ -149,10 +149,12 @@ TEST(Layout, core_and_mesh_include_nothing_above_them) {
   EXPECT_EQ(violations("mesh", above), "");
 }
 
-// Issue 26: JSON stops at scene. view/json_reader.h still parses effect settings with
-// nlohmann today; enable this check when view takes typed settings only.
-TEST(Layout, DISABLED_view_includes_no_json_library) {
+// Issue 26: JSON stops at scene; view takes typed settings (effect parameters are read by
+// scene/effect_parameters.cpp).
+TEST(Layout, view_includes_no_json_library) {
   EXPECT_EQ(violations("view", {"nlohmann"}), "") << "JSON stops at scene (issue 26)";
+  EXPECT_EQ(violations("geom", {"nlohmann"}), "");
+  EXPECT_EQ(violations("clip", {"nlohmann"}), "");
 }
 
 }  // namespace

@@ -985,3 +985,85 @@ TEST(Pipeline, CameraInsideTheModelIsCutByTheNearPlane) {
 }
 
 }  // namespace
+
+// ---- <exbsp/view/render.h>: the one-call render and the fitted view ----
+
+#include <exbsp/mesh/mesh_io.h>
+#include <exbsp/view/render.h>
+#include "support/cli_support.h"
+
+namespace {
+
+class RenderSoup : public exbsp_test::cli_fixture {};
+
+// render_soup is `exbsp render MESH --view V --size WxH` as a library call: the same pixels.
+TEST_F(RenderSoup, paints_the_pixels_of_exbsp_render_for_every_fitted_view) {
+  const std::string mesh = std::string(EXBSP_TEST_DATA) + "/cube.off";
+  const exbsp::triangle_soup soup = exbsp::read_mesh(mesh);
+  for (const std::string& name : exbsp::view::fitted_view_names()) {
+    SCOPED_TRACE(name);
+    const auto r = run("render " + exbsp_test::quoted(mesh) + " --view " + name +
+                       " --size 160x120 -q -o cli.png");
+    ASSERT_EQ(r.status, 0) << r.err;
+    exbsp::view::render_options o;
+    o.width = 160;
+    o.height = 120;
+    o.view = name;
+    const exbsp::view::render_result got = exbsp::view::render_soup(soup, o);
+    const exbsp::view::image want = exbsp::view::read_png((dir / "cli.png").string());
+    ASSERT_EQ(got.picture.width(), want.width());
+    ASSERT_EQ(got.picture.height(), want.height());
+    EXPECT_TRUE(got.picture.data() == want.data());
+    EXPECT_EQ(got.order.size(), got.tree.fragment_count());
+    EXPECT_EQ(got.view.cam.up.y, name == "top" || name == "bottom" ? 0.0 : 1.0);
+  }
+}
+
+TEST(FittedView, sees_the_whole_bounding_sphere_and_refuses_what_it_cannot_fit) {
+  exbsp::triangle_soup soup;
+  soup.vertices = {{0, 0, 0}, {2, 0, 0}, {0, 4, 0}, {0, 0, 6}};
+  soup.triangles = {{{0, 1, 2}, 0}, {{0, 1, 3}, 1}};
+  soup.face_count = 2;
+  soup.source = "tetra.off";
+  const exbsp::view::fitted_view v = exbsp::view::fit_view(soup, 400, 300, "front");
+  // The centre of the box, and the eye on +z from it (front), beyond the far side of the sphere.
+  EXPECT_EQ(v.cam.look_at.x, 1);
+  EXPECT_EQ(v.cam.look_at.y, 2);
+  EXPECT_EQ(v.cam.look_at.z, 3);
+  EXPECT_EQ(v.cam.eye.x, 1);
+  EXPECT_EQ(v.cam.eye.y, 2);
+  const double r = std::sqrt(1.0 + 4.0 + 9.0);
+  EXPECT_GT(v.near_dist, 0);
+  EXPECT_NEAR(v.far_dist - v.near_dist, 2.02 * r, 1e-9);
+  EXPECT_NEAR((v.cam.eye.z - 3) * std::sin(15 * std::acos(-1.0) / 180), 1.08 * r, 1e-9);
+  EXPECT_THROW(exbsp::view::fit_view(soup, 400, 300, "sideways"), exbsp::usage_error);
+  EXPECT_THROW(exbsp::view::fit_view(soup, 0, 300), exbsp::usage_error);
+  exbsp::triangle_soup empty;
+  empty.source = "empty.off";
+  try {
+    exbsp::view::fit_view(empty, 10, 10);
+    ADD_FAILURE() << "no error";
+  } catch (const exbsp::input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("empty.off"), std::string::npos) << e.what();
+  }
+  soup.vertices = {{-1e308, 0, 0}, {1e308, 0, 0}, {0, 1e308, 0}};
+  soup.triangles = {{{0, 1, 2}, 0}};
+  EXPECT_THROW(exbsp::view::fit_view(soup, 10, 10), exbsp::input_error);
+}
+
+TEST(Headlight, lights_faces_facing_the_eye_fully_and_edge_on_faces_by_the_ambient_quarter) {
+  exbsp::triangle_soup soup;
+  // Face 0 faces +z (towards the eye), face 1 lies in a plane containing the gaze, face 2 is
+  // degenerate.
+  soup.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 2, 2}};
+  soup.triangles = {{{0, 1, 2}, 0}, {{0, 1, 3}, 1}, {{0, 4, 4}, 2}};
+  soup.face_count = 3;
+  const exbsp::view::camera cam{{0, 0, 10}, {0, 0, 0}, {0, 1, 0}};
+  const auto colors = exbsp::view::headlight_colors(soup, cam, {200, 100, 40});
+  ASSERT_EQ(colors.size(), 3u);
+  EXPECT_EQ(colors[0], (exbsp::view::rgb8{200, 100, 40}));
+  EXPECT_EQ(colors[1], (exbsp::view::rgb8{50, 25, 10}));
+  EXPECT_EQ(colors[2], (exbsp::view::rgb8{50, 25, 10}));
+}
+
+}  // namespace

@@ -10,7 +10,11 @@
 //   <exbsp/clip/section_cap.h>       sections and clipping with caps
 //   <exbsp/clip/convex_hull.h>       the convex hull of 3D points as half-spaces
 // The rest is the LGPL components: exbsp::core (core/, mesh/, bsp/, clip/, scene/procedural.h,
-// adapters/triangle_list.h) and exbsp::render (view/).
+// adapters/triangle_list.h) and exbsp::render (view/: cameras, projections, images, the one-call
+// render_soup with its fitted view and headlight). The stage pipeline the renderer is made of
+// (<exbsp/view/pipeline.h>, stages.h, standard_pipeline.h: the `frame` every stage reads and
+// writes) is installed for programs that add stages of their own, but is not included here:
+// it is the renderer's inside, and changes with it.
 #pragma once
 #include <exbsp/adapters/triangle_list.h>
 #include <exbsp/bsp/engine.h>
@@ -38,8 +42,8 @@
 #include <exbsp/view/pipeline.h>
 #include <exbsp/view/png_io.h>
 #include <exbsp/view/projection.h>
-#include <exbsp/view/stages.h>
-#include <exbsp/view/standard_pipeline.h>
+#include <exbsp/view/render.h>
 #include <exbsp/view/trackball.h>
 #include <exbsp/view/transforms.h>
+#include <exbsp/view/view_setup.h>
 #include <exbsp/view/viewport.h>

@@ -3,6 +3,7 @@
 #include "bsp/kernels.h"
 
 #include <exbsp/core/errors.h>
+#include "core/named_table.h"
 
 // Each kernel's factories, defined by EXBSP_INSTANTIATE_BSP in its bsp_<name>.cpp.
 EXBSP_DECLARE_BSP_FACTORIES(exact)
@@ -21,8 +22,8 @@ namespace {
 // refined_elephant (254,565 fragments), measured with /usr/bin/time (2026-11-24): build 218
 // bytes, order 358 (its document is streamed, not held), render 620; the budget is the largest,
 // rounded up.
-std::vector<kernel_row>& table() {
-  static std::vector<kernel_row> rows{
+named_table<kernel_row>& table() {
+  static named_table<kernel_row> rows({
       {kernel_id::exact, "exact", true, 1, 640, "exbsp's own exact points, default", make_bsp_exact,
        tree_file::load_exact},
       {kernel_id::epeck, "epeck", true, 2, 1300, "CGAL lazy exact", make_bsp_epeck,
@@ -33,32 +34,22 @@ std::vector<kernel_row>& table() {
        tree_file::load_epick},
       {kernel_id::double_, "double", false, 5, 640, "plain double", make_bsp_double,
        tree_file::load_double},
-  };
+  });
   return rows;
-}
-
-/// kernel_names() hands out a reference: it is kept beside the table and grown with it.
-std::vector<std::string>& names() {
-  static std::vector<std::string> out = [] {
-    std::vector<std::string> n;
-    for (const kernel_row& r : table()) n.push_back(r.name);
-    return n;
-  }();
-  return out;
 }
 
 }  // namespace
 
-const std::vector<kernel_row>& kernel_table() { return table(); }
+const std::vector<kernel_row>& kernel_table() { return table().rows(); }
 
 const kernel_row& kernel_row_of(kernel_id id) {
-  for (const kernel_row& r : table())
+  for (const kernel_row& r : table().rows())
     if (r.id == id) return r;
   throw usage_error("unknown kernel (id " + std::to_string(static_cast<int>(id)) + ")");
 }
 
 const kernel_row* kernel_row_of_file_code(std::uint32_t code) {
-  for (const kernel_row& r : table())
+  for (const kernel_row& r : table().rows())
     if (r.file_code == code) return &r;
   return nullptr;
 }
@@ -66,35 +57,32 @@ const kernel_row* kernel_row_of_file_code(std::uint32_t code) {
 void add_kernel(kernel_row row) {
   if (row.name.empty() || !row.make || !row.load)
     throw usage_error("add_kernel: a kernel needs a name, a build and a load function");
-  names();  // made from the table before it grows
-  for (const kernel_row& r : table())
+  for (const kernel_row& r : table().rows())
     if (r.id == row.id || r.name == row.name || r.file_code == row.file_code)
       throw usage_error("add_kernel: kernel '" + row.name +
                         "' repeats the id, name or file code of '" + r.name + "'");
-  names().push_back(row.name);
-  table().push_back(std::move(row));
+  table().add(std::move(row));
 }
 
-const std::vector<std::string>& kernel_names() { return names(); }
+const std::vector<std::string>& kernel_names() { return table().names(); }
 
 std::string to_string(kernel_id k) {
-  for (const kernel_row& r : table())
+  for (const kernel_row& r : table().rows())
     if (r.id == k) return r.name;
   return "unknown";
 }
 
 kernel_id parse_kernel(const std::string& name) {
-  for (const kernel_row& r : table())
-    if (r.name == name) return r.id;
+  if (const kernel_row* r = table().find(name)) return r->id;
   std::string list;
-  const auto& all = table();
+  const auto& all = table().rows();
   for (std::size_t i = 0; i < all.size(); ++i)
     list += (i == 0 ? "" : i + 1 == all.size() ? " or " : ", ") + all[i].name;
   throw usage_error("unknown kernel '" + name + "' (expected " + list + ")");
 }
 
 bool is_exact(kernel_id k) {
-  for (const kernel_row& r : table())
+  for (const kernel_row& r : table().rows())
     if (r.id == k) return r.exact;
   return false;
 }

@@ -218,17 +218,7 @@ py::tuple exact_point(const std::array<std::string, 3>& p) {
 
 py::dict stats_dict(const exbsp::build_stats& s) {
   py::dict d;
-  d["input_triangles"] = s.input_triangles;
-  d["degenerate_input"] = s.degenerate_input;
-  d["fragments"] = s.fragments;
-  d["splits"] = s.splits;
-  d["nodes"] = s.nodes;
-  d["depth"] = s.depth;
-  d["build_seconds"] = s.build_seconds;
-  d["peak_rss_bytes"] = s.peak_rss_bytes;
-  d["kernel"] = s.kernel;
-  d["heuristic"] = s.heuristic;
-  d["seed"] = s.seed;
+  exbsp::for_each_stat(s, [&d](const char* name, const auto& value) { d[name] = value; });
   return d;
 }
 

@@ -17,12 +17,11 @@
 #include "core/file_name.h"
 #include "mesh/json_limits.h"
 #include "core/atomic_file.h"
-#include "view/json_reader.h"
+#include "scene/json_reader.h"
 
 namespace exbsp::scene {
 
 using nlohmann::json;
-using view::reader;
 
 namespace {
 
@@ -48,7 +47,7 @@ std::array<double, N> point(const reader& r, const json& v, const std::string& k
     // coordinate, plane values) must stay finite: beyond this they overflow to infinity and the
     // answer would hold NaN ("null") or lose vertices.
     if (!(std::fabs(p[k]) <= max_clip_magnitude))
-      r.fail(at, "must be at most 1e100 in magnitude (got " + view::number_text(p[k]) +
+      r.fail(at, "must be at most 1e100 in magnitude (got " + number_text(p[k]) +
                      "): the clippers' intermediate values would overflow");
   }
   return p;

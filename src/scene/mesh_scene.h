@@ -1,16 +1,10 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // `exbsp render MESH`: a scene for one bare mesh, with a view fitted to its bounding box.
 //
-// Notation: world axes as the file gives them, +y up (OpenGL's convention, and that of most
-// OFF/OBJ/PLY/STL files). A named view gives the direction from the centre c of the mesh's
-// bounding box towards the eye (front: +z, back: -z, right: +x, left: -x, top: +y with up -z,
-// bottom: -y with up +z, iso: (1, 1, 1) with up +y). r is the radius of the box's bounding
-// sphere (half its diagonal). A perspective camera with vertical field of view fovy (30
-// degrees) at distance d = 1.08 r / sin(fov / 2) from c, fov the smaller of the vertical and
-// horizontal fields of view, sees the whole sphere with a margin; near = d - 1.01 r and far = d
-// + 1.01 r enclose it. The mesh is lit (the "lighting" effect) from over the viewer's left
-// shoulder, so its shape reads without a hand-written scene; SVG and PDF get visible regions and
-// edges.
+// The view, its camera, light and margins are view::fit_view's (<exbsp/view/render.h>, which
+// gives the notation); the mesh is lit (the "lighting" effect) from over the viewer's left
+// shoulder, so its shape reads without a hand-written scene; SVG and PDF get visible regions
+// and edges.
 #pragma once
 #include <memory>
 #include <string>

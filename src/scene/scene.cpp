@@ -18,7 +18,8 @@
 #include "mesh/json_limits.h"
 #include "scene/scene_parts.h"
 #include "view/effects.h"
-#include "view/json_reader.h"
+#include "scene/effect_parameters.h"
+#include "scene/json_reader.h"
 
 namespace exbsp::scene {
 
@@ -126,7 +127,9 @@ void parse_effects(const reader& r, const json& doc, scene& s) {
     if (!enabled) continue;
     if (!d->available) r.fail(key, "effect not supported yet");
     const json params = v.is_object() ? v : json::object();
-    d->parse(r, params, key, facts, s.effect_settings);
+    const effect_parameters_reader read = effect_parameters(d->name);
+    if (!read) r.fail(key, "effect has no parameter reader");  // tests/test_effects.cpp
+    read(r, params, key, facts, s.effect_settings);
     s.effects.push_back(d->name);
   }
 }

@@ -6,13 +6,7 @@
 #include <string>
 
 #include "scene/scene.h"
-#include "view/json_reader.h"
-
-namespace exbsp::scene {
-using nlohmann::json;
-using view::number_text;
-using view::reader;
-}  // namespace exbsp::scene
+#include "scene/json_reader.h"
 
 namespace exbsp::scene::detail {
 

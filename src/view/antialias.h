@@ -12,18 +12,11 @@
 #include <string>
 
 #include <exbsp/view/pipeline.h>
-#include "view/json_reader.h"
 
 namespace exbsp::view {
 
 /// "antialias": f.picture = box_downsample(paint_frame(f, N), N), N = f.settings.antialias.samples.
 /// Throws usage_error when N is outside 1..8 or the supersampled image is too large.
 std::string antialias_stage(frame& f);
-
-/// "antialias" parameters into out.antialias; scene_error names the bad key. Parameter:
-/// samples 4 (N in 1..8: N x N sub-pixels; N times the viewport must stay within
-/// scene.max_side).
-void parse_antialias_parameters(const reader& r, const json& params, const std::string& key,
-                                const effect_scene& scene, effect_settings& out);
 
 }  // namespace exbsp::view

@@ -114,40 +114,4 @@ std::string depth_of_field_stage(frame& f, const pipeline& per_view) {
   return buf;
 }
 
-void parse_depth_of_field_parameters(const reader& r, const json& p, const std::string& key,
-                                     const effect_scene& scene, effect_settings& out) {
-  depth_of_field_settings& d = out.depth_of_field;
-  r.reject_unknown(p, key, "depth_of_field",
-                   {"focal_length", "aperture", "f_number", "focus_distance", "samples"});
-  if (scene.parallel)
-    r.fail(key, "needs a perspective or frustum projection (a parallel projection has no lens)");
-  d.focal_length = r.positive(r.require(p, key, "focal_length"), key + "/focal_length");
-  const json* aperture = r.optional(p, "aperture");
-  const json* f_number = r.optional(p, "f_number");
-  if (aperture && f_number) r.fail(key + "/f_number", "give aperture or f_number, not both");
-  if (!aperture && !f_number)
-    r.fail(key + "/aperture", "missing key (the lens diameter; or give f_number)");
-  d.aperture = aperture ? r.positive(*aperture, key + "/aperture")
-                        : d.focal_length / r.positive(*f_number, key + "/f_number");
-  if (!(std::isfinite(d.aperture) && d.aperture > 0))
-    r.fail(key + "/f_number", "gives an impossible aperture");
-  d.focus_distance = r.positive(r.require(p, key, "focus_distance"), key + "/focus_distance");
-  // The lens samples shift the eye by up to half the aperture: a lens a thousand times wider
-  // than the distance it focuses at is no lens, and wider still the shifted cameras are lost
-  // to rounding (checked here, before any build).
-  if (!(d.aperture <= 1000 * d.focus_distance))
-    r.fail(aperture ? key + "/aperture" : key + "/f_number",
-           "gives an aperture of " + number_text(d.aperture) +
-               ", more than 1000 times focus_distance");
-  if (!(d.focus_distance > d.focal_length))
-    r.fail(key + "/focus_distance",
-           "must be greater than focal_length (a thin lens cannot focus closer than f)");
-  if (const json* v = r.optional(p, "samples")) {
-    const long long n = r.integer(*v, key + "/samples");
-    if (n < 2 || n > 1024)
-      r.fail(key + "/samples", "must be in 2..1024 (got " + std::to_string(n) + ")");
-    d.samples = static_cast<int>(n);
-  }
-}
-
 }  // namespace exbsp::view

@@ -27,7 +27,6 @@
 #include <vector>
 
 #include <exbsp/view/pipeline.h>
-#include "view/json_reader.h"
 
 namespace exbsp::view {
 
@@ -55,13 +54,5 @@ view_setup lens_view(const view_setup& view, const lens_offset& lens, double foc
 /// but f.picture is restored to the centre view afterwards. Throws usage_error for a parallel
 /// view or bad settings.
 std::string depth_of_field_stage(frame& f, const pipeline& per_view);
-
-/// "depth_of_field" parameters into out.depth_of_field; scene_error names the bad key (also
-/// for a parallel projection: perspective and frustum only, a parallel view has no lens).
-/// Parameters: focal_length (> 0, required), aperture (lens diameter > 0) or f_number (> 0;
-/// aperture = focal_length / f_number), exactly one of them, focus_distance (> focal_length,
-/// required), samples 32 (2..1024).
-void parse_depth_of_field_parameters(const reader& r, const json& params, const std::string& key,
-                                     const effect_scene& scene, effect_settings& out);
 
 }  // namespace exbsp::view

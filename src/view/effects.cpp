@@ -15,47 +15,13 @@
 
 namespace exbsp::view {
 
-namespace {
-
-/// The parameters reader of an effect that takes none.
-void no_parameters(const reader& r, const json& params, const std::string& key, const effect_scene&,
-                   effect_settings&) {
-  r.reject_unknown(params, key, key.substr(key.rfind('/') + 1), {});
-}
-
-}  // namespace
-
 const std::vector<effect_description>& effect_catalog() {
   static const std::vector<effect_description> catalog = {
-      {"backface_culling",
-       effect_hook::after_order,
-       true,
-       no_parameters,
-       backface_culling_stage,
-       {},
-       false},
-      {"lighting",
-       effect_hook::after_order,
-       true,
-       parse_lighting_parameters,
-       lighting_stage,
-       {},
-       false},
-      {"fog", effect_hook::after_transform, true, parse_fog_parameters, fog_stage, {}, false},
-      {"antialias",
-       effect_hook::raster,
-       true,
-       parse_antialias_parameters,
-       antialias_stage,
-       {},
-       true},
-      {"depth_of_field",
-       effect_hook::after_raster,
-       true,
-       parse_depth_of_field_parameters,
-       {},
-       depth_of_field_stage,
-       true},
+      {"backface_culling", effect_hook::after_order, true, backface_culling_stage, {}, false},
+      {"lighting", effect_hook::after_order, true, lighting_stage, {}, false},
+      {"fog", effect_hook::after_transform, true, fog_stage, {}, false},
+      {"antialias", effect_hook::raster, true, antialias_stage, {}, true},
+      {"depth_of_field", effect_hook::after_raster, true, {}, depth_of_field_stage, true},
   };
   return catalog;
 }

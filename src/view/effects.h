@@ -12,11 +12,11 @@
 //   raster           replaces the "raster" stage (PNG only): antialias.
 //   after_raster     the finished image (PNG only); such a stage may re-run the per-view
 //                    stages for other views: depth_of_field.
-// One entry per effect describes all of it: its name, its hook, its parameters' reader (JSON
-// object -> its member of effect_settings, with defaults and checks; the scene parser calls
-// it for every named effect) and its stage. The parameters of each effect travel in
-// frame::settings (effect_settings.h). Adding an effect: its settings struct, its file
-// (view/<effect>.{h,cpp}: parameters reader and stage) and one line in effect_catalog().
+// One entry per effect describes its stage: its name, its hook and its stage. The parameters of
+// each effect travel in frame::settings (effect_settings.h), typed; a scene's JSON parameters
+// are read into them by the scene module (scene/effect_parameters.h: JSON stops at scene).
+// Adding an effect: its settings struct, its file (view/<effect>.{h,cpp}: its stage), one line
+// in effect_catalog() and its parameter reader in scene/effect_parameters.cpp.
 // Effects designed but not implemented yet would be listed with available = false; the scene
 // parser rejects those with a "not supported yet" error. The stage lists built from this
 // catalogue are declared in standard_pipeline.h (public, free of JSON types).
@@ -27,25 +27,17 @@
 
 #include <exbsp/view/pipeline.h>
 #include <exbsp/view/standard_pipeline.h>
-#include "view/json_reader.h"
 
 namespace exbsp::view {
 
 /// Where an effect's stage is inserted.
 enum class effect_hook { after_order, after_transform, raster, after_raster };
 
-/// Reads an effect's parameters `params` (a JSON object; {} for `true`) at JSON pointer `key`
-/// into its member of `out`; throws scene_error naming the bad or unknown parameter's key.
-using effect_parameters_reader = void (*)(const reader& r, const json& params,
-                                          const std::string& key, const effect_scene& scene,
-                                          effect_settings& out);
-
 /// One known effect.
 struct effect_description {
   std::string name;
   effect_hook hook;
-  bool available;                  ///< false: known name, not implemented yet
-  effect_parameters_reader parse;  ///< its parameters (none: every parameter is unknown)
+  bool available;  ///< false: known name, not implemented yet
   std::function<std::string(frame&)>
       run;  ///< the stage (hooks after_order, after_transform, raster)
   /// after_raster stages: also given the per-view stages ("order" up to raster/antialias) to

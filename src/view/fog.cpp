@@ -103,41 +103,4 @@ std::string fog_stage(frame& f) {
   return buf;
 }
 
-void parse_fog_parameters(const reader& r, const json& p, const std::string& key,
-                          const effect_scene& scene, effect_settings& out) {
-  fog_settings& f = out.fog;
-  r.reject_unknown(p, key, "fog", {"mode", "start", "end", "density", "color"});
-  f.mode = fog_mode::linear;
-  if (const json* v = r.optional(p, "mode")) {
-    const std::string m = v->is_string() ? v->get<std::string>() : std::string();
-    if (m == "exp")
-      f.mode = fog_mode::exponential;
-    else if (m != "linear")
-      r.fail(key + "/mode", "must be \"linear\" or \"exp\"");
-  }
-  const double near_dist = scene.near_dist, far_dist = scene.far_dist;
-  if (f.mode == fog_mode::linear) {
-    if (p.contains("density"))
-      r.fail(key + "/density", "only for mode \"exp\" (linear fog takes start and end)");
-    f.start = near_dist;
-    f.end = far_dist;
-    if (const json* v = r.optional(p, "start")) f.start = r.positive(*v, key + "/start", true);
-    if (const json* v = r.optional(p, "end")) f.end = r.positive(*v, key + "/end");
-    if (!(f.end > f.start))
-      r.fail(key + "/end", "must be greater than start (start " + number_text(f.start) + ", end " +
-                               number_text(f.end) + ")");
-    if (f.end > far_dist)
-      r.warn(key + "/end", "fog ends beyond the far plane (" + number_text(far_dist) +
-                               "): geometry cut by the far plane will pop instead of fading");
-  } else {
-    if (p.contains("start"))
-      r.fail(key + "/start", "only for mode \"linear\" (exp fog takes density)");
-    if (p.contains("end")) r.fail(key + "/end", "only for mode \"linear\" (exp fog takes density)");
-    f.density = std::log(255.0) / far_dist;
-    if (const json* v = r.optional(p, "density")) f.density = r.positive(*v, key + "/density");
-  }
-  f.color = scene.background;
-  if (const json* v = r.optional(p, "color")) f.color = r.color(*v, key + "/color");
-}
-
 }  // namespace exbsp::view

@@ -20,7 +20,6 @@
 #include <exbsp/view/effect_settings.h>
 #include <exbsp/view/pipeline.h>
 #include <exbsp/view/sample_shader.h>
-#include "view/json_reader.h"
 
 namespace exbsp::view {
 
@@ -40,12 +39,5 @@ rgb8 fog_color(const fog_shading& fog, rgb8 base, double d);
 /// "fog": f.fog = make_fog_shading(f.settings.fog, f.view) and f.shader = its sample
 /// shader: fog_color at each sample's eye distance; the background takes the fog colour.
 std::string fog_stage(frame& f);
-
-/// "fog" parameters into out.fog; scene_error names the bad key. Parameters and defaults:
-/// mode "linear" (start = near, end = far; 0 <= start < end) or "exp" (density > 0, default
-/// ln(255)/far: 1/255 visibility at the far plane); color = the scene's background. A linear
-/// end beyond the far plane is warned about.
-void parse_fog_parameters(const reader& r, const json& params, const std::string& key,
-                          const effect_scene& scene, effect_settings& out);
 
 }  // namespace exbsp::view

@@ -45,21 +45,4 @@ std::string lighting_stage(frame& f) {
          (s.two_sided ? "two-sided" : "one-sided");
 }
 
-void parse_lighting_parameters(const reader& r, const json& p, const std::string& key,
-                               const effect_scene&, effect_settings& out) {
-  lighting_settings& l = out.lighting;
-  r.reject_unknown(p, key, "lighting", {"direction", "intensity", "ambient", "two_sided"});
-  if (const json* v = r.optional(p, "direction")) {
-    l.direction = r.triple(*v, key + "/direction");
-    if (!(length(l.direction) > 0)) r.fail(key + "/direction", "must not be the zero vector");
-  }
-  if (const json* v = r.optional(p, "intensity"))
-    l.intensity = r.positive(*v, key + "/intensity", true);
-  if (const json* v = r.optional(p, "ambient")) l.ambient = r.positive(*v, key + "/ambient", true);
-  if (const json* v = r.optional(p, "two_sided")) {
-    if (!v->is_boolean()) r.fail(key + "/two_sided", "must be true or false");
-    l.two_sided = v->get<bool>();
-  }
-}
-
 }  // namespace exbsp::view

@@ -13,7 +13,6 @@
 #include <string>
 
 #include <exbsp/view/pipeline.h>
-#include "view/json_reader.h"
 
 namespace exbsp::view {
 
@@ -28,11 +27,5 @@ vector3 shading_normal(const fragment_d& fr, const view_setup& view, bool two_si
 /// (sized like f.fragments; transform+clip reads it). Throws usage_error for a zero or
 /// non-finite light direction.
 std::string lighting_stage(frame& f);
-
-/// "lighting" parameters into out.lighting; scene_error names the bad key. Parameters and
-/// defaults: direction [0,0,1] (towards the light, not zero), intensity 0.8 (>= 0), ambient
-/// 0.2 (>= 0), two_sided true.
-void parse_lighting_parameters(const reader& r, const json& params, const std::string& key,
-                               const effect_scene& scene, effect_settings& out);
 
 }  // namespace exbsp::view

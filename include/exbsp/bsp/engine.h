@@ -139,6 +139,31 @@ struct build_stats {
   std::uint64_t seed = 0;  ///< build_options::seed of the build
 };
 
+/// The counts of `s`, each as visit(name, value) with the name `exbsp build --json` and
+/// Python's stats dict give it: input_triangles, degenerate_input, fragments, splits, nodes,
+/// depth. One list for every serialisation (the command line, Python, the benchmarks).
+template <class Visit>
+void for_each_stat_count(const build_stats& s, Visit&& visit) {
+  visit("input_triangles", s.input_triangles);
+  visit("degenerate_input", s.degenerate_input);
+  visit("fragments", s.fragments);
+  visit("splits", s.splits);
+  visit("nodes", s.nodes);
+  visit("depth", s.depth);
+}
+
+/// Every field of `s` as visit(name, value): the counts (for_each_stat_count), then
+/// build_seconds, peak_rss_bytes, kernel, heuristic and seed.
+template <class Visit>
+void for_each_stat(const build_stats& s, Visit&& visit) {
+  for_each_stat_count(s, visit);
+  visit("build_seconds", s.build_seconds);
+  visit("peak_rss_bytes", s.peak_rss_bytes);
+  visit("kernel", s.kernel);
+  visit("heuristic", s.heuristic);
+  visit("seed", s.seed);
+}
+
 /// A fragment converted to doubles (each coordinate correctly rounded from its exact value).
 struct fragment_d {
   std::uint32_t face;

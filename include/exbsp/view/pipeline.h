@@ -32,41 +32,10 @@
 #include <exbsp/view/screen_line.h>
 #include <exbsp/view/screen_polygon.h>
 #include <exbsp/view/vector_drawing.h>
+#include <exbsp/view/view_setup.h>
 #include <exbsp/view/viewport.h>
 
 namespace exbsp::view {
-
-/// The four projection types of a scene (docs/contract.md "Scenes").
-enum class projection_kind { perspective, frustum, orthographic, oblique };
-/// "perspective", "frustum", "orthographic", "oblique".
-EXBSP_EXPORT const char* to_string(projection_kind k);
-
-/// Everything the stages need to know about the view.
-struct EXBSP_EXPORT view_setup {
-  projection_kind kind = projection_kind::perspective;
-  camera cam;                          ///< gluLookAt input; cam.eye orders perspective views
-  mat4 model_view = mat4::identity();  ///< look_at(cam)
-  mat4 projection = mat4::identity();  ///< eye -> clip coordinates
-  viewport vp;
-  /// Parallel kinds only: unit direction of projection in WORLD space, from the eye into the
-  /// scene (the gaze for orthographic, the oblique direction for oblique).
-  vector3 direction;
-  /// The output image and where the viewport's picture goes in it (window coordinates: x, y
-  /// of its lower-left corner). 0 x 0: the image is the viewport. The render command's
-  /// "place" stage composes it (placement.h).
-  int image_width = 0, image_height = 0;
-  int place_x = 0, place_y = 0;
-
-  /// True when the image is larger than the viewport.
-  bool needs_placement() const {
-    return image_width > 0 &&
-           (image_width != vp.width || image_height != vp.height || place_x != 0 || place_y != 0);
-  }
-
-  bool is_parallel() const {
-    return kind == projection_kind::orthographic || kind == projection_kind::oblique;
-  }
-};
 
 /// How the painter (paint.h) walks the polygons: the reference back-to-front walk, or
 /// front-to-back with a coverage mask. Both give the same image.
@@ -77,7 +46,7 @@ enum class paint_order { back_to_front, front_to_back };
 struct frame {
   // Inputs.
   triangle_soup soup;             ///< all meshes, transformed to world space, appended
-  build_options build;            ///< BSP options (default: epeck, default heuristic)
+  build_options build;            ///< BSP options (default: the exact kernel, default heuristic)
   std::vector<rgb8> face_colors;  ///< colour by face id of `soup`
   view_setup view;
   rgb8 background{255, 255, 255};

@@ -13,19 +13,6 @@ namespace exbsp::cli {
 
 namespace {
 
-nlohmann::json stats_json(const build_stats& s) {
-  return {{"input_triangles", s.input_triangles},
-          {"degenerate_input", s.degenerate_input},
-          {"fragments", s.fragments},
-          {"splits", s.splits},
-          {"nodes", s.nodes},
-          {"depth", s.depth},
-          {"build_seconds", s.build_seconds},
-          {"peak_rss_bytes", s.peak_rss_bytes},
-          {"kernel", s.kernel},
-          {"heuristic", s.heuristic}};
-}
-
 class build_subcommand final : public command {
  public:
   explicit build_subcommand(CLI::App& app) {
@@ -48,9 +35,9 @@ class build_subcommand final : public command {
     if (!o_.save.empty()) tree.save(o_.save);
     const auto& s = tree.stats();
     if (json_) {
-      nlohmann::json j = stats_json(s);
+      nlohmann::json j;
+      for_each_stat(s, [&j](const char* name, const auto& value) { j[name] = value; });
       j["mesh"] = o_.mesh == "-" ? "<stdin>" : o_.mesh;
-      j["seed"] = s.seed;
       if (load_seconds >= 0)
         j["load_seconds"] = load_seconds;  // a saved tree: build_seconds is its build's
       // A file name need not be UTF-8 (Linux names are bytes): invalid bytes become U+FFFD in

@@ -40,13 +40,22 @@ const CLI::Validator& not_negative() {
   return v;
 }
 
-std::string kernel_help() {
-  std::string text = "number type: ";
-  const auto& rows = kernel_table();
+namespace {
+
+/// "PREFIX a (what a is), b (what b is), ...": a table's rows with their descriptions.
+template <class Row>
+std::string described_rows(const std::string& prefix, const std::vector<Row>& rows) {
+  std::string text = prefix;
   for (std::size_t i = 0; i < rows.size(); ++i)
     text += (i == 0 ? "" : ", ") + rows[i].name + " (" + rows[i].description + ")";
   return text;
 }
+
+}  // namespace
+
+std::string kernel_help() { return described_rows("number type: ", kernel_table()); }
+
+std::string heuristic_help() { return described_rows("splitter choice: ", heuristic_table()); }
 
 std::string render_kernel_help() {
   std::vector<std::string> exact, inexact;
@@ -55,14 +64,6 @@ std::string render_kernel_help() {
   return "BSP kernel (default " + to_string(build_options{}.kernel) + "); " +
          name_list(exact, "and") + "; " + name_list(inexact, "and") +
          " only to see what rounding does";
-}
-
-std::string heuristic_help() {
-  std::string text = "splitter choice: ";
-  const auto& rows = heuristic_table();
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    text += (i == 0 ? "" : ", ") + rows[i].name + " (" + rows[i].description + ")";
-  return text;
 }
 
 void add_format_option(CLI::App* cmd, std::string& format) {

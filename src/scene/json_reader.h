@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // JSON reading with JSON-pointer error messages, for the view's types (numbers, triples,
-// colours): the scene parser (src/scene), `exbsp clip` (scene/clip_input.cpp) and the effects'
-// parameter readers (effects.h) share it.
+// colours): the scene parser, `exbsp clip` (clip_input.cpp) and the effects' parameter readers
+// (effect_parameters.h) share it. JSON stops here, at scene: view takes typed settings only.
 //
 // Notation: `key` is always the JSON pointer of the value being read ("/meshes/0/color/1");
 // every failure is a scene_error naming the file and that key.
@@ -19,7 +19,10 @@
 #include <exbsp/view/image.h>
 #include <exbsp/view/matrix.h>
 
-namespace exbsp::view {
+namespace exbsp::scene {
+
+using view::rgb8;
+using view::vector3;
 
 using nlohmann::json;
 
@@ -150,4 +153,4 @@ class reader {
   bool strict_;
 };
 
-}  // namespace exbsp::view
+}  // namespace exbsp::scene

@@ -1,0 +1,15 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// The fitted view of <exbsp/view/render.h> with the file name its messages give, for
+// `exbsp render MESH` (scene/mesh_scene.cpp), whose soup may come from standard input.
+#pragma once
+#include <string>
+
+#include <exbsp/view/render.h>
+
+namespace exbsp::view {
+
+/// fit_view, with `file` (not soup.source) named by its input_errors.
+fitted_view fit_view_of(const triangle_soup& soup, int width, int height, const std::string& name,
+                        const std::string& file);
+
+}  // namespace exbsp::view

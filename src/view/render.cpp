@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// One-call rendering and the fitted view (notation in <exbsp/view/render.h>).
+#include <exbsp/view/render.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include <exbsp/core/errors.h>
+#include <exbsp/view/pipeline.h>
+#include <exbsp/view/projection.h>
+#include <exbsp/view/standard_pipeline.h>
+#include "view/fitted_view.h"
+
+namespace exbsp::view {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+constexpr double fovy_deg = 30;
+/// The bounding sphere fills 1 / margin of the smaller field of view: a little air around it.
+constexpr double margin = 1.08;
+
+struct named_view {
+  const char* name;
+  vector3 towards_eye;  ///< from the centre towards the eye (any length)
+  vector3 up;
+};
+
+constexpr named_view views[] = {
+    {"iso", {1, 1, 1}, {0, 1, 0}},     {"front", {0, 0, 1}, {0, 1, 0}},
+    {"back", {0, 0, -1}, {0, 1, 0}},   {"left", {-1, 0, 0}, {0, 1, 0}},
+    {"right", {1, 0, 0}, {0, 1, 0}},   {"top", {0, 1, 0}, {0, 0, -1}},
+    {"bottom", {0, -1, 0}, {0, 0, 1}},
+};
+
+}  // namespace
+
+const std::vector<std::string>& fitted_view_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const named_view& v : views) n.emplace_back(v.name);
+    return n;
+  }();
+  return names;
+}
+
+fitted_view fit_view_of(const triangle_soup& soup, int width, int height, const std::string& name,
+                        const std::string& file) {
+  const named_view* chosen = nullptr;
+  for (const named_view& v : views)
+    if (name == v.name) chosen = &v;
+  if (!chosen)
+    throw usage_error("fit_view: unknown view '" + name +
+                      "' (expected iso, front, back, left, right, top or bottom)");
+  if (width < 1 || width > 16384 || height < 1 || height > 16384)
+    throw usage_error("fit_view: width and height must be in 1..16384");
+  if (soup.triangles.empty()) throw input_error(file, 0, "the mesh has no triangle to render");
+
+  // Bounding box of the vertices the triangles use (a stray unused vertex does not move the view).
+  std::array<double, 3> lo{}, hi{};
+  lo.fill(std::numeric_limits<double>::infinity());
+  hi.fill(-std::numeric_limits<double>::infinity());
+  for (const soup_triangle& t : soup.triangles)
+    for (std::uint32_t i : t.v)
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], soup.vertices[i][k]);
+        hi[k] = std::max(hi[k], soup.vertices[i][k]);
+      }
+  // Halves first, so that a box spanning -DBL_MAX..DBL_MAX does not overflow here.
+  std::array<double, 3> centre{}, half{};
+  for (int k = 0; k < 3; ++k) {
+    centre[k] = lo[k] / 2 + hi[k] / 2;
+    half[k] = hi[k] / 2 - lo[k] / 2;
+  }
+  double radius = std::sqrt(half[0] * half[0] + half[1] * half[1] + half[2] * half[2]);
+  const double magnitude =
+      std::max({std::fabs(centre[0]), std::fabs(centre[1]), std::fabs(centre[2])});
+  // A mesh that is a single point (all triangles degenerate there) still gets a view of a small
+  // region around it, scaled to its coordinates so that eye - centre is not lost to rounding.
+  if (!(radius > magnitude * 1e-12)) radius = std::max(magnitude * 1e-6, 1.0);
+
+  const double aspect = static_cast<double>(width) / height;
+  const double half_fovy = fovy_deg * pi / 360;
+  const double half_fov = std::min(half_fovy, std::atan(std::tan(half_fovy) * aspect));
+  const double distance = margin * radius / std::sin(half_fov);
+  const vector3 w = normalized(chosen->towards_eye);
+  const std::array<double, 3> wk{w.x, w.y, w.z};
+  std::array<double, 3> eye{};
+  for (int k = 0; k < 3; ++k) eye[k] = centre[k] + distance * wk[k];
+  const double near_dist = distance - 1.01 * radius, far_dist = distance + 1.01 * radius;
+  const bool finite =
+      std::isfinite(distance) && std::isfinite(far_dist) && near_dist > 0 &&
+      std::all_of(eye.begin(), eye.end(), [](double x) { return std::isfinite(x); });
+  if (!finite)
+    throw input_error(file, 0, "the mesh's coordinates are too large to fit a view in double");
+
+  fitted_view out;
+  out.cam = {{eye[0], eye[1], eye[2]}, {centre[0], centre[1], centre[2]}, chosen->up};
+  out.fovy_deg = fovy_deg;
+  out.near_dist = near_dist;
+  out.far_dist = far_dist;
+  // Light over the viewer's left shoulder: towards the eye, up and to the left.
+  const vector3 right = normalized(cross(chosen->up, w));
+  out.light = w + 0.6 * chosen->up - 0.4 * right;
+  return out;
+}
+
+fitted_view fit_view(const triangle_soup& soup, int width, int height, const std::string& name) {
+  return fit_view_of(soup, width, height, name, soup.source);
+}
+
+view_setup to_view_setup(const fitted_view& v, int width, int height) {
+  view_setup s;
+  s.kind = projection_kind::perspective;
+  s.cam = v.cam;
+  s.model_view = look_at(v.cam);
+  s.vp = {0, 0, width, height};
+  s.projection =
+      perspective(v.fovy_deg, static_cast<double>(width) / height, v.near_dist, v.far_dist);
+  return s;
+}
+
+std::vector<rgb8> headlight_colors(const triangle_soup& soup, const camera& cam, rgb8 base) {
+  const vector3 light = normalized(cam.eye - cam.look_at);
+  const auto scaled = [&base](double shade) {
+    const auto channel = [shade](std::uint8_t c) {
+      return static_cast<std::uint8_t>(std::lround(std::min(255.0, c * shade)));
+    };
+    return rgb8{channel(base.r), channel(base.g), channel(base.b)};
+  };
+  std::vector<rgb8> colors(soup.face_count, scaled(0.25));
+  std::vector<bool> done(soup.face_count, false);
+  for (const soup_triangle& t : soup.triangles) {
+    if (t.face >= soup.face_count || done[t.face]) continue;
+    const point3 a = to_point(soup.vertices[t.v[0]]);
+    const vector3 n =
+        cross(to_point(soup.vertices[t.v[1]]) - a, to_point(soup.vertices[t.v[2]]) - a);
+    const double len = length(n);
+    if (!(len > 0)) continue;
+    colors[t.face] = scaled(0.25 + 0.75 * std::abs(dot(n, light)) / len);
+    done[t.face] = true;
+  }
+  return colors;
+}
+
+render_result render_soup(const triangle_soup& soup, const render_options& options) {
+  const fitted_view fitted = fit_view(soup, options.width, options.height, options.view);
+  frame f;
+  f.soup = soup;
+  f.build = options.build;
+  f.face_colors.assign(soup.face_count, options.color);
+  f.background = options.background;
+  f.view = to_view_setup(fitted, options.width, options.height);
+  f.settings.lighting.direction = fitted.light;
+  f.settings.lighting.ambient = 0.3;
+  f.settings.lighting.intensity = 0.7;
+  standard_pipeline({"lighting"}, output_kind::png).run(f, nullptr);
+  return {std::move(f.picture), std::move(*f.tree), std::move(f.order), fitted};
+}
+
+}  // namespace exbsp::view
