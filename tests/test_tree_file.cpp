@@ -213,6 +213,31 @@ TEST(TreeFile, a_soup_with_splits_round_trips_for_every_kernel_heuristic_and_see
       }
 }
 
+TEST(TreeFile, a_tree_built_without_keep_input_is_the_same_tree_but_cannot_be_saved) {
+  for (kernel_id k : all_kernels) {
+    SCOPED_TRACE(exbsp::to_string(k));
+    exbsp::build_options with, without;
+    with.kernel = without.kernel = k;
+    without.keep_input = false;
+    const bsp a = bsp::build(crossing_soup(), with), b = bsp::build(crossing_soup(), without);
+    ASSERT_EQ(a.fragment_count(), b.fragment_count());
+    for (std::size_t i = 0; i < a.fragment_count(); ++i) {
+      EXPECT_EQ(a.fragment(i).face, b.fragment(i).face);
+      EXPECT_EQ(a.fragment(i).v, b.fragment(i).v);
+    }
+    EXPECT_EQ(a.order_from_eye({3, -5, 7}), b.order_from_eye({3, -5, 7}));
+    EXPECT_EQ(a.node_count(), b.node_count());
+    EXPECT_THROW(b.serialize(), exbsp::usage_error);
+    EXPECT_THROW(b.input(), exbsp::usage_error);
+    const std::string path = (std::filesystem::temp_directory_path() / "keep_input.exbsp").string();
+    std::filesystem::remove(path);
+    EXPECT_THROW(b.save(path), exbsp::usage_error);
+    EXPECT_FALSE(std::filesystem::exists(path)) << "no partial file";
+    EXPECT_NO_THROW(a.serialize());
+    EXPECT_EQ(a.input().triangles.size(), crossing_soup().triangles.size());
+  }
+}
+
 TEST(TreeFile, the_sampled_parameters_and_the_seed_are_kept) {
   exbsp::build_options o;
   o.heuristic = "random";

@@ -146,6 +146,7 @@ render_summary render_command(const render_request& request, std::ostream& log) 
   f.build.progress = request.progress;
   if (!request.kernel.empty()) f.build.kernel = parse_kernel(request.kernel);
   f.build.max_fragments = request.max_fragments;
+  f.build.keep_input = false;  // a render never saves its tree: no copy of the soup
   render_summary summary;
   summary.triangles = f.soup.triangles.size();
   const auto note_build = [&] {

@@ -122,6 +122,10 @@ struct build_options {
   /// bsp::build unchanged once every worker thread has stopped (each finishes at most the
   /// node it is splitting); no tree is returned and everything the build allocated is freed.
   std::function<void(const build_progress&)> progress;
+  /// True: the tree keeps a copy of the input soup (24 bytes per vertex, 16 per triangle), for
+  /// input(), save() and serialize(). False: it keeps none, and those throw usage_error; the
+  /// tree, its orders and fragments are the same. The command line keeps it only when it saves.
+  bool keep_input = true;
 };
 
 /// Statistics of a build (names follow `exbsp build --json`).

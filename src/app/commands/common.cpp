@@ -151,6 +151,7 @@ bsp build_tree(const build_cli& o, progress_line& progress, double* load_seconds
   options.max_fragments =
       o.max_fragments ? *o.max_fragments : default_fragment_budget(options.kernel);
   options.threads = o.threads;
+  options.keep_input = !o.save.empty();  // the copy of the input serves saving only
   options.progress = [&progress](const build_progress& p) { progress(p); };
   try {
     bsp tree = bsp::build(soup, options);

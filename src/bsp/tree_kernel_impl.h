@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// The kernel-specific implementation behind exbsp::bsp (bsp_kernel_impl<G>): the facade's
+// queries, orders and saving over one basic_bsp_tree<G>, and the tree's traversals. Part of
+// bsp_tree_impl.h; notation: bsp_tree.h.
+#pragma once
+#include "bsp/tree_build.h"  // its includes, build_context and classify
+
+namespace exbsp {
+
+template <class G>
+std::size_t basic_bsp_tree<G>::node_of_fragment(std::size_t i) const {
+  // Nodes are created in build order and append their fragments as they are created,
+  // so node.first is non-decreasing with the node index.
+  if (i >= fragments_.size()) throw usage_error("node_of_fragment: index out of range");
+  const auto it = std::upper_bound(nodes_.begin(), nodes_.end(), i,
+                                   [](std::size_t v, const node& nd) { return v < nd.first; });
+  return static_cast<std::size_t>(std::prev(it) - nodes_.begin());
+}
+
+template <class G>
+std::vector<std::uint32_t> basic_bsp_tree<G>::order_from_eye(const vec3d& eye,
+                                                             bool back_to_front) const {
+  return traverse([&](std::uint32_t plane) { return geom_.side_of_eye(plane, eye); },
+                  back_to_front);
+}
+
+template <class G>
+std::vector<std::uint32_t> basic_bsp_tree<G>::order_for_direction(const vec3d& d,
+                                                                  bool back_to_front) const {
+  return traverse([&](std::uint32_t plane) { return geom_.side_of_direction(plane, d); },
+                  back_to_front);
+}
+
+/// The kernel-specific implementation behind exbsp::bsp.
+template <class G>
+class bsp_kernel_impl final : public bsp_impl {
+ public:
+  bsp_kernel_impl(const triangle_soup& soup, const build_options& options)
+      : input_{{},
+               0,
+               options.sampled_candidates,
+               options.sampled_samples,
+               options.sampled_split_weight,
+               options.keep_input ? soup : triangle_soup{}},
+        has_input_(options.keep_input),
+        tree_(soup, options) {
+    init_planes(soup);
+  }
+  /// A saved tree (tree_file.h).
+  bsp_kernel_impl(tree_file::reader& in, tree_file::common_part&& common)
+      : input_(std::move(common)), tree_(input_, in) {
+    init_planes(input_.soup);
+  }
+  const build_stats& stats() const override { return tree_.stats(); }
+  kernel_id kernel() const override { return G::id; }
+  std::size_t fragment_count() const override { return tree_.fragments().size(); }
+  fragment_d fragment(std::size_t i) const override {
+    if (i >= tree_.fragments().size()) throw usage_error("fragment: index out of range");
+    tree_.geometry().prepare_output(tree_.fragments());
+    return tree_.geometry().to_double(tree_.fragments()[i]);
+  }
+  void visit_exact(std::size_t i, const exact_visitor& visit) const override {
+    if (i >= tree_.fragments().size()) throw usage_error("fragment_exact: index out of range");
+    tree_.geometry().visit_exact(tree_.fragments()[i], visit);
+  }
+  std::vector<std::uint32_t> order_from_eye(const vec3d& e, bool back_to_front) const override {
+    return tree_.order_from_eye(e, back_to_front);
+  }
+  std::vector<std::uint32_t> order_for_direction(const vec3d& d,
+                                                 bool back_to_front) const override {
+    return tree_.order_for_direction(d, back_to_front);
+  }
+  std::vector<bsp::ancestor> ancestors(std::size_t i) const override {
+    std::vector<bsp::ancestor> out;
+    const auto& nodes = tree_.nodes();
+    std::int32_t at = static_cast<std::int32_t>(tree_.node_of_fragment(i));
+    while (nodes[at].parent >= 0) {
+      out.push_back({nodes[nodes[at].parent].plane_source, nodes[at].side_in_parent});
+      at = nodes[at].parent;
+    }
+    std::reverse(out.begin(), out.end());
+    return out;
+  }
+  void write_tree(tree_file::writer& out) const override {
+    require_input("save");
+    tree_file::write_common(out, tree_.stats(), input_);
+    tree_.write_tree(out);
+  }
+
+  std::size_t node_count() const override { return tree_.nodes().size(); }
+  const triangle_soup& input() const override {
+    require_input("input");
+    return input_.soup;
+  }
+  bsp_node node(std::size_t k) const override {
+    if (k >= tree_.nodes().size()) throw usage_error("node: index out of range");
+    const auto& nd = tree_.nodes()[k];
+    return {static_cast<std::uint32_t>(k),
+            nd.plane_source,
+            planes_[k],
+            nd.first,
+            nd.count,
+            nd.negative,
+            nd.positive,
+            nd.parent,
+            nd.side_in_parent};
+  }
+  void traverse(const vec3d& at, bool direction, bsp_visitor& visitor,
+                bool back_to_front) const override {
+    const auto& geom = tree_.geometry();
+    const auto side_of = [&](std::uint32_t plane) {
+      return direction ? geom.side_of_direction(plane, at) : geom.side_of_eye(plane, at);
+    };
+    tree_.walk(
+        side_of, back_to_front,
+        [&](std::int32_t k, int s) { visitor.enter(node(static_cast<std::size_t>(k)), s); },
+        [&](std::int32_t k) { visitor.fragments(node(static_cast<std::size_t>(k))); },
+        [&](std::int32_t k, int side) { visitor.cell(node(static_cast<std::size_t>(k)), side); });
+  }
+
+ private:
+  void init_planes(const triangle_soup& soup) {
+    planes_.reserve(tree_.nodes().size());
+    for (const auto& nd : tree_.nodes()) {
+      const soup_triangle& t = soup.triangles[nd.plane_source];
+      planes_.push_back({soup.vertices[t.v[0]], soup.vertices[t.v[1]], soup.vertices[t.v[2]]});
+    }
+  }
+
+  /// usage_error unless the tree kept its input (build_options::keep_input).
+  void require_input(const char* function) const {
+    if (!has_input_)
+      throw usage_error(std::string(function) +
+                        ": the tree was built with build_options::keep_input = false and holds "
+                        "no copy of its input (build it with keep_input to save it)");
+  }
+
+  tree_file::common_part input_;  ///< the soup and options, for saving (its stats are unused)
+  bool has_input_ = true;         ///< input_.soup is the input (build_options::keep_input)
+  basic_bsp_tree<G> tree_;
+  std::vector<std::array<vec3d, 3>> planes_;  ///< per node: its plane's three input points
+};
+
+}  // namespace exbsp
