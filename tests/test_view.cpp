@@ -1016,6 +1016,12 @@ TEST_F(RenderSoup, paints_the_pixels_of_exbsp_render_for_every_fitted_view) {
     EXPECT_TRUE(got.picture.data() == want.data());
     EXPECT_EQ(got.order.size(), got.tree.fragment_count());
     EXPECT_EQ(got.view.cam.up.y, name == "top" || name == "bottom" ? 0.0 : 1.0);
+    // The tree's SVG: the document `exbsp render MESH -o X.svg` writes, byte for byte.
+    const auto svg = run("render " + exbsp_test::quoted(mesh) + " --view " + name +
+                         " --size 160x120 -q -o cli.svg");
+    ASSERT_EQ(svg.status, 0) << svg.err;
+    EXPECT_EQ(exbsp::view::render_tree_svg(got.tree, got.view, 160, 120),
+              exbsp_test::read_file(dir / "cli.svg"));
   }
 }
 

@@ -32,6 +32,8 @@ bsp bsp::build(const triangle_soup& soup, const build_options& options) {
 }
 
 bsp::bsp(std::unique_ptr<bsp_impl> impl) : impl_(std::move(impl)) {}
+bsp::bsp(const bsp&) noexcept = default;
+bsp& bsp::operator=(const bsp&) noexcept = default;
 bsp::bsp(bsp&&) noexcept = default;
 bsp& bsp::operator=(bsp&&) noexcept = default;
 bsp::~bsp() = default;

@@ -27,6 +27,8 @@
 #include <exbsp/core/errors.h>
 #include <exbsp/core/version.h>
 #include <exbsp/mesh/mesh_io.h>
+#include <exbsp/view/png_io.h>
+#include <exbsp/view/render.h>
 #include "core/atomic_file.h"
 #include "core/file_name.h"
 #include "drawing/drawing.h"
@@ -504,6 +506,54 @@ py::dict drawing(const py::object& input, const py::object& outputs, const py::o
 
 }  // namespace
 
+/// Tree.render: the tree seen by a fitted view of its input (`view`) or by a camera at `eye`
+/// looking at `look_at`; an image (h, w, 3) uint8 array, PNG bytes or SVG text.
+py::object render_tree(const exbsp::bsp& tree, int width, int height, const std::string& view,
+                       const std::optional<exbsp::vec3d>& eye,
+                       const std::optional<exbsp::vec3d>& look_at, const exbsp::vec3d& up,
+                       double fovy_deg, const std::string& format, const std::string& edges,
+                       const std::array<int, 3>& color, const std::array<int, 3>& background) {
+  namespace v = exbsp::view;
+  if (format != "image" && format != "png" && format != "svg")
+    throw usage_error("render: format must be 'image', 'png' or 'svg', got '" + format + "'");
+  const auto rgb = [](const std::array<int, 3>& c, const char* name) {
+    for (int x : c)
+      if (x < 0 || x > 255)
+        throw usage_error(std::string("render: ") + name + " channels must be in 0..255");
+    return v::rgb8{static_cast<std::uint8_t>(c[0]), static_cast<std::uint8_t>(c[1]),
+                   static_cast<std::uint8_t>(c[2])};
+  };
+  const v::render_style style{rgb(color, "color"), rgb(background, "background")};
+  if (eye.has_value() != look_at.has_value())
+    throw usage_error("render: give both eye=(x, y, z) and look_at=(x, y, z), or neither");
+  std::string svg;
+  v::image picture;
+  {
+    engine_call no_gil;
+    const v::fitted_view fitted =
+        eye ? v::view_of_tree(
+                  tree, {v::to_point(*eye), v::to_point(*look_at), v::vector3{up[0], up[1], up[2]}},
+                  fovy_deg)
+            : v::fit_view(tree.input(), width, height, view);
+    if (format == "svg")
+      svg = v::render_tree_svg(tree, fitted, width, height, style, edges);
+    else
+      picture = v::render_tree(tree, fitted, width, height, style);
+  }
+  if (format == "svg") return py::str(svg);
+  if (format == "png") {
+    std::vector<std::uint8_t> bytes;
+    {
+      engine_call no_gil;
+      bytes = v::encode_png(picture);
+    }
+    return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  }
+  const auto& data = picture.data();
+  return make_array<std::uint8_t>({picture.height(), picture.width(), 3},
+                                  [&](std::size_t j) { return data[j]; });
+}
+
 PYBIND11_MODULE(_exbsp, m) {
   m.doc() = "Exact-predicate BSP trees and exact sections of triangle meshes (see docs/python.md).";
   m.attr("__version__") = exbsp::version_string;
@@ -643,6 +693,28 @@ PYBIND11_MODULE(_exbsp, m) {
       .def(
           "serialize", [](py::handle self) { return py::bytes(tree_of(self).serialize()); },
           "The bytes save writes.")
+      .def(
+          "render",
+          [](py::handle self, int width, int height, const std::string& view,
+             const std::optional<exbsp::vec3d>& eye, const std::optional<exbsp::vec3d>& look_at,
+             const exbsp::vec3d& up, double fovy_deg, const std::string& format,
+             const std::string& edges, const std::array<int, 3>& color,
+             const std::array<int, 3>& background) {
+            return render_tree(tree_of(self), width, height, view, eye, look_at, up, fovy_deg,
+                               format, edges, color, background);
+          },
+          py::kw_only(), py::arg("width") = 800, py::arg("height") = 600, py::arg("view") = "iso",
+          py::arg("eye") = py::none(), py::arg("look_at") = py::none(),
+          py::arg("up") = exbsp::vec3d{0, 1, 0}, py::arg("fovy_deg") = 30.0,
+          py::arg("format") = "image", py::arg("edges") = "visible",
+          py::arg("color") = std::array<int, 3>{176, 190, 214},
+          py::arg("background") = std::array<int, 3>{250, 250, 252},
+          "The tree painted back to front (painter's algorithm, flat light from over the "
+          "viewer's shoulder), seen by the fitted view `view` of its input (iso, front, back, "
+          "left, right, top, bottom: the view `exbsp render MESH --view` uses) or by a "
+          "perspective camera at `eye` looking at `look_at` (with `up`, `fovy_deg`). format "
+          "'image': a (height, width, 3) uint8 array, top row first; 'png': PNG bytes; 'svg': "
+          "the SVG text, with `edges` 'none', 'visible' or 'visible+hidden' (exact visibility).")
       .def(py::pickle([](py::handle self) { return py::bytes(tree_of(self).serialize()); },
                       [](const py::bytes& b) {
                         return exbsp::bsp::deserialize(std::string(b), "<pickled exbsp.Tree>");

@@ -11,6 +11,7 @@
 #include <exbsp/core/errors.h>
 #include <exbsp/view/pipeline.h>
 #include <exbsp/view/projection.h>
+#include <exbsp/view/stages.h>
 #include <exbsp/view/standard_pipeline.h>
 #include "view/fitted_view.h"
 
@@ -112,6 +113,33 @@ fitted_view fit_view(const triangle_soup& soup, int width, int height, const std
   return fit_view_of(soup, width, height, name, soup.source);
 }
 
+fitted_view view_of_tree(const bsp& tree, const camera& cam, double fovy_deg) {
+  if (!(fovy_deg > 0 && fovy_deg < 180))
+    throw usage_error("view_of_tree: fovy_deg must be in (0, 180)");
+  const camera_basis basis = look_at_basis(cam.eye, cam.look_at, cam.up);  // checks the camera
+  if (tree.fragment_count() == 0) throw usage_error("view_of_tree: the tree is empty");
+  point3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (const fragment_d& f : tree.fragments_double())
+    for (const vec3d& p : f.v) {
+      lo = {std::min(lo.x, p[0]), std::min(lo.y, p[1]), std::min(lo.z, p[2])};
+      hi = {std::max(hi.x, p[0]), std::max(hi.y, p[1]), std::max(hi.z, p[2])};
+    }
+  const point3 centre{lo.x / 2 + hi.x / 2, lo.y / 2 + hi.y / 2, lo.z / 2 + hi.z / 2};
+  const double radius =
+      length(vector3{hi.x / 2 - lo.x / 2, hi.y / 2 - lo.y / 2, hi.z / 2 - lo.z / 2});
+  const double distance = length(cam.eye - centre);
+  fitted_view out;
+  out.cam = cam;
+  out.fovy_deg = fovy_deg;
+  out.far_dist = distance + 1.01 * radius;
+  out.near_dist = std::max(distance - 1.01 * radius, 1e-4 * out.far_dist);
+  if (!(out.far_dist > out.near_dist && std::isfinite(out.far_dist)))
+    throw usage_error("view_of_tree: the eye is too far from the tree to fit near and far");
+  // Light over the viewer's left shoulder: towards the eye (w), up (v) and to the left (-u).
+  out.light = basis.w + 0.6 * basis.v - 0.4 * basis.u;
+  return out;
+}
+
 view_setup to_view_setup(const fitted_view& v, int width, int height) {
   view_setup s;
   s.kind = projection_kind::perspective;
@@ -146,19 +174,64 @@ std::vector<rgb8> headlight_colors(const triangle_soup& soup, const camera& cam,
   return colors;
 }
 
-render_result render_soup(const triangle_soup& soup, const render_options& options) {
-  const fitted_view fitted = fit_view(soup, options.width, options.height, options.view);
+namespace {
+
+/// A frame holding `tree` (shared) for `view`, its fragments converted, painted in `style`.
+frame tree_frame(const bsp& tree, const fitted_view& view, int width, int height,
+                 const render_style& style) {
+  if (width < 1 || width > 16384 || height < 1 || height > 16384)
+    throw usage_error("render_tree: width and height must be in 1..16384");
   frame f;
-  f.soup = soup;
-  f.build = options.build;
-  f.face_colors.assign(soup.face_count, options.color);
-  f.background = options.background;
-  f.view = to_view_setup(fitted, options.width, options.height);
-  f.settings.lighting.direction = fitted.light;
+  f.tree = tree;
+  f.view = to_view_setup(view, width, height);
+  f.background = style.background;
+  f.settings.lighting.direction = view.light;
   f.settings.lighting.ambient = 0.3;
   f.settings.lighting.intensity = 0.7;
-  standard_pipeline({"lighting"}, output_kind::png).run(f, nullptr);
-  return {std::move(f.picture), std::move(*f.tree), std::move(f.order), fitted};
+  adopt_tree_stage(f);
+  std::uint32_t faces = 0;
+  for (const fragment_d& fr : f.fragments) faces = std::max(faces, fr.face + 1);
+  f.face_colors.assign(faces, style.color);
+  return f;
+}
+
+/// "none", "visible" or "visible+hidden" (vector_options' names).
+vector_options::edges_kind edges_named(const std::string& name) {
+  using kind = vector_options::edges_kind;
+  for (const kind e : {kind::none, kind::visible, kind::visible_hidden})
+    if (name == to_string(e)) return e;
+  throw usage_error("render_tree_svg: edges must be none, visible or visible+hidden, got '" + name +
+                    "'");
+}
+
+}  // namespace
+
+image render_tree(const bsp& tree, const fitted_view& view, int width, int height,
+                  const render_style& style) {
+  frame f = tree_frame(tree, view, width, height, style);
+  per_view_pipeline({"lighting"}, output_kind::png).run(f, nullptr);
+  return std::move(f.picture);
+}
+
+std::string render_tree_svg(const bsp& tree, const fitted_view& view, int width, int height,
+                            const render_style& style, const std::string& edges) {
+  frame f = tree_frame(tree, view, width, height, style);
+  f.vector = vector_options::for_mesh();
+  f.vector.edges = edges_named(edges);
+  // Feature edges are the input mesh's (boundary, crease, silhouette): they need the soup the
+  // tree was built from (a tree built with build_options::keep_input = false has none).
+  if (f.vector.edges != vector_options::edges_kind::none) f.soup = tree.input();
+  per_view_pipeline({"lighting"}, output_kind::svg).run(f, nullptr);
+  return std::move(f.svg);
+}
+
+render_result render_soup(const triangle_soup& soup, const render_options& options) {
+  const fitted_view fitted = fit_view(soup, options.width, options.height, options.view);
+  bsp tree = bsp::build(soup, options.build);
+  image picture =
+      render_tree(tree, fitted, options.width, options.height, {options.color, options.background});
+  std::vector<std::uint32_t> order = tree.order_from_eye(to_vec3d(fitted.cam.eye));
+  return {std::move(picture), std::move(tree), std::move(order), fitted};
 }
 
 }  // namespace exbsp::view

@@ -199,6 +199,10 @@ class EXBSP_EXPORT bsp {
   /// in stats().degenerate_input.
   static bsp build(const triangle_soup& soup, const build_options& options = {});
 
+  /// A copy shares the built tree, which is immutable: it costs a reference count, not a
+  /// tree (a renderer can hold the tree its caller holds).
+  bsp(const bsp&) noexcept;
+  bsp& operator=(const bsp&) noexcept;
   bsp(bsp&&) noexcept;
   bsp& operator=(bsp&&) noexcept;
   ~bsp();
@@ -271,7 +275,7 @@ class EXBSP_EXPORT bsp {
  private:
   friend class bsp_access;
   explicit bsp(std::unique_ptr<bsp_impl> impl);
-  std::unique_ptr<bsp_impl> impl_;
+  std::shared_ptr<const bsp_impl> impl_;
 };
 
 }  // namespace exbsp

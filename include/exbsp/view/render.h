@@ -46,6 +46,12 @@ EXBSP_EXPORT const std::vector<std::string>& fitted_view_names();
 EXBSP_EXPORT fitted_view fit_view(const triangle_soup& soup, int width, int height,
                                   const std::string& name = "iso");
 
+/// A perspective view from `cam` (with `fovy_deg`) that sees all of `tree`: near and far
+/// enclose the bounding sphere of its fragments (near at least 1e-4 of far when the eye is
+/// inside it), light over the viewer's left shoulder as fit_view's. usage_error for a camera
+/// gluLookAt refuses or an empty tree.
+EXBSP_EXPORT fitted_view view_of_tree(const bsp& tree, const camera& cam, double fovy_deg = 30);
+
 /// The view_setup of a fitted view: look_at(cam), perspective(fovy, width / height, near,
 /// far), the viewport (0, 0, width, height).
 EXBSP_EXPORT view_setup to_view_setup(const fitted_view& v, int width, int height);
@@ -55,6 +61,28 @@ EXBSP_EXPORT view_setup to_view_setup(const fitted_view& v, int width, int heigh
 /// `soup` (a face's first non-degenerate triangle decides; a face with none keeps base * 0.25).
 EXBSP_EXPORT std::vector<rgb8> headlight_colors(const triangle_soup& soup, const camera& cam,
                                                 rgb8 base = {200, 200, 200});
+
+/// How a tree is painted: every face in one colour, flat Lambert light (ambient 0.3, intensity
+/// 0.7, two-sided) from the view's `light`, on a background.
+struct render_style {
+  rgb8 color{176, 190, 214};
+  rgb8 background{250, 250, 252};
+};
+
+/// The picture of a built tree seen by `view` (a fitted view, or any perspective camera with
+/// its field of view, near and far distances and light) in a width x height image. The tree
+/// is shared, not copied (bsp copies share it). usage_error for a size outside 1..16384 or a
+/// camera gluLookAt refuses.
+EXBSP_EXPORT image render_tree(const bsp& tree, const fitted_view& view, int width, int height,
+                               const render_style& style = {});
+
+/// The same view as an SVG document: visible regions and visible feature edges
+/// (docs/contract.md's exact edge visibility), `edges` "none", "visible" or "visible+hidden";
+/// edges need the tree's input (bsp::input(): usage_error for a tree built without
+/// keep_input). The document `exbsp render MESH -o X.svg` writes for a fitted view.
+EXBSP_EXPORT std::string render_tree_svg(const bsp& tree, const fitted_view& view, int width,
+                                         int height, const render_style& style = {},
+                                         const std::string& edges = "visible");
 
 /// What render_soup draws.
 struct render_options {
