@@ -104,7 +104,8 @@ def main():
                 continue
             base = os.path.join(args.out, "%s-%d" % (mesh, k))
             for ext in ("png", "svg"):
-                subprocess.run([exbsp, "render", path, "--size", args.size, "--edges", "none",
+                edges = ["--edges", "none"] if ext == "svg" else []  # PNG has no edges
+                subprocess.run([exbsp, "render", path, "--size", args.size, *edges,
                                 "--quiet", "-o", base + "." + ext], check=True)
             reference = load(base + ".png")
             background = tuple(int(v) for v in reference[0, 0])  # the corner: background

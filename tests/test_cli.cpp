@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -541,6 +542,99 @@ TEST_F(Cli, render_of_a_bad_mesh_or_bad_mesh_options_exits_2_and_writes_nothing)
   const result point = run("render point.off -o point.png");
   EXPECT_EQ(point.status, 0) << point.err;
   EXPECT_NE(point.err.find("1 triangles -> 0 fragments"), std::string::npos) << point.err;
+}
+
+// Every render flag acts or is refused (issue 25): a saved tree is drawn as it was built, the
+// flags of a mesh's fitted view are refused on a scene, --edges overrides a scene's and is
+// refused for PNG, --frames needs an orbit and at least one frame.
+TEST_F(Cli, render_of_a_saved_tree_gives_the_bytes_of_the_mesh_without_a_build) {
+  const std::string mesh = quoted(data_dir + "/nonmanifold.off");
+  ASSERT_EQ(run("build " + mesh + " --save t.exbsp").status, 0);
+  for (const std::string& ext : {std::string("png"), std::string("svg")}) {
+    SCOPED_TRACE(ext);
+    const result a = run("render " + mesh + " --view front --size 200x150 -o mesh." + ext);
+    ASSERT_EQ(a.status, 0) << a.err;
+    const result b = run("render t.exbsp --view front --size 200x150 -v -o tree." + ext);
+    ASSERT_EQ(b.status, 0) << b.err;
+    EXPECT_EQ(read_file(dir / ("mesh." + ext)), read_file(dir / ("tree." + ext)));
+    EXPECT_NE(b.err.find("stage adopt:"), std::string::npos) << b.err;
+    EXPECT_EQ(b.err.find("stage build:"), std::string::npos) << "a saved tree is not rebuilt";
+  }
+  const result kernel = run("render t.exbsp --kernel epeck -o k.png");
+  EXPECT_EQ(kernel.status, 2);
+  EXPECT_NE(kernel.err.find("saved tree built with --kernel exact"), std::string::npos)
+      << kernel.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "k.png"));
+}
+
+TEST_F(Cli, render_flags_act_on_a_scene_or_are_refused_with_the_reason) {
+  const std::string scene = quoted(std::string(EXBSP_SOURCE_DIR) + "/scenes/perspective.json");
+  const struct {
+    std::string args, reason;
+  } refused[] = {
+      {"render " + scene + " --view front -o a.png", "has its own \"camera\""},
+      {"render " + scene + " --size 100x100 -o a.png", "sets it in \"viewport\""},
+      {"render --size 100x100 -o a.png", "the demo scene"},
+      {"render " + scene + " --edges visible -o a.png", "applies to SVG and PDF output"},
+      {"render " + quoted(data_dir + "/cube.off") + " --edges visible+hidden -o a.png",
+       "applies to SVG and PDF output"},
+      {"render " + scene + " --frames 3 -o a.png", "needs --orbit-drag"},
+      {"render " + scene + " --frames 0 -o a.png", "needs --orbit-drag"},
+      {"render " + scene + " --orbit-drag 1,2:3,4 --frames 0 -o a.png", "at least 1"},
+  };
+  for (const auto& c : refused) {
+    SCOPED_TRACE(c.args);
+    const result r = run(c.args);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find(c.reason), std::string::npos) << r.err;
+    EXPECT_TRUE(file_names().empty());
+  }
+  // --edges on a scene's SVG overrides its "svg" "edges" (none in perspective.json).
+  ASSERT_EQ(run("render " + scene + " -q -o plain.svg").status, 0);
+  ASSERT_EQ(run("render " + scene + " -q --edges visible+hidden -o edges.svg").status, 0);
+  EXPECT_EQ(read_file(dir / "plain.svg").find("hidden-edges"), std::string::npos);
+  EXPECT_NE(read_file(dir / "edges.svg").find("<g id=\"visible-edges\""), std::string::npos);
+  EXPECT_NE(read_file(dir / "edges.svg").find("<g id=\"hidden-edges\""), std::string::npos);
+}
+
+// The progress line on a terminal (issue 25): every stage over a second shows, the line is
+// redrawn at most ~10 times a second, the build's share never goes backwards, and the line is
+// cleared at the end. A pseudo-terminal from util-linux's `script`.
+TEST_F(Cli, the_progress_line_shows_long_stages_ten_times_a_second_and_never_goes_back) {
+  const std::string mesh = std::string(EXBSP_SOURCE_DIR) + "/data/meshes/refined_elephant.off";
+  if (!std::filesystem::exists(mesh)) GTEST_SKIP() << "the CGAL corpus is missing: " << mesh;
+  if (std::system("command -v script >/dev/null") != 0) GTEST_SKIP() << "no script(1)";
+  const std::string command = quoted(EXBSP_CLI) + " render " + quoted(mesh) +
+                              " --kernel epeck -o " + quoted((dir / "e.svg").string());
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string cmd = "script -qec " + quoted(command) + " /dev/null > " +
+                          quoted((dir / "tty.txt").string()) + " 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const std::string tty = read_file(dir / "tty.txt");
+  // Redraws: "\r\033[Kexbsp: STAGE: ..." each; the last one clears the line.
+  std::vector<std::string> lines;
+  for (std::size_t at = tty.find("\r\033[K"); at != std::string::npos;
+       at = tty.find("\r\033[K", at + 1)) {
+    const std::size_t end = tty.find('\r', at + 1);
+    lines.push_back(tty.substr(at + 4, end == std::string::npos ? end : end - at - 4));
+  }
+  ASSERT_GE(lines.size(), 5u) << tty.substr(0, 2000);
+  EXPECT_LE(static_cast<double>(lines.size()), 10.5 * seconds + 2) << seconds << " s";
+  double share = -1;
+  bool building = false;
+  for (const std::string& l : lines) {
+    int percent = 0;
+    if (std::sscanf(l.c_str(), "exbsp: building: %d%%", &percent) == 1) {
+      building = true;
+      EXPECT_GE(percent, share) << l;
+      share = percent;
+    }
+  }
+  EXPECT_TRUE(building) << "the build (several seconds with epeck) shows its share";
+  // The line is cleared before the summary.
+  EXPECT_NE(tty.find("\r\033[Kexbsp: wrote"), std::string::npos) << tty.substr(tty.size() - 300);
 }
 
 TEST(CliParse, values_sizes_drag_paths_and_suggestions) {

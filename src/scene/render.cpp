@@ -140,10 +140,26 @@ render_summary render_command(const render_request& request, std::ostream& log) 
       throw usage_error("render: --trackball must be arcball or virtual, got " + request.trackball);
     s.trackball = request.trackball;
   }
+  if (!request.edges.empty()) {
+    if (kind == view::output_kind::png)
+      throw usage_error("render: --edges applies to SVG and PDF output, not to " + out);
+    using edges_kind = view::vector_options::edges_kind;
+    bool known = false;
+    for (const edges_kind e : {edges_kind::none, edges_kind::visible, edges_kind::visible_hidden})
+      if (request.edges == view::to_string(e)) {
+        s.vector.edges = e;
+        known = true;
+      }
+    if (!known)
+      throw usage_error("render: --edges must be none, visible or visible+hidden, got " +
+                        request.edges);
+  }
   view::frame f = scene::make_frame(s);
   const double load_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   f.build.progress = request.progress;
+  f.on_stage = request.on_stage;
+  if (request.tree) f.tree = *request.tree;  // shared, not copied
   if (!request.kernel.empty()) f.build.kernel = parse_kernel(request.kernel);
   f.build.max_fragments = request.max_fragments;
   f.build.keep_input = false;  // a render never saves its tree: no copy of the soup
@@ -173,7 +189,7 @@ render_summary render_command(const render_request& request, std::ostream& log) 
         << "\n";
     log << "stage load: " << seconds_text(load_seconds)
         << " s (meshes read, transformed, appended into one soup)\n";
-    std::string names = orbit ? "build" : "reject, build";
+    std::string names = request.tree ? "adopt" : orbit ? "build" : "reject, build";
     for (const std::string& n : per_view.names()) names += ", " + n;
     if (f.view.needs_placement()) names += ", place";
     log << "stages: " << names << ", write\n";
@@ -181,9 +197,14 @@ render_summary render_command(const render_request& request, std::ostream& log) 
 
   if (!orbit) {
     view::pipeline p;
-    p.add("reject", view::mesh_reject_stage);
-    const view::pipeline standard = view::standard_pipeline(s.effects, kind, curves);
-    for (const view::stage& st : standard.stages()) p.add(st.name, st.run);
+    if (request.tree) {  // a saved tree: drawn as it is (no mesh is dropped before a build)
+      p.add("adopt", view::adopt_tree_stage);
+      for (const view::stage& st : per_view.stages()) p.add(st.name, st.run);
+    } else {
+      p.add("reject", view::mesh_reject_stage);
+      const view::pipeline standard = view::standard_pipeline(s.effects, kind, curves);
+      for (const view::stage& st : standard.stages()) p.add(st.name, st.run);
+    }
     if (f.view.needs_placement()) p.add("place", view::place_stage);
     const view::stage w = write_stage(out, format);
     p.add(w.name, w.run);
@@ -216,7 +237,10 @@ render_summary render_command(const render_request& request, std::ostream& log) 
     log << "orbit: " << views.size() << " frames along a drag of " << request.orbit_drag.size()
         << " points; one BSP build, one traversal per view\n";
   view::pipeline build;
-  build.add("build", view::build_stage);
+  if (request.tree)
+    build.add("adopt", view::adopt_tree_stage);
+  else
+    build.add("build", view::build_stage);
   run_stages(build, f, stage_log, s.path);
   note_build();
   // An error at frame k removes frames 0 .. k-1 of this run: no partial output.

@@ -45,6 +45,8 @@ struct render_request {
   std::size_t max_fragments = 0;
   /// Progress of the BSP build (build_options::progress); may be empty.
   std::function<void(const build_progress&)> progress;
+  /// Called with each pipeline stage's name as it starts (frame::on_stage); may be empty.
+  std::function<void(const std::string&)> on_stage;
   std::string output_path;  ///< .png, .svg or .pdf (by extension); "-": PNG on standard output
   bool verbose = false;     ///< print which pipeline stages ran, timings
   bool strict = false;      ///< unknown scene keys are errors (scene::load_scene), not warnings
@@ -54,6 +56,13 @@ struct render_request {
   std::string trackball;
   /// Orbit frames (0: one per drag point). Frame k is written to frame_path(output_path, k).
   std::size_t frames = 0;
+  /// A built tree of the scene's soup (`render T.exbsp`: a saved tree and
+  /// scene::mesh_scene(tree.input())): drawn as it is, not rebuilt ("adopt" replaces "reject"
+  /// and "build"); `kernel` and `max_fragments` do not apply.
+  std::optional<bsp> tree;
+  /// SVG/PDF edges, overriding the scene's "svg" "edges" (`--edges`): "none", "visible" or
+  /// "visible+hidden"; empty: the scene's.
+  std::string edges;
 };
 
 /// What a render did, for the one-line summary the command line prints.

@@ -46,6 +46,7 @@ std::vector<std::string> pipeline::names() const {
 
 void pipeline::run(frame& f, std::ostream* log) const {
   for (const stage& s : stages_) {
+    if (f.on_stage) f.on_stage(s.name);
     const auto t0 = std::chrono::steady_clock::now();
     const std::string note = s.run(f);
     const double seconds =

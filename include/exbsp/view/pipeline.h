@@ -60,6 +60,9 @@ struct frame {
   unsigned raster_threads = 1;
   vector_options vector;                ///< SVG / PDF: visible regions or painter's stack, edges
   vector_phase_seconds vector_seconds;  ///< svg / pdf stage (visible regions): phase times
+  /// Called with each stage's name as it starts (pipeline::run), e.g. for a progress line;
+  /// may be empty.
+  std::function<void(const std::string&)> on_stage;
 
   // Products.
   std::optional<bsp> tree;            ///< "build"

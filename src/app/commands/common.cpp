@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -96,22 +97,57 @@ void add_build_options(CLI::App* cmd, build_cli& o) {
       ->check(CLI::Range(0u, max_threads()));
 }
 
-progress_line::progress_line() : tty(::isatty(2) != 0) {}
+progress_line::progress_line(bool enabled)
+    : tty_(enabled && ::isatty(2) != 0), stage_start_(std::chrono::steady_clock::now()) {
+  if (tty_) ticker_ = std::thread([this] { tick(); });
+}
+
+progress_line::~progress_line() { finish(); }
 
 void progress_line::operator()(const build_progress& p) {
-  if (!tty || p.seconds < 1.0) return;
-  const double share =
-      p.fragments_total ? 100.0 * static_cast<double>(p.fragments_placed) / p.fragments_total : 0;
-  std::fprintf(stderr,
-               "\r\033[Kexbsp: building: %3.0f%% (%zu of %zu fragments placed), %zu nodes, %.1f s",
-               share, p.fragments_placed, p.fragments_total, p.nodes, p.seconds);
-  std::fflush(stderr);
-  shown = true;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (!have_build_) stage_ = "building";
+  have_build_ = true;
+  build_ = p;
+  if (p.fragments_total)
+    share_ = std::max(share_, 100.0 * static_cast<double>(p.fragments_placed) /
+                                  static_cast<double>(p.fragments_total));
+}
+
+void progress_line::stage(const std::string& name) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  stage_ = name == "build" ? "building" : name;
+  stage_start_ = std::chrono::steady_clock::now();
+  have_build_ = false;
+}
+
+void progress_line::tick() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (!wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return stop_; })) {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - stage_start_).count();
+    if (seconds < 1.0) continue;
+    if (have_build_ && stage_ == "building")
+      std::fprintf(stderr,
+                   "\r\033[Kexbsp: building: %3.0f%% (%zu of %zu fragments placed), %zu nodes, "
+                   "%.1f s",
+                   share_, build_.fragments_placed, build_.fragments_total, build_.nodes, seconds);
+    else
+      std::fprintf(stderr, "\r\033[Kexbsp: %s: %.1f s", stage_.c_str(), seconds);
+    std::fflush(stderr);
+    shown_ = true;
+  }
 }
 
 void progress_line::finish() {
-  if (shown) std::fprintf(stderr, "\r\033[K");
-  shown = false;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  if (ticker_.joinable()) ticker_.join();
+  if (shown_) std::fprintf(stderr, "\r\033[K");
+  shown_ = false;
 }
 
 namespace {

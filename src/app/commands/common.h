@@ -2,10 +2,14 @@
 // What several commands share: the mesh-or-saved-tree input with its build options (build,
 // order), option validators, the progress line, and the final check of standard output.
 #pragma once
+#include <chrono>
+#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <mutex>
 #include <string>
+#include <thread>
 
 #include <exbsp/bsp/engine.h>
 
@@ -46,15 +50,38 @@ void add_format_option(CLI::App* cmd, std::string& format);
 /// MESH, --format, --kernel, --heuristic, --seed, --max-fragments, --threads.
 void add_build_options(CLI::App* cmd, build_cli& o);
 
-/// Progress line on a terminal for builds that run longer than a second: the share of the
-/// fragments already placed at nodes (the total grows as triangles are split, so the share can
-/// step back a little), nodes and elapsed time.
-struct progress_line {
-  bool tty;
-  bool shown = false;
-  progress_line();
+/// The progress line on a terminal (standard error) for work that runs over a second: the
+/// stage running and its time, and during a build the share of fragments already placed at
+/// nodes, nodes and time. The share never goes backwards (the total grows as triangles are
+/// split, so the raw share can step back: the line shows the largest so far). A ticker thread
+/// redraws it at most 10 times a second; the callbacks only record the state, from any thread.
+class progress_line {
+ public:
+  /// `enabled`: false for --quiet; the line is drawn only when standard error is a terminal.
+  explicit progress_line(bool enabled = true);
+  ~progress_line();
+  progress_line(const progress_line&) = delete;
+  progress_line& operator=(const progress_line&) = delete;
+  /// A build's progress (build_options::progress).
   void operator()(const build_progress& p);
+  /// A stage starts (the render pipeline's stages: "build", "order", "svg", "write", ...).
+  void stage(const std::string& name);
+  /// Stops the ticker and clears the line; called again by the destructor.
   void finish();
+
+ private:
+  void tick();
+  bool tty_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false;
+  std::string stage_ = "building";
+  std::chrono::steady_clock::time_point stage_start_;
+  bool have_build_ = false;
+  build_progress build_{};
+  double share_ = 0;  ///< the largest share placed so far, in percent
+  bool shown_ = false;
+  std::thread ticker_;
 };
 
 /// The tree of `o.mesh`: built from the mesh (standard input for "-"), or loaded when it is a

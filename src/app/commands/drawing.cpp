@@ -117,8 +117,7 @@ class drawing_subcommand final : public command {
     if (!line_widths_.empty()) parse_line_widths(o);
     if (!kernel_.empty()) o.build.kernel = parse_kernel(kernel_);
     o.build.max_fragments = default_fragment_budget(o.build.kernel);
-    progress_line progress;
-    if (quiet_) progress.tty = false;
+    progress_line progress(!quiet_);
     o.build.progress = [&progress](const build_progress& p) { progress(p); };
     std::ostringstream quiet_log;
     scene::drawing_summary summary;

@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include <exbsp/bsp/engine.h>
 #include <exbsp/core/errors.h>
 #include "app/cli_parse.h"
 #include "app/commands/command.h"
@@ -32,7 +33,8 @@ class render_subcommand final : public command {
     sub->add_option(
         "INPUT", input_,
         "scene file (.json), or a mesh (.off, .obj, .ply, .stl; '-': standard input with "
-        "--format) drawn lit with a view fitted to its bounding box; omit for the built-in demo");
+        "--format) or a saved tree (.exbsp, from build --save: not rebuilt) drawn lit with a view "
+        "fitted to its bounding box; omit for the built-in demo");
     sub->add_option("-o,--output", output_,
                     "output " + output_extensions() + " ('-': PNG on standard output)")
         ->check(non_empty_path())
@@ -45,7 +47,8 @@ class render_subcommand final : public command {
     sub->add_option("--size", size_, "a mesh's image size WIDTHxHEIGHT in pixels")
         ->capture_default_str();
     sub->add_option("--edges", edges_,
-                    "a mesh's edges in SVG/PDF output: none, visible or visible+hidden")
+                    "edges in SVG/PDF output: none, visible or visible+hidden (a mesh's default: "
+                    "visible; on a scene it overrides \"svg\" \"edges\"; refused for PNG)")
         ->check(CLI::IsMember({"none", "visible", "visible+hidden"}))
         ->capture_default_str();
     sub->add_option("--kernel", kernel_, render_kernel_help())
@@ -75,6 +78,12 @@ class render_subcommand final : public command {
     render_request request{input_, output_, verbose_};
     request.strict = strict_;
     if (!orbit_drag_.empty()) request.orbit_drag = parse_drag_path(orbit_drag_);
+    // Every flag acts or is refused (issue 25): --frames only shapes an orbit, and 0 would
+    // mean nothing.
+    if (sub->count("--frames") > 0 && orbit_drag_.empty())
+      throw usage_error("--frames shapes an orbit: it needs --orbit-drag");
+    if (sub->count("--frames") > 0 && frames_ == 0)
+      throw usage_error("--frames must be at least 1 (omit it for one frame per drag point)");
     request.frames = frames_;
     request.trackball = trackball_;
     request.kernel = kernel_;
@@ -82,11 +91,21 @@ class render_subcommand final : public command {
                                 ? *max_fragments_
                                 : default_fragment_budget(kernel_.empty() ? build_options{}.kernel
                                                                           : parse_kernel(kernel_));
-    const bool mesh_input = !input_.empty() && !has_extension(input_, ".json");
-    if (!mesh_input && !format_.empty())
-      throw usage_error("--format applies to a mesh input, not to " +
-                        (input_.empty() ? std::string("the demo scene") : "the scene " + input_));
-    if (mesh_input) {
+    const bool scene_input = input_.empty() || has_extension(input_, ".json");
+    const std::string what = input_.empty() ? std::string("the demo scene") : "the scene " + input_;
+    if (scene_input) {
+      // A scene sets its own camera and viewport: --view and --size are a mesh's. --edges
+      // overrides the scene's "svg" "edges" (docs/contract.md "Command line").
+      if (!format_.empty()) throw usage_error("--format applies to a mesh input, not to " + what);
+      if (sub->count("--view") > 0)
+        throw usage_error("--view chooses a mesh's fitted view; " + what +
+                          " has its own \"camera\"");
+      if (sub->count("--size") > 0)
+        throw usage_error("--size sets a mesh's image size; " + what +
+                          " sets it in \"viewport\" (and \"image\")");
+      if (sub->count("--edges") > 0) request.edges = edges_;
+    } else {
+      if (sub->count("--edges") > 0) request.edges = edges_;  // refused for PNG output
       scene::mesh_view_options options;
       const auto size = parse_size(size_);
       options.width = size[0];
@@ -94,12 +113,24 @@ class render_subcommand final : public command {
       options.view = view_;
       options.edges = edges_;
       const std::string name = input_ == "-" ? "<stdin>" : input_;
-      auto soup = std::make_shared<const triangle_soup>(read_mesh_input(input_, format_, std::cin));
+      std::shared_ptr<const triangle_soup> soup;
+      if (format_.empty() && input_ != "-" && bsp::is_saved_tree(input_)) {
+        // A saved tree: drawn as it was built (docs/tree-file.md), never rebuilt.
+        bsp tree = bsp::load(input_);
+        if (!kernel_.empty() && parse_kernel(kernel_) != tree.kernel())
+          throw usage_error(input_ + " is a saved tree built with --kernel " +
+                            to_string(tree.kernel()) + "; --kernel " + kernel_ +
+                            " cannot change it (render the mesh instead)");
+        soup = std::make_shared<const triangle_soup>(tree.input());
+        request.tree = std::move(tree);
+      } else {
+        soup = std::make_shared<const triangle_soup>(read_mesh_input(input_, format_, std::cin));
+      }
       request.preloaded = scene::mesh_scene(std::move(soup), name, options);
     }
-    progress_line progress;
-    if (quiet_) progress.tty = false;
+    progress_line progress(!quiet_);
     request.progress = [&progress](const build_progress& p) { progress(p); };
+    request.on_stage = [&progress](const std::string& stage) { progress.stage(stage); };
     render_summary summary;
     try {
       summary = render_command(request, std::cerr);
