@@ -31,6 +31,9 @@ foreach(component ${EXBSP_COMPONENTS})
     DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/exbsp)
 endforeach()
 install(TARGETS exbsp RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(FILES ${PROJECT_BINARY_DIR}/src/app/exbsp.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+install(FILES ${PROJECT_BINARY_DIR}/src/app/exbsp.bash DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions
+  RENAME exbsp)
 
 # exbspConfig.cmake re-finds the libraries the requested components link (GMP and MPFR; for
 # the static render library also libpng, cairo and Clipper; for the static gpl library dxflib) with the same lookup files exbsp's

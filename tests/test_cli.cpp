@@ -637,6 +637,56 @@ TEST_F(Cli, the_progress_line_shows_long_stages_ten_times_a_second_and_never_goe
   EXPECT_NE(tty.find("\r\033[Kexbsp: wrote"), std::string::npos) << tty.substr(tty.size() - 300);
 }
 
+// The man page and bash completion come from the CLI11 definitions (src/app/cli_docs.h): every
+// command and every option of `--help` is in them, groff reads the page without a warning,
+// and bash completes commands, options and option values.
+TEST_F(Cli, the_man_page_and_bash_completion_list_every_command_and_option) {
+  const result man = run("--man");
+  ASSERT_EQ(man.status, 0) << man.err;
+  EXPECT_EQ(man.out.rfind(".TH EXBSP 1", 0), 0u);
+  const result completion = run("--bash-completion");
+  ASSERT_EQ(completion.status, 0) << completion.err;
+  for (const char* command : {"build", "order", "render", "section", "clip", "drawing"}) {
+    SCOPED_TRACE(command);
+    EXPECT_NE(man.out.find(std::string(".SH \"exbsp ") + command + "\""), std::string::npos);
+    // Every long option --help shows for the command is in both.
+    const result help = run(std::string(command) + " --help");
+    const std::regex long_option(R"(\n  (?:-\w,)?--([a-z][a-z-]*))");
+    std::size_t seen = 0;
+    for (std::sregex_iterator it(help.out.begin(), help.out.end(), long_option), end; it != end;
+         ++it, ++seen) {
+      const std::string name = (*it)[1].str();
+      std::string escaped;
+      for (char c : name) escaped += c == '-' ? std::string("\\-") : std::string(1, c);
+      EXPECT_NE(man.out.find("\\-\\-" + escaped), std::string::npos) << name;
+      EXPECT_NE(completion.out.find("--" + name), std::string::npos) << name;
+    }
+    EXPECT_GT(seen, 2u);
+  }
+  write("exbsp.1", man.out);
+  if (std::system("command -v groff >/dev/null") == 0) {
+    const std::string cmd =
+        "cd " + quoted(dir.string()) + " && groff -man -Tutf8 -ww -z exbsp.1 > groff.txt 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0);
+    EXPECT_EQ(read_file(dir / "groff.txt"), "") << "groff warnings";
+  }
+  write("exbsp.bash", completion.out);
+  const auto complete = [&](const std::string& words, int cword) {
+    const std::string script = "source exbsp.bash; COMP_WORDS=(" + words +
+                               "); COMP_CWORD=" + std::to_string(cword) +
+                               "; _exbsp; echo \"${COMPREPLY[*]}\"";
+    const std::filesystem::path out = dir / "completed.txt";
+    const std::string cmd = "cd " + quoted(dir.string()) + " && bash -c " + quoted(script) + " > " +
+                            quoted(out.string());
+    EXPECT_EQ(std::system(cmd.c_str()), 0);
+    return read_file(out);
+  };
+  EXPECT_EQ(complete("exbsp dr", 1), "drawing\n");
+  EXPECT_EQ(complete("exbsp render --ker", 2), "--kernel\n");
+  EXPECT_EQ(complete("exbsp build --kernel e", 3), "exact epeck epick\n");
+  EXPECT_EQ(complete("exbsp render --view f", 3), "front\n");
+}
+
 TEST(CliParse, values_sizes_drag_paths_and_suggestions) {
   using namespace exbsp::cli;
   EXPECT_EQ(parse_triple("1,2.5,-3", "--eye"), (exbsp::vec3d{1, 2.5, -3}));

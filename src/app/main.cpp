@@ -15,6 +15,7 @@
 #include <exbsp/core/errors.h>
 #include <exbsp/core/version.h>
 #include <exbsp/mesh/gmp_memory.h>
+#include "app/cli_docs.h"
 #include "app/cli_parse.h"
 #include "app/commands/command.h"
 #include "app/resources.h"
@@ -44,6 +45,10 @@ int main(int argc, char** argv) {
                        "print the version and exit");
   std::vector<std::unique_ptr<exbsp::cli::command>> made;
   for (const exbsp::cli::command_factory make : commands) made.push_back(make(app));
+  // Hidden (no group): the man page and bash completion, made from the definitions above.
+  bool man = false, completion = false;
+  app.add_flag("--man", man, "print the man page (roff)")->group("");
+  app.add_flag("--bash-completion", completion, "print a bash completion script")->group("");
 
   {
     std::vector<std::string> args(argv + 1, argv + argc);
@@ -68,6 +73,11 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (man || completion) {
+    std::cout << (man ? exbsp::cli::man_page(app) : exbsp::cli::bash_completion(app));
+    std::cout.flush();
+    return std::cout ? 0 : 2;
+  }
   exbsp::cli::command* chosen = nullptr;
   std::string names;
   for (std::size_t i = 0; i < made.size(); ++i) {
