@@ -15,7 +15,7 @@ MESHES = os.path.join(REPO, "data", "meshes")
 CAD = ["fandisk", "rotor", "pinion", "anchor_dense", "blade", "turbine", "couplingdown", "ALSTOM_TEST4",
        "b9_mesh", "spool", "part", "joint"]
 ORGANIC = ["elephant", "bunny00", "armadillo", "refined_elephant"]
-# DESIGN.md section 4: `exact` is the default kernel. epeck and gmpq are the other exact kernels
+# docs/contract.md "Command line": `exact` is the default kernel. epeck and gmpq are the other exact kernels
 # (same tree, byte-identical orders), double and epick the inexact ones.
 DEFAULT_KERNEL = "exact"
 KERNELS = ["double", "epick", "exact", "epeck", "gmpq"]

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Exact defect counts of a built tree: how far an inexact kernel's tree is from the exact
-// contract (DESIGN.md section 3). The checks are the tests' exact tree checker
+// contract (docs/contract.md "The BSP"). The checks are the tests' exact tree checker
 // (tests/support/tree_checker.h), run on large trees: the tree is copied exactly into Epeck
 // (a double is a rational), every test is exact, no epsilon anywhere. The Epeck tree is
 // checked the same way (it must have 0 defects: a control of the checker).

@@ -4,7 +4,7 @@ data, none typed in) and the method notes. No measurement and no plotting here (
 plots.py); every function takes the loaded rows and returns markdown, so the report can be
 rewritten from old raw data (`bench/run.py --report-only`) and unit-checked (test_report.py).
 
-Kernels: `exact` is the default (DESIGN.md section 4); the goals and readings are about it, with
+Kernels: `exact` is the default (docs/contract.md "Command line"); the goals and readings are about it, with
 Epeck (CGAL's lazy exact kernel, the same tree) beside it."""
 import json
 import os

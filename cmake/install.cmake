@@ -13,7 +13,10 @@
 include(CMakePackageConfigHelpers)
 set(EXBSP_INSTALL_EXCLUDE)
 if(NOT EXBSP_HAVE_OPENMESH)
-  set(EXBSP_INSTALL_EXCLUDE PATTERN openmesh.h EXCLUDE)
+  list(APPEND EXBSP_INSTALL_EXCLUDE PATTERN openmesh.h EXCLUDE)
+endif()
+if(NOT EXBSP_BUILD_RENDER)  # no render library: no view headers, and exbsp.h includes them
+  list(APPEND EXBSP_INSTALL_EXCLUDE PATTERN view EXCLUDE PATTERN exbsp.h EXCLUDE)
 endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/exbsp ${PROJECT_BINARY_DIR}/include/exbsp
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h" ${EXBSP_INSTALL_EXCLUDE})
@@ -30,10 +33,12 @@ foreach(component ${EXBSP_COMPONENTS})
   install(EXPORT exbsp_${component}_targets NAMESPACE exbsp:: FILE exbsp_${component}_targets.cmake
     DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/exbsp)
 endforeach()
-install(TARGETS exbsp RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(FILES ${PROJECT_BINARY_DIR}/src/app/exbsp.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
-install(FILES ${PROJECT_BINARY_DIR}/src/app/exbsp.bash DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions
-  RENAME exbsp)
+if(EXBSP_BUILD_RENDER)
+  install(TARGETS exbsp RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(FILES ${PROJECT_BINARY_DIR}/src/app/exbsp.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+  install(FILES ${PROJECT_BINARY_DIR}/src/app/exbsp.bash
+    DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME exbsp)
+endif()
 
 # exbspConfig.cmake re-finds the libraries the requested components link (GMP and MPFR; for
 # the static render library also libpng, cairo and Clipper; for the static gpl library dxflib) with the same lookup files exbsp's
@@ -42,6 +47,8 @@ install(FILES ${PROJECT_BINARY_DIR}/src/app/exbsp.bash DESTINATION ${CMAKE_INSTA
 set(EXBSP_PACKAGE_STATIC ON)
 set(EXBSP_PACKAGE_SHARED ${EXBSP_BUILD_SHARED})
 set(EXBSP_PACKAGE_OPENMESH ${EXBSP_HAVE_OPENMESH})
+set(EXBSP_PACKAGE_RENDER ${EXBSP_BUILD_RENDER})
+string(REPLACE ";" " " EXBSP_PACKAGE_COMPONENTS "${EXBSP_COMPONENTS}")
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/exbspConfig.cmake.in
   ${PROJECT_BINARY_DIR}/exbspConfig.cmake INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/exbsp)
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/exbspConfigVersion.cmake

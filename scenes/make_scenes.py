@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: LGPL-3.0-or-later
 """Writes the example scenes (scenes/*.json) and their small OFF meshes (scenes/meshes/).
 
-Meshes are drawn flat and unlit in their mesh colour (DESIGN.md section 5), so to keep the
+Meshes are drawn flat and unlit in their mesh colour (docs/contract.md "Scenes"), so to keep the
 solids readable every part is stored as up to six OFF files, one per direction its faces
 face (the dominant axis of the local normal: px, nx, py, ny, pz, nz), and the scenes give
 each file a shade of the part's colour ("baked" direction shading). All the files of a scene

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the mesh adapters (src/adapters/): OpenMesh TriMesh / PolyMesh and CGAL FaceGraphs
-// (Surface_mesh, Polyhedron_3) to a triangle_soup (fan triangulation and face ids as DESIGN.md
-// section 2), and BSP fragments and sections back to those meshes (face ids kept, every
-// triangle a face, shared vertices where the mesh allows). Degenerate cases first.
+// (Surface_mesh, Polyhedron_3) to a triangle_soup (fan triangulation and face ids as
+// docs/contract.md section 2), and BSP fragments and sections back to those meshes (face ids kept,
+// every triangle a face, shared vertices where the mesh allows). Degenerate cases first.
 #include <gtest/gtest.h>
 
 // OpenMesh's PropertyT::push_back copies an uninitialised VectorT; GCC 12 reports that
@@ -168,7 +168,7 @@ TEST(OpenMeshToSoup, PolygonsAreFanTriangulatedWithFaceIds) {
   const triangle_soup s = exbsp::openmesh::soup_from_mesh(m);
   ASSERT_EQ(s.face_count, 3u);
   ASSERT_EQ(s.triangles.size(), 3u + 1u + 2u);
-  // Reference: the same polygons through triangle_soup::add_polygon (DESIGN.md section 2).
+  // Reference: the same polygons through triangle_soup::add_polygon (docs/contract.md "Input").
   triangle_soup ref;
   ref.vertices = s.vertices;
   for (const auto f : m.faces()) {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
-// Checks of the exbsp command line (DESIGN.md sections 2 and 4), run as a separate process
-// (EXBSP_CLI) in a fresh temporary directory: bad input exits 2 naming file and line and
+// Checks of the exbsp command line (docs/contract.md "Input" and "Command line"), run as a separate
+// process (EXBSP_CLI) in a fresh temporary directory: bad input exits 2 naming file and line and
 // writes nothing; `build --json` has every documented key; `order` JSON has the eye or the
 // direction, faces, 17-digit doubles and reduced exact rationals whose nearest double is the
 // printed one, in the library's order; --max-fragments exits 3 with no output; bad option
@@ -559,6 +559,11 @@ TEST_F(Cli, render_of_a_saved_tree_gives_the_bytes_of_the_mesh_without_a_build) 
     EXPECT_EQ(read_file(dir / ("mesh." + ext)), read_file(dir / ("tree." + ext)));
     EXPECT_NE(b.err.find("stage adopt:"), std::string::npos) << b.err;
     EXPECT_EQ(b.err.find("stage build:"), std::string::npos) << "a saved tree is not rebuilt";
+  }
+  for (const char* steer : {"--threads 1", "--max-fragments 10"}) {
+    const result r = run(std::string("order t.exbsp --eye 1,2,3 -o o.json ") + steer);
+    EXPECT_EQ(r.status, 2) << steer;
+    EXPECT_NE(r.err.find("steers a build; t.exbsp is a saved tree"), std::string::npos) << r.err;
   }
   const result kernel = run("render t.exbsp --kernel epeck -o k.png");
   EXPECT_EQ(kernel.status, 2);

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // exbsp's own exact kernel (`exact`, geometry_exact.h): its three ways of answering a side
 // test each on points built to sit exactly on a plane and one ulp off it, and the contract
-// that it gives the same tree and byte-identical orders as gmpq and epeck (DESIGN.md section 3)
-// on every generator of the property suite and on the CGAL corpus.
+// that it gives the same tree and byte-identical orders as gmpq and epeck (docs/contract.md "The
+// BSP") on every generator of the property suite and on the CGAL corpus.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 

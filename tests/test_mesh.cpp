@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
-// Tests of the mesh module: the triangle soup and the OFF/OBJ/PLY/STL readers (DESIGN.md
+// Tests of the mesh module: the triangle soup and the OFF/OBJ/PLY/STL readers (docs/contract.md
 // section 2). Samples live in tests/data/ and the malformed corpus in tests/data/bad/ with its
 // manifest EXPECTED.tsv; tests/data/make_samples.py writes both. OpenMesh serves as an
 // independent oracle for the well-formed samples (counts, and coordinates to float precision)

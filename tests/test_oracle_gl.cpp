@@ -14,7 +14,7 @@
 // pixel centre.
 //
 // Tie rule: for pixel centres exactly on an edge, Mesa (llvmpipe) owns left edges, as
-// DESIGN.md section 6 does, but BOTTOM edges in GL window coordinates where exbsp owns TOP
+// docs/contract.md "Pixels" does, but BOTTOM edges in GL window coordinates where exbsp owns TOP
 // edges; the edge-aligned top view below checks that mirroring y makes the two identical.
 //
 // Coplanar faces that overlap (z-fighting) have no z-buffer answer: such meshes are marked as
@@ -230,7 +230,7 @@ struct oracle_options {
   /// Mesa draws the scene upside down (y_ndc negated) and the image is flipped back. Mesa
   /// (llvmpipe) breaks ties of pixel centres exactly on a horizontal edge by owning BOTTOM
   /// edges in GL window coordinates (the top-left rule applied to its buffer, whose row 0 is
-  /// the window's bottom row), whereas DESIGN.md section 6 owns TOP edges (y up); mirrored,
+  /// the window's bottom row), whereas docs/contract.md "Pixels" owns TOP edges (y up); mirrored,
   /// Mesa's rule becomes exbsp's. Left edges are owned by both either way.
   bool mirror_y = false;
   double required = required_agreement;
@@ -659,10 +659,11 @@ TEST(OracleGL, CoplanarTouchingFacesFromAboveWithEdgesThroughPixelCentresMatchMe
   // Tie rules are the rasterizer's choice; the exact agreement is known for llvmpipe (Mesa's
   // default). Other drivers (GALLIUM_DRIVER=softpipe) only have to pass the check above.
   if (mesa_renderer().rfind("llvmpipe", 0) == 0)
-    EXPECT_EQ(std::max(as_is, mirrored), 1.0)
-        << "with every edge exactly on pixel centres, exbsp's top-left rule (DESIGN.md section 6) "
-           "should equal "
-           "llvmpipe's tie rule in one orientation";
+    EXPECT_EQ(std::max(as_is, mirrored), 1.0) << "with every edge exactly on pixel centres, "
+                                                 "exbsp's top-left rule (docs/contract.md " Pixels
+                                                 ") "
+                                                 "should equal "
+                                                 "llvmpipe's tie rule in one orientation";
   else
     std::cout << "oracle_gl: renderer \"" << mesa_renderer()
               << "\" is not llvmpipe: its tie rule is not checked\n";

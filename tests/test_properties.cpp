@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
-// RapidCheck properties of the exact BSP (DESIGN.md sections 2 and 3), checked in exact
+// RapidCheck properties of the exact BSP (docs/contract.md "Input" and "The BSP"), checked in exact
 // arithmetic: fragments in their source planes with the same orientation, exact tilings of
 // every source, correct sides of every ancestor plane, consistent statistics, back-to-front
 // orders that are correct along exact rays (eyes on node planes and at split points
@@ -91,7 +91,8 @@ EP ref_cut(const etri& plane, const EP& p, const EP& q) {
   return p + (q - p) * (fp / (fp - fq));
 }
 
-/// DESIGN.md section 3, literally: classify, split in the stated piece order, keep list order.
+/// docs/contract.md "The BSP", literally: classify, split in the stated piece order, keep list
+/// order.
 std::unique_ptr<ref_node> ref_build(std::vector<ref_fragment> list, bool min_split, ref_tree& t,
                                     std::size_t depth) {
   if (list.empty()) return nullptr;

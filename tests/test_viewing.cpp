@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
-// Modelling and viewing from scene files (DESIGN.md section 5, issue 12): "transforms" lists and
-// nested "groups" on the matrix stack, the camera forms (position/look/up, polar, pilot, PHIGS)
+// Modelling and viewing from scene files (docs/contract.md "Scenes", issue 12): "transforms" lists
+// and nested "groups" on the matrix stack, the camera forms (position/look/up, polar, pilot, PHIGS)
 // checked against GLM and against the formulas' defining properties, viewport x/y inside an
 // image, aspect stretch/fit, glOrtho with a negative near, ortho2d, "lines" with both clippers,
 // the bounding-box mesh reject, and the virtual trackball. Bad input: exit 2, key named,

@@ -4,7 +4,7 @@
 //
 //   node bsp_peers.js MESH.off [MESH.off ...] [--repeat N] [--cap SECONDS]
 //
-// Notation: a "triangle" is one input triangle after exbsp's loading rules (DESIGN.md §2:
+// Notation: a "triangle" is one input triangle after exbsp's loading rules (docs/contract.md §2:
 // faces fan-triangulated from their first vertex, exactly collinear triangles skipped); a
 // "piece" is one polygon stored in a node of the built tree (both libraries store convex
 // polygons, split further as the tree grows); "pieces_triangulated" counts a stored k-gon as
@@ -90,7 +90,7 @@ function read_off(file) {
       if (v >= nv) fail(`face ${f}: vertex index ${v} out of range (${nv} vertices)`);
       idx.push(v);
     }
-    for (let j = 1; j + 1 < k; j++) {           // fan from the first vertex (DESIGN.md §2)
+    for (let j = 1; j + 1 < k; j++) {           // fan from the first vertex (docs/contract.md §2)
       const t = [idx[0], idx[j], idx[j + 1]];
       const p = [];
       for (const v of t) p.push(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);

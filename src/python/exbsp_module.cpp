@@ -647,8 +647,10 @@ PYBIND11_MODULE(_exbsp, m) {
           },
           py::kw_only(), py::arg("eye") = py::none(), py::arg("direction") = py::none(),
           py::arg("back_to_front") = true,
-          "Fragment indices back to front (or front to back) for an eye point or a direction of "
-          "projection.")
+          "Fragment indices (uint32 array) back to front, or front to back, for a perspective "
+          "view from eye=(x, y, z) or a parallel view along direction=(x, y, z) (from the eye "
+          "into the scene): paint fragments() in this order. Exact: the same order on every "
+          "machine. Give exactly one of eye and direction.")
       .def(
           "fragments",
           [](py::handle self) {
@@ -725,10 +727,35 @@ PYBIND11_MODULE(_exbsp, m) {
         py::arg("score") = py::none(), py::arg("candidates") = "all",
         py::arg("sampled") = std::array<unsigned, 3>{16, 512, 8}, py::arg("threads") = py::none(),
         py::arg("max_fragments") = 0, py::arg("face_ids") = py::none(),
-        "Builds the exact BSP tree of a mesh; see docs/python.md.");
+        R"doc(Builds the exact BSP tree of a mesh.
+
+vertices: (n, 3) float64 (anything numpy converts); the doubles are the exact input.
+faces: (m, k) integer array (k >= 3) or a list of polygons of any lengths; polygons are
+    fan-triangulated from their first vertex.
+kernel: 'exact' (default), 'epeck' or 'gmpq' (the same tree, exactly), 'epick' or 'double'
+    (rounded split points: to see what rounding does).
+heuristic: one of HEURISTICS ('naive', 'min-split', 'sampled', 'random'); None: the default
+    ('sampled'), or 'custom' when `score` is given.
+seed: seed of the randomised heuristics; the same seed gives the same tree everywhere.
+score: a function Candidate -> float; the lowest score splits each node (ties to the earliest
+    candidate). Called from the build's threads: it must depend on its input only.
+candidates: 'all' (every fragment, counted over the node's list) or 'sampled' (the sampled
+    heuristic's candidates, counted on its sample), for `score`.
+sampled: (candidates, samples, split_weight) of the sampled heuristic (16, 512, 8).
+threads: worker threads (0: all cores); None: all cores, or one when `score` is given.
+max_fragments: raise LimitError beyond this many fragments (0: no limit).
+face_ids: (m,) face id of each row of `faces` (default: the row), e.g. read_mesh's third array.
+
+Returns a Tree. Raises UsageError (bad argument) or LimitError; degenerate triangles are
+skipped and counted in tree.stats['degenerate_input']. The GIL is released while it builds.
+See docs/python.md.)doc");
   m.def("section", &section, py::arg("vertices"), py::arg("faces"), py::arg("plane"), py::kw_only(),
         py::arg("cap") = true, py::arg("exact") = true, py::arg("face_ids") = py::none(),
-        "Cuts a mesh exactly by the plane A*x + B*y + C*z + D = 0, keeping >= 0; see "
+        "Cuts a mesh exactly by the plane A*x + B*y + C*z + D = 0 (plane=(A, B, C, D)), keeping "
+        "the side where it is >= 0. Returns a dict: points (p, 3) float64, exact (p points as "
+        "Fractions, when exact=True), kept (q, 3) indices with kept_faces, outline (loops and "
+        "chains of point indices), cap (closed input, when cap=True) with cap_face, closed, "
+        "plane, stats. See "
         "docs/python.md.");
   m.def(
       "load",

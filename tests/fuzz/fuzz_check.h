@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Shared oracle of the exbsp fuzz targets (tests/fuzz/README.md).
 //
-// A target feeds one input to a parser inside run_guarded(). The contract (DESIGN.md
+// A target feeds one input to a parser inside run_guarded(). The contract (docs/contract.md
 // sections 2, 5, 7): bad input is reported by throwing exbsp::error or a subclass; the
 // library never aborts. So exbsp::error is the only accepted exception: any other exception,
 // a failed invariant (require), a sanitizer report, a crash or a timeout is a finding, and

@@ -3,7 +3,7 @@
 // complete contents of a mesh file, read with read_mesh_data (mesh/mesh_io.h).
 //
 // Oracle, besides "exbsp::error or nothing" (fuzz_check.h), for every soup a reader accepts
-// (DESIGN.md section 2):
+// (docs/contract.md "Input"):
 //   - source is the name given; every coordinate is finite; every index is in range;
 //   - faces are kept in file order and none is dropped: the face ids of the triangles run
 //     0, 0, ..., 1, ..., face_count - 1 without a gap (a face of k vertices gives k - 2 >= 1

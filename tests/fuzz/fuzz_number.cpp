@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // libFuzzer target: the number parsing every mesh reader relies on (mesh/reader_util.h),
-// checked against an independent oracle. DESIGN.md section 2: "a coordinate in a file means
+// checked against an independent oracle. docs/contract.md "Input": "a coordinate in a file means
 // the IEEE double nearest to its decimal text". One input = one token.
 //
 // parse_double(token):

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
-// libFuzzer target: the scene parser (scene/scene.h, DESIGN.md section 5). One input = the
+// libFuzzer target: the scene parser (scene/scene.h, docs/contract.md "Scenes"). One input = the
 // text of a scene file. Nothing is rendered.
 //
 // Per input:

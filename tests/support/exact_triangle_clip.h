@@ -4,7 +4,7 @@
 // test_clip and against the section's pieces in test_section. Test support only, not in the
 // library.
 //
-// Notation (DESIGN.md section 3): a cut plane is three points (a, b, c); its positive side
+// Notation (docs/contract.md "The BSP"): a cut plane is three points (a, b, c); its positive side
 // is where (b - a) x (c - a) points, i.e. p is on the positive side when
 // CGAL::orientation(a, b, c, p) == POSITIVE. Clipping keeps the closed positive side.
 // A triangle's vertex signs decide: all 0 -> coplanar (kept, it lies in the closed positive

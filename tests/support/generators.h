@@ -4,7 +4,7 @@
 // a generated soup with every heuristic and fails the property on any broken invariant
 // (the checker itself: tree_checker.h).
 //
-// Notation (DESIGN.md section 3): triangle (a,b,c), normal n = (b-a)x(c-a). Generators and
+// Notation (docs/contract.md "The BSP"): triangle (a,b,c), normal n = (b-a)x(c-a). Generators and
 // pick_* must be dereferenced inside a RapidCheck generation context (a property or
 // rc::gen::exec).
 #pragma once

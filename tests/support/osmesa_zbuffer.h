@@ -6,8 +6,8 @@
 // Notation: matrices are given row by row (as view::mat4) and loaded into OpenGL column-major;
 // window coordinates as OpenGL (y up); images as view::image (row 0 = top).
 // Tie rule: Mesa (llvmpipe) owns left and BOTTOM edges in GL window coordinates, exbsp
-// (DESIGN.md section 6) left and TOP edges; zbuffer_scene::mirror_y draws the scene upside down
-// (y_ndc negated, the winding of culled faces reversed) and flips the buffer back, which turns
+// (docs/contract.md "Pixels") left and TOP edges; zbuffer_scene::mirror_y draws the scene upside
+// down (y_ndc negated, the winding of culled faces reversed) and flips the buffer back, which turns
 // Mesa's rule into exbsp's (test_oracle_gl.cpp checks this on edges through pixel centres).
 //
 // Include in ONE translation unit per program: it defines LeakSanitizer's default suppressions.

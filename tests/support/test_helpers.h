@@ -39,7 +39,7 @@ void write_file(const std::filesystem::path& p, const std::string& text);
 /// A new, empty directory /tmp/exbsp_NAME_XXXXXX (mkdtemp); throws std::runtime_error.
 std::filesystem::path make_temp_dir(const std::string& name);
 
-/// Sets RC_PARAMS to a fixed RapidCheck seed (DESIGN.md section 7) unless the environment
+/// Sets RC_PARAMS to a fixed RapidCheck seed (docs/contract.md "Input") unless the environment
 /// already sets it; for a namespace-scope initialiser: `const bool seeded = fixed_rc_seed();`.
 bool fixed_rc_seed();
 

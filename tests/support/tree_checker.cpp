@@ -222,8 +222,8 @@ bool edge_separates(const std::array<typename E::Point_3, 3>& t,
   return false;
 }
 
-/// The contract's traversal (DESIGN.md section 3), evaluated exactly on the view. Written again
-/// on purpose, not bsp_tree::traverse: an oracle must not share the code it checks.
+/// The contract's traversal (docs/contract.md "The BSP"), evaluated exactly on the view. Written
+/// again on purpose, not bsp_tree::traverse: an oracle must not share the code it checks.
 template <class E>
 std::vector<std::uint32_t> reference_order(const tree_view<E>& v, const viewpoint<E>& vp) {
   std::vector<std::uint32_t> out;

@@ -4,7 +4,7 @@
 // (bench/defects.cpp: how many items an inexact kernel's tree breaks). Compiled once, in
 // tree_checker.cpp, for the CGAL kernels double, Epick, Epeck and Gmpq.
 //
-// Notation (DESIGN.md section 3): triangle (a,b,c), normal n = (b-a)x(c-a), f(p) = sign of
+// Notation (docs/contract.md "The BSP"): triangle (a,b,c), normal n = (b-a)x(c-a), f(p) = sign of
 // orientation(a,b,c,p). A "view" is a copy of a built tree in an exact kernel E: for the exact
 // kernels (Epeck, Gmpq) E is the kernel itself and nothing is converted; for the inexact ones
 // (double, Epick) the rounded output is converted exactly into Epeck, so every invariant is

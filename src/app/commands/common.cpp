@@ -154,7 +154,7 @@ namespace {
 
 /// A saved tree (docs/tree-file.md): --kernel, --heuristic and --seed may only repeat what the
 /// tree was built with (they cannot change a built tree); --threads and --max-fragments, which
-/// only steer a build, are ignored.
+/// only steer a build, are refused (a flag acts or is refused, never ignored).
 bsp load_tree(const build_cli& o, double* load_seconds) {
   const auto start = std::chrono::steady_clock::now();
   bsp tree = bsp::load(o.mesh);
@@ -167,6 +167,10 @@ bsp load_tree(const build_cli& o, double* load_seconds) {
       throw usage_error(o.mesh + " is a saved tree built with " + option + " " + saved + "; " +
                         option + " " + given + " cannot change it (build from the mesh instead)");
   };
+  for (const char* option : {"--threads", "--max-fragments"})
+    if (o.command && o.command->count(option))
+      throw usage_error(std::string(option) + " steers a build; " + o.mesh +
+                        " is a saved tree, loaded, not rebuilt");
   conflict("--kernel", o.kernel, s.kernel);
   conflict("--heuristic", o.heuristic, s.heuristic);
   conflict("--seed", std::to_string(o.seed), std::to_string(s.seed));
