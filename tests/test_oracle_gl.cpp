@@ -659,11 +659,9 @@ TEST(OracleGL, CoplanarTouchingFacesFromAboveWithEdgesThroughPixelCentresMatchMe
   // Tie rules are the rasterizer's choice; the exact agreement is known for llvmpipe (Mesa's
   // default). Other drivers (GALLIUM_DRIVER=softpipe) only have to pass the check above.
   if (mesa_renderer().rfind("llvmpipe", 0) == 0)
-    EXPECT_EQ(std::max(as_is, mirrored), 1.0) << "with every edge exactly on pixel centres, "
-                                                 "exbsp's top-left rule (docs/contract.md " Pixels
-                                                 ") "
-                                                 "should equal "
-                                                 "llvmpipe's tie rule in one orientation";
+    EXPECT_EQ(std::max(as_is, mirrored), 1.0)
+        << "with every edge exactly on pixel centres, exbsp's top-left rule (docs/contract.md "
+           "\"Pixels\") should equal llvmpipe's tie rule in one orientation";
   else
     std::cout << "oracle_gl: renderer \"" << mesa_renderer()
               << "\" is not llvmpipe: its tie rule is not checked\n";
