@@ -189,9 +189,9 @@ frame tree_frame(const bsp& tree, const fitted_view& view, int width, int height
   f.settings.lighting.ambient = 0.3;
   f.settings.lighting.intensity = 0.7;
   adopt_tree_stage(f);
-  std::uint32_t faces = 0;
-  for (const fragment_d& fr : f.fragments) faces = std::max(faces, fr.face + 1);
-  f.face_colors.assign(faces, style.color);
+  // One colour for every face: the default, not a table by face id (ids may be sparse and
+  // large: a caller's face_ids).
+  f.default_color = style.color;
   return f;
 }
 

@@ -48,6 +48,7 @@ struct frame {
   triangle_soup soup;             ///< all meshes, transformed to world space, appended
   build_options build;            ///< BSP options (default: the exact kernel, default heuristic)
   std::vector<rgb8> face_colors;  ///< colour by face id of `soup`
+  rgb8 default_color{160, 160, 160};  ///< the colour of a face id beyond face_colors
   view_setup view;
   rgb8 background{255, 255, 255};
   effect_settings settings;        ///< parameters of the named effects (the others are ignored)
@@ -89,9 +90,9 @@ struct frame {
       0;  ///< fragments with a NaN or infinite corner (inexact kernels), left out
   std::vector<std::size_t> rejected_meshes;  ///< "reject": meshes dropped by their bounding boxes
 
-  /// Colour of a face id (grey when the id has no colour).
+  /// Colour of a face id (default_color when the id has no colour).
   rgb8 color_of(std::uint32_t face) const {
-    return face < face_colors.size() ? face_colors[face] : rgb8{160, 160, 160};
+    return face < face_colors.size() ? face_colors[face] : default_color;
   }
   /// Mesh index of a face id (mesh_face_offsets: first face of mesh k; mesh 0 when empty).
   std::uint32_t mesh_of(std::uint32_t face) const {
