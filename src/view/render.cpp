@@ -204,13 +204,19 @@ vector_options::edges_kind edges_named(const std::string& name) {
                     "'");
 }
 
+/// The painted frame of render_tree: its picture and its back-to-front order.
+frame painted(const bsp& tree, const fitted_view& view, int width, int height,
+              const render_style& style) {
+  frame f = tree_frame(tree, view, width, height, style);
+  per_view_pipeline({"lighting"}, output_kind::png).run(f, nullptr);
+  return f;
+}
+
 }  // namespace
 
 image render_tree(const bsp& tree, const fitted_view& view, int width, int height,
                   const render_style& style) {
-  frame f = tree_frame(tree, view, width, height, style);
-  per_view_pipeline({"lighting"}, output_kind::png).run(f, nullptr);
-  return std::move(f.picture);
+  return std::move(painted(tree, view, width, height, style).picture);
 }
 
 std::string render_tree_svg(const bsp& tree, const fitted_view& view, int width, int height,
@@ -228,10 +234,10 @@ std::string render_tree_svg(const bsp& tree, const fitted_view& view, int width,
 render_result render_soup(const triangle_soup& soup, const render_options& options) {
   const fitted_view fitted = fit_view(soup, options.width, options.height, options.view);
   bsp tree = bsp::build(soup, options.build);
-  image picture =
-      render_tree(tree, fitted, options.width, options.height, {options.color, options.background});
-  std::vector<std::uint32_t> order = tree.order_from_eye(to_vec3d(fitted.cam.eye));
-  return {std::move(picture), std::move(tree), std::move(order), fitted};
+  // One traversal: the picture and the order come from the same painted frame.
+  frame f =
+      painted(tree, fitted, options.width, options.height, {options.color, options.background});
+  return {std::move(f.picture), std::move(tree), std::move(f.order), fitted};
 }
 
 }  // namespace exbsp::view

@@ -93,6 +93,7 @@ class render_subcommand final : public command {
                                                                           : parse_kernel(kernel_));
     const bool scene_input = input_.empty() || has_extension(input_, ".json");
     const std::string what = input_.empty() ? std::string("the demo scene") : "the scene " + input_;
+    if (sub->count("--edges") > 0) request.edges = edges_;  // refused for PNG output
     if (scene_input) {
       // A scene sets its own camera and viewport: --view and --size are a mesh's. --edges
       // overrides the scene's "svg" "edges" (docs/contract.md "Command line").
@@ -103,9 +104,7 @@ class render_subcommand final : public command {
       if (sub->count("--size") > 0)
         throw usage_error("--size sets a mesh's image size; " + what +
                           " sets it in \"viewport\" (and \"image\")");
-      if (sub->count("--edges") > 0) request.edges = edges_;
     } else {
-      if (sub->count("--edges") > 0) request.edges = edges_;  // refused for PNG output
       scene::mesh_view_options options;
       const auto size = parse_size(size_);
       options.width = size[0];
