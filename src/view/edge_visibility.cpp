@@ -32,14 +32,17 @@ class occluder_grid {
     const triangle_soup& s = f.soup;
     const mat4 pm = f.view.projection * f.view.model_view;
     // Window position of every vertex; w <= 0: at or behind the eye.
-    std::vector<window_point> win(s.vertices.size());
+    std::vector<window_point>& win = win_;
+    win.resize(s.vertices.size());
     std::vector<char> ahead(s.vertices.size());
     for (std::size_t i = 0; i < s.vertices.size(); ++i) {
       const hpoint h = pm * to_point(s.vertices[i]);
       ahead[i] = h.w > 0 && std::isfinite(h.w);
       if (ahead[i]) win[i] = to_window(vp_, h.x / h.w, h.y / h.w, h.z / h.w);
     }
+    soup_ = &s;
     std::vector<std::array<int, 4>> range(s.triangles.size(), {0, -1, 0, -1});
+    screened_.assign(s.triangles.size(), 0);
     std::vector<std::uint32_t> count(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
       if (features.facing[t] == 0) continue;  // edge-on or degenerate: hides nothing
@@ -60,6 +63,9 @@ class occluder_grid {
       const std::array<int, 4> r = cells_of(x0, x1, y0, y1);
       if (r[1] < r[0] || r[3] < r[2]) continue;  // outside the viewport
       range[t] = r;
+      // Images this far out are kept without the image test (their rounding is not small).
+      const double far = std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
+      screened_[t] = far < max_screened;
       for (int cy = r[2]; cy <= r[3]; ++cy)
         for (int cx = r[0]; cx <= r[1]; ++cx) ++count[index(cx, cy) + 1];
     }
@@ -75,11 +81,16 @@ class occluder_grid {
     stamp_.assign(s.triangles.size(), 0);
   }
 
-  /// The candidates for the window segment (a, b): each triangle once.
+  /// The candidates for the window segment (a, b): each triangle once, without those whose
+  /// image lies apart from the segment's (image_apart).
   void gather(const window_point& a, const window_point& b, std::vector<std::uint32_t>& out) {
     out.clear();
     ++round_;
     for (std::uint32_t t : everywhere_) take(t, out);
+    seg_a_ = a;
+    seg_b_ = b;
+    seg_screened_ =
+        std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)}) < max_screened;
     const double y0 = std::min(a.y, b.y), y1 = std::max(a.y, b.y);
     const std::array<int, 4> rows = cells_of(std::min(a.x, b.x), std::max(a.x, b.x), y0, y1);
     for (int cy = rows[2]; cy <= rows[3]; ++cy) {
@@ -121,10 +132,52 @@ class occluder_grid {
   void take(std::uint32_t t, std::vector<std::uint32_t>& out) {
     if (stamp_[t] == round_) return;
     stamp_[t] = round_;
+    if (seg_screened_ && screened_[t] && image_apart(t)) return;
     out.push_back(t);
   }
 
+  /// True when a line (the segment's, or one through a side of triangle t's image) has the
+  /// segment's image on one side and t's on the other, more than `margin` apart. A point of
+  /// the edge that t hides projects into t's image, so then t hides none of it. A test in
+  /// doubles, hence the margin: the images are rounded by far less than it (max_screened).
+  bool image_apart(std::uint32_t t) const {
+    const auto& v = soup_->triangles[t].v;
+    const window_point p[3] = {win_[v[0]], win_[v[1]], win_[v[2]]};
+    const window_point &a = seg_a_, &b = seg_b_;
+    // Signed distance times the length of (u, w), of q from the line u -> w.
+    auto side = [](const window_point& u, const window_point& w, const window_point& q) {
+      return (w.x - u.x) * (q.y - u.y) - (w.y - u.y) * (q.x - u.x);
+    };
+    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    if (len > 0) {
+      const double s0 = side(a, b, p[0]), s1 = side(a, b, p[1]), s2 = side(a, b, p[2]);
+      const double m = margin * len;
+      if ((s0 > m && s1 > m && s2 > m) || (s0 < -m && s1 < -m && s2 < -m)) return true;
+    }
+    const double turn = side(p[0], p[1], p[2]);
+    if (turn == 0) return false;
+    for (int k = 0; k < 3; ++k) {
+      const window_point& u = p[k];
+      const window_point& w = p[(k + 1) % 3];
+      const double m = margin * std::hypot(w.x - u.x, w.y - u.y);
+      // Outside the side u -> w: the side away from the third corner.
+      const double sa = turn > 0 ? -side(u, w, a) : side(u, w, a);
+      const double sb = turn > 0 ? -side(u, w, b) : side(u, w, b);
+      if (sa > m && sb > m) return true;
+    }
+    return false;
+  }
+
+  /// Window coordinates (pixels) beyond which the image test is not used: there a double's
+  /// rounding stays under 1e-9 pixel, far below the margin.
+  static constexpr double max_screened = 1e6;
+
   viewport vp_;
+  const triangle_soup* soup_ = nullptr;
+  std::vector<window_point> win_;
+  std::vector<char> screened_;  ///< per triangle: its image is small enough for image_apart
+  window_point seg_a_, seg_b_;
+  bool seg_screened_ = false;
   double cell_ = 8;
   int nx_ = 1, ny_ = 1;
   std::vector<std::uint32_t> start_, items_, everywhere_;

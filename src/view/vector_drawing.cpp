@@ -8,11 +8,13 @@
 #include <polyclipping/clipper.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <future>
 #include <map>
 #include <optional>
+#include <thread>
 
 #include <exbsp/core/errors.h>
 #include <exbsp/view/pipeline.h>
@@ -167,6 +169,97 @@ void append_curve(vector_drawing& d, vector_path&& piece) {
   d.paths.push_back(std::move(piece));
 }
 
+/// Threads of the phases that split into independent items (regions, underlay groups): one
+/// per hardware thread, at most 8. Their results go to slots by item, so the drawing does not
+/// depend on the count.
+unsigned vector_workers() { return std::clamp(std::thread::hardware_concurrency(), 1u, 8u); }
+
+/// Calls body(i, worker) for every i in [0, n) on `workers` threads (this one is worker 0),
+/// taking indices in chunks; the first exception is rethrown once all have stopped.
+template <class Body>
+void parallel_for(std::size_t n, unsigned workers, Body body) {
+  constexpr std::size_t chunk = 64;
+  workers = static_cast<unsigned>(std::min<std::size_t>(workers, (n + chunk - 1) / chunk));
+  if (workers <= 1) {
+    for (std::size_t i = 0; i < n; ++i) body(i, 0u);
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  std::vector<std::exception_ptr> errors(workers);
+  auto run = [&](unsigned w) {
+    try {
+      for (std::size_t i; (i = next.fetch_add(chunk)) < n;)
+        for (std::size_t j = i; j < std::min(n, i + chunk); ++j) body(j, w);
+    } catch (...) {
+      errors[w] = std::current_exception();
+      next.store(n);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (unsigned w = 1; w < workers; ++w) threads.emplace_back(run, w);
+  run(0);
+  for (std::thread& t : threads) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+/// Mending ahead (visible_drawing's coverage walk): the polygons are mended by the walk itself
+/// or, once the edges are done, by a helper thread working just ahead of it. Each polygon is
+/// claimed once (state 0 -> 1, then 2 when mended), so each is mended exactly once, by the
+/// same function whoever does it: the drawing does not depend on the timing.
+class mend_ahead {
+ public:
+  mend_ahead(std::vector<cl::Path>& polys, const t_junction_mender& mender)
+      : polys_(polys), mender_(mender), state_(polys.size()), cursor_(polys.size()) {
+    for (std::size_t k = 0; k < polys.size(); ++k)
+      if (polys[k].empty()) state_[k].store(done);
+  }
+
+  /// The walk is at polygon k (it walks down from the last).
+  void at(std::size_t k) { cursor_.store(k, std::memory_order_relaxed); }
+
+  /// Polygon k mended, by this thread or by the helper (waiting for it to finish).
+  void ensure(std::size_t k) {
+    if (claim(k)) {
+      mender_.mend(polys_[k], walk_scratch_);
+      state_[k].store(done, std::memory_order_release);
+      return;
+    }
+    while (state_[k].load(std::memory_order_acquire) != done) std::this_thread::yield();
+  }
+
+  /// The helper's loop: mends the polygons just below the walk's position until stop().
+  void help() {
+    cover::t_junction_mender::scratch scratch;
+    std::size_t next = cursor_.load(std::memory_order_relaxed);
+    while (!stop_.load(std::memory_order_relaxed)) {
+      next = std::min(next, cursor_.load(std::memory_order_relaxed));
+      if (next == 0) return;
+      --next;
+      if (!claim(next)) continue;
+      mender_.mend(polys_[next], scratch);
+      state_[next].store(done, std::memory_order_release);
+    }
+  }
+
+  void stop() { stop_.store(true, std::memory_order_relaxed); }
+
+ private:
+  static constexpr std::uint8_t done = 2;
+
+  bool claim(std::size_t k) {
+    std::uint8_t free = 0;
+    return state_[k].compare_exchange_strong(free, 1, std::memory_order_acq_rel);
+  }
+
+  std::vector<cl::Path>& polys_;
+  const t_junction_mender& mender_;
+  std::vector<std::atomic<std::uint8_t>> state_;
+  std::atomic<std::size_t> cursor_;
+  std::atomic<bool> stop_{false};
+  cover::t_junction_mender::scratch walk_scratch_;
+};
+
 /// Per face: the pieces of its visible region and the data for its colour.
 struct face_accumulator {
   std::vector<std::uint32_t> pieces;  ///< ids of its visible pieces in the coverage
@@ -245,6 +338,8 @@ vector_drawing visible_drawing(const frame& f) {
   std::size_t next_line = f.lines.size();  // lines are sorted by slot; taken from the back
   // Snap every polygon to the grid (counter-clockwise), then mend T-junctions.
   std::vector<cl::Path> snapped(f.polygons.size());
+  std::vector<bbox_i> boxes(f.polygons.size());
+  std::vector<char> has_area(f.polygons.size(), 0);
   for (std::size_t k = 0; k < f.polygons.size(); ++k) {
     cl::Path& poly = snapped[k];
     for (const window_point& w : f.polygons[k].v) {
@@ -257,18 +352,37 @@ vector_drawing visible_drawing(const frame& f) {
       continue;
     }
     if (!cl::Orientation(poly)) cl::ReversePath(poly);
+    boxes[k] = cover::bbox_of(poly);
+    has_area[k] = 1;
   }
-  t_junction_mender mender(snapped, static_cast<long long>(vp.width) * grid_per_pixel,
-                           static_cast<long long>(vp.height) * grid_per_pixel);
+  const t_junction_mender mender(snapped, static_cast<long long>(vp.width) * grid_per_pixel,
+                                 static_cast<long long>(vp.height) * grid_per_pixel);
   d.seconds.snap = since(t0);
   t0 = clock::now();
+  // The second core mends ahead of the walk once the edges are done (the helper waits for
+  // them without spinning).
+  mend_ahead ahead(snapped, mender);
+  std::future<void> helper = std::async(std::launch::async, [&ahead, &edges] {
+    if (edges.valid()) edges.wait();
+    ahead.help();
+  });
+  struct stop_helper {  // also when the walk throws: the helper must not outlive `ahead`
+    mend_ahead& a;
+    std::future<void>& h;
+    ~stop_helper() {
+      a.stop();
+      if (h.valid()) h.wait();
+    }
+  } stopper{ahead, helper};
   for (std::size_t k = f.polygons.size(); k-- > 0;) {
     // Lines of slot k + 1 lie behind polygons k + 1 .. n - 1: clip them now.
     while (next_line > 0 && f.lines[next_line - 1].slot > k) clip_line(f.lines[--next_line]);
+    ahead.at(k);
     const screen_polygon& p = f.polygons[k];
+    // The box of the polygon as snapped (the helper may be mending it meanwhile).
+    if (!has_area[k] || coverage.hides(boxes[k])) continue;
+    ahead.ensure(k);
     cl::Path& poly = snapped[k];
-    if (poly.empty() || coverage.hides(poly)) continue;
-    mender.mend(poly);
     const std::uint32_t piece = coverage.add(poly, f.mesh_of(p.face));
     if (piece == tiled_coverage::no_piece) continue;
     face_accumulator& acc = faces[p.face];
@@ -290,6 +404,8 @@ vector_drawing visible_drawing(const frame& f) {
     acc.pieces.push_back(piece);
   }
   while (next_line > 0) clip_line(f.lines[--next_line]);
+  ahead.stop();
+  helper.get();  // rethrows the helper's exception
   d.seconds.coverage = since(t0);
   t0 = clock::now();
 
@@ -301,13 +417,20 @@ vector_drawing visible_drawing(const frame& f) {
     const std::uint32_t ma = f.mesh_of(a), mb = f.mesh_of(b);
     return ma != mb ? ma < mb : a < b;
   });
-  std::vector<vector_path> regions;
-  regions.reserve(face_ids.size());
-  cl::Clipper clipper;
-  cl::Paths merged;
-  std::vector<const cl::Path*> convex_rings;
-  for (std::uint32_t face : face_ids) {
-    face_accumulator& acc = faces[face];
+  // Faces are independent: split over the workers, each with its own Clipper, into slots.
+  const unsigned workers = vector_workers();
+  struct worker_state {
+    cl::Clipper clipper;
+    cl::Paths merged;
+    std::vector<const cl::Path*> convex_rings;
+  };
+  std::vector<worker_state> work(workers);
+  std::vector<vector_path> slots(face_ids.size());
+  parallel_for(face_ids.size(), workers, [&](std::size_t i, unsigned w) {
+    const std::uint32_t face = face_ids[i];
+    const face_accumulator& acc = faces[face];
+    cl::Paths& merged = work[w].merged;
+    std::vector<const cl::Path*>& convex_rings = work[w].convex_rings;
     merged.clear();
     const cl::Paths& first = coverage.rings(acc.pieces[0]);
     // Convex pieces (most faces: the fragments of a face seen whole) meet along edges they
@@ -325,12 +448,13 @@ vector_drawing visible_drawing(const frame& f) {
       merged.push_back(without_straight_vertices(first[0]));
     } else if (convex_rings.empty() || !cover::union_by_shared_edges(convex_rings, merged)) {
       merged.clear();
+      cl::Clipper& clipper = work[w].clipper;
       clipper.Clear();
       for (const std::uint32_t piece : acc.pieces)
         clipper.AddPaths(coverage.rings(piece), cl::ptSubject, true);
       clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
     }
-    vector_path r;
+    vector_path& r = slots[i];
     r.kind = vector_path::kind_type::region;
     r.face = face;
     r.mesh = f.mesh_of(face);
@@ -341,8 +465,12 @@ vector_drawing visible_drawing(const frame& f) {
       if (ring.size() >= 3 && mean_width(ring) >= min_region_width)
         r.rings.push_back(to_ring(ring));
     }
+  });
+  std::vector<vector_path> regions;
+  regions.reserve(slots.size());
+  for (vector_path& r : slots)
     if (!r.rings.empty()) regions.push_back(std::move(r));
-  }
+  slots = {};
   d.seconds.regions = since(t0);
   t0 = clock::now();
   // Underlays (notation): the union of a group of regions, in one colour, under them.
@@ -375,9 +503,15 @@ vector_drawing visible_drawing(const frame& f) {
       const grid_point& q = regions[k].rings[0][0];
       groups[{q.x / underlay_side, q.y / underlay_side}].push_back(k);
     }
-    for (const auto& [key, group] : groups) {
+    // The groups' unions are independent: over the workers, into slots in the map's order.
+    std::vector<const std::vector<std::size_t>*> group_list;
+    for (const auto& entry : groups) group_list.push_back(&entry.second);
+    std::vector<std::vector<std::vector<grid_point>>> unions(group_list.size());
+    parallel_for(group_list.size(), workers, [&](std::size_t g, unsigned w) {
+      cl::Clipper& clipper = work[w].clipper;
+      cl::Paths& merged = work[w].merged;
       clipper.Clear();
-      for (std::size_t k : group)
+      for (std::size_t k : *group_list[g])
         for (const auto& ring : regions[k].rings) {
           cl::Path p;
           p.reserve(ring.size());
@@ -388,9 +522,12 @@ vector_drawing visible_drawing(const frame& f) {
       clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
       for (cl::Path& ring : merged) {
         remove_spikes(ring);
-        if (ring.size() >= 3) u.rings.push_back(to_ring(ring));
+        if (ring.size() >= 3) unions[g].push_back(to_ring(ring));
       }
-    }
+    });
+    for (auto& rings : unions)
+      u.rings.insert(u.rings.end(), std::make_move_iterator(rings.begin()),
+                     std::make_move_iterator(rings.end()));
     if (!u.rings.empty()) d.paths.push_back(std::move(u));
   };
   // First one per mesh of two or more regions, in their mean colour weighted by area: under

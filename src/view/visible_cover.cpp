@@ -270,6 +270,19 @@ bool separated(const cl::Path& p, const cl::Paths& q) {
   return false;
 }
 
+/// True when the box lies on the closed right side of the line through an edge of the convex
+/// counter-clockwise ring p (p on its left): then separated(p, q) holds for any q in the box,
+/// found from one corner per edge (the one farthest left) without reading q.
+bool box_beyond_an_edge(const cl::Path& p, const bbox_i& box) {
+  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
+    const cl::IntPoint a = p[j], b = p[i];
+    const long long dx = b.X - a.X, dy = b.Y - a.Y;
+    const long long x = dy > 0 ? box.x0 : box.x1, y = dx > 0 ? box.y1 : box.y0;
+    if (dx * (y - a.Y) - dy * (x - a.X) <= 0) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 /// tiled_coverage's state: screen coverage as the list of visible pieces so far (disjoint: each is
@@ -292,9 +305,9 @@ class tiled_coverage::impl {
         ny_(static_cast<int>(std::max<long long>(1, (height + tile_side - 1) / tile_side))),
         tiles_(static_cast<std::size_t>(nx_) * ny_) {}
 
-  /// True when every tile p's bounding box meets is full (p is hidden).
-  bool hides(const cl::Path& p) const {
-    const auto [tx0, ty0, tx1, ty1] = tile_range(bbox_of(p));
+  /// True when every tile the box meets is full.
+  bool hides(const bbox_i& box) const {
+    const auto [tx0, ty0, tx1, ty1] = tile_range(box);
     for (int ty = ty0; ty <= ty1; ++ty)
       for (int tx = tx0; tx <= tx1; ++tx)
         if (!tiles_[index(tx, ty)].full) return false;
@@ -304,9 +317,11 @@ class tiled_coverage::impl {
   /// Adds the counter-clockwise polygon p (moved from when wholly visible); returns the id of
   /// its part not covered before (a piece: rings()), or no_piece when it is hidden.
   std::uint32_t add(cl::Path& p, std::uint32_t mesh) {
-    if (hides(p)) return no_piece;
+    if (hides(bbox_of(p))) return no_piece;
     near_.clear();
-    gather(bbox_of(p), [&](const cl::Paths& rings, bool square) {
+    const bool convex = convex_ccw(p);
+    gather(bbox_of(p), [&](const cl::Paths& rings, bool square, const bbox_i& box) {
+      if (convex && box_beyond_an_edge(p, box)) return;  // separated (a cheaper first test)
       if (!separated(p, rings)) near_.push_back({&rings, square});
     });
     switch (near_.empty() ? outcome::visible : overlap_outcome(p)) {
@@ -363,7 +378,7 @@ class tiled_coverage::impl {
   /// The parts of the open polyline `line` outside the coverage.
   cl::Paths outside(const cl::Path& line) {
     cl::Paths clip;
-    gather(bbox_of(line), [&](const cl::Paths& rings, bool) {
+    gather(bbox_of(line), [&](const cl::Paths& rings, bool, const bbox_i&) {
       clip.insert(clip.end(), rings.begin(), rings.end());
     });
     if (clip.empty()) return {line};
@@ -380,7 +395,7 @@ class tiled_coverage::impl {
   /// True when the point is strictly covered (nonzero winding of the coverage).
   bool covers(const cl::IntPoint& q) {
     cl::Paths clip;
-    gather({q.X, q.Y, q.X, q.Y}, [&](const cl::Paths& rings, bool) {
+    gather({q.X, q.Y, q.X, q.Y}, [&](const cl::Paths& rings, bool, const bbox_i&) {
       clip.insert(clip.end(), rings.begin(), rings.end());
     });
     int winding = 0;
@@ -494,8 +509,8 @@ class tiled_coverage::impl {
     return id;
   }
 
-  /// Calls visit(rings, is_square) for each piece near `box` (each once) and for the square
-  /// of each full tile `box` meets.
+  /// Calls visit(rings, is_square, its box) for each piece near `box` (each once) and for the
+  /// square of each full tile `box` meets.
   template <class Visit>
   void gather(const bbox_i& box, Visit visit) {
     ++query_;
@@ -505,7 +520,8 @@ class tiled_coverage::impl {
       for (int tx = tx0; tx <= tx1; ++tx) {
         const tile& t = tiles_[index(tx, ty)];
         if (t.full) {
-          visit(t.square, true);
+          const cl::Path& sq = t.square[0];
+          visit(t.square, true, bbox_i{sq[0].X, sq[0].Y, sq[2].X, sq[2].Y});
           continue;
         }
         for (const listed& l : t.pieces) {
@@ -515,7 +531,7 @@ class tiled_coverage::impl {
                     : l.x1 <= box.x0 || l.x0 >= box.x1 || l.y1 <= box.y0 || l.y0 >= box.y1;
           if (apart || stamp_[l.id] == query_) continue;
           stamp_[l.id] = query_;
-          visit(pieces_[l.id].rings, false);
+          visit(pieces_[l.id].rings, false, bbox_i{l.x0, l.y0, l.x1, l.y1});
         }
       }
   }
@@ -592,7 +608,8 @@ class tiled_coverage::impl {
 tiled_coverage::tiled_coverage(long long width, long long height)
     : impl_(std::make_unique<impl>(width, height)) {}
 tiled_coverage::~tiled_coverage() = default;
-bool tiled_coverage::hides(const cl::Path& p) const { return impl_->hides(p); }
+bool tiled_coverage::hides(const cl::Path& p) const { return impl_->hides(bbox_of(p)); }
+bool tiled_coverage::hides(const bbox_i& box) const { return impl_->hides(box); }
 std::uint32_t tiled_coverage::add(cl::Path& p, std::uint32_t mesh) { return impl_->add(p, mesh); }
 const cl::Paths& tiled_coverage::rings(std::uint32_t id) const { return impl_->rings(id); }
 cl::Paths tiled_coverage::full_tiles_of(std::uint32_t mesh) const {
@@ -643,15 +660,18 @@ class t_junction_mender::impl {
   }
 
   /// Inserts into p's edges the vertices lying less than one unit from their insides.
-  void mend(cl::Path& p) {
-    mended_.clear();
+  void mend(cl::Path& p, t_junction_mender::scratch& s) const {
+    cl::Path& mended = s.mended;
+    std::vector<std::size_t>& cells = s.cells;
+    std::vector<std::pair<double, cl::IntPoint>>& on_edge = s.on_edge;
+    mended.clear();
     for (std::size_t i = 0; i < p.size(); ++i) {
       const cl::IntPoint a = p[i], b = p[(i + 1) % p.size()];
-      mended_.push_back(a);
+      mended.push_back(a);
       const double dx = static_cast<double>(b.X - a.X), dy = static_cast<double>(b.Y - a.Y);
       const double len2 = dx * dx + dy * dy, len = std::sqrt(len2);
-      on_edge_.clear();
-      cells_.clear();
+      on_edge.clear();
+      cells.clear();
       // The cells met by the edge's one-unit neighbourhood: the edge in pieces of at most one
       // cell, each piece's box grown by two units (one for the neighbourhood, one for the
       // rounding of the piece's ends). Most edges are shorter than a cell: one to four cells.
@@ -668,30 +688,30 @@ class t_junction_mender::impl {
         const long long cy0 = cell_y(std::min(y0, y1) - 2), cy1 = cell_y(std::max(y0, y1) + 2);
         for (long long cy = cy0; cy <= cy1; ++cy)
           for (long long cx = cx0; cx <= cx1; ++cx)
-            cells_.push_back(static_cast<std::size_t>(cy * nx_ + cx));
+            cells.push_back(static_cast<std::size_t>(cy * nx_ + cx));
       }
       if (pieces > 1) {
-        std::sort(cells_.begin(), cells_.end());
-        cells_.erase(std::unique(cells_.begin(), cells_.end()), cells_.end());
+        std::sort(cells.begin(), cells.end());
+        cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
       }
-      for (const std::size_t c : cells_)
+      for (const std::size_t c : cells)
         for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) {
           const cl::IntPoint& v = points_[k];
           const double vx = static_cast<double>(v.X - a.X), vy = static_cast<double>(v.Y - a.Y);
           const double along = vx * dx + vy * dy;
           if (along <= 0 || along >= len2) continue;
           if (std::abs(vx * dy - vy * dx) >= len) continue;  // one unit or more off the line
-          on_edge_.push_back({along, v});
+          on_edge.push_back({along, v});
         }
-      std::sort(on_edge_.begin(), on_edge_.end(), [](const auto& x, const auto& y) {
+      std::sort(on_edge.begin(), on_edge.end(), [](const auto& x, const auto& y) {
         return x.first != y.first
                    ? x.first < y.first
                    : (x.second.X != y.second.X ? x.second.X < y.second.X : x.second.Y < y.second.Y);
       });
-      for (const auto& [along, v] : on_edge_)
-        if (!(mended_.back() == v)) mended_.push_back(v);
+      for (const auto& [along, v] : on_edge)
+        if (!(mended.back() == v)) mended.push_back(v);
     }
-    if (mended_.size() != p.size()) p.assign(mended_.begin(), mended_.end());
+    if (mended.size() != p.size()) p.assign(mended.begin(), mended.end());
   }
 
  private:
@@ -714,15 +734,12 @@ class t_junction_mender::impl {
   long long nx_, ny_;
   std::vector<std::size_t> start_;  ///< cell c's points: points_[start_[c], start_[c + 1])
   std::vector<cl::IntPoint> points_;
-  std::vector<std::size_t> cells_;
-  std::vector<std::pair<double, cl::IntPoint>> on_edge_;
-  cl::Path mended_;
 };
 
 t_junction_mender::t_junction_mender(const std::vector<cl::Path>& polys, long long width,
                                      long long height)
     : impl_(std::make_unique<impl>(polys, width, height)) {}
 t_junction_mender::~t_junction_mender() = default;
-void t_junction_mender::mend(cl::Path& p) { impl_->mend(p); }
+void t_junction_mender::mend(cl::Path& p, scratch& s) const { impl_->mend(p, s); }
 
 }  // namespace exbsp::view::cover

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace exbsp::view::cover {
@@ -64,6 +65,8 @@ class tiled_coverage {
 
   /// True when every tile p's bounding box meets is full (p is hidden).
   bool hides(const ClipperLib::Path& p) const;
+  /// True when every tile the box meets is full.
+  bool hides(const bbox_i& box) const;
   /// Adds the counter-clockwise polygon p of mesh `mesh` (p is moved from when wholly
   /// visible); returns the id of its part not covered before (a piece: rings()), or no_piece
   /// when it is hidden.
@@ -95,8 +98,16 @@ class t_junction_mender {
   t_junction_mender(const t_junction_mender&) = delete;
   t_junction_mender& operator=(const t_junction_mender&) = delete;
 
+  /// Working memory of mend: one per thread mending at the same time.
+  struct scratch {
+    std::vector<std::size_t> cells;
+    std::vector<std::pair<double, ClipperLib::IntPoint>> on_edge;
+    ClipperLib::Path mended;
+  };
+
   /// Inserts into p's edges the indexed vertices lying less than one unit from their insides.
-  void mend(ClipperLib::Path& p);
+  /// Reads only the index: threads may mend different polygons at once, each with its scratch.
+  void mend(ClipperLib::Path& p, scratch& s) const;
 
  private:
   class impl;
