@@ -178,7 +178,8 @@ unsigned vector_workers() { return std::clamp(std::thread::hardware_concurrency(
 /// taking indices in chunks; the first exception is rethrown once all have stopped.
 template <class Body>
 void parallel_for(std::size_t n, unsigned workers, Body body) {
-  constexpr std::size_t chunk = 64;
+  // Chunks of up to 64 items, at least 8 per worker (the underlay groups are few and large).
+  const std::size_t chunk = std::clamp<std::size_t>(n / (8 * std::max(1u, workers)), 1, 64);
   workers = static_cast<unsigned>(std::min<std::size_t>(workers, (n + chunk - 1) / chunk));
   if (workers <= 1) {
     for (std::size_t i = 0; i < n; ++i) body(i, 0u);
@@ -336,22 +337,27 @@ vector_drawing visible_drawing(const frame& f) {
     if (!p.rings.empty()) curve_paths.push_back(std::move(p));
   };
   std::size_t next_line = f.lines.size();  // lines are sorted by slot; taken from the back
-  // Snap every polygon to the grid (counter-clockwise), then mend T-junctions.
+  // Snap every polygon to the grid (counter-clockwise), then mend T-junctions. (Split over the
+  // cores this was no faster: the edges' thread runs meanwhile, and paths allocated on one
+  // thread and freed on another cost more.)
+  const unsigned workers = vector_workers();
   std::vector<cl::Path> snapped(f.polygons.size());
   std::vector<bbox_i> boxes(f.polygons.size());
   std::vector<char> has_area(f.polygons.size(), 0);
   for (std::size_t k = 0; k < f.polygons.size(); ++k) {
     cl::Path& poly = snapped[k];
+    poly.reserve(f.polygons[k].v.size());
     for (const window_point& w : f.polygons[k].v) {
       const cl::IntPoint q = grid_of(vp, w);
       if (poly.empty() || !(poly.back() == q)) poly.push_back(q);
     }
     while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
-    if (poly.size() < 3 || cl::Area(poly) == 0) {  // seen edge-on: no area
-      poly.clear();
+    const double area = poly.size() < 3 ? 0 : cl::Area(poly);
+    if (area == 0) {  // seen edge-on: no area
+      poly = {};
       continue;
     }
-    if (!cl::Orientation(poly)) cl::ReversePath(poly);
+    if (area < 0) cl::ReversePath(poly);
     boxes[k] = cover::bbox_of(poly);
     has_area[k] = 1;
   }
@@ -418,7 +424,6 @@ vector_drawing visible_drawing(const frame& f) {
     return ma != mb ? ma < mb : a < b;
   });
   // Faces are independent: split over the workers, each with its own Clipper, into slots.
-  const unsigned workers = vector_workers();
   struct worker_state {
     cl::Clipper clipper;
     cl::Paths merged;

@@ -177,11 +177,21 @@ void clip_by_convex(const cl::Path& ring, const cl::Path& window, long long ox, 
 /// and `scratch` are buffers.
 double area_in_box(const polygon_d& a, polygon_d& work, polygon_d& scratch, double x0, double y0,
                    double x1, double y1) {
+  if (a.empty()) return 0;
+  // Only the box's lines that cut the polygon's box clip it (most pieces cross one or two).
+  double ax0 = a[0].x, ax1 = a[0].x, ay0 = a[0].y, ay1 = a[0].y;
+  for (const point_d& q : a) {
+    ax0 = std::min(ax0, q.x);
+    ax1 = std::max(ax1, q.x);
+    ay0 = std::min(ay0, q.y);
+    ay1 = std::max(ay1, q.y);
+  }
+  if (ax1 <= x0 || ax0 >= x1 || ay1 <= y0 || ay0 >= y1) return 0;
   work.assign(a.begin(), a.end());
-  clip_half_plane(work, scratch, x0, y0, 0, -1);  // x >= x0
-  clip_half_plane(work, scratch, x1, y0, 0, 1);   // x <= x1
-  clip_half_plane(work, scratch, x0, y0, 1, 0);   // y >= y0
-  clip_half_plane(work, scratch, x0, y1, -1, 0);  // y <= y1
+  if (ax0 < x0) clip_half_plane(work, scratch, x0, y0, 0, -1);  // x >= x0
+  if (ax1 > x1) clip_half_plane(work, scratch, x1, y0, 0, 1);   // x <= x1
+  if (ay0 < y0) clip_half_plane(work, scratch, x0, y0, 1, 0);   // y >= y0
+  if (ay1 > y1) clip_half_plane(work, scratch, x0, y1, -1, 0);  // y <= y1
   return work.empty() ? 0 : signed_area(work);
 }
 
