@@ -10,7 +10,10 @@
 //   - the exact kernel's shared tables: lazily made exact planes (compare-exchange), exact
 //     values of points (a locked map), point ids claimed in blocks;
 //   - an exception (the fragment limit) thrown inside a parallel region and rethrown outside;
-//   - the exact kernel's first rounding of its points to doubles (fragments_double).
+//   - the exact kernel's first rounding of its points to doubles (fragments_double);
+//   - the SVG drawing's threads (src/view/vector_drawing.cpp): the edges on their own thread,
+//     T-junctions mended ahead of the coverage walk by a helper, regions and underlay groups
+//     over the cores.
 //
 // Inputs are small enough for ThreadSanitizer's slowdown (5-15x).
 #include <gtest/gtest.h>
@@ -22,6 +25,7 @@
 
 #include <exbsp/bsp/engine.h>
 #include <exbsp/core/errors.h>
+#include <exbsp/view/render.h>
 #include "support/inputs.h"
 #include "support/observable.h"
 
@@ -155,6 +159,42 @@ TEST(ParallelBuild, the_fragment_limit_thrown_inside_a_parallel_region_reaches_t
     o.max_fragments =
         7000;  // past the first 16 nodes (built on one thread), half what the tree needs
     EXPECT_THROW(exbsp::bsp::build(soup, o), exbsp::limit_error) << exbsp::to_string(k);
+  }
+}
+
+/// Two interpenetrating UV spheres (closed meshes: shared edges, silhouettes, creases at the
+/// poles) whose fragments meet in T-junctions where the BSP split one side of an edge only.
+triangle_soup two_spheres(int slices, int stacks) {
+  triangle_soup s;
+  for (const vec3d& c : {vec3d{0, 0, 0}, vec3d{0.8, 0.3, 0.2}}) {
+    auto at = [&](int i, int j) {
+      const double th = M_PI * j / stacks, ph = 2 * M_PI * i / slices;
+      return vec3d{c[0] + std::sin(th) * std::cos(ph), c[1] + std::sin(th) * std::sin(ph),
+                   c[2] + std::cos(th)};
+    };
+    for (int j = 0; j < stacks; ++j)
+      for (int i = 0; i < slices; ++i) {
+        const vec3d a = at(i, j), b = at(i + 1, j), d = at(i, j + 1), e = at(i + 1, j + 1);
+        if (j > 0) s.add_triangle(a, d, b);
+        if (j + 1 < stacks) s.add_triangle(b, d, e);
+      }
+  }
+  return s;
+}
+
+TEST(ParallelDrawing, the_svg_drawing_is_the_same_each_time_its_threads_run) {
+  build_options o;
+  o.keep_input = true;
+  o.threads = 1;
+  const exbsp::bsp tree = exbsp::bsp::build(two_spheres(48, 24), o);
+  const triangle_soup& soup = tree.input();
+  for (const char* name : {"iso", "front"}) {
+    const exbsp::view::fitted_view v = exbsp::view::fit_view(soup, 320, 240, name);
+    const std::string first = exbsp::view::render_tree_svg(tree, v, 320, 240, {}, "visible+hidden");
+    EXPECT_NE(first.find("<path"), std::string::npos) << name;
+    for (int run = 0; run < 3; ++run)
+      EXPECT_EQ(first, exbsp::view::render_tree_svg(tree, v, 320, 240, {}, "visible+hidden"))
+          << name << ", run " << run;
   }
 }
 
