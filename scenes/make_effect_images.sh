@@ -7,16 +7,8 @@
 # The "without" scenes are temporary copies with "effects" (or "curves") removed and mesh paths
 # made absolute; nothing else changes.
 set -euo pipefail
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-exbsp="${1:-${EXBSP:-$here/../build/src/app/exbsp}}"
-if [ ! -x "$exbsp" ]; then
-  echo "make_effect_images: no exbsp binary at $exbsp (build it, or pass its path)" >&2
-  exit 2
-fi
-out="$here/images"
-mkdir -p "$out"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+images_setup make_effect_images "$@"
 
 # without SCENE KEY OUT: SCENE minus its top-level KEY, mesh paths absolute.
 without() {

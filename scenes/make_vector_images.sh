@@ -10,21 +10,13 @@
 # front docs/images/joint_front.svg), when the corpus is there. Anyone can rerun it (needs chromium):
 #   scenes/make_vector_images.sh [path/to/exbsp]     (default: $EXBSP, then build/src/app/exbsp)
 set -euo pipefail
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-exbsp="${1:-${EXBSP:-$here/../build/src/app/exbsp}}"
-if [ ! -x "$exbsp" ]; then
-  echo "make_vector_images: no exbsp binary at $exbsp (build it, or pass its path)" >&2
-  exit 2
-fi
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+images_setup make_vector_images "$@"
 chromium="${CHROMIUM:-$(command -v chromium || true)}"
 if [ -z "$chromium" ]; then
   echo "make_vector_images: chromium not found (apt-get install chromium)" >&2
   exit 2
 fi
-out="$here/images"
-mkdir -p "$out"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
 
 # with_edges SCENE OUT [MESH]: SCENE with "svg": {"edges": "visible+hidden"}, mesh paths
 # absolute; with MESH, its meshes replaced by that one mesh, lit, 800 x 600.

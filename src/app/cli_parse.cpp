@@ -143,13 +143,6 @@ triangle_soup read_mesh_input(const std::string& path, const std::string& format
   return read_mesh_data(read_input_file(path), f, path);
 }
 
-std::string name_list(const std::vector<std::string>& names, const char* last) {
-  std::string out;
-  for (std::size_t i = 0; i < names.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == names.size() ? std::string(" ") + last + " " : ", ") + names[i];
-  return out;
-}
-
 std::size_t edit_distance(const std::string& a, const std::string& b) {
   std::vector<std::size_t> row(b.size() + 1);
   std::iota(row.begin(), row.end(), std::size_t{0});

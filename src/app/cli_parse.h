@@ -42,9 +42,6 @@ std::array<int, 2> parse_size(const std::string& text, const std::string& option
 triangle_soup read_mesh_input(const std::string& path, const std::string& format, std::istream& in,
                               std::uint64_t max_stdin_bytes = 0);
 
-/// "a, b and c" (`last`: "and" or "or").
-std::string name_list(const std::vector<std::string>& names, const char* last);
-
 /// Levenshtein distance (insertions, deletions, substitutions; each costs 1). Written here
 /// because neither CLI11 nor the standard library offer one, and it is ten lines.
 std::size_t edit_distance(const std::string& a, const std::string& b);

@@ -19,6 +19,7 @@
 #include "app/cli_parse.h"
 #include "app/commands/command.h"
 #include "app/resources.h"
+#include "core/name_list.h"
 
 namespace {
 
@@ -79,11 +80,12 @@ int main(int argc, char** argv) {
     return std::cout ? 0 : 2;
   }
   exbsp::cli::command* chosen = nullptr;
-  std::string names;
-  for (std::size_t i = 0; i < made.size(); ++i) {
-    if (*made[i]->sub) chosen = made[i].get();
-    names += (i == 0 ? "" : i + 1 == made.size() ? " or " : ", ") + made[i]->sub->get_name();
+  std::vector<std::string> command_names;
+  for (const auto& c : made) {
+    if (*c->sub) chosen = c.get();
+    command_names.push_back(c->sub->get_name());
   }
+  const std::string names = exbsp::name_list(command_names, "or");
   if (!chosen) {
     std::cerr << "exbsp: error: a command is required: " << names << "\n"
               << "run 'exbsp --help' for usage\n";

@@ -4,6 +4,7 @@
 #include "app/cli_parse.h"
 
 #include "bsp/kernels.h"
+#include "core/name_list.h"
 
 #include <omp.h>
 #include <sys/resource.h>

@@ -4,6 +4,7 @@
 
 #include <exbsp/core/errors.h>
 #include "core/named_table.h"
+#include "core/name_list.h"
 
 // Each kernel's factories, defined by EXBSP_INSTANTIATE_BSP in its bsp_<name>.cpp.
 EXBSP_DECLARE_BSP_FACTORIES(exact)
@@ -74,11 +75,8 @@ std::string to_string(kernel_id k) {
 
 kernel_id parse_kernel(const std::string& name) {
   if (const kernel_row* r = table().find(name)) return r->id;
-  std::string list;
-  const auto& all = table().rows();
-  for (std::size_t i = 0; i < all.size(); ++i)
-    list += (i == 0 ? "" : i + 1 == all.size() ? " or " : ", ") + all[i].name;
-  throw usage_error("unknown kernel '" + name + "' (expected " + list + ")");
+  throw usage_error("unknown kernel '" + name + "' (expected " + name_list(table().names(), "or") +
+                    ")");
 }
 
 bool is_exact(kernel_id k) {

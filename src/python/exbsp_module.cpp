@@ -568,18 +568,24 @@ PYBIND11_MODULE(_exbsp, m) {
   static py::handle error_type, usage_type, input_type, limit_type, output_type;
   error_type = new_exception(m, "Error", py::make_tuple(py::handle(PyExc_Exception)),
                              "Base of exbsp's errors.");
-  usage_type =
-      new_exception(m, "UsageError", py::make_tuple(error_type, py::handle(PyExc_ValueError)),
-                    "A bad argument: shape, index, name, non-finite coordinate.");
-  input_type =
-      new_exception(m, "InputError", py::make_tuple(error_type, py::handle(PyExc_ValueError)),
-                    "A bad mesh file; .file and .line (0: none) name the place.");
-  limit_type =
-      new_exception(m, "LimitError", py::make_tuple(error_type, py::handle(PyExc_MemoryError)),
-                    "A resource limit (max_fragments) was reached; nothing is returned.");
-  output_type =
-      new_exception(m, "OutputError", py::make_tuple(error_type, py::handle(PyExc_OSError)),
-                    "A file could not be written (Tree.save); nothing partial is left.");
+  // Each of the others derives from Error and the Python exception of the same meaning.
+  struct derived {
+    py::handle* type;
+    const char* name;
+    PyObject* python_base;
+    const char* doc;
+  };
+  for (const derived& d :
+       {derived{&usage_type, "UsageError", PyExc_ValueError,
+                "A bad argument: shape, index, name, non-finite coordinate."},
+        derived{&input_type, "InputError", PyExc_ValueError,
+                "A bad mesh file; .file and .line (0: none) name the place."},
+        derived{&limit_type, "LimitError", PyExc_MemoryError,
+                "A resource limit (max_fragments) was reached; nothing is returned."},
+        derived{&output_type, "OutputError", PyExc_OSError,
+                "A file could not be written (Tree.save); nothing partial is left."}})
+    *d.type =
+        new_exception(m, d.name, py::make_tuple(error_type, py::handle(d.python_base)), d.doc);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

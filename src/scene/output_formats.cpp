@@ -6,6 +6,7 @@
 #include <exbsp/view/png_io.h>
 #include "core/atomic_file.h"
 #include "core/file_name.h"
+#include "core/name_list.h"
 
 namespace exbsp {
 
@@ -36,11 +37,9 @@ std::vector<output_format_row>& table() {
 const std::vector<output_format_row>& output_format_table() { return table(); }
 
 std::string output_extensions() {
-  std::string out;
-  const auto& rows = table();
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == rows.size() ? " or " : ", ") + rows[i].extension;
-  return out;
+  std::vector<std::string> extensions;
+  for (const output_format_row& r : table()) extensions.push_back(r.extension);
+  return name_list(extensions, "or");
 }
 
 const output_format_row& output_format_for(const std::string& path) {

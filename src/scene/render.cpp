@@ -143,16 +143,11 @@ render_summary render_command(const render_request& request, std::ostream& log) 
   if (!request.edges.empty()) {
     if (kind == view::output_kind::png)
       throw usage_error("render: --edges applies to SVG and PDF output, not to " + out);
-    using edges_kind = view::vector_options::edges_kind;
-    bool known = false;
-    for (const edges_kind e : {edges_kind::none, edges_kind::visible, edges_kind::visible_hidden})
-      if (request.edges == view::to_string(e)) {
-        s.vector.edges = e;
-        known = true;
-      }
-    if (!known)
-      throw usage_error("render: --edges must be none, visible or visible+hidden, got " +
+    const auto kind = view::edges_kind_named(request.edges);
+    if (!kind)
+      throw usage_error("render: --edges must be " + view::edges_kind_names() + ", got " +
                         request.edges);
+    s.vector.edges = *kind;
   }
   view::frame f = scene::make_frame(s);
   const double load_seconds =

@@ -183,15 +183,11 @@ void parse_vector(const reader& r, const json& doc, scene& s) {
   }
   if (r.optional(*v, "edges")) {
     const std::string e = text("edges");
-    if (e == "none")
-      s.vector.edges = view::vector_options::edges_kind::none;
-    else if (e == "visible")
-      s.vector.edges = view::vector_options::edges_kind::visible;
-    else if (e == "visible+hidden")
-      s.vector.edges = view::vector_options::edges_kind::visible_hidden;
+    if (const auto kind = view::edges_kind_named(e))
+      s.vector.edges = *kind;
     else
       r.fail("/svg/edges",
-             "unknown edges \"" + e + "\" (expected none, visible or visible+hidden)");
+             "unknown edges \"" + e + "\" (expected " + view::edges_kind_names() + ")");
   }
   if (const json* c = r.optional(*v, "crease_deg")) {
     const double d = r.number(*c, "/svg/crease_deg");

@@ -197,10 +197,8 @@ frame tree_frame(const bsp& tree, const fitted_view& view, int width, int height
 
 /// "none", "visible" or "visible+hidden" (vector_options' names).
 vector_options::edges_kind edges_named(const std::string& name) {
-  using kind = vector_options::edges_kind;
-  for (const kind e : {kind::none, kind::visible, kind::visible_hidden})
-    if (name == to_string(e)) return e;
-  throw usage_error("render_tree_svg: edges must be none, visible or visible+hidden, got '" + name +
+  if (const auto kind = edges_kind_named(name)) return *kind;
+  throw usage_error("render_tree_svg: edges must be " + edges_kind_names() + ", got '" + name +
                     "'");
 }
 

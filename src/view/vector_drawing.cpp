@@ -21,6 +21,7 @@
 #include "view/clip_stage.h"
 #include "view/edge_paths.h"
 #include "view/visible_cover.h"
+#include "core/name_list.h"
 
 namespace exbsp::view {
 
@@ -45,6 +46,24 @@ const char* to_string(vector_options::edges_kind e) {
       return "visible+hidden";
   }
   return "?";
+}
+
+namespace {
+constexpr vector_options::edges_kind all_edges_kinds[] = {
+    vector_options::edges_kind::none, vector_options::edges_kind::visible,
+    vector_options::edges_kind::visible_hidden};
+}  // namespace
+
+std::optional<vector_options::edges_kind> edges_kind_named(const std::string& name) {
+  for (const vector_options::edges_kind e : all_edges_kinds)
+    if (name == to_string(e)) return e;
+  return std::nullopt;
+}
+
+std::string edges_kind_names() {
+  std::vector<std::string> names;
+  for (const vector_options::edges_kind e : all_edges_kinds) names.push_back(to_string(e));
+  return name_list(names, "or");
 }
 
 long long to_grid(double v) { return std::llround(v * static_cast<double>(grid_per_pixel)); }
@@ -204,29 +223,75 @@ void parallel_for(std::size_t n, unsigned workers, Body body) {
     if (e) std::rethrow_exception(e);
 }
 
-/// Mending ahead (visible_drawing's coverage walk): the polygons are mended by the walk itself
-/// or, once the edges are done, by a helper thread working just ahead of it. Each polygon is
-/// claimed once (state 0 -> 1, then 2 when mended), so each is mended exactly once, by the
-/// same function whoever does it: the drawing does not depend on the timing.
+/// The frame's polygons on the grid, counter-clockwise, in one array (polygon k: points
+/// [start[k], start[k + 1]), none when it has no area), with their boxes. Paths are made only
+/// for the polygons the coverage walk takes (most hidden ones never need one).
+struct snapped_polygons {
+  std::vector<cl::IntPoint> points;
+  std::vector<std::size_t> start;
+  std::vector<bbox_i> boxes;
+
+  bool has_area(std::size_t k) const { return start[k + 1] > start[k]; }
+  cl::Path path(std::size_t k) const {
+    return {points.begin() + static_cast<std::ptrdiff_t>(start[k]),
+            points.begin() + static_cast<std::ptrdiff_t>(start[k + 1])};
+  }
+};
+
+/// Snaps every polygon of the frame (snapped_polygons).
+snapped_polygons snap(const frame& f) {
+  snapped_polygons s;
+  s.start.reserve(f.polygons.size() + 1);
+  s.boxes.resize(f.polygons.size());
+  s.start.push_back(0);
+  for (std::size_t k = 0; k < f.polygons.size(); ++k) {
+    const std::size_t first = s.points.size();
+    for (const window_point& w : f.polygons[k].v) {
+      const cl::IntPoint q = grid_of(f.view.vp, w);
+      if (s.points.size() == first || !(s.points.back() == q)) s.points.push_back(q);
+    }
+    while (s.points.size() > first + 1 && s.points[first] == s.points.back()) s.points.pop_back();
+    const cl::Path poly(s.points.begin() + static_cast<std::ptrdiff_t>(first), s.points.end());
+    const double area = poly.size() < 3 ? 0 : cl::Area(poly);
+    if (area == 0) {  // seen edge-on: no area
+      s.points.resize(first);
+    } else {
+      if (area < 0)
+        std::reverse(s.points.begin() + static_cast<std::ptrdiff_t>(first), s.points.end());
+      s.boxes[k] = cover::bbox_of(poly);
+    }
+    s.start.push_back(s.points.size());
+  }
+  return s;
+}
+
+/// Mending ahead (visible_drawing's coverage walk): the polygons' paths are made and mended by
+/// the walk itself or, once the edges are done, by a helper thread working just ahead of it.
+/// Each polygon is claimed once (state 0 -> 1, then 2 when mended), so each is mended exactly
+/// once, by the same function whoever does it: the drawing does not depend on the timing.
 class mend_ahead {
  public:
-  mend_ahead(std::vector<cl::Path>& polys, const t_junction_mender& mender)
-      : polys_(polys), mender_(mender), state_(polys.size()), cursor_(polys.size()) {
-    for (std::size_t k = 0; k < polys.size(); ++k)
-      if (polys[k].empty()) state_[k].store(done);
+  mend_ahead(const snapped_polygons& snapped, const t_junction_mender& mender)
+      : snapped_(snapped),
+        mender_(mender),
+        paths_(snapped.boxes.size()),
+        state_(snapped.boxes.size()),
+        cursor_(snapped.boxes.size()) {
+    for (std::size_t k = 0; k < paths_.size(); ++k)
+      if (!snapped.has_area(k)) state_[k].store(done);
   }
 
   /// The walk is at polygon k (it walks down from the last).
   void at(std::size_t k) { cursor_.store(k, std::memory_order_relaxed); }
 
-  /// Polygon k mended, by this thread or by the helper (waiting for it to finish).
-  void ensure(std::size_t k) {
+  /// Polygon k's path, mended, by this thread or by the helper (waiting for it to finish).
+  cl::Path& mended(std::size_t k) {
     if (claim(k)) {
-      mender_.mend(polys_[k], walk_scratch_);
-      state_[k].store(done, std::memory_order_release);
-      return;
+      make(k, walk_scratch_);
+      return paths_[k];
     }
     while (state_[k].load(std::memory_order_acquire) != done) std::this_thread::yield();
+    return paths_[k];
   }
 
   /// The helper's loop: mends the polygons just below the walk's position until stop().
@@ -237,9 +302,7 @@ class mend_ahead {
       next = std::min(next, cursor_.load(std::memory_order_relaxed));
       if (next == 0) return;
       --next;
-      if (!claim(next)) continue;
-      mender_.mend(polys_[next], scratch);
-      state_[next].store(done, std::memory_order_release);
+      if (claim(next)) make(next, scratch);
     }
   }
 
@@ -253,8 +316,15 @@ class mend_ahead {
     return state_[k].compare_exchange_strong(free, 1, std::memory_order_acq_rel);
   }
 
-  std::vector<cl::Path>& polys_;
+  void make(std::size_t k, cover::t_junction_mender::scratch& scratch) {
+    paths_[k] = snapped_.path(k);
+    mender_.mend(paths_[k], scratch);
+    state_[k].store(done, std::memory_order_release);
+  }
+
+  const snapped_polygons& snapped_;
   const t_junction_mender& mender_;
+  std::vector<cl::Path> paths_;
   std::vector<std::atomic<std::uint8_t>> state_;
   std::atomic<std::size_t> cursor_;
   std::atomic<bool> stop_{false};
@@ -337,31 +407,11 @@ vector_drawing visible_drawing(const frame& f) {
     if (!p.rings.empty()) curve_paths.push_back(std::move(p));
   };
   std::size_t next_line = f.lines.size();  // lines are sorted by slot; taken from the back
-  // Snap every polygon to the grid (counter-clockwise), then mend T-junctions. (Split over the
-  // cores this was no faster: the edges' thread runs meanwhile, and paths allocated on one
-  // thread and freed on another cost more.)
+  // Snap every polygon to the grid (counter-clockwise), then index the points for mending
+  // T-junctions. (Split over the cores this was no faster: the edges' thread runs meanwhile.)
   const unsigned workers = vector_workers();
-  std::vector<cl::Path> snapped(f.polygons.size());
-  std::vector<bbox_i> boxes(f.polygons.size());
-  std::vector<char> has_area(f.polygons.size(), 0);
-  for (std::size_t k = 0; k < f.polygons.size(); ++k) {
-    cl::Path& poly = snapped[k];
-    poly.reserve(f.polygons[k].v.size());
-    for (const window_point& w : f.polygons[k].v) {
-      const cl::IntPoint q = grid_of(vp, w);
-      if (poly.empty() || !(poly.back() == q)) poly.push_back(q);
-    }
-    while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
-    const double area = poly.size() < 3 ? 0 : cl::Area(poly);
-    if (area == 0) {  // seen edge-on: no area
-      poly = {};
-      continue;
-    }
-    if (area < 0) cl::ReversePath(poly);
-    boxes[k] = cover::bbox_of(poly);
-    has_area[k] = 1;
-  }
-  const t_junction_mender mender(snapped, static_cast<long long>(vp.width) * grid_per_pixel,
+  const snapped_polygons snapped = snap(f);
+  const t_junction_mender mender(snapped.points, static_cast<long long>(vp.width) * grid_per_pixel,
                                  static_cast<long long>(vp.height) * grid_per_pixel);
   d.seconds.snap = since(t0);
   t0 = clock::now();
@@ -386,9 +436,8 @@ vector_drawing visible_drawing(const frame& f) {
     ahead.at(k);
     const screen_polygon& p = f.polygons[k];
     // The box of the polygon as snapped (the helper may be mending it meanwhile).
-    if (!has_area[k] || coverage.hides(boxes[k])) continue;
-    ahead.ensure(k);
-    cl::Path& poly = snapped[k];
+    if (!snapped.has_area(k) || coverage.hides(snapped.boxes[k])) continue;
+    cl::Path& poly = ahead.mended(k);
     const std::uint32_t piece = coverage.add(poly, f.mesh_of(p.face));
     if (piece == tiled_coverage::no_piece) continue;
     face_accumulator& acc = faces[p.face];
@@ -569,7 +618,8 @@ vector_drawing visible_drawing(const frame& f) {
   std::map<std::array<std::uint8_t, 3>, std::vector<std::size_t>> by_color;
   for (std::size_t k = 0; k < regions.size(); ++k)
     by_color[{regions[k].color.r, regions[k].color.g, regions[k].color.b}].push_back(k);
-  for (const auto& [rgb, members] : by_color) {
+  for (const auto& entry : by_color) {
+    const std::vector<std::size_t>& members = entry.second;  // read by the lambda below
     const rgb8 color = regions[members[0]].color;
     const bool drawn = std::any_of(done.begin(), done.end(), [&](const auto& u) {
       return u.second == color && u.first == members;

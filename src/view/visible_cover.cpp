@@ -464,7 +464,9 @@ class tiled_coverage::impl {
              std::max(box.y1, b.y1)};
     }
     const auto id = static_cast<std::uint32_t>(pieces_.size());
-    const auto [tx0, ty0, tx1, ty1] = tile_range(box);
+    // Plain variables (a lambda below reads them; clang refuses structured bindings there).
+    const std::array<int, 4> range = tile_range(box);
+    const int tx0 = range[0], ty0 = range[1], tx1 = range[2], ty1 = range[3];
     const double tile_area = static_cast<double>(tile_side) * static_cast<double>(tile_side);
     const double side = static_cast<double>(tile_side);
     // A convex piece over many tiles: the tiles whose four corners it holds are inside it
@@ -640,17 +642,15 @@ bool tiled_coverage::covers(const cl::IntPoint& q) { return impl_->covers(q); }
 /// a polygon is mended only when it may be visible.
 class t_junction_mender::impl {
  public:
-  impl(const std::vector<cl::Path>& polys, long long width, long long height)
+  impl(const std::vector<cl::IntPoint>& points, long long width, long long height)
       : nx_(std::max<long long>(1, (width + cell - 1) / cell + 2)),
         ny_(std::max<long long>(1, (height + cell - 1) / cell + 2)),
         start_(static_cast<std::size_t>(nx_ * ny_) + 1, 0) {
-    for (const cl::Path& p : polys)
-      for (const cl::IntPoint& q : p) ++start_[cell_index(q.X, q.Y) + 1];
+    for (const cl::IntPoint& q : points) ++start_[cell_index(q.X, q.Y) + 1];
     for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
     points_.resize(start_.back());
     std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
-    for (const cl::Path& p : polys)
-      for (const cl::IntPoint& q : p) points_[next[cell_index(q.X, q.Y)]++] = q;
+    for (const cl::IntPoint& q : points) points_[next[cell_index(q.X, q.Y)]++] = q;
     // Each cell's points sorted and made distinct (shared corners appear once per polygon).
     std::size_t out = 0;
     for (std::size_t c = 0; c + 1 < start_.size(); ++c) {
@@ -746,9 +746,9 @@ class t_junction_mender::impl {
   std::vector<cl::IntPoint> points_;
 };
 
-t_junction_mender::t_junction_mender(const std::vector<cl::Path>& polys, long long width,
+t_junction_mender::t_junction_mender(const std::vector<cl::IntPoint>& points, long long width,
                                      long long height)
-    : impl_(std::make_unique<impl>(polys, width, height)) {}
+    : impl_(std::make_unique<impl>(points, width, height)) {}
 t_junction_mender::~t_junction_mender() = default;
 void t_junction_mender::mend(cl::Path& p, scratch& s) const { impl_->mend(p, s); }
 

@@ -92,8 +92,10 @@ class tiled_coverage {
 /// from their insides (T-junctions: BSP split points on a neighbour's edge).
 class t_junction_mender {
  public:
-  /// Indexes the vertices of `polys`, in a viewport of width x height grid units.
-  t_junction_mender(const std::vector<ClipperLib::Path>& polys, long long width, long long height);
+  /// Indexes the vertices `points` (of all polygons), in a viewport of width x height grid
+  /// units.
+  t_junction_mender(const std::vector<ClipperLib::IntPoint>& points, long long width,
+                    long long height);
   ~t_junction_mender();
   t_junction_mender(const t_junction_mender&) = delete;
   t_junction_mender& operator=(const t_junction_mender&) = delete;

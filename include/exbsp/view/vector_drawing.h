@@ -47,6 +47,7 @@
 // field and antialias are raster-only (the CLI warns and ignores them for vector output).
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,10 @@ struct vector_options {
 /// "visible", "painter" / "none", "visible", "visible+hidden".
 EXBSP_EXPORT const char* to_string(vector_options::mode_kind m);
 EXBSP_EXPORT const char* to_string(vector_options::edges_kind e);
+/// The edges kind whose to_string is `name`; nullopt for any other name.
+EXBSP_EXPORT std::optional<vector_options::edges_kind> edges_kind_named(const std::string& name);
+/// "none, visible or visible+hidden": the edges kinds' names, for messages.
+EXBSP_EXPORT std::string edges_kind_names();
 
 /// A grid point (notation above).
 struct grid_point {

@@ -18,6 +18,7 @@
 #include "app/resources.h"
 #include "bsp/heuristic_table.h"
 #include "bsp/kernels.h"
+#include "core/name_list.h"
 
 namespace exbsp::cli {
 
