@@ -178,6 +178,8 @@ int main(int argc, char** argv) {
                     svg_path = "bench/out/render.svg";
   std::size_t soup_n = 0, frames = 5, orbit = 36;
   int width = 1024, height = 768;
+  // --mesh, --soup and --kernel are declared again in bench_sweep.cpp: one CLI11 line each,
+  // different types there (repeatable lists).
   app.add_option("--mesh", mesh, "mesh file");
   app.add_option("--soup", soup_n, "random soup of N triangles instead of a mesh");
   app.add_option("--kernel", kernel, "BSP kernel");

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // CGAL Epick: exact (filtered) predicates on double coordinates, rounded constructions.
+// kernel_traits specialisations have the same members in every kernel (kernel_traits.h lists
+// them, kernel_epeck.h is the other CGAL one); only the bodies differ.
 #pragma once
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 

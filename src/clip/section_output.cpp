@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <type_traits>
 
 #include <exbsp/clip/section.h>
 #include "core/json_text.h"
@@ -74,19 +76,17 @@ std::string section_json(const section_result& r) {
     append_points(out, r, r.cap[i].p.data(), 3);
     out += "}";
   }
-  const section_stats& s = r.stats;
-  out += "\n ],\n \"stats\": {\"input_triangles\": " + std::to_string(s.input_triangles) +
-         ", \"degenerate_input\": " + std::to_string(s.degenerate_input) +
-         ", \"kept_whole\": " + std::to_string(s.kept_whole) +
-         ", \"in_plane\": " + std::to_string(s.in_plane) +
-         ", \"split\": " + std::to_string(s.split) + ", \"removed\": " + std::to_string(s.removed) +
-         ", \"kept\": " + std::to_string(r.kept.size()) +
-         ", \"cut_points\": " + std::to_string(s.cut_points) +
-         ", \"outline_edges\": " + std::to_string(s.outline_edges) +
-         ", \"cap_triangles\": " + std::to_string(s.cap_triangles) +
-         ", \"cap_steiner_points\": " + std::to_string(s.cap_steiner_points) +
-         ", \"split_constraints\": " + std::to_string(s.split_constraints) +
-         ", \"seconds\": " + number(s.seconds) + "}}\n";
+  out += "\n ],\n \"stats\": {";
+  const char* separator = "";
+  for_each_section_stat(r, [&](const char* name, auto value) {
+    out += separator + std::string("\"") + name + "\": ";
+    if constexpr (std::is_floating_point_v<decltype(value)>)
+      out += number(value);
+    else
+      out += std::to_string(value);
+    separator = ", ";
+  });
+  out += "}}\n";
   return out;
 }
 

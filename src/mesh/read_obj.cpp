@@ -60,6 +60,8 @@ std::int64_t parse_vertex_reference(std::string_view ref, const std::string& fil
 
 }  // namespace
 
+// Starts like read_off (soup, line reader, token buffer): the readers share line_reader and
+// the number parsers (reader_util.h); their grammars differ from the next line on.
 triangle_soup read_obj(std::string_view text, const std::string& file) {
   triangle_soup soup;
   soup.source = file;

@@ -360,18 +360,7 @@ py::dict section(const py::array_t<double, py::array::c_style | py::array::force
   d["cap"] = triangle_arrays(r.cap, &exbsp::section_triangle::p).first;
   d["cap_face"] = r.cap_face;
   py::dict s;
-  s["input_triangles"] = r.stats.input_triangles;
-  s["degenerate_input"] = r.stats.degenerate_input;
-  s["kept_whole"] = r.stats.kept_whole;
-  s["in_plane"] = r.stats.in_plane;
-  s["split"] = r.stats.split;
-  s["removed"] = r.stats.removed;
-  s["cut_points"] = r.stats.cut_points;
-  s["outline_edges"] = r.stats.outline_edges;
-  s["cap_triangles"] = r.stats.cap_triangles;
-  s["cap_steiner_points"] = r.stats.cap_steiner_points;
-  s["split_constraints"] = r.stats.split_constraints;
-  s["seconds"] = r.stats.seconds;
+  exbsp::for_each_section_stat(r, [&](const char* name, auto value) { s[name] = value; });
   d["stats"] = s;
   return d;
 }

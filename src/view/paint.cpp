@@ -10,6 +10,7 @@
 #include <exbsp/core/errors.h>
 #include "view/line_raster.h"
 #include "view/rasterizer.h"
+#include "view/workers.h"
 
 namespace exbsp::view {
 
@@ -195,23 +196,13 @@ void paint_front_to_back(const frame& f, int scale, const pixel_rows& rows) {
   const int bands = f.raster_threads > 0
                         ? std::min(static_cast<int>(std::min(f.raster_threads, 1024u)), rows.height)
                         : std::max(1, std::min({hardware, 8, rows.height / 64}));
-  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(bands));
-  auto band = [&](int b) {
-    try {
-      coverage_mask mask(rows.width, rows.height * b / bands, rows.height * (b + 1) / bands - 1);
-      std::vector<vec2> poly;
-      for (auto p = f.polygons.rbegin(); p != f.polygons.rend() && !mask.full(); ++p)
-        paint_polygon(f, *p, scale, poly, rows, &mask);
-    } catch (...) {
-      errors[static_cast<std::size_t>(b)] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int b = 1; b < bands; ++b) threads.emplace_back(band, b);
-  band(0);
-  for (std::thread& t : threads) t.join();
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
+  run_workers(static_cast<unsigned>(bands), [&](unsigned w) {
+    const int b = static_cast<int>(w);
+    coverage_mask mask(rows.width, rows.height * b / bands, rows.height * (b + 1) / bands - 1);
+    std::vector<vec2> poly;
+    for (auto p = f.polygons.rbegin(); p != f.polygons.rend() && !mask.full(); ++p)
+      paint_polygon(f, *p, scale, poly, rows, &mask);
+  });
 }
 
 }  // namespace

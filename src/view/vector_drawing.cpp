@@ -21,6 +21,7 @@
 #include "view/clip_stage.h"
 #include "view/edge_paths.h"
 #include "view/visible_cover.h"
+#include "view/workers.h"
 #include "core/name_list.h"
 
 namespace exbsp::view {
@@ -192,36 +193,6 @@ void append_curve(vector_drawing& d, vector_path&& piece) {
 /// per hardware thread, at most 8. Their results go to slots by item, so the drawing does not
 /// depend on the count.
 unsigned vector_workers() { return std::clamp(std::thread::hardware_concurrency(), 1u, 8u); }
-
-/// Calls body(i, worker) for every i in [0, n) on `workers` threads (this one is worker 0),
-/// taking indices in chunks; the first exception is rethrown once all have stopped.
-template <class Body>
-void parallel_for(std::size_t n, unsigned workers, Body body) {
-  // Chunks of up to 64 items, at least 8 per worker (the underlay groups are few and large).
-  const std::size_t chunk = std::clamp<std::size_t>(n / (8 * std::max(1u, workers)), 1, 64);
-  workers = static_cast<unsigned>(std::min<std::size_t>(workers, (n + chunk - 1) / chunk));
-  if (workers <= 1) {
-    for (std::size_t i = 0; i < n; ++i) body(i, 0u);
-    return;
-  }
-  std::atomic<std::size_t> next{0};
-  std::vector<std::exception_ptr> errors(workers);
-  auto run = [&](unsigned w) {
-    try {
-      for (std::size_t i; (i = next.fetch_add(chunk)) < n;)
-        for (std::size_t j = i; j < std::min(n, i + chunk); ++j) body(j, w);
-    } catch (...) {
-      errors[w] = std::current_exception();
-      next.store(n);
-    }
-  };
-  std::vector<std::thread> threads;
-  for (unsigned w = 1; w < workers; ++w) threads.emplace_back(run, w);
-  run(0);
-  for (std::thread& t : threads) t.join();
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
-}
 
 /// The frame's polygons on the grid, counter-clockwise, in one array (polygon k: points
 /// [start[k], start[k + 1]), none when it has no area), with their boxes. Paths are made only

@@ -112,6 +112,8 @@ def good_samples():
             refs.append(forms[(n + k) % 4](idx, k + 1))
         obj.append("f " + " ".join(refs))
     write(os.path.join(HERE, "cube_relative.obj"), "\n".join(obj) + "\n")
+    # Two PLY headers written out in full below, alike on purpose: each sample is a file a test
+    # reads, and the differences (property order, types, obj_info) are the point.
     # PLY ascii, extra vertex and face properties and an extra element (OpenMesh reads it).
     ply = ["ply", "format ascii 1.0", "comment box with colours", "element vertex 8",
            "property float x", "property float y", "property float z", "property uchar red",

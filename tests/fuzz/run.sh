@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: LGPL-3.0-or-later
-# Builds the exbsp libFuzzer targets and runs each for RUNS executions (README.md).
+# Builds the exbsp libFuzzer targets and runs each for RUNS executions (README.md). Its
+# setup lines (here, defaults from the environment) have the form of make_tree_seeds.sh's.
 #
 #   tests/fuzz/run.sh [RUNS]          RUNS defaults to 1000000; 0 = only build and replay
 #

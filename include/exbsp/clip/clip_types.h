@@ -17,6 +17,8 @@ using vec2 = std::array<double, 2>;
 using vec3 = std::array<double, 3>;
 using vec4 = std::array<double, 4>;  ///< homogeneous clip-space point (x, y, z, w)
 
+// box and segment below are two templates of the same form (two arrays, aliases for 2 and 3
+// dimensions): plain aggregates users build with braces.
 /// Closed axis-aligned box in N dimensions: min[k] <= p[k] <= max[k] for every axis k.
 template <std::size_t N>
 struct box {

@@ -108,6 +108,29 @@ struct section_result {
   section_stats stats;
 };
 
+/// (Written like engine.h's for_each_stat: one visitor per statistics struct is the one place
+/// its fields are listed for output.)
+/// Every counter of the section `r` as visit(name, value), in the order the command line's
+/// JSON and the Python module's dict list them: section_stats' counts (std::size_t), with
+/// "kept" (kept triangles) after "removed", then "seconds" (double).
+template <class Visit>
+void for_each_section_stat(const section_result& r, Visit&& visit) {
+  const section_stats& s = r.stats;
+  visit("input_triangles", s.input_triangles);
+  visit("degenerate_input", s.degenerate_input);
+  visit("kept_whole", s.kept_whole);
+  visit("in_plane", s.in_plane);
+  visit("split", s.split);
+  visit("removed", s.removed);
+  visit("kept", r.kept.size());
+  visit("cut_points", s.cut_points);
+  visit("outline_edges", s.outline_edges);
+  visit("cap_triangles", s.cap_triangles);
+  visit("cap_steiner_points", s.cap_steiner_points);
+  visit("split_constraints", s.split_constraints);
+  visit("seconds", s.seconds);
+}
+
 /// Options of section().
 struct section_options {
   bool exact_text = true;  ///< fill section_point::exact (costs time; off for rendering)

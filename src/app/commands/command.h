@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // One `exbsp` subcommand per file in this folder (docs/contract.md "Command line"): each adds
 // its options to the command line when it is made and does its work in run(). main.cpp holds
-// the table of commands and maps the library's exceptions to messages and exit codes.
+// the table of commands and maps the library's exceptions to messages and exit codes. Every
+// command file starts alike (a class deriving from command that adds its subcommand in its
+// constructor): the form is the interface, not copied logic.
 #pragma once
 #include <memory>
 

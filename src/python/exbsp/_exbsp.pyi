@@ -72,6 +72,8 @@ class Tree:
     def ancestors(self, i: int) -> List[Tuple[int, int]]: ...
     # render's three overloads repeat its signature: typing ties the return type to `format`
     # only this way (an image array, PNG bytes or SVG text).
+    # The three overloads of render repeat their keyword list on purpose: an overload cannot
+    # share one (PEP 692's Unpack of a TypedDict needs mypy 1.7; Debian 12 has mypy 1.0).
     @overload
     def render(
         self,
