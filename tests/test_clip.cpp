@@ -160,18 +160,19 @@ void check_clipped_segment(const segment<N>& s, const box<N>& b, const segment<N
 
 TEST(CohenSutherlandOutcode, TwoDBitsNameTheViolatedBoundaries) {
   const window2 w = make_window(-1, 2, -3, 4);
-  EXPECT_EQ(outcode(vec2{0, 0}, w), 0u);
-  EXPECT_EQ(outcode(vec2{-2, 0}, w), unsigned{left});
-  EXPECT_EQ(outcode(vec2{3, 0}, w), unsigned{right});
-  EXPECT_EQ(outcode(vec2{0, -4}, w), unsigned{bottom});
-  EXPECT_EQ(outcode(vec2{0, 5}, w), unsigned{top});
-  EXPECT_EQ(outcode(vec2{-2, 5}, w), unsigned{left | top});
-  EXPECT_EQ(outcode(vec2{3, -4}, w), unsigned{right | bottom});
+  EXPECT_EQ(outcode(vec2d{0, 0}, w), 0u);
+  EXPECT_EQ(outcode(vec2d{-2, 0}, w), unsigned{left});
+  EXPECT_EQ(outcode(vec2d{3, 0}, w), unsigned{right});
+  EXPECT_EQ(outcode(vec2d{0, -4}, w), unsigned{bottom});
+  EXPECT_EQ(outcode(vec2d{0, 5}, w), unsigned{top});
+  EXPECT_EQ(outcode(vec2d{-2, 5}, w), unsigned{left | top});
+  EXPECT_EQ(outcode(vec2d{3, -4}, w), unsigned{right | bottom});
 }
 
 TEST(CohenSutherlandOutcode, PointsOnTheBoundaryAreInside) {
   const window2 w = make_window(-1, 2, -3, 4);
-  for (const vec2& p : {vec2{-1, 0}, vec2{2, 0}, vec2{0, -3}, vec2{0, 4}, vec2{-1, -3}, vec2{2, 4}})
+  for (const vec2d& p :
+       {vec2d{-1, 0}, vec2d{2, 0}, vec2d{0, -3}, vec2d{0, 4}, vec2d{-1, -3}, vec2d{2, 4}})
     EXPECT_EQ(outcode(p, w), 0u);
 }
 
@@ -180,16 +181,16 @@ TEST(CohenSutherlandOutcode, ThreeDOutcodesSeparateTwentySevenRegions) {
   std::vector<unsigned> codes;
   for (double x : {-1.0, 0.5, 2.0})
     for (double y : {-1.0, 0.5, 2.0})
-      for (double z : {-1.0, 0.5, 2.0}) codes.push_back(outcode(vec3{x, y, z}, b));
+      for (double z : {-1.0, 0.5, 2.0}) codes.push_back(outcode(vec3d{x, y, z}, b));
   std::sort(codes.begin(), codes.end());
   EXPECT_EQ(std::unique(codes.begin(), codes.end()) - codes.begin(), 27);
-  EXPECT_EQ(outcode(vec3{0.5, 0.5, -1}, b), unsigned{z_below});
-  EXPECT_EQ(outcode(vec3{0.5, 0.5, 2}, b), unsigned{z_above});
+  EXPECT_EQ(outcode(vec3d{0.5, 0.5, -1}, b), unsigned{z_below});
+  EXPECT_EQ(outcode(vec3d{0.5, 0.5, 2}, b), unsigned{z_above});
 }
 
 RC_GTEST_PROP(CohenSutherlandOutcode, MatchesTheDefinitionOnRandomPoints, ()) {
   const box3 b = gen_box<3>();
-  const vec3 p = gen_point(b, 3.0);
+  const vec3d p = gen_point(b, 3.0);
   unsigned expected = 0;
   for (unsigned k = 0; k < 3; ++k) {
     if (p[k] < b.min[k]) expected |= 1u << (2 * k);
@@ -197,7 +198,7 @@ RC_GTEST_PROP(CohenSutherlandOutcode, MatchesTheDefinitionOnRandomPoints, ()) {
   }
   RC_ASSERT(outcode(p, b) == expected);
   const window2 w{{b.min[0], b.min[1]}, {b.max[0], b.max[1]}};
-  RC_ASSERT(outcode(vec2{p[0], p[1]}, w) == (expected & 15u));
+  RC_ASSERT(outcode(vec2d{p[0], p[1]}, w) == (expected & 15u));
 }
 
 TEST(CohenSutherlandOutcode, TrivialAcceptAndRejectTests) {
@@ -255,7 +256,7 @@ RC_GTEST_PROP(LineClipping, CohenSutherlandAgreesWithLiangBarsky3D, ()) {
 RC_GTEST_PROP(LineClipping, LongSegmentsThroughTheWindowAgree, ()) {
   // Far endpoints on opposite sides of a point of the window: clipped at both ends.
   const box2 b = gen_box<2>();
-  const vec2 c = gen_point_inside(b), p0 = gen_point(b, 1e3);
+  const vec2d c = gen_point_inside(b), p0 = gen_point(b, 1e3);
   const double stretch = gen_double(0.5, 2);
   const segment2 s{p0, {c[0] + stretch * (c[0] - p0[0]), c[1] + stretch * (c[1] - p0[1])}};
   check_line_clippers(s, b);
@@ -284,7 +285,7 @@ RC_GTEST_PROP(LineClipping, SegmentsBeyondOneBoundaryAreRejected, ()) {
   const unsigned axis = uniform_int(0u, 2u);
   const bool above = *rc::gen::arbitrary<bool>();
   segment2 s{gen_point(b, 4.0), gen_point(b, 4.0)};
-  for (vec2* p : {&s.p0, &s.p1})
+  for (vec2d* p : {&s.p0, &s.p1})
     (*p)[axis] = above ? b.max[axis] + gen_double(1e-9, 4.0) : b.min[axis] - gen_double(1e-9, 4.0);
   RC_ASSERT(trivially_rejected(outcode(s.p0, b), outcode(s.p1, b)));
   RC_ASSERT(!cohen_sutherland_clip(s, b));
@@ -298,7 +299,7 @@ RC_GTEST_PROP(LineClipping, SegmentsPassingOutsideACornerAreRejected, ()) {
   const double corner = b.max[0] + b.max[1];
   auto gen_beyond = [&] {
     const double x = gen_double(b.min[0] - 8, b.max[0] + 8);
-    return vec2{x, corner - x + gen_double(1e-6, 4.0)};
+    return vec2d{x, corner - x + gen_double(1e-6, 4.0)};
   };
   const segment2 s{gen_beyond(), gen_beyond()};
   RC_ASSERT(!cohen_sutherland_clip(s, b));
@@ -349,7 +350,7 @@ TEST(LineClipping, SegmentThroughTheCornerGivesTheCornerPoint) {
   const auto lb = liang_barsky_clip(s, w);
   ASSERT_TRUE(cs);
   ASSERT_TRUE(lb);
-  for (const vec2& p : {cs->p0, cs->p1, lb->clipped.p0, lb->clipped.p1}) {
+  for (const vec2d& p : {cs->p0, cs->p1, lb->clipped.p0, lb->clipped.p1}) {
     EXPECT_EQ(p[0], -1.5);
     EXPECT_EQ(p[1], -0.75);
   }
@@ -370,7 +371,7 @@ TEST(LineClipping, ThreeDSegmentClippedOnAllThreeAxes) {
 
 RC_GTEST_PROP(LineClipping, ZeroLengthSegmentIsKeptIffItsPointIsInside, ()) {
   const box3 b = gen_box<3>();
-  const vec3 p = gen_point(b, 2.0);
+  const vec3d p = gen_point(b, 2.0);
   const segment3 s{p, p};
   const auto cs = cohen_sutherland_clip(s, b);
   const auto lb = liang_barsky_clip(s, b);
@@ -407,26 +408,26 @@ TEST(LineClipping, BadInputThrowsUsageError) {
 
 namespace {
 
-double cross2(const vec2& o, const vec2& a, const vec2& b) {
+double cross2(const vec2d& o, const vec2d& a, const vec2d& b) {
   return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
 }
 
-double signed_area(const std::vector<vec2>& poly) {
+double signed_area(const std::vector<vec2d>& poly) {
   double twice = 0;
   for (std::size_t i = 0; i < poly.size(); ++i) {
-    const vec2& p = poly[i];
-    const vec2& q = poly[(i + 1) % poly.size()];
+    const vec2d& p = poly[i];
+    const vec2d& q = poly[(i + 1) % poly.size()];
     twice += p[0] * q[1] - p[1] * q[0];
   }
   return twice / 2;
 }
 
 /// Vector area (half the sum of the cross products of a fan) of a 3D polygon.
-vec3 vector_area(const std::vector<vec3>& poly) {
-  vec3 sum{0, 0, 0};
+vec3d vector_area(const std::vector<vec3d>& poly) {
+  vec3d sum{0, 0, 0};
   for (const auto& t : fan_triangulate(poly)) {
-    const vec3 u{t[1][0] - t[0][0], t[1][1] - t[0][1], t[1][2] - t[0][2]};
-    const vec3 v{t[2][0] - t[0][0], t[2][1] - t[0][1], t[2][2] - t[0][2]};
+    const vec3d u{t[1][0] - t[0][0], t[1][1] - t[0][1], t[1][2] - t[0][2]};
+    const vec3d v{t[2][0] - t[0][0], t[2][1] - t[0][1], t[2][2] - t[0][2]};
     sum[0] += (u[1] * v[2] - u[2] * v[1]) / 2;
     sum[1] += (u[2] * v[0] - u[0] * v[2]) / 2;
     sum[2] += (u[0] * v[1] - u[1] * v[0]) / 2;
@@ -435,11 +436,11 @@ vec3 vector_area(const std::vector<vec3>& poly) {
 }
 
 /// Counter-clockwise convex hull (Andrew's monotone chain), collinear points dropped.
-std::vector<vec2> convex_hull(std::vector<vec2> pts) {
+std::vector<vec2d> convex_hull(std::vector<vec2d> pts) {
   std::sort(pts.begin(), pts.end());
   pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
   if (pts.size() < 3) return pts;
-  std::vector<vec2> hull(2 * pts.size());
+  std::vector<vec2d> hull(2 * pts.size());
   std::size_t k = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     while (k >= 2 && cross2(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
@@ -453,9 +454,9 @@ std::vector<vec2> convex_hull(std::vector<vec2> pts) {
   return hull;
 }
 
-std::vector<vec2> gen_convex_polygon(double range) {
+std::vector<vec2d> gen_convex_polygon(double range) {
   const int n = uniform_int(3, 12);
-  std::vector<vec2> pts;
+  std::vector<vec2d> pts;
   for (int i = 0; i < n; ++i) pts.push_back({gen_coord(-range, range), gen_coord(-range, range)});
   return convex_hull(pts);
 }
@@ -466,24 +467,24 @@ half_plane2 gen_half_plane(double range) {
   return {std::cos(angle), std::sin(angle), gen_double(-range / 4, range)};
 }
 
-double line_distance(const half_plane2& h, const vec2& p) {
+double line_distance(const half_plane2& h, const vec2d& p) {
   return std::abs(h.value(p)) / std::hypot(h.a, h.b);
 }
 
 /// Half-plane on the left of the directed edge p -> q (inside of a CCW polygon).
-half_plane2 left_of(const vec2& p, const vec2& q) {
+half_plane2 left_of(const vec2d& p, const vec2d& q) {
   const double a = -(q[1] - p[1]), b = q[0] - p[0];
   return {a, b, -(a * p[0] + b * p[1])};
 }
 
-bool inside_convex(const std::vector<vec2>& ccw, const vec2& p) {
+bool inside_convex(const std::vector<vec2d>& ccw, const vec2d& p) {
   if (ccw.size() < 3) return false;
   for (std::size_t i = 0; i < ccw.size(); ++i)
     if (cross2(ccw[i], ccw[(i + 1) % ccw.size()], p) < 0) return false;
   return true;
 }
 
-double polygon_scale(const std::vector<vec2>& poly) {
+double polygon_scale(const std::vector<vec2d>& poly) {
   double s = 1;
   for (const auto& p : poly) s = std::max(s, max_abs(p));
   return s;
@@ -492,39 +493,39 @@ double polygon_scale(const std::vector<vec2>& poly) {
 }  // namespace
 
 TEST(SutherlandHodgman, SquareClippedByATriangle) {
-  const std::vector<vec2> square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  const std::vector<vec2d> square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
   // Triangle (0,0), (3,0), (0,3): x >= 0, y >= 0, x + y <= 3.
   const std::vector<half_plane2> triangle{left_of({0, 0}, {3, 0}), left_of({3, 0}, {0, 3}),
                                           left_of({0, 3}, {0, 0})};
   const auto out = sutherland_hodgman_clip(square, triangle);
-  const std::vector<vec2> expected{{0, 0}, {2, 0}, {2, 1}, {1, 2}, {0, 2}};
+  const std::vector<vec2d> expected{{0, 0}, {2, 0}, {2, 1}, {1, 2}, {0, 2}};
   EXPECT_EQ(out, expected);
   EXPECT_EQ(signed_area(out), 3.5);
   const auto fan = fan_triangulate(out);
   ASSERT_EQ(fan.size(), 3u);
-  EXPECT_EQ(fan[1], (std::array<vec2, 3>{vec2{0, 0}, vec2{2, 1}, vec2{1, 2}}));
+  EXPECT_EQ(fan[1], (std::array<vec2d, 3>{vec2d{0, 0}, vec2d{2, 1}, vec2d{1, 2}}));
 }
 
 TEST(SutherlandHodgman, SquareClippedByATriangleInsideItGivesTheTriangle) {
-  const std::vector<vec2> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
-  const vec2 a{1, 1}, b{3, 1}, c{2, 3};
+  const std::vector<vec2d> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  const vec2d a{1, 1}, b{3, 1}, c{2, 3};
   const auto out = sutherland_hodgman_clip(square, {left_of(a, b), left_of(b, c), left_of(c, a)});
   ASSERT_EQ(out.size(), 3u);
   EXPECT_NEAR(signed_area(out), 2.0, 1e-14);
-  for (const vec2& v : {a, b, c}) {
+  for (const vec2d& v : {a, b, c}) {
     double nearest = 1e300;
-    for (const vec2& p : out) nearest = std::min(nearest, distance(p, v));
+    for (const vec2d& p : out) nearest = std::min(nearest, distance(p, v));
     EXPECT_LT(nearest, 1e-14);
   }
 }
 
 TEST(SutherlandHodgman, WindowBoundariesAreHitExactly) {
   const window2 w = make_window(-0.3, 0.7, -0.1, 0.9);
-  const std::vector<vec2> tri{{-1.3, -0.77}, {2.1, 0.2}, {0.1, 1.61}};
+  const std::vector<vec2d> tri{{-1.3, -0.77}, {2.1, 0.2}, {0.1, 1.61}};
   const auto out = sutherland_hodgman_clip(tri, window_half_planes(w));
   ASSERT_GE(out.size(), 3u);
   int on_boundary = 0;
-  for (const vec2& p : out) {
+  for (const vec2d& p : out) {
     EXPECT_TRUE(inside(p, w));
     on_boundary += p[0] == w.min[0] || p[0] == w.max[0] || p[1] == w.min[1] || p[1] == w.max[1];
   }
@@ -539,7 +540,7 @@ RC_GTEST_PROP(SutherlandHodgman, ResultIsInsideEveryHalfPlaneAndNotLarger, ()) {
   for (int i = 0; i < m; ++i) region.push_back(gen_half_plane(6));
   const auto out = sutherland_hodgman_clip(poly, region);
   const double scale = polygon_scale(poly);
-  for (const vec2& p : out)
+  for (const vec2d& p : out)
     for (const auto& h : region) RC_ASSERT(h.value(p) >= -1e-12 * scale);
   RC_ASSERT(out.empty() || out.size() >= 3);
   RC_ASSERT(signed_area(out) <= signed_area(poly) + 1e-12 * scale * scale);
@@ -549,7 +550,7 @@ RC_GTEST_PROP(SutherlandHodgman, ResultIsInsideEveryHalfPlaneAndNotLarger, ()) {
 
 RC_GTEST_PROP(SutherlandHodgman, ConvexPolygonInsideTheWindowIsUnchanged, ()) {
   const window2 w = gen_box<2>();
-  std::vector<vec2> pts;
+  std::vector<vec2d> pts;
   for (int i = 0; i < 8; ++i) pts.push_back(gen_point_inside(w));
   const auto poly = convex_hull(pts);
   RC_PRE(poly.size() >= 3);
@@ -569,7 +570,7 @@ RC_GTEST_PROP(SutherlandHodgman, RandomConvexPolygonsMatchPointSampling, ()) {
     lines.push_back(left_of(poly[i], poly[(i + 1) % poly.size()]));
   int checked = 0;
   for (int i = 0; i < 200; ++i) {
-    const vec2 p{gen_double(-11, 11), gen_double(-11, 11)};
+    const vec2d p{gen_double(-11, 11), gen_double(-11, 11)};
     bool near_a_line = false;
     for (const auto& h : lines) near_a_line = near_a_line || line_distance(h, p) < tol;
     if (near_a_line) continue;
@@ -582,23 +583,23 @@ RC_GTEST_PROP(SutherlandHodgman, RandomConvexPolygonsMatchPointSampling, ()) {
 }
 
 TEST(SutherlandHodgman, EdgeCasesOfTheInput) {
-  const std::vector<vec2> tri{{0, 0}, {1, 0}, {0, 1}};
+  const std::vector<vec2d> tri{{0, 0}, {1, 0}, {0, 1}};
   EXPECT_EQ(sutherland_hodgman_clip(tri, {}), tri);
-  EXPECT_TRUE(sutherland_hodgman_clip(std::vector<vec2>{{0, 0}, {1, 0}}, {}).empty());
+  EXPECT_TRUE(sutherland_hodgman_clip(std::vector<vec2d>{{0, 0}, {1, 0}}, {}).empty());
   EXPECT_TRUE(sutherland_hodgman_clip(tri, {{1, 0, -5}}).empty());  // x >= 5
   // A half-plane that only touches a vertex keeps nothing of positive area.
   EXPECT_TRUE(sutherland_hodgman_clip(tri, {{-1, 0, 0}}).empty());  // x <= 0: one edge
   // Vertices exactly on the line are kept as they are, with no duplicate crossing points.
   const auto half = sutherland_hodgman_clip(tri, {{-1, 1, 0}});  // y >= x
-  EXPECT_EQ(half, (std::vector<vec2>{{0, 0}, {0.5, 0.5}, {0, 1}}));
-  EXPECT_THROW(sutherland_hodgman_clip(std::vector<vec2>{{0, 0}, {1, std::nan("")}, {0, 1}}, {}),
+  EXPECT_EQ(half, (std::vector<vec2d>{{0, 0}, {0.5, 0.5}, {0, 1}}));
+  EXPECT_THROW(sutherland_hodgman_clip(std::vector<vec2d>{{0, 0}, {1, std::nan("")}, {0, 1}}, {}),
                exbsp::usage_error);
   EXPECT_THROW(sutherland_hodgman_clip(tri, {{1, 0, HUGE_VAL}}), exbsp::usage_error);
   EXPECT_THROW(window_half_planes(make_window(1, 0, 0, 1)), exbsp::usage_error);
 }
 
 TEST(SutherlandHodgman, FanTriangulationCoversThePolygon) {
-  const std::vector<vec2> hexagon{{2, 0}, {1, 2}, {-1, 2}, {-2, 0}, {-1, -2}, {1, -2}};
+  const std::vector<vec2d> hexagon{{2, 0}, {1, 2}, {-1, 2}, {-2, 0}, {-1, -2}, {1, -2}};
   const auto fan = fan_triangulate(hexagon);
   ASSERT_EQ(fan.size(), 4u);
   double area = 0;
@@ -609,19 +610,19 @@ TEST(SutherlandHodgman, FanTriangulationCoversThePolygon) {
     area += signed_area({fan[i][0], fan[i][1], fan[i][2]});
   }
   EXPECT_EQ(area, signed_area(hexagon));
-  EXPECT_TRUE(fan_triangulate(std::vector<vec2>{{0, 0}, {1, 1}}).empty());
+  EXPECT_TRUE(fan_triangulate(std::vector<vec2d>{{0, 0}, {1, 1}}).empty());
 }
 
 RC_GTEST_PROP(SutherlandHodgman, ThreeDTriangleClippedByABoxStaysInItsPlane, ()) {
   const box3 b = gen_box<3>();
-  std::vector<vec3> tri;
+  std::vector<vec3d> tri;
   for (int i = 0; i < 3; ++i) tri.push_back(gen_point(b, 3.0));
   const auto out = sutherland_hodgman_clip(tri, box_half_spaces(b));
   double scale = 1;
   for (const auto& p : tri) scale = std::max(scale, max_abs(p));
-  const vec3 n = vector_area(tri);
+  const vec3d n = vector_area(tri);
   const double n_len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  for (const vec3& p : out) {
+  for (const vec3d& p : out) {
     for (std::size_t k = 0; k < 3; ++k) {
       RC_ASSERT(p[k] >= b.min[k] - 1e-12 * scale);
       RC_ASSERT(p[k] <= b.max[k] + 1e-12 * scale);
@@ -633,7 +634,7 @@ RC_GTEST_PROP(SutherlandHodgman, ThreeDTriangleClippedByABoxStaysInItsPlane, ())
       RC_ASSERT(std::abs(off) <= 1e-9 * scale);
     }
   }
-  const vec3 a = vector_area(out);
+  const vec3d a = vector_area(out);
   RC_ASSERT(a[0] * n[0] + a[1] * n[1] + a[2] * n[2] <=
             n_len * n_len + 1e-12 * scale * scale * (n_len + 1));
 }
@@ -643,7 +644,7 @@ TEST(SutherlandHodgman, FrustumHalfSpacesFollowGlFrustum) {
   const auto planes = frustum_half_spaces(l, r, bo, t, n, f);
   ASSERT_EQ(planes.size(), 6u);
   // The near rectangle's corners lie on the side planes and the near plane.
-  for (const vec3& c : {vec3{l, bo, -n}, vec3{r, bo, -n}, vec3{r, t, -n}, vec3{l, t, -n}}) {
+  for (const vec3d& c : {vec3d{l, bo, -n}, vec3d{r, bo, -n}, vec3d{r, t, -n}, vec3d{l, t, -n}}) {
     int on = 0;
     for (const auto& h : planes) {
       EXPECT_GE(h.value(c), 0);
@@ -666,20 +667,20 @@ TEST(SutherlandHodgman, FrustumHalfSpacesFollowGlFrustum) {
 // Bounding boxes
 
 TEST(BoundingBox, OverlapIsClosedAndRejectsDisjointTriangles) {
-  const std::array<vec2, 3> tri{vec2{2, 0}, vec2{3, 1}, vec2{2.5, 3}};
+  const std::array<vec2d, 3> tri{vec2d{2, 0}, vec2d{3, 1}, vec2d{2.5, 3}};
   const box2 bb = bounding_box(tri);
-  EXPECT_EQ(bb.min, (vec2{2, 0}));
-  EXPECT_EQ(bb.max, (vec2{3, 3}));
+  EXPECT_EQ(bb.min, (vec2d{2, 0}));
+  EXPECT_EQ(bb.max, (vec2d{3, 3}));
   EXPECT_FALSE(triangle_outside_window(tri, make_window(0, 2, 0, 2)));  // touches x = 2
   EXPECT_TRUE(triangle_outside_window(tri, make_window(0, 1.999, 0, 2)));
   EXPECT_TRUE(boxes_overlap(box3{{0, 0, 0}, {1, 1, 1}}, box3{{1, 1, 1}, {2, 2, 2}}));
   EXPECT_FALSE(boxes_overlap(box3{{0, 0, 0}, {1, 1, 1}}, box3{{0, 0, 1.5}, {2, 2, 2}}));
-  EXPECT_THROW(bounding_box(std::vector<vec3>{}), exbsp::usage_error);
-  EXPECT_THROW(bounding_box(std::vector<vec2>{{0, std::nan("")}}), exbsp::usage_error);
+  EXPECT_THROW(bounding_box(std::vector<vec3d>{}), exbsp::usage_error);
+  EXPECT_THROW(bounding_box(std::vector<vec2d>{{0, std::nan("")}}), exbsp::usage_error);
   const auto corners = box_corners(box3{{0, 1, 2}, {3, 4, 5}});
-  EXPECT_EQ(corners[0], (vec3{0, 1, 2}));
-  EXPECT_EQ(corners[5], (vec3{3, 1, 5}));
-  EXPECT_EQ(corners[7], (vec3{3, 4, 5}));
+  EXPECT_EQ(corners[0], (vec3d{0, 1, 2}));
+  EXPECT_EQ(corners[5], (vec3d{3, 1, 5}));
+  EXPECT_EQ(corners[7], (vec3d{3, 4, 5}));
 }
 
 RC_GTEST_PROP(BoundingBox, BoxesOverlapIffSomePointIsInBoth, ()) {
@@ -706,8 +707,8 @@ mat4 frustum_matrix(double l, double r, double b, double t, double n, double f) 
            {0, 0, -1, 0}}};
 }
 
-vec4 transform(const mat4& m, const vec3& p) {
-  vec4 out;
+vec4d transform(const mat4& m, const vec3d& p) {
+  vec4d out;
   for (std::size_t i = 0; i < 4; ++i)
     out[i] = m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2] + m[i][3];
   return out;
@@ -728,15 +729,15 @@ frustum_params gen_frustum() {
   return p;
 }
 
-vec3 gen_eye_point() { return {gen_double(-6, 6), gen_double(-6, 6), gen_double(-14, 4)}; }
+vec3d gen_eye_point() { return {gen_double(-6, 6), gen_double(-6, 6), gen_double(-14, 4)}; }
 
 /// Largest distance from a point of `a` to its nearest point of `b`, both ways.
-double hausdorff(const std::vector<vec3>& a, const std::vector<vec3>& b) {
-  auto one_way = [](const std::vector<vec3>& x, const std::vector<vec3>& y) {
+double hausdorff(const std::vector<vec3d>& a, const std::vector<vec3d>& b) {
+  auto one_way = [](const std::vector<vec3d>& x, const std::vector<vec3d>& y) {
     double worst = 0;
-    for (const vec3& p : x) {
+    for (const vec3d& p : x) {
       double nearest = 1e300;
-      for (const vec3& q : y) nearest = std::min(nearest, distance(p, q));
+      for (const vec3d& q : y) nearest = std::min(nearest, distance(p, q));
       worst = std::max(worst, nearest);
     }
     return worst;
@@ -744,31 +745,31 @@ double hausdorff(const std::vector<vec3>& a, const std::vector<vec3>& b) {
   return std::max(one_way(a, b), one_way(b, a));
 }
 
-std::vector<vec3> to_ndc(const std::vector<vec4>& points) {
-  std::vector<vec3> out;
-  for (const vec4& p : points) out.push_back(perspective_divide(p));
+std::vector<vec3d> to_ndc(const std::vector<vec4d>& points) {
+  std::vector<vec3d> out;
+  for (const vec4d& p : points) out.push_back(perspective_divide(p));
   return out;
 }
 
 /// Clips an eye-space triangle with the homogeneous clipper and, as the oracle, in eye
 /// space by the frustum's half-spaces; checks that both give the same polygon in NDC.
-void check_against_eye_space(const std::array<vec3, 3>& eye, const frustum_params& fp) {
+void check_against_eye_space(const std::array<vec3d, 3>& eye, const frustum_params& fp) {
   const mat4 m = frustum_matrix(fp.l, fp.r, fp.b, fp.t, fp.n, fp.f);
   const auto clipped =
       homogeneous_clip_triangle({transform(m, eye[0]), transform(m, eye[1]), transform(m, eye[2])});
   const auto oracle =
-      sutherland_hodgman_clip(std::vector<vec3>(eye.begin(), eye.end()),
+      sutherland_hodgman_clip(std::vector<vec3d>(eye.begin(), eye.end()),
                               frustum_half_spaces(fp.l, fp.r, fp.b, fp.t, fp.n, fp.f));
-  std::vector<vec4> oracle_clip;
-  for (const vec3& p : oracle) oracle_clip.push_back(transform(m, p));
-  for (const vec4& p : clipped.positions) RC_ASSERT(p[3] > 0.0);
+  std::vector<vec4d> oracle_clip;
+  for (const vec3d& p : oracle) oracle_clip.push_back(transform(m, p));
+  for (const vec4d& p : clipped.positions) RC_ASSERT(p[3] > 0.0);
   const auto a = to_ndc(clipped.positions);
   const auto b = to_ndc(oracle_clip);
-  for (const vec3& p : a)
+  for (const vec3d& p : a)
     for (double v : p) RC_ASSERT(std::abs(v) <= 1 + 1e-12);
   if (a.empty() != b.empty()) {
     // Only a sliver within rounding of the volume's boundary may be in doubt.
-    const vec3 area = vector_area(a.empty() ? b : a);
+    const vec3d area = vector_area(a.empty() ? b : a);
     RC_ASSERT(std::abs(area[0]) + std::abs(area[1]) + std::abs(area[2]) <= 1e-9);
   } else {
     RC_ASSERT(hausdorff(a, b) <= 1e-9);
@@ -790,7 +791,7 @@ TEST(HomogeneousOutcode, BitsFollowThePlaneOrder) {
 }
 
 RC_GTEST_PROP(HomogeneousOutcode, PointsBehindTheEyeAreAlwaysOutside, ()) {
-  const vec4 p{gen_double(-3, 3), gen_double(-3, 3), gen_double(-3, 3), -gen_double(1e-9, 3)};
+  const vec4d p{gen_double(-3, 3), gen_double(-3, 3), gen_double(-3, 3), -gen_double(1e-9, 3)};
   const unsigned code = homogeneous_outcode(p);
   RC_ASSERT(code != 0u);
   RC_ASSERT((code & 3u) != 0u);  // it violates an x plane (and a y and a z plane)
@@ -799,7 +800,7 @@ RC_GTEST_PROP(HomogeneousOutcode, PointsBehindTheEyeAreAlwaysOutside, ()) {
 }
 
 RC_GTEST_PROP(HomogeneousClip, TriviallyAcceptedTriangleIsUnchanged, ()) {
-  std::array<vec4, 3> tri;
+  std::array<vec4d, 3> tri;
   std::vector<double> attributes;
   for (auto& p : tri) {
     const double w = gen_double(0.25, 3);
@@ -810,12 +811,12 @@ RC_GTEST_PROP(HomogeneousClip, TriviallyAcceptedTriangleIsUnchanged, ()) {
   RC_ASSERT(homogeneous_trivially_accepted(tri));
   const auto out = homogeneous_clip_triangle(tri, attributes);
   RC_ASSERT(out.attribute_count == 2u);
-  RC_ASSERT(out.positions == std::vector<vec4>(tri.begin(), tri.end()));
+  RC_ASSERT(out.positions == std::vector<vec4d>(tri.begin(), tri.end()));
   RC_ASSERT(out.attributes == attributes);
 }
 
 RC_GTEST_PROP(HomogeneousClip, TriangleWithAllWNegativeIsRejected, ()) {
-  std::array<vec4, 3> tri;
+  std::array<vec4d, 3> tri;
   for (auto& p : tri)
     p = {gen_double(-3, 3), gen_double(-3, 3), gen_double(-3, 3), -gen_double(1e-6, 3)};
   RC_CLASSIFY(homogeneous_trivially_rejected(tri), "trivially rejected");
@@ -827,13 +828,13 @@ RC_GTEST_PROP(HomogeneousClip, TriangleWithAllWNegativeIsRejected, ()) {
 TEST(HomogeneousClip, TriangleBehindTheEyeThatWouldWrapAroundGivesNothing) {
   // Behind the eye (w < 0) but x/w, y/w, z/w inside [-1, 1]: drawn without clipping, it
   // would appear mirrored in the middle of the screen.
-  const std::array<vec4, 3> tri{vec4{0.5, 0.5, 0.5, -1}, vec4{-0.5, 0.2, 0.1, -1},
-                                vec4{0.3, -0.9, -1.5, -2}};
-  for (const vec4& p : tri)
+  const std::array<vec4d, 3> tri{vec4d{0.5, 0.5, 0.5, -1}, vec4d{-0.5, 0.2, 0.1, -1},
+                                 vec4d{0.3, -0.9, -1.5, -2}};
+  for (const vec4d& p : tri)
     for (std::size_t k = 0; k < 3; ++k) EXPECT_LE(std::abs(p[k] / p[3]), 1.0);
   EXPECT_TRUE(homogeneous_clip_triangle(tri).empty());
   // Mixed signs: the outcodes (42, 21, 38) share no bit, still nothing is visible.
-  const std::array<vec4, 3> mixed{vec4{3, 3, 3, -1}, vec4{-3, -3, -3, -1}, vec4{3, -3, 3, -1}};
+  const std::array<vec4d, 3> mixed{vec4d{3, 3, 3, -1}, vec4d{-3, -3, -3, -1}, vec4d{3, -3, 3, -1}};
   EXPECT_FALSE(homogeneous_trivially_rejected(mixed));
   EXPECT_TRUE(homogeneous_clip_triangle(mixed).empty());
 }
@@ -842,13 +843,13 @@ TEST(HomogeneousClip, TriangleCrossingWZeroKeepsOnlyTheVisiblePart) {
   const frustum_params fp{-1, 1, -1, 1, 1, 10};
   const mat4 m = frustum_matrix(fp.l, fp.r, fp.b, fp.t, fp.n, fp.f);
   // Two vertices in front of the eye, one behind it (w < 0 after the projection).
-  const std::array<vec3, 3> eye{vec3{-0.5, -0.5, -5}, vec3{0.5, -0.5, -5}, vec3{0, 0.5, 5}};
-  const std::array<vec4, 3> clip{transform(m, eye[0]), transform(m, eye[1]), transform(m, eye[2])};
+  const std::array<vec3d, 3> eye{vec3d{-0.5, -0.5, -5}, vec3d{0.5, -0.5, -5}, vec3d{0, 0.5, 5}};
+  const std::array<vec4d, 3> clip{transform(m, eye[0]), transform(m, eye[1]), transform(m, eye[2])};
   ASSERT_LT(clip[2][3], 0.0);
   EXPECT_FALSE(homogeneous_trivially_rejected(clip));
   const auto out = homogeneous_clip_triangle(clip);
   ASSERT_GE(out.size(), 3u);
-  for (const vec4& p : out.positions) {
+  for (const vec4d& p : out.positions) {
     EXPECT_GT(p[3], 0.0);
     // Visible points have eye z <= -near = -1, so eye y = -0.5 + (z + 5) / 10 <= -0.1.
     EXPECT_LT(p[1] / p[3], 0.0);
@@ -858,18 +859,18 @@ TEST(HomogeneousClip, TriangleCrossingWZeroKeepsOnlyTheVisiblePart) {
 
 RC_GTEST_PROP(HomogeneousClip, MatchesEyeSpaceClippingByTheFrustum, ()) {
   const frustum_params fp = gen_frustum();
-  const std::array<vec3, 3> eye{gen_eye_point(), gen_eye_point(), gen_eye_point()};
+  const std::array<vec3d, 3> eye{gen_eye_point(), gen_eye_point(), gen_eye_point()};
   RC_CLASSIFY(eye[0][2] > 0 || eye[1][2] > 0 || eye[2][2] > 0, "a vertex behind the eye");
   check_against_eye_space(eye, fp);
 }
 
 RC_GTEST_PROP(HomogeneousClip, ResultIsInsideTheViewVolume, ()) {
-  std::array<vec4, 3> tri;
+  std::array<vec4d, 3> tri;
   for (auto& p : tri)
     p = {gen_double(-4, 4), gen_double(-4, 4), gen_double(-4, 4), gen_double(-2, 4)};
   const auto out = homogeneous_clip_triangle(tri);
   RC_ASSERT(out.empty() || out.size() >= 3);
-  for (const vec4& p : out.positions) {
+  for (const vec4d& p : out.positions) {
     RC_ASSERT(p[3] >= 0.0);
     for (std::size_t k = 0; k < 3; ++k) RC_ASSERT(std::abs(p[k]) <= p[3] + 1e-12);
   }
@@ -881,15 +882,15 @@ RC_GTEST_PROP(HomogeneousClip, AttributesAreInterpolatedWithThePosition, ()) {
   // the clipped vertex itself (linear interpolation in clip space is perspective-correct).
   const frustum_params fp = gen_frustum();
   const mat4 m = frustum_matrix(fp.l, fp.r, fp.b, fp.t, fp.n, fp.f);
-  const std::array<vec3, 3> eye{gen_eye_point(), gen_eye_point(), gen_eye_point()};
+  const std::array<vec3d, 3> eye{gen_eye_point(), gen_eye_point(), gen_eye_point()};
   std::vector<double> attributes;
-  for (const vec3& p : eye) attributes.insert(attributes.end(), p.begin(), p.end());
+  for (const vec3d& p : eye) attributes.insert(attributes.end(), p.begin(), p.end());
   const auto out = homogeneous_clip_triangle(
       {transform(m, eye[0]), transform(m, eye[1]), transform(m, eye[2])}, attributes);
   RC_ASSERT(out.attribute_count == 3u);
   for (std::size_t i = 0; i < out.size(); ++i) {
     const double* a = out.attributes_of(i);
-    const vec4 expected = transform(m, {a[0], a[1], a[2]});
+    const vec4d expected = transform(m, {a[0], a[1], a[2]});
     for (std::size_t k = 0; k < 4; ++k)
       RC_ASSERT(std::abs(expected[k] - out.positions[i][k]) <=
                 1e-11 * (1 + std::abs(expected[k])) * 100);
@@ -905,7 +906,7 @@ std::vector<std::array<double, 5>> vertices_on_shared_edge(const homogeneous_pol
   for (std::size_t i = 0; i < poly.size(); ++i) {
     const double* a = poly.attributes_of(i);
     if (a[0] != 0.0) continue;
-    const vec4& p = poly.positions[i];
+    const vec4d& p = poly.positions[i];
     out.push_back({p[0], p[1], p[2], p[3], a[1]});
   }
   std::sort(out.begin(), out.end());
@@ -925,9 +926,9 @@ RC_GTEST_PROP(HomogeneousClip, TrianglesSharingAnEdgeGetBitIdenticalVerticesOnIt
   // is 0 at P and Q and 1 at R and S, so it stays exactly 0 on PQ and only there;
   // attribute 1 is a colour that must be interpolated identically too.
   auto gen_vertex = [] {
-    return vec4{gen_double(-3, 3), gen_double(-3, 3), gen_double(-3, 3), gen_double(-1, 3)};
+    return vec4d{gen_double(-3, 3), gen_double(-3, 3), gen_double(-3, 3), gen_double(-1, 3)};
   };
-  const vec4 p = gen_vertex(), q = gen_vertex(), r = gen_vertex(), s = gen_vertex();
+  const vec4d p = gen_vertex(), q = gen_vertex(), r = gen_vertex(), s = gen_vertex();
   const double cp = gen_double(0, 1), cq = gen_double(0, 1), cr = gen_double(0, 1),
                cs = gen_double(0, 1);
   const auto first = homogeneous_clip_triangle({p, q, r}, {0, cp, 0, cq, 1, cr});
@@ -935,7 +936,7 @@ RC_GTEST_PROP(HomogeneousClip, TrianglesSharingAnEdgeGetBitIdenticalVerticesOnIt
   const auto on_first = vertices_on_shared_edge(first);
   const auto on_second = vertices_on_shared_edge(second);
   RC_CLASSIFY(!on_first.empty(), "shared edge partly visible");
-  RC_CLASSIFY(!on_first.empty() && !homogeneous_trivially_accepted(std::vector<vec4>{p, q}),
+  RC_CLASSIFY(!on_first.empty() && !homogeneous_trivially_accepted(std::vector<vec4d>{p, q}),
               "shared edge clipped");
   // A triangle whose clipped part is a sliver may lose it entirely while its neighbour
   // keeps the shared edge as a boundary: compare only when both keep something.
@@ -943,8 +944,8 @@ RC_GTEST_PROP(HomogeneousClip, TrianglesSharingAnEdgeGetBitIdenticalVerticesOnIt
 }
 
 TEST(HomogeneousClip, SharedEdgeCrossingSeveralPlanesGivesIdenticalVertices) {
-  const vec4 p{-3.1, 0.3, 0.2, 1.1}, q{2.7, -0.4, 0.9, 0.7};  // crosses x = -w and x = w
-  const vec4 r{0.1, 2.9, -0.3, 1.3}, s{0.2, -2.6, 0.4, 0.9};
+  const vec4d p{-3.1, 0.3, 0.2, 1.1}, q{2.7, -0.4, 0.9, 0.7};  // crosses x = -w and x = w
+  const vec4d r{0.1, 2.9, -0.3, 1.3}, s{0.2, -2.6, 0.4, 0.9};
   const auto first = homogeneous_clip_triangle({p, q, r}, {0, 0.25, 0, 0.75, 1, 0.5});
   const auto second = homogeneous_clip_triangle({q, p, s}, {0, 0.75, 0, 0.25, 1, 0.125});
   const auto on_first = vertices_on_shared_edge(first);
@@ -956,8 +957,8 @@ TEST(HomogeneousClip, SharedEdgeCrossingSeveralPlanesGivesIdenticalVertices) {
 TEST(HomogeneousClip, BoundingBoxCornersRejectObjectsBeforeTriangleWork) {
   const mat4 m = frustum_matrix(-1, 1, -1, 1, 1, 10);
   auto clip_corners = [&](const box3& b) {
-    std::vector<vec4> out;
-    for (const vec3& c : box_corners(b)) out.push_back(transform(m, c));
+    std::vector<vec4d> out;
+    for (const vec3d& c : box_corners(b)) out.push_back(transform(m, c));
     return out;
   };
   EXPECT_TRUE(homogeneous_trivially_rejected(clip_corners({{-1, -1, 2}, {1, 1, 4}})));  // behind
@@ -967,8 +968,8 @@ TEST(HomogeneousClip, BoundingBoxCornersRejectObjectsBeforeTriangleWork) {
   EXPECT_FALSE(
       homogeneous_trivially_rejected(clip_corners({{-1, -1, -6}, {1, 1, 2}})));  // straddles
   EXPECT_TRUE(homogeneous_trivially_accepted(clip_corners({{-0.5, -0.5, -6}, {0.5, 0.5, -4}})));
-  EXPECT_FALSE(homogeneous_trivially_rejected(std::vector<vec4>{}));
-  EXPECT_FALSE(homogeneous_trivially_accepted(std::vector<vec4>{}));
+  EXPECT_FALSE(homogeneous_trivially_rejected(std::vector<vec4d>{}));
+  EXPECT_FALSE(homogeneous_trivially_accepted(std::vector<vec4d>{}));
 }
 
 TEST(HomogeneousClip, PolygonClipAndFanKeepAttributes) {
@@ -980,10 +981,10 @@ TEST(HomogeneousClip, PolygonClipAndFanKeepAttributes) {
   // x >= -1 cuts edges 0 -> 1 and 2 -> 3; each crossing is interpolated from the
   // lexicographically smaller endpoint (vertex 0, then vertex 3) with t = 1 / 2.5.
   ASSERT_EQ(out.size(), 4u);
-  EXPECT_EQ(out.positions[0], (vec4{-1, -0.5, 0, 1}));
+  EXPECT_EQ(out.positions[0], (vec4d{-1, -0.5, 0, 1}));
   EXPECT_EQ(out.positions[1], quad.positions[1]);
   EXPECT_EQ(out.positions[2], quad.positions[2]);
-  EXPECT_EQ(out.positions[3], (vec4{-1, 0.5, 0, 1}));
+  EXPECT_EQ(out.positions[3], (vec4d{-1, 0.5, 0, 1}));
   EXPECT_EQ(out.attributes, (std::vector<double>{0.4, 1, 2, 3 - 0.4}));
   const auto fan = fan_triangulate(out);
   ASSERT_EQ(fan.size(), 2u);
@@ -992,10 +993,10 @@ TEST(HomogeneousClip, PolygonClipAndFanKeepAttributes) {
 }
 
 TEST(HomogeneousClip, BadInputThrowsUsageError) {
-  const std::array<vec4, 3> tri{vec4{0, 0, 0, 1}, vec4{1, 0, 0, 1}, vec4{0, 1, 0, 1}};
+  const std::array<vec4d, 3> tri{vec4d{0, 0, 0, 1}, vec4d{1, 0, 0, 1}, vec4d{0, 1, 0, 1}};
   EXPECT_THROW(homogeneous_clip_triangle(tri, {1, 2}), exbsp::usage_error);
   EXPECT_THROW(homogeneous_clip_triangle(tri, {1, 2, std::nan("")}), exbsp::usage_error);
-  EXPECT_THROW(homogeneous_clip_triangle({vec4{0, 0, HUGE_VAL, 1}, tri[1], tri[2]}),
+  EXPECT_THROW(homogeneous_clip_triangle({vec4d{0, 0, HUGE_VAL, 1}, tri[1], tri[2]}),
                exbsp::usage_error);
   homogeneous_polygon bad;
   bad.attribute_count = 2;
@@ -1005,7 +1006,7 @@ TEST(HomogeneousClip, BadInputThrowsUsageError) {
   EXPECT_THROW(fan_triangulate(bad), exbsp::usage_error);
   EXPECT_THROW(perspective_divide({1, 1, 1, 0}), exbsp::usage_error);
   EXPECT_THROW(perspective_divide({1, 1, 1, -1}), exbsp::usage_error);
-  EXPECT_EQ(perspective_divide({1, 2, 4, 2}), (vec3{0.5, 1, 2}));
+  EXPECT_EQ(perspective_divide({1, 2, 4, 2}), (vec3d{0.5, 1, 2}));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -1157,7 +1158,7 @@ template <class K>
 void check_box_clip() {
   box3 b = gen_box<3>();
   for (std::size_t k = 0; k < 3; ++k) b.max[k] += 0.25;  // keep every face a plane
-  std::array<vec3, 3> tri;
+  std::array<vec3d, 3> tri;
   for (auto& p : tri) p = gen_point(b, 3.0);
   const exact_triangle<K> t{
       {exact_point<K>(tri[0]), exact_point<K>(tri[1]), exact_point<K>(tri[2])}};
@@ -1186,8 +1187,8 @@ void check_box_clip() {
   RC_ASSERT(kept_sum + cut_off == cross_of(t));
 
   // The double Sutherland–Hodgman clip of the same triangle has the same vector area.
-  const vec3 area = vector_area(
-      sutherland_hodgman_clip(std::vector<vec3>(tri.begin(), tri.end()), box_half_spaces(b)));
+  const vec3d area = vector_area(
+      sutherland_hodgman_clip(std::vector<vec3d>(tri.begin(), tri.end()), box_half_spaces(b)));
   for (int k = 0; k < 3; ++k)
     RC_ASSERT(std::abs(CGAL::to_double(kept_sum[k]) / 2 - area[static_cast<std::size_t>(k)]) <=
               1e-9 * 100);

@@ -23,12 +23,12 @@
 namespace {
 
 using namespace exbsp;
-using clip::vec2;
-using clip::vec3;
+using clip::vec2d;
+using clip::vec3d;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
 
-double signed_area(const std::vector<vec2>& p) {
+double signed_area(const std::vector<vec2d>& p) {
   double a = 0;
   for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++)
     a += p[j][0] * p[i][1] - p[i][0] * p[j][1];
@@ -54,8 +54,8 @@ TEST(ConvexRegion, RepeatedAndCollinearVerticesAreAllowed) {
 }
 
 TEST(ConvexRegion, BothOrientationsGiveTheSameRegion) {
-  const std::vector<vec2> ccw{{0, 0}, {4, 0}, {4, 3}, {0, 3}};
-  const std::vector<vec2> cw(ccw.rbegin(), ccw.rend());
+  const std::vector<vec2d> ccw{{0, 0}, {4, 0}, {4, 3}, {0, 3}};
+  const std::vector<vec2d> cw(ccw.rbegin(), ccw.rend());
   for (const auto& poly : {ccw, cw}) {
     const auto h = clip::convex_polygon_half_planes(poly);
     ASSERT_EQ(h.size(), 4u);
@@ -76,13 +76,13 @@ TEST(ConvexRegion, HullOfCoplanarPointsIsRefused) {
 }
 
 TEST(ConvexRegion, HullOfACubeContainsExactlyTheCube) {
-  std::vector<vec3> pts;
+  std::vector<vec3d> pts;
   for (int i = 0; i < 8; ++i)
     pts.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
   pts.push_back({0.5, 0.5, 0.5});  // an interior point changes nothing
   const auto h = clip::convex_hull_half_spaces(pts);
   EXPECT_EQ(h.size(), 12u);  // two triangles per square face
-  auto inside = [&](const vec3& p) {
+  auto inside = [&](const vec3d& p) {
     for (const auto& s : h)
       if (s.value(p) < 0) return false;
     return true;
@@ -95,7 +95,7 @@ TEST(ConvexRegion, HullOfACubeContainsExactlyTheCube) {
 
 TEST(ConvexRegion, PolyhedronFromFaces) {
   // A tetrahedron, faces in mixed orientation.
-  const vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0}, d{0, 0, 1};
+  const vec3d a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0}, d{0, 0, 1};
   const auto h = clip::convex_polyhedron_half_spaces({{a, b, c}, {a, d, b}, {a, c, d}, {b, d, c}});
   ASSERT_EQ(h.size(), 4u);
   for (const auto& s : h) EXPECT_GT(s.value({0.1, 0.1, 0.1}), 0);
@@ -110,7 +110,7 @@ TEST(ConvexRegion, PolyhedronFromFaces) {
 // --- Sutherland–Hodgman pieces ----------------------------------------------------------------
 
 TEST(SutherlandHodgmanPieces, ConvexInputGivesTheTextbookResult) {
-  const std::vector<vec2> tri{{-1, -1}, {3, -1}, {1, 3}};
+  const std::vector<vec2d> tri{{-1, -1}, {3, -1}, {1, 3}};
   const auto region = clip::window_half_planes(clip::make_window(0, 2, 0, 2));
   const auto whole = clip::sutherland_hodgman_clip(tri, region);
   const auto pieces = clip::sutherland_hodgman_pieces(tri, region);
@@ -120,7 +120,7 @@ TEST(SutherlandHodgmanPieces, ConvexInputGivesTheTextbookResult) {
 
 TEST(SutherlandHodgmanPieces, ConcaveUSplitsIntoTwoPiecesWithoutConnectingEdge) {
   // A U (counter-clockwise) whose two arms cross the line y = 2; keep y <= 2... no: keep y >= 2.
-  const std::vector<vec2> u{{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
+  const std::vector<vec2d> u{{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
   const std::vector<clip::half_plane2> above{{0, 1, -2}};  // y - 2 >= 0
   const auto whole = clip::sutherland_hodgman_clip(u, above);
   // The textbook result is one polygon running along y = 2 from one arm to the other.
@@ -138,7 +138,7 @@ TEST(SutherlandHodgmanPieces, ConcaveUSplitsIntoTwoPiecesWithoutConnectingEdge) 
 }
 
 TEST(SutherlandHodgmanPieces, ClockwiseInputKeepsItsOrientation) {
-  std::vector<vec2> u{{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
+  std::vector<vec2d> u{{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
   std::reverse(u.begin(), u.end());
   const auto pieces = clip::sutherland_hodgman_pieces(u, {{0, 1, -2}});
   ASSERT_EQ(pieces.size(), 2u);
@@ -147,9 +147,9 @@ TEST(SutherlandHodgmanPieces, ClockwiseInputKeepsItsOrientation) {
 
 TEST(SutherlandHodgmanPieces, CombShapeAgainstAWindowGivesEveryTooth) {
   // Spine [0, 8] x [0, 1]; teeth [1, 2], [3, 4], [5, 6], [7, 8] x [1, 4] and [0, 0.5] x [0, 4].
-  const std::vector<vec2> comb{{0, 0}, {8, 0}, {8, 4}, {7, 4},   {7, 1},   {6, 1}, {6, 4},
-                               {5, 4}, {5, 1}, {4, 1}, {4, 4},   {3, 4},   {3, 1}, {2, 1},
-                               {2, 4}, {1, 4}, {1, 1}, {0.5, 1}, {0.5, 4}, {0, 4}};
+  const std::vector<vec2d> comb{{0, 0}, {8, 0}, {8, 4}, {7, 4},   {7, 1},   {6, 1}, {6, 4},
+                                {5, 4}, {5, 1}, {4, 1}, {4, 4},   {3, 4},   {3, 1}, {2, 1},
+                                {2, 4}, {1, 4}, {1, 1}, {0.5, 1}, {0.5, 4}, {0, 4}};
   const auto region = clip::window_half_planes(clip::make_window(-1, 9, 2, 3));
   const auto pieces = clip::sutherland_hodgman_pieces(comb, region);
   EXPECT_EQ(pieces.size(), 5u);
@@ -162,7 +162,7 @@ TEST(SutherlandHodgmanPieces, PinchedAtAVertexOnTheLineStaysOnePiece) {
   // A notch whose tip (2, 2) lies exactly on the line y = 2: the kept part touches the line
   // there from above. A vertex with f = 0 is kept (closed half-space), so the kept vertices
   // form one run and the result is one (pinched) polygon, as the textbook gives it.
-  const std::vector<vec2> poly{{0, 0}, {4, 0}, {4, 4}, {3, 4}, {2, 2}, {1, 4}, {0, 4}};
+  const std::vector<vec2d> poly{{0, 0}, {4, 0}, {4, 4}, {3, 4}, {2, 2}, {1, 4}, {0, 4}};
   const auto pieces = clip::sutherland_hodgman_pieces(poly, {{0, 1, -2}});
   ASSERT_EQ(pieces.size(), 1u);
   EXPECT_NEAR(signed_area(pieces[0]), 6.0, 1e-12);
@@ -170,7 +170,7 @@ TEST(SutherlandHodgmanPieces, PinchedAtAVertexOnTheLineStaysOnePiece) {
 
 TEST(SutherlandHodgmanPieces, TouchingTheLineFromOutsideAddsNoPiece) {
   // The same notch upside down: its tip touches y = 2 from below, the kept part is a strip.
-  const std::vector<vec2> poly{{0, 0}, {1, 0}, {2, 2}, {3, 0}, {4, 0}, {4, 4}, {0, 4}};
+  const std::vector<vec2d> poly{{0, 0}, {1, 0}, {2, 2}, {3, 0}, {4, 0}, {4, 4}, {0, 4}};
   const auto pieces = clip::sutherland_hodgman_pieces(poly, {{0, 1, -2}});
   ASSERT_EQ(pieces.size(), 1u);
   EXPECT_NEAR(signed_area(pieces[0]), 8.0, 1e-12);
@@ -178,14 +178,14 @@ TEST(SutherlandHodgmanPieces, TouchingTheLineFromOutsideAddsNoPiece) {
 
 TEST(SutherlandHodgmanPieces, Planar3DPolygon) {
   // The U of the 2D test in the plane z = x (a tilted plane), clipped by y >= 2.
-  const std::vector<vec3> u{{0, 0, 0}, {3, 0, 3}, {3, 3, 3}, {2, 3, 2},
-                            {2, 1, 2}, {1, 1, 1}, {1, 3, 1}, {0, 3, 0}};
+  const std::vector<vec3d> u{{0, 0, 0}, {3, 0, 3}, {3, 3, 3}, {2, 3, 2},
+                             {2, 1, 2}, {1, 1, 1}, {1, 3, 1}, {0, 3, 0}};
   const auto pieces = clip::sutherland_hodgman_pieces(u, {{{0, 1, 0}, -2}});
   EXPECT_EQ(pieces.size(), 2u);
 }
 
 TEST(SutherlandHodgmanPieces, NothingLeft) {
-  const std::vector<vec2> tri{{0, 0}, {1, 0}, {0, 1}};
+  const std::vector<vec2d> tri{{0, 0}, {1, 0}, {0, 1}};
   EXPECT_TRUE(clip::sutherland_hodgman_pieces(tri, {{1, 0, -5}}).empty());
   EXPECT_TRUE(
       clip::sutherland_hodgman_pieces(tri, {{-1, 0, 0}}).empty());  // only the edge x = 0 left

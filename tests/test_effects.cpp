@@ -466,7 +466,7 @@ frame quad_frame(bool split, int width = 48, int height = 40) {
 
 TEST(Antialias, TwoTrianglesSharingAnEdgeShowNoSeam) {
   const rgb8 blue{30, 90, 200};
-  const vec2 q[4] = {{5.3, 4.1}, {40.7, 9.6}, {37.2, 35.9}, {8.1, 30.3}};
+  const point2 q[4] = {{5.3, 4.1}, {40.7, 9.6}, {37.2, 35.9}, {8.1, 30.3}};
   for (int n : {2, 3, 4, 8}) {
     frame f = quad_frame(true);
     f.settings.antialias.samples = n;
@@ -714,7 +714,7 @@ image depth_oracle(const frame& f) {
     for (const hpoint& c : out) p.push_back(to_window(f.view.vp, c.x / c.w, c.y / c.w, c.z / c.w));
     if (p.size() < 3) continue;
     const depth_plane dp = polygon_depth_plane(p);
-    std::vector<vec2> poly;
+    std::vector<point2> poly;
     for (const window_point& q : p) poly.push_back({q.x, q.y});
     for_each_covered_pixel_polygon(poly, w, h, [&](int i, int j) {
       const double z = dp.at(i + 0.5, j + 0.5);

@@ -35,13 +35,13 @@ namespace {
 using namespace exbsp::view;
 using pixel_list = std::vector<std::pair<int, int>>;
 
-pixel_list reference_pixels(vec2 a, vec2 b, vec2 c, int w, int h) {
+pixel_list reference_pixels(point2 a, point2 b, point2 c, int w, int h) {
   pixel_list out;
   for_each_covered_pixel_reference(a, b, c, w, h, [&](int i, int j) { out.emplace_back(i, j); });
   return out;
 }
 
-pixel_list span_pixels(vec2 a, vec2 b, vec2 c, int w, int h) {
+pixel_list span_pixels(point2 a, point2 b, point2 c, int w, int h) {
   pixel_list out;
   for_each_covered_span(a, b, c, w, h, [&](int j, int lo, int hi) {
     EXPECT_LE(lo, hi);
@@ -50,7 +50,7 @@ pixel_list span_pixels(vec2 a, vec2 b, vec2 c, int w, int h) {
   return out;
 }
 
-std::string describe(vec2 a, vec2 b, vec2 c, int w, int h) {
+std::string describe(point2 a, point2 b, point2 c, int w, int h) {
   char buf[320];
   std::snprintf(buf, sizeof buf, "(%.17g, %.17g) (%.17g, %.17g) (%.17g, %.17g) in %dx%d", a.x, a.y,
                 b.x, b.y, c.x, c.y, w, h);
@@ -59,7 +59,7 @@ std::string describe(vec2 a, vec2 b, vec2 c, int w, int h) {
 
 /// Compares span and reference coverage of (a, b, c) and of its other windings and vertex
 /// rotations; returns the number of pixels (for checks that the cases are not all empty).
-std::size_t expect_same(vec2 a, vec2 b, vec2 c, int w, int h) {
+std::size_t expect_same(point2 a, point2 b, point2 c, int w, int h) {
   const pixel_list ref = reference_pixels(a, b, c, w, h);
   EXPECT_EQ(span_pixels(a, b, c, w, h), ref) << describe(a, b, c, w, h);
   EXPECT_EQ(span_pixels(b, c, a, w, h), reference_pixels(b, c, a, w, h)) << describe(b, c, a, w, h);
@@ -77,7 +77,7 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 // Degenerate triangles first
 
 TEST(SpanRaster, ZeroAreaAndNonFiniteTrianglesCoverNothing) {
-  for (const std::array<vec2, 3>& t : std::vector<std::array<vec2, 3>>{
+  for (const std::array<point2, 3>& t : std::vector<std::array<point2, 3>>{
            {{{1, 1}, {1, 1}, {1, 1}}},              // a point
            {{{0.5, 0.5}, {3.5, 3.5}, {7.5, 7.5}}},  // collinear through centres
            {{{0, 0.5}, {8, 0.5}, {4, 0.5}}},        // horizontal line on centres
@@ -106,7 +106,7 @@ TEST(SpanRaster, EdgesThroughPixelCentresFollowTheReference) {
   std::uniform_int_distribution<int> coord(-6, 40);
   std::size_t painted = 0;
   for (int n = 0; n < 20000; ++n) {
-    auto p = [&] { return vec2{coord(rng) * 0.5, coord(rng) * 0.5}; };
+    auto p = [&] { return point2{coord(rng) * 0.5, coord(rng) * 0.5}; };
     painted += expect_same(p(), p(), p(), 17, 13);
     if (HasFailure()) return;
   }
@@ -119,8 +119,8 @@ TEST(SpanRaster, SharedEdgesPartitionTheirPixels) {
   std::mt19937_64 rng(7);
   std::uniform_int_distribution<int> coord(-4, 60);
   for (int n = 0; n < 3000; ++n) {
-    vec2 q[4];
-    for (vec2& v : q) v = {coord(rng) * 0.25, coord(rng) * 0.25};
+    point2 q[4];
+    for (point2& v : q) v = {coord(rng) * 0.25, coord(rng) * 0.25};
     const int w = 15, h = 11;
     std::vector<int> count(w * h, 0), ref_count(w * h, 0);
     for (const std::array<int, 3>& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
@@ -140,9 +140,9 @@ TEST(SpanRaster, RandomTrianglesOfEverySize) {
     const int w = 1 + static_cast<int>(unit(rng) * 64), h = 1 + static_cast<int>(unit(rng) * 48);
     // Scale from a tenth of a pixel to a million pixels, centred anywhere near the window.
     const double scale = std::pow(10.0, -1 + 7 * unit(rng));
-    const vec2 centre{(unit(rng) * 1.4 - 0.2) * w, (unit(rng) * 1.4 - 0.2) * h};
+    const point2 centre{(unit(rng) * 1.4 - 0.2) * w, (unit(rng) * 1.4 - 0.2) * h};
     auto p = [&] {
-      return vec2{centre.x + (unit(rng) - 0.5) * scale, centre.y + (unit(rng) - 0.5) * scale};
+      return point2{centre.x + (unit(rng) - 0.5) * scale, centre.y + (unit(rng) - 0.5) * scale};
     };
     painted += expect_same(p(), p(), p(), w, h);
     if (HasFailure()) return;
@@ -156,13 +156,13 @@ TEST(SpanRaster, SliversAndNearlyCollinearTriangles) {
   std::size_t painted = 0;
   for (int n = 0; n < 20000; ++n) {
     const int w = 40, h = 30;
-    const vec2 a{unit(rng) * 60 - 10, unit(rng) * 50 - 10},
+    const point2 a{unit(rng) * 60 - 10, unit(rng) * 50 - 10},
         b{unit(rng) * 60 - 10, unit(rng) * 50 - 10};
     const double t = unit(rng) * 1.2 - 0.1,
                  off = std::pow(10.0, -15 * unit(rng)) * (unit(rng) < 0.5 ? -1 : 1);
     const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
     if (len == 0) continue;
-    const vec2 c{a.x + t * dx - off * dy / len, a.y + t * dy + off * dx / len};
+    const point2 c{a.x + t * dx - off * dy / len, a.y + t * dy + off * dx / len};
     painted += expect_same(a, b, c, w, h);
     if (HasFailure()) return;
   }
@@ -177,7 +177,7 @@ TEST(SpanRaster, VerticesOneUlpFromCentresAndEdgesNearlyThroughThem) {
     return x;
   };
   for (int n = 0; n < 20000; ++n) {
-    auto p = [&] { return vec2{nudge(coord(rng) + 0.5), nudge(coord(rng) + 0.5)}; };
+    auto p = [&] { return point2{nudge(coord(rng) + 0.5), nudge(coord(rng) + 0.5)}; };
     expect_same(p(), p(), p(), 25, 25);
     if (HasFailure()) return;
   }
@@ -210,7 +210,7 @@ TEST(SpanRaster, LargeWindow) {
 }
 
 TEST(SpanRaster, PolygonSpansAreTheFanTrianglesSpans) {
-  const std::vector<vec2> poly = {{0.5, 0.5}, {20.25, 1}, {25, 14.5}, {10, 20.5}, {-3, 9}};
+  const std::vector<point2> poly = {{0.5, 0.5}, {20.25, 1}, {25, 14.5}, {10, 20.5}, {-3, 9}};
   pixel_list fan, spans;
   for (std::size_t k = 1; k + 1 < poly.size(); ++k)
     for (const auto& p : reference_pixels(poly[0], poly[k], poly[k + 1], 24, 18)) fan.push_back(p);

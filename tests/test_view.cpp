@@ -72,7 +72,7 @@ struct coverage {
   int width, height;
   std::vector<int> count;
   coverage(int w, int h) : width(w), height(h), count(static_cast<std::size_t>(w) * h, 0) {}
-  void add(const vec2& a, const vec2& b, const vec2& c) {
+  void add(const point2& a, const point2& b, const point2& c) {
     for_each_covered_pixel(a, b, c, width, height,
                            [&](int i, int j) { ++count[static_cast<std::size_t>(j) * width + i]; });
   }
@@ -84,9 +84,9 @@ struct coverage {
   }
 };
 
-vec2 centre(int i, int j) { return {i + 0.5, j + 0.5}; }
+point2 centre(int i, int j) { return {i + 0.5, j + 0.5}; }
 
-int orient(const vec2& a, const vec2& b, const vec2& c) {
+int orient(const point2& a, const point2& b, const point2& c) {
   return orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
 }
 
@@ -533,12 +533,12 @@ TEST(TopLeftRule, ExactOrientationIsAntisymmetric) {
 // quad's boundary follow the boundary edge's own top-left rule, whichever the split.
 RC_GTEST_PROP(TopLeftRule, QuadSplitEitherWayPaintsEachInteriorPixelOnce, ()) {
   const int n = 10;
-  std::array<vec2, 4> q;
+  std::array<point2, 4> q;
   for (auto& p : q) p = {half_grid(n), half_grid(n)};
   // Order the points counter-clockwise around their centroid; keep strictly convex quads.
   const double cx = (q[0].x + q[1].x + q[2].x + q[3].x) / 4,
                cy = (q[0].y + q[1].y + q[2].y + q[3].y) / 4;
-  std::sort(q.begin(), q.end(), [&](const vec2& a, const vec2& b) {
+  std::sort(q.begin(), q.end(), [&](const point2& a, const point2& b) {
     return std::atan2(a.y - cy, a.x - cx) < std::atan2(b.y - cy, b.x - cx);
   });
   for (int k = 0; k < 4; ++k) RC_PRE(orient(q[k], q[(k + 1) % 4], q[(k + 2) % 4]) > 0);
@@ -551,11 +551,11 @@ RC_GTEST_PROP(TopLeftRule, QuadSplitEitherWayPaintsEachInteriorPixelOnce, ()) {
     for (int i = 0; i < n; ++i) {
       RC_ASSERT(s1.at(i, j) <= 1);
       RC_ASSERT(s2.at(i, j) <= 1);
-      const vec2 p = centre(i, j);
+      const point2 p = centre(i, j);
       bool strictly_inside = true, on_boundary_owned = true, on_vertex = false;
       int on_edges = 0;
       for (int k = 0; k < 4; ++k) {
-        const vec2 &s = q[k], &t = q[(k + 1) % 4];
+        const point2 &s = q[k], &t = q[(k + 1) % 4];
         const int o = orient(s, t, p);
         if (o < 0) strictly_inside = on_boundary_owned = false;
         if (o == 0) {
@@ -584,8 +584,8 @@ RC_GTEST_PROP(TopLeftRule, QuadSplitEitherWayPaintsEachInteriorPixelOnce, ()) {
 // painted exactly once.
 RC_GTEST_PROP(TopLeftRule, SharedEdgeIsPaintedExactlyOnce, ()) {
   const int n = 12;
-  const vec2 a{half_grid(n), half_grid(n)}, b{half_grid(n), half_grid(n)};
-  const vec2 c{half_grid(n), half_grid(n)}, d{half_grid(n), half_grid(n)};
+  const point2 a{half_grid(n), half_grid(n)}, b{half_grid(n), half_grid(n)};
+  const point2 c{half_grid(n), half_grid(n)}, d{half_grid(n), half_grid(n)};
   RC_PRE(orient(a, b, c) * orient(a, b, d) < 0);
   coverage cov(n, n);
   if (*rc::gen::arbitrary<bool>())
@@ -599,7 +599,7 @@ RC_GTEST_PROP(TopLeftRule, SharedEdgeIsPaintedExactlyOnce, ()) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       RC_ASSERT(cov.at(i, j) <= 1);
-      const vec2 p = centre(i, j);
+      const point2 p = centre(i, j);
       const bool on_open_edge = orient(a, b, p) == 0 &&
                                 (p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y) > 0 &&
                                 (p.x - b.x) * (a.x - b.x) + (p.y - b.y) * (a.y - b.y) > 0;
@@ -617,12 +617,12 @@ RC_GTEST_PROP(TopLeftRule, SharedEdgeIsPaintedExactlyOnce, ()) {
 // spokes, is painted exactly once.
 RC_GTEST_PROP(TopLeftRule, FanAroundAVertexPaintsEachPixelOnce, ()) {
   const int n = 16;
-  const vec2 v{8.5, 7.5};
+  const point2 v{8.5, 7.5};
   const int k = uniform_int(3, 9);
   // Outer vertices at increasing angles (gaps < 180 degrees), radius 3..7, on the half grid.
   std::vector<double> angles;
   for (int t = 0; t < k; ++t) angles.push_back((t + uniform_int(0, 60) / 100.0) * (2 * pi / k));
-  std::vector<vec2> outer;
+  std::vector<point2> outer;
   for (double ang : angles) {
     const double r = uniform_int(6, 14) / 2.0;
     outer.push_back({std::round(2 * (v.x + r * std::cos(ang))) / 2,
@@ -640,12 +640,12 @@ RC_GTEST_PROP(TopLeftRule, FanAroundAVertexPaintsEachPixelOnce, ()) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       RC_ASSERT(cov.at(i, j) <= 1);
-      const vec2 p = centre(i, j);
+      const point2 p = centre(i, j);
       // Strictly inside the outline: inside or on a spoke of some triangle, never on an
       // outer edge.
       bool on_outer = false, inside = false;
       for (int t = 0; t < k; ++t) {
-        const vec2 &s = outer[t], &e = outer[(t + 1) % k];
+        const point2 &s = outer[t], &e = outer[(t + 1) % k];
         const int o_outer = orient(s, e, p);
         if (o_outer == 0 && (p.x - s.x) * (e.x - s.x) + (p.y - s.y) * (e.y - s.y) >= 0 &&
             (p.x - e.x) * (s.x - e.x) + (p.y - e.y) * (s.y - e.y) >= 0)

@@ -492,8 +492,8 @@ TEST(Lines, HomogeneousCohenSutherlandAgreesWithLiangBarsky) {
   std::uniform_real_distribution<double> u(-3, 3), w(-0.5, 3);
   int kept = 0;
   for (int k = 0; k < 20000; ++k) {
-    const clip::vec4 a{u(rng), u(rng), u(rng), w(rng)}, b{u(rng), u(rng), u(rng), w(rng)};
-    clip::vec4 la, lb, ca, cb;
+    const clip::vec4d a{u(rng), u(rng), u(rng), w(rng)}, b{u(rng), u(rng), u(rng), w(rng)};
+    clip::vec4d la, lb, ca, cb;
     double lt0, lt1, ct0, ct1;
     const bool l = clip::homogeneous_liang_barsky(a, b, la, lb, &lt0, &lt1);
     const bool c = clip::homogeneous_cohen_sutherland(a, b, ca, cb, &ct0, &ct1);
@@ -512,13 +512,13 @@ TEST(Lines, HomogeneousCohenSutherlandAgreesWithLiangBarsky) {
   }
   EXPECT_GT(kept, 1000);
   // Degenerate cases first-hand: inside point, outside point, behind the eye.
-  clip::vec4 oa, ob;
+  clip::vec4d oa, ob;
   EXPECT_TRUE(clip::homogeneous_cohen_sutherland({0.5, 0, 0, 1}, {0.5, 0, 0, 1}, oa, ob));
   EXPECT_FALSE(clip::homogeneous_cohen_sutherland({1.5, 0, 0, 1}, {1.5, 0, 0, 1}, oa, ob));
   EXPECT_FALSE(clip::homogeneous_cohen_sutherland({0, 0, 1, -1}, {0.3, 0, 2, -3}, oa, ob));
   EXPECT_FALSE(clip::homogeneous_cohen_sutherland({0, 0, 0, 1}, {NAN, 0, 0, 1}, oa, ob));
   ASSERT_TRUE(clip::homogeneous_cohen_sutherland({0, 0, 0, 2}, {0, 0, -6, -2}, oa, ob));
-  EXPECT_EQ(oa, (clip::vec4{0, 0, 0, 2}));
+  EXPECT_EQ(oa, (clip::vec4d{0, 0, 0, 2}));
   EXPECT_EQ(ob[2], -ob[3]);  // snapped onto the near plane w + z = 0
 }
 

@@ -32,20 +32,20 @@ bool overlap_n(const box<N>& a, const box<N>& b) {
 
 }  // namespace
 
-box2 bounding_box(const std::vector<vec2>& points) { return bounding_box_n<2>(points); }
-box3 bounding_box(const std::vector<vec3>& points) { return bounding_box_n<3>(points); }
-box2 bounding_box(const std::array<vec2, 3>& triangle) { return bounding_box_n<2>(triangle); }
-box3 bounding_box(const std::array<vec3, 3>& triangle) { return bounding_box_n<3>(triangle); }
+box2 bounding_box(const std::vector<vec2d>& points) { return bounding_box_n<2>(points); }
+box3 bounding_box(const std::vector<vec3d>& points) { return bounding_box_n<3>(points); }
+box2 bounding_box(const std::array<vec2d, 3>& triangle) { return bounding_box_n<2>(triangle); }
+box3 bounding_box(const std::array<vec3d, 3>& triangle) { return bounding_box_n<3>(triangle); }
 
 bool boxes_overlap(const box2& a, const box2& b) { return overlap_n(a, b); }
 bool boxes_overlap(const box3& a, const box3& b) { return overlap_n(a, b); }
 
-bool triangle_outside_window(const std::array<vec2, 3>& triangle, const window2& window) {
+bool triangle_outside_window(const std::array<vec2d, 3>& triangle, const window2& window) {
   return !boxes_overlap(bounding_box(triangle), window);
 }
 
-std::array<vec3, 8> box_corners(const box3& box) {
-  std::array<vec3, 8> out;
+std::array<vec3d, 8> box_corners(const box3& box) {
+  std::array<vec3d, 8> out;
   for (std::size_t i = 0; i < 8; ++i)
     for (std::size_t k = 0; k < 3; ++k) out[i][k] = (i >> k) & 1u ? box.max[k] : box.min[k];
   return out;

@@ -95,8 +95,8 @@ std::optional<segment<N>> clip_n(const segment<N>& s, const box<N>& b, const cha
 
 }  // namespace
 
-unsigned outcode(const vec2& p, const window2& window) { return outcode_n(p, window); }
-unsigned outcode(const vec3& p, const box3& box) { return outcode_n(p, box); }
+unsigned outcode(const vec2d& p, const window2& window) { return outcode_n(p, window); }
+unsigned outcode(const vec3d& p, const box3& box) { return outcode_n(p, box); }
 
 std::optional<segment2> cohen_sutherland_clip(const segment2& s, const window2& window) {
   return clip_n(s, window, "cohen_sutherland_clip");

@@ -19,10 +19,10 @@ namespace {
 using kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 }
 
-std::vector<half_space3> convex_hull_half_spaces(const std::vector<vec3>& points) {
+std::vector<half_space3> convex_hull_half_spaces(const std::vector<vec3d>& points) {
   const char* function = "convex_hull_half_spaces";
   std::vector<kernel::Point_3> pts;
-  for (const vec3& p : points) {
+  for (const vec3d& p : points) {
     detail::require_finite(p, function, "point");
     pts.emplace_back(p[0], p[1], p[2]);
   }

@@ -19,12 +19,12 @@ namespace {
 using kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 }
 
-std::vector<half_plane2> convex_polygon_half_planes(const std::vector<vec2>& polygon) {
+std::vector<half_plane2> convex_polygon_half_planes(const std::vector<vec2d>& polygon) {
   const char* function = "convex_polygon_half_planes";
-  for (const vec2& p : polygon) detail::require_finite(p, function, "polygon vertex");
+  for (const vec2d& p : polygon) detail::require_finite(p, function, "polygon vertex");
   // Drop repeated consecutive vertices (cyclically): they give no edge.
   std::vector<kernel::Point_2> pts;
-  for (const vec2& p : polygon) {
+  for (const vec2d& p : polygon) {
     const kernel::Point_2 q(p[0], p[1]);
     if (pts.empty() || pts.back() != q) pts.push_back(q);
   }
@@ -61,15 +61,15 @@ std::vector<half_plane2> convex_polygon_half_planes(const std::vector<vec2>& pol
 }
 
 std::vector<half_space3> convex_polyhedron_half_spaces(
-    const std::vector<std::vector<vec3>>& faces) {
+    const std::vector<std::vector<vec3d>>& faces) {
   const char* function = "convex_polyhedron_half_spaces";
-  vec3 centroid{0, 0, 0};
+  vec3d centroid{0, 0, 0};
   std::size_t count = 0;
   double size = 0;
   for (const auto& face : faces) {
     if (face.size() < 3)
       throw usage_error(std::string(function) + ": a face needs at least 3 vertices");
-    for (const vec3& p : face) {
+    for (const vec3d& p : face) {
       detail::require_finite(p, function, "face vertex");
       for (int k = 0; k < 3; ++k) {
         centroid[k] += p[k];
@@ -84,15 +84,15 @@ std::vector<half_space3> convex_polyhedron_half_spaces(
   std::vector<half_space3> out;
   for (std::size_t fi = 0; fi < faces.size(); ++fi) {
     const auto& face = faces[fi];
-    vec3 n{0, 0, 0};
+    vec3d n{0, 0, 0};
     for (std::size_t i = 0, j = face.size() - 1; i < face.size(); j = i++) {
-      const vec3& a = face[j];
-      const vec3& b = face[i];
+      const vec3d& a = face[j];
+      const vec3d& b = face[i];
       n[0] += (a[1] - b[1]) * (a[2] + b[2]);
       n[1] += (a[2] - b[2]) * (a[0] + b[0]);
       n[2] += (a[0] - b[0]) * (a[1] + b[1]);
     }
-    if (n == vec3{0, 0, 0})
+    if (n == vec3d{0, 0, 0})
       throw usage_error(std::string(function) + ": face " + std::to_string(fi) + " has zero area");
     half_space3 h{n, -(n[0] * face[0][0] + n[1] * face[0][1] + n[2] * face[0][2])};
     if (h.value(centroid) < 0) h = {{-n[0], -n[1], -n[2]}, -h.d};
@@ -102,7 +102,7 @@ std::vector<half_space3> convex_polyhedron_half_spaces(
     const double scale = std::sqrt(out[fi].n[0] * out[fi].n[0] + out[fi].n[1] * out[fi].n[1] +
                                    out[fi].n[2] * out[fi].n[2]);
     for (const auto& face : faces)
-      for (const vec3& p : face)
+      for (const vec3d& p : face)
         if (out[fi].value(p) < -1e-9 * scale * std::max(size, 1.0))
           throw usage_error(std::string(function) +
                             ": the polyhedron is not convex (a vertex lies outside face " +

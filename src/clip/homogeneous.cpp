@@ -14,19 +14,19 @@
 namespace exbsp::clip {
 namespace {
 
-double plane_value(const vec4& p, std::size_t plane) {
+double plane_value(const vec4d& p, std::size_t plane) {
   const std::size_t axis = plane / 2;
   return (plane % 2) ? p[3] - p[axis] : p[3] + p[axis];
 }
 
-unsigned outcode_and(const vec4* points, std::size_t n) {
+unsigned outcode_and(const vec4d* points, std::size_t n) {
   if (n == 0) return 0;
   unsigned code = ~0u;
   for (std::size_t i = 0; i < n; ++i) code &= homogeneous_outcode(points[i]);
   return code;
 }
 
-unsigned outcode_or(const vec4* points, std::size_t n) {
+unsigned outcode_or(const vec4d* points, std::size_t n) {
   unsigned code = 0;
   for (std::size_t i = 0; i < n; ++i) code |= homogeneous_outcode(points[i]);
   return code;
@@ -41,7 +41,7 @@ void validate_sizes(const homogeneous_polygon& poly, const char* function) {
 
 void validate(const homogeneous_polygon& poly, const char* function) {
   validate_sizes(poly, function);
-  for (const vec4& p : poly.positions) detail::require_finite(p, function, "vertex");
+  for (const vec4d& p : poly.positions) detail::require_finite(p, function, "vertex");
   for (double a : poly.attributes)
     if (!std::isfinite(a)) throw usage_error(std::string(function) + ": NaN or infinite attribute");
 }
@@ -54,9 +54,9 @@ void push_crossing(const homogeneous_polygon& in, std::size_t s, std::size_t e, 
   const std::size_t lo = swap ? e : s, hi = swap ? s : e;
   const double f_lo = swap ? fe : fs, f_hi = swap ? fs : fe;
   const double t = f_lo / (f_lo - f_hi);  // in [0, 1]: |f_lo - f_hi| >= |f_lo|
-  const vec4& a = in.positions[lo];
-  const vec4& b = in.positions[hi];
-  vec4 x;
+  const vec4d& a = in.positions[lo];
+  const vec4d& b = in.positions[hi];
+  vec4d x;
   for (std::size_t k = 0; k < 4; ++k) x[k] = detail::lerp_within(a[k], b[k], t);
   const std::size_t axis = plane / 2;
   x[axis] = (plane % 2) ? x[3] : -x[3];  // exactly on the plane
@@ -108,23 +108,23 @@ homogeneous_polygon clip_validated(const homogeneous_polygon& polygon) {
 
 }  // namespace
 
-unsigned homogeneous_outcode(const vec4& p) {
+unsigned homogeneous_outcode(const vec4d& p) {
   unsigned code = 0;
   for (std::size_t plane = 0; plane < 6; ++plane)
     if (plane_value(p, plane) < 0.0) code |= 1u << plane;
   return code;
 }
 
-bool homogeneous_trivially_accepted(const std::vector<vec4>& points) {
+bool homogeneous_trivially_accepted(const std::vector<vec4d>& points) {
   return !points.empty() && outcode_or(points.data(), points.size()) == 0;
 }
-bool homogeneous_trivially_rejected(const std::vector<vec4>& points) {
+bool homogeneous_trivially_rejected(const std::vector<vec4d>& points) {
   return outcode_and(points.data(), points.size()) != 0;
 }
-bool homogeneous_trivially_accepted(const std::array<vec4, 3>& t) {
+bool homogeneous_trivially_accepted(const std::array<vec4d, 3>& t) {
   return outcode_or(t.data(), 3) == 0;
 }
-bool homogeneous_trivially_rejected(const std::array<vec4, 3>& t) {
+bool homogeneous_trivially_rejected(const std::array<vec4d, 3>& t) {
   return outcode_and(t.data(), 3) != 0;
 }
 
@@ -133,7 +133,7 @@ homogeneous_polygon homogeneous_clip(const homogeneous_polygon& polygon) {
   return clip_validated(polygon);
 }
 
-homogeneous_polygon homogeneous_clip_triangle(const std::array<vec4, 3>& p,
+homogeneous_polygon homogeneous_clip_triangle(const std::array<vec4d, 3>& p,
                                               const std::vector<double>& attributes) {
   if (attributes.size() % 3 != 0)
     throw usage_error("homogeneous_clip_triangle: " + std::to_string(attributes.size()) +
@@ -158,7 +158,7 @@ std::vector<homogeneous_polygon> fan_triangulate(const homogeneous_polygon& poly
   return out;
 }
 
-vec3 perspective_divide(const vec4& p) {
+vec3d perspective_divide(const vec4d& p) {
   if (!(p[3] > 0.0))
     throw usage_error("perspective_divide: w must be > 0 (got " + std::to_string(p[3]) + ")");
   return {p[0] / p[3], p[1] / p[3], p[2] / p[3]};

@@ -13,7 +13,7 @@ namespace exbsp::clip {
 namespace {
 
 /// d_k(p) for the six planes, in the order of homogeneous_segment.h.
-double plane_distance(int k, const vec4& p) {
+double plane_distance(int k, const vec4d& p) {
   switch (k) {
     case 0:
       return p[3] + p[0];
@@ -31,23 +31,23 @@ double plane_distance(int k, const vec4& p) {
 }
 
 /// Puts p exactly on plane k (the coordinate the plane constrains becomes +-w).
-void snap_to_plane(int k, vec4& p) {
+void snap_to_plane(int k, vec4d& p) {
   const std::size_t axis = static_cast<std::size_t>(k / 2);
   p[axis] = k % 2 == 0 ? -p[3] : p[3];
 }
 
-vec4 lerp(const vec4& a, const vec4& b, double t) {
+vec4d lerp(const vec4d& a, const vec4d& b, double t) {
   return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2]),
           a[3] + t * (b[3] - a[3])};
 }
 
-bool finite(const vec4& p) {
+bool finite(const vec4d& p) {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) && std::isfinite(p[3]);
 }
 
 }  // namespace
 
-bool homogeneous_liang_barsky(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b,
+bool homogeneous_liang_barsky(const vec4d& a, const vec4d& b, vec4d& out_a, vec4d& out_b,
                               double* t0_out, double* t1_out) {
   if (!finite(a) || !finite(b)) return false;
   // d_k(P(t)) = da + t (db - da) >= 0 is (da - db) t <= da.
@@ -67,12 +67,12 @@ bool homogeneous_liang_barsky(const vec4& a, const vec4& b, vec4& out_a, vec4& o
   return true;
 }
 
-bool homogeneous_cohen_sutherland(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b,
+bool homogeneous_cohen_sutherland(const vec4d& a, const vec4d& b, vec4d& out_a, vec4d& out_b,
                                   double* t0_out, double* t1_out) {
   if (!finite(a) || !finite(b)) return false;
   double t0 = 0, t1 = 1;
   int enter_plane = -1, leave_plane = -1;
-  vec4 pa = a, pb = b;
+  vec4d pa = a, pb = b;
   for (int moves = 0; moves < 12; ++moves) {
     const unsigned ca = homogeneous_outcode(pa), cb = homogeneous_outcode(pb);
     if ((ca | cb) == 0) break;

@@ -98,21 +98,21 @@ std::vector<P> clip_n(const std::vector<P>& polygon, const std::vector<H>& regio
   return in;
 }
 
-vec3 lift(const vec2& p) { return {p[0], p[1], 0.0}; }
-vec3 lift(const vec3& p) { return p; }
-vec3 normal_of(const half_plane2& h) { return {h.a, h.b, 0.0}; }
-vec3 normal_of(const half_space3& h) { return h.n; }
-vec3 cross3(const vec3& a, const vec3& b) {
+vec3d lift(const vec2d& p) { return {p[0], p[1], 0.0}; }
+vec3d lift(const vec3d& p) { return p; }
+vec3d normal_of(const half_plane2& h) { return {h.a, h.b, 0.0}; }
+vec3d normal_of(const half_space3& h) { return h.n; }
+vec3d cross3(const vec3d& a, const vec3d& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-double dot3(const vec3& a, const vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double dot3(const vec3d& a, const vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /// Newell's normal of a polygon (length twice its area; zero for a degenerate polygon).
 template <class P>
-vec3 newell_normal(const std::vector<P>& poly) {
-  vec3 n{0.0, 0.0, 0.0};
+vec3d newell_normal(const std::vector<P>& poly) {
+  vec3d n{0.0, 0.0, 0.0};
   for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const vec3 a = lift(poly[j]), b = lift(poly[i]);
+    const vec3d a = lift(poly[j]), b = lift(poly[i]);
     n[0] += (a[1] - b[1]) * (a[2] + b[2]);
     n[1] += (a[2] - b[2]) * (a[0] + b[0]);
     n[2] += (a[0] - b[0]) * (a[1] + b[1]);
@@ -123,7 +123,7 @@ vec3 newell_normal(const std::vector<P>& poly) {
 /// One half-space step split into pieces (notation in sutherland_hodgman.h). Appends the
 /// pieces of `in` to `out`.
 template <class P, class H>
-void split_one(const std::vector<P>& in, const H& h, const vec3& normal,
+void split_one(const std::vector<P>& in, const H& h, const vec3d& normal,
                std::vector<std::vector<P>>& out) {
   const std::size_t n = in.size();
   std::vector<double> f(n);
@@ -165,7 +165,7 @@ void split_one(const std::vector<P>& in, const H& h, const vec3& normal,
     return;
   }
   // Pair the k-th exit with the k-th entry along t.
-  const vec3 t = cross3(normal_of(h), normal);
+  const vec3d t = cross3(normal_of(h), normal);
   std::vector<std::size_t> exits(chains.size()), entries(chains.size());
   for (std::size_t i = 0; i < chains.size(); ++i) exits[i] = entries[i] = i;
   std::sort(exits.begin(), exits.end(), [&](std::size_t a, std::size_t b) {
@@ -192,8 +192,8 @@ template <class P, class H>
 std::vector<std::vector<P>> pieces_n(const std::vector<P>& polygon, const std::vector<H>& region) {
   const std::vector<P> whole = clip_n(polygon, region);  // checks the input
   if (whole.empty()) return {};
-  const vec3 normal = newell_normal(polygon);
-  if (normal == vec3{0.0, 0.0, 0.0}) return {whole};  // no orientation: nothing to split by
+  const vec3d normal = newell_normal(polygon);
+  if (normal == vec3d{0.0, 0.0, 0.0}) return {whole};  // no orientation: nothing to split by
   std::vector<std::vector<P>> pieces{polygon}, next;
   for (const H& h : region) {
     next.clear();
@@ -214,23 +214,23 @@ void require_view_volume(double left, double right, double bottom, double top, d
 
 }  // namespace
 
-std::vector<vec2> sutherland_hodgman_clip(const std::vector<vec2>& polygon,
-                                          const std::vector<half_plane2>& region) {
+std::vector<vec2d> sutherland_hodgman_clip(const std::vector<vec2d>& polygon,
+                                           const std::vector<half_plane2>& region) {
   return clip_n(polygon, region);
 }
 
-std::vector<vec3> sutherland_hodgman_clip(const std::vector<vec3>& polygon,
-                                          const std::vector<half_space3>& region) {
+std::vector<vec3d> sutherland_hodgman_clip(const std::vector<vec3d>& polygon,
+                                           const std::vector<half_space3>& region) {
   return clip_n(polygon, region);
 }
 
-std::vector<std::vector<vec2>> sutherland_hodgman_pieces(const std::vector<vec2>& polygon,
-                                                         const std::vector<half_plane2>& region) {
+std::vector<std::vector<vec2d>> sutherland_hodgman_pieces(const std::vector<vec2d>& polygon,
+                                                          const std::vector<half_plane2>& region) {
   return pieces_n(polygon, region);
 }
 
-std::vector<std::vector<vec3>> sutherland_hodgman_pieces(const std::vector<vec3>& polygon,
-                                                         const std::vector<half_space3>& region) {
+std::vector<std::vector<vec3d>> sutherland_hodgman_pieces(const std::vector<vec3d>& polygon,
+                                                          const std::vector<half_space3>& region) {
   return pieces_n(polygon, region);
 }
 
@@ -244,7 +244,7 @@ std::vector<half_space3> box_half_spaces(const box3& b) {
   detail::require_valid_box(b, "box_half_spaces");
   std::vector<half_space3> out;
   for (std::size_t k = 0; k < 3; ++k) {
-    vec3 n{0.0, 0.0, 0.0};
+    vec3d n{0.0, 0.0, 0.0};
     n[k] = 1.0;
     out.push_back({n, -b.min[k]});
     n[k] = -1.0;

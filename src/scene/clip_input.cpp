@@ -316,7 +316,7 @@ std::string clip_svg(const clip_input& in, const json& result) {
   // Bounds: every input point, and the region when it is bounded.
   double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   double hi[2] = {-lo[0], -lo[1]};
-  auto grow = [&](const clip::vec2& p) {
+  auto grow = [&](const clip::vec2d& p) {
     for (int k = 0; k < 2; ++k) {
       lo[k] = std::min(lo[k], p[k]);
       hi[k] = std::max(hi[k], p[k]);
@@ -328,7 +328,7 @@ std::string clip_svg(const clip_input& in, const json& result) {
   }
   for (const auto& poly : in.polygons2)
     for (const auto& p : poly) grow(p);
-  std::vector<clip::vec2> region;
+  std::vector<clip::vec2d> region;
   if (in.kind == clip_input::region_kind::rect) {
     region = {in.window.min,
               {in.window.max[0], in.window.min[1]},
@@ -346,7 +346,7 @@ std::string clip_svg(const clip_input& in, const json& result) {
   }
   if (in.kind == clip_input::region_kind::halfspaces)  // the half-planes' region within the bounds
     region = clip::sutherland_hodgman_clip(
-        std::vector<clip::vec2>{{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}},
+        std::vector<clip::vec2d>{{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}},
         in.planes2);
   span = std::max(hi[0] - lo[0], hi[1] - lo[1]);
   const double scale = 512.0 / span;

@@ -48,15 +48,15 @@ struct clip_input {
   std::string path;
   int dimension = 2;
   enum class region_kind { rect, box, convex, halfspaces } kind = region_kind::rect;
-  clip::window2 window{};                  ///< rect
-  clip::box3 box{};                        ///< box
-  std::vector<clip::vec2> convex_polygon;  ///< 2D convex region's vertices (for drawing)
-  std::vector<clip::half_plane2> planes2;  ///< the 2D region as half-planes (every kind)
-  std::vector<clip::half_space3> planes3;  ///< the 3D region as half-spaces (every kind)
+  clip::window2 window{};                   ///< rect
+  clip::box3 box{};                         ///< box
+  std::vector<clip::vec2d> convex_polygon;  ///< 2D convex region's vertices (for drawing)
+  std::vector<clip::half_plane2> planes2;   ///< the 2D region as half-planes (every kind)
+  std::vector<clip::half_space3> planes3;   ///< the 3D region as half-spaces (every kind)
   std::vector<clip::segment2> segments2;
   std::vector<clip::segment3> segments3;
-  std::vector<std::vector<clip::vec2>> polygons2;
-  std::vector<std::vector<clip::vec3>> polygons3;
+  std::vector<std::vector<clip::vec2d>> polygons2;
+  std::vector<std::vector<clip::vec3d>> polygons3;
 };
 
 /// Validates a parsed document (`path` names the file in messages). Throws scene_error naming

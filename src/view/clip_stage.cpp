@@ -20,7 +20,7 @@ void clip_to_view_volume(const std::vector<hpoint>& in, std::vector<hpoint>& out
   for (const hpoint& p : in) poly.positions.push_back({p.x, p.y, p.z, p.w});
   const clip::homogeneous_polygon clipped = clip::homogeneous_clip(poly);
   out.reserve(clipped.positions.size());
-  for (const clip::vec4& p : clipped.positions) out.push_back({p[0], p[1], p[2], p[3]});
+  for (const clip::vec4d& p : clipped.positions) out.push_back({p[0], p[1], p[2], p[3]});
 }
 
 unsigned view_volume_outcode(const hpoint& p) {
@@ -29,8 +29,8 @@ unsigned view_volume_outcode(const hpoint& p) {
 
 bool clip_segment_to_view_volume(const hpoint& a, const hpoint& b, hpoint& out_a, hpoint& out_b,
                                  double* t0_out, double* t1_out, segment_clipper clipper) {
-  const clip::vec4 ca{a.x, a.y, a.z, a.w}, cb{b.x, b.y, b.z, b.w};
-  clip::vec4 oa, ob;
+  const clip::vec4d ca{a.x, a.y, a.z, a.w}, cb{b.x, b.y, b.z, b.w};
+  clip::vec4d oa, ob;
   const bool kept = clipper == segment_clipper::cohen_sutherland
                         ? clip::homogeneous_cohen_sutherland(ca, cb, oa, ob, t0_out, t1_out)
                         : clip::homogeneous_liang_barsky(ca, cb, oa, ob, t0_out, t1_out);

@@ -36,8 +36,8 @@ std::string mesh_reject_stage(frame& f) {
   std::vector<bool> reject(meshes, false);
   for (std::size_t k = 0; k < meshes; ++k) {
     if (!(boxes[k].min[0] <= boxes[k].max[0])) continue;  // no triangles
-    std::vector<clip::vec4> corners;
-    for (const clip::vec3& c : clip::box_corners(boxes[k])) {
+    std::vector<clip::vec4d> corners;
+    for (const clip::vec3d& c : clip::box_corners(boxes[k])) {
       const hpoint h = pm * point3{c[0], c[1], c[2]};
       corners.push_back({h.x, h.y, h.z, h.w});
     }

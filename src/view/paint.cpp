@@ -117,7 +117,7 @@ class coverage_mask {
 /// (mask == nullptr, back to front) or only the pixels no nearer polygon painted (front to
 /// back). Front to back, a polygon whose box of pixel centres is entirely covered is skipped.
 template <class Shade>
-void paint_spans(const std::vector<vec2>& poly, const pixel_rows& rows, coverage_mask* mask,
+void paint_spans(const std::vector<point2>& poly, const pixel_rows& rows, coverage_mask* mask,
                  Shade&& shade) {
   if (!mask) {
     for_each_covered_span_polygon(poly, rows.width, rows.height, [&](int j, int lo, int hi) {
@@ -129,7 +129,7 @@ void paint_spans(const std::vector<vec2>& poly, const pixel_rows& rows, coverage
   // The box of the finite vertices holds every pixel of every fan triangle (a triangle with a
   // non-finite vertex covers nothing).
   double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
-  for (const vec2& v : poly)
+  for (const point2& v : poly)
     if (std::isfinite(v.x) && std::isfinite(v.y)) {
       x0 = std::min(x0, v.x), x1 = std::max(x1, v.x);
       y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
@@ -168,7 +168,7 @@ void paint_line(const frame& f, const screen_line& l, int scale, image& img) {
     for_each_line_pixel(ax, ay, bx, by, scale, img.width(), img.height(), cover);
 }
 
-void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vector<vec2>& poly,
+void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vector<point2>& poly,
                    const pixel_rows& rows, coverage_mask* mask) {
   const viewport& vp = f.view.vp;
   poly.clear();
@@ -199,7 +199,7 @@ void paint_front_to_back(const frame& f, int scale, const pixel_rows& rows) {
   run_workers(static_cast<unsigned>(bands), [&](unsigned w) {
     const int b = static_cast<int>(w);
     coverage_mask mask(rows.width, rows.height * b / bands, rows.height * (b + 1) / bands - 1);
-    std::vector<vec2> poly;
+    std::vector<point2> poly;
     for (auto p = f.polygons.rbegin(); p != f.polygons.rend() && !mask.full(); ++p)
       paint_polygon(f, *p, scale, poly, rows, &mask);
   });
@@ -225,7 +225,7 @@ image paint_frame(const frame& f, int scale) {
     paint_front_to_back(f, scale, rows);
     return img;
   }
-  std::vector<vec2> poly;
+  std::vector<point2> poly;
   std::size_t next_line = 0;
   for (std::size_t k = 0; k <= f.polygons.size(); ++k) {
     while (next_line < f.lines.size() && f.lines[next_line].slot <= k)

@@ -26,7 +26,7 @@
 namespace exbsp::view {
 
 /// A point in the window plane (x right, y up).
-struct vec2 {
+struct point2 {
   double x = 0, y = 0;
 };
 
@@ -40,10 +40,10 @@ inline bool pixel_range(double vmin, double vmax, int n, int& lo, int& hi) {
   hi = fhi > n - 1 ? n - 1 : static_cast<int>(fhi);
   return lo <= hi;
 }
-inline bool owns_edge(const vec2& s, const vec2& t) {
+inline bool owns_edge(const point2& s, const point2& t) {
   return t.y < s.y || (t.y == s.y && t.x < s.x);
 }
-inline bool inside_edge(const vec2& s, const vec2& t, double px, double py, bool owned) {
+inline bool inside_edge(const point2& s, const point2& t, double px, double py, bool owned) {
   const int o = orient2d(s.x, s.y, t.x, t.y, px, py);
   return o > 0 || (o == 0 && owned);
 }
@@ -55,9 +55,9 @@ inline bool inside_edge(const vec2& s, const vec2& t, double px, double py, bool
 /// non-finite triangles cover nothing. The reference that for_each_covered_span must
 /// reproduce exactly (tests/test_raster.cpp); the painters use the span version.
 template <class Cover>
-void for_each_covered_pixel_reference(vec2 a, vec2 b, vec2 c, int width, int height,
+void for_each_covered_pixel_reference(point2 a, point2 b, point2 c, int width, int height,
                                       Cover&& cover) {
-  for (const vec2* p : {&a, &b, &c})
+  for (const point2* p : {&a, &b, &c})
     if (!std::isfinite(p->x) || !std::isfinite(p->y)) return;
   const int o = orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
   if (o == 0) return;
@@ -95,12 +95,12 @@ namespace detail {
 /// span end is then settled by the exact predicate on the neighbouring centres, so the result
 /// is the exact pixel set whatever the rounding of the guess.
 struct span_edge {
-  vec2 s, t;
+  point2 s, t;
   bool owned = false;
   int side = 0;
   double inverse_slope = 0;  ///< (t.x - s.x) / (t.y - s.y); unused when side == 0
 
-  span_edge(const vec2& from, const vec2& to) : s(from), t(to), owned(owns_edge(from, to)) {
+  span_edge(const point2& from, const point2& to) : s(from), t(to), owned(owns_edge(from, to)) {
     side = t.y < s.y ? 1 : (t.y > s.y ? -1 : 0);
     if (side != 0) inverse_slope = (t.x - s.x) / (t.y - s.y);
   }
@@ -147,9 +147,9 @@ struct span_edge {
 /// span(j, lo, hi) then reports the covered run within the narrowed columns (the
 /// front-to-back painter narrows to the pixels not yet painted).
 template <class Span, class Narrow>
-void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&& span,
+void for_each_covered_span(point2 a, point2 b, point2 c, int width, int height, Span&& span,
                            Narrow&& narrow) {
-  for (const vec2* p : {&a, &b, &c})
+  for (const point2* p : {&a, &b, &c})
     if (!std::isfinite(p->x) || !std::isfinite(p->y)) return;
   int i0, i1, j0, j1;  // the box first: most fragments of a fine mesh miss every centre
   if (!detail::pixel_range(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), width, i0, i1))
@@ -186,7 +186,7 @@ void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&&
 /// set exactly (the exact predicate settles every span end); a few predicate calls per row
 /// instead of three per pixel.
 template <class Span>
-void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&& span) {
+void for_each_covered_span(point2 a, point2 b, point2 c, int width, int height, Span&& span) {
   for_each_covered_span(a, b, c, width, height, span, [](int, int&, int&) { return true; });
 }
 
@@ -194,7 +194,7 @@ void for_each_covered_span(vec2 a, vec2 b, vec2 c, int width, int height, Span&&
 /// belongs to triangle (a, b, c) under the top-left rule above. Either winding; zero-area or
 /// non-finite triangles cover nothing. Rows are visited bottom-up, pixels left to right.
 template <class Cover>
-void for_each_covered_pixel(vec2 a, vec2 b, vec2 c, int width, int height, Cover&& cover) {
+void for_each_covered_pixel(point2 a, point2 b, point2 c, int width, int height, Cover&& cover) {
   for_each_covered_span(a, b, c, width, height, [&](int j, int lo, int hi) {
     for (int i = lo; i <= hi; ++i) cover(i, j);
   });
@@ -204,7 +204,7 @@ void for_each_covered_pixel(vec2 a, vec2 b, vec2 c, int width, int height, Cover
 /// vertex: (v0, v[k], v[k+1]). Fan diagonals are shared edges, so no pixel is reported twice
 /// when the polygon is convex (as every clipped triangle is).
 template <class Cover>
-void for_each_covered_pixel_polygon(const std::vector<vec2>& poly, int width, int height,
+void for_each_covered_pixel_polygon(const std::vector<point2>& poly, int width, int height,
                                     Cover&& cover) {
   for (std::size_t k = 1; k + 1 < poly.size(); ++k)
     for_each_covered_pixel(poly[0], poly[k], poly[k + 1], width, height, cover);
@@ -213,7 +213,7 @@ void for_each_covered_pixel_polygon(const std::vector<vec2>& poly, int width, in
 /// Calls span(j, lo, hi) for the covered runs of each fan triangle of a convex polygon (as
 /// for_each_covered_pixel_polygon, a run per triangle and row).
 template <class Span>
-void for_each_covered_span_polygon(const std::vector<vec2>& poly, int width, int height,
+void for_each_covered_span_polygon(const std::vector<point2>& poly, int width, int height,
                                    Span&& span) {
   for (std::size_t k = 1; k + 1 < poly.size(); ++k)
     for_each_covered_span(poly[0], poly[k], poly[k + 1], width, height, span);
@@ -221,16 +221,16 @@ void for_each_covered_span_polygon(const std::vector<vec2>& poly, int width, int
 
 /// The same with a row filter `narrow` for each fan triangle (for_each_covered_span).
 template <class Span, class Narrow>
-void for_each_covered_span_polygon(const std::vector<vec2>& poly, int width, int height,
+void for_each_covered_span_polygon(const std::vector<point2>& poly, int width, int height,
                                    Span&& span, Narrow&& narrow) {
   for (std::size_t k = 1; k + 1 < poly.size(); ++k)
     for_each_covered_span(poly[0], poly[k], poly[k + 1], width, height, span, narrow);
 }
 
 /// Paints triangle (a, b, c) in colour `color` (no depth test).
-void fill_triangle(image& img, const vec2& a, const vec2& b, const vec2& c, rgb8 color);
+void fill_triangle(image& img, const point2& a, const point2& b, const point2& c, rgb8 color);
 
 /// Paints a convex polygon (fan from its first vertex) in colour `color` (no depth test).
-void fill_convex_polygon(image& img, const std::vector<vec2>& poly, rgb8 color);
+void fill_convex_polygon(image& img, const std::vector<point2>& poly, rgb8 color);
 
 }  // namespace exbsp::view

@@ -15,13 +15,13 @@
 namespace exbsp::clip {
 
 /// Smallest box containing the points. Throws usage_error for no points or NaN/infinite ones.
-EXBSP_EXPORT box2 bounding_box(const std::vector<vec2>& points);
+EXBSP_EXPORT box2 bounding_box(const std::vector<vec2d>& points);
 /// Smallest box containing the points. Throws usage_error for no points or NaN/infinite ones.
-EXBSP_EXPORT box3 bounding_box(const std::vector<vec3>& points);
+EXBSP_EXPORT box3 bounding_box(const std::vector<vec3d>& points);
 /// Smallest box containing the triangle. Throws usage_error for NaN/infinite coordinates.
-EXBSP_EXPORT box2 bounding_box(const std::array<vec2, 3>& triangle);
+EXBSP_EXPORT box2 bounding_box(const std::array<vec2d, 3>& triangle);
 /// Smallest box containing the triangle. Throws usage_error for NaN/infinite coordinates.
-EXBSP_EXPORT box3 bounding_box(const std::array<vec3, 3>& triangle);
+EXBSP_EXPORT box3 bounding_box(const std::array<vec3d, 3>& triangle);
 
 /// True when the closed boxes share a point. No checks (NaN bounds never overlap).
 EXBSP_EXPORT bool boxes_overlap(const box2& a, const box2& b);
@@ -30,10 +30,10 @@ EXBSP_EXPORT bool boxes_overlap(const box3& a, const box3& b);
 
 /// True when the triangle's bounding box misses the closed window, so no clipping is needed
 /// to discard it. False does not mean the triangle meets the window. Throws like bounding_box.
-EXBSP_EXPORT bool triangle_outside_window(const std::array<vec2, 3>& triangle,
+EXBSP_EXPORT bool triangle_outside_window(const std::array<vec2d, 3>& triangle,
                                           const window2& window);
 
 /// The eight corners of the box, corner i taking max on axis k when bit k of i is set.
-EXBSP_EXPORT std::array<vec3, 8> box_corners(const box3& box);
+EXBSP_EXPORT std::array<vec3d, 8> box_corners(const box3& box);
 
 }  // namespace exbsp::clip

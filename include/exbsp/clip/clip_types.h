@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 // Small value types shared by the floating-point clippers of src/clip/.
 //
-// Notation: points are std::array<double, N> (vec2, vec3, vec4 = homogeneous x, y, z, w);
+// Notation: points are std::array<double, N> (vec2d, vec3d, vec4d = homogeneous x, y, z, w);
 // an axis-aligned box (a 2D window or a 3D box) is the closed set min <= p <= max,
 // component-wise. A polygon is a vector of its vertices in order (closed implicitly:
 // the last vertex connects to the first). A fan triangulation of a polygon v0..v(k-1)
@@ -11,11 +11,14 @@
 #include <cstddef>
 #include <vector>
 
+#include <exbsp/core/vec.h>
+
 namespace exbsp::clip {
 
-using vec2 = std::array<double, 2>;
-using vec3 = std::array<double, 3>;
-using vec4 = std::array<double, 4>;  ///< homogeneous clip-space point (x, y, z, w)
+// The one vocabulary (<exbsp/core/vec.h>); vec4d is a homogeneous clip-space point (x, y, z, w).
+using exbsp::vec2d;
+using exbsp::vec3d;
+using exbsp::vec4d;
 
 // box and segment below are two templates of the same form (two arrays, aliases for 2 and 3
 // dimensions): plain aggregates users build with braces.

@@ -38,9 +38,9 @@ enum outcode_bit : unsigned {
 };
 
 /// 4-bit outcode of p against the window. No checks: NaN compares as inside.
-EXBSP_EXPORT unsigned outcode(const vec2& p, const window2& window);
+EXBSP_EXPORT unsigned outcode(const vec2d& p, const window2& window);
 /// 6-bit outcode of p against the box (27 regions). No checks: NaN compares as inside.
-EXBSP_EXPORT unsigned outcode(const vec3& p, const box3& box);
+EXBSP_EXPORT unsigned outcode(const vec3d& p, const box3& box);
 
 /// True when both endpoints are inside (codes both 0): the segment is kept unchanged.
 inline bool trivially_accepted(unsigned code0, unsigned code1) { return (code0 | code1) == 0; }

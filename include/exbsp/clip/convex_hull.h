@@ -16,6 +16,6 @@ namespace exbsp::clip {
 
 /// The half-spaces of the convex hull of `points`. Throws usage_error for NaN/infinite input
 /// or points that do not span 3D (fewer than 4, or all coplanar).
-EXBSP_EXPORT std::vector<half_space3> convex_hull_half_spaces(const std::vector<vec3>& points);
+EXBSP_EXPORT std::vector<half_space3> convex_hull_half_spaces(const std::vector<vec3d>& points);
 
 }  // namespace exbsp::clip

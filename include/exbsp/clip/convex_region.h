@@ -24,13 +24,13 @@ namespace exbsp::clip {
 /// The half-planes of a convex polygon (the region it bounds, boundary included). Collinear
 /// and repeated vertices are allowed. Throws usage_error for NaN/infinite input, fewer than 3
 /// vertices, zero area, or a polygon that is not convex (a reflex vertex or a self-crossing).
-EXBSP_EXPORT std::vector<half_plane2> convex_polygon_half_planes(const std::vector<vec2>& polygon);
+EXBSP_EXPORT std::vector<half_plane2> convex_polygon_half_planes(const std::vector<vec2d>& polygon);
 
 /// The half-spaces of a convex polyhedron given by its faces (each a planar polygon of at least
 /// 3 vertices, any orientation). Throws usage_error for NaN/infinite input, a degenerate face,
 /// or a polyhedron that is not convex (a vertex strictly outside some face's half-space, by
 /// more than a relative 1e-9 of the coordinates' size).
 EXBSP_EXPORT std::vector<half_space3> convex_polyhedron_half_spaces(
-    const std::vector<std::vector<vec3>>& faces);
+    const std::vector<std::vector<vec3d>>& faces);
 
 }  // namespace exbsp::clip

@@ -30,7 +30,7 @@ namespace exbsp::clip {
 /// attributes[i * attribute_count + j] is attribute j of vertex i.
 struct homogeneous_polygon {
   std::size_t attribute_count = 0;
-  std::vector<vec4> positions;
+  std::vector<vec4d> positions;
   std::vector<double> attributes;
 
   std::size_t size() const { return positions.size(); }
@@ -43,18 +43,18 @@ struct homogeneous_polygon {
 
 /// 6-bit outcode of p against the six clip planes (bits as in the notation above).
 /// A point with w < 0 always has at least one bit set. No checks.
-EXBSP_EXPORT unsigned homogeneous_outcode(const vec4& p);
+EXBSP_EXPORT unsigned homogeneous_outcode(const vec4d& p);
 
 /// True when every point is inside the view volume (all outcodes 0); false for no points.
-EXBSP_EXPORT bool homogeneous_trivially_accepted(const std::vector<vec4>& points);
+EXBSP_EXPORT bool homogeneous_trivially_accepted(const std::vector<vec4d>& points);
 /// True when all points are outside one common clip plane (the AND of their outcodes is not
 /// 0): nothing of their convex hull is visible. Use it on the eight clip-space corners of
 /// an object's bounding box to reject the object before any per-triangle work.
 /// False for no points.
-EXBSP_EXPORT bool homogeneous_trivially_rejected(const std::vector<vec4>& points);
+EXBSP_EXPORT bool homogeneous_trivially_rejected(const std::vector<vec4d>& points);
 /// Triangle versions of the two tests above.
-EXBSP_EXPORT bool homogeneous_trivially_accepted(const std::array<vec4, 3>& triangle);
-EXBSP_EXPORT bool homogeneous_trivially_rejected(const std::array<vec4, 3>& triangle);
+EXBSP_EXPORT bool homogeneous_trivially_accepted(const std::array<vec4d, 3>& triangle);
+EXBSP_EXPORT bool homogeneous_trivially_rejected(const std::array<vec4d, 3>& triangle);
 
 /// Clips a convex polygon against the view volume. Trivially accepted input is returned
 /// unchanged (bit-for-bit); trivially rejected input, input with fewer than 3 vertices and
@@ -67,7 +67,7 @@ EXBSP_EXPORT homogeneous_polygon homogeneous_clip(const homogeneous_polygon& pol
 /// (vertex-major, may be empty) and returns the visible convex polygon, in the triangle's
 /// order. Throws usage_error when attributes.size() is not a multiple of 3 or a value is
 /// NaN or infinite.
-homogeneous_polygon homogeneous_clip_triangle(const std::array<vec4, 3>& p,
+homogeneous_polygon homogeneous_clip_triangle(const std::array<vec4d, 3>& p,
                                               const std::vector<double>& attributes = {});
 
 /// Fan triangulation (v0, v[i], v[i+1]) of a clipped polygon, each triangle a 3-vertex
@@ -77,6 +77,6 @@ EXBSP_EXPORT std::vector<homogeneous_polygon> fan_triangulate(const homogeneous_
 
 /// Perspective divide (x/w, y/w, z/w) to normalised device coordinates.
 /// Throws usage_error unless w > 0 (clipped output has w >= 0; w == 0 only at the origin).
-EXBSP_EXPORT vec3 perspective_divide(const vec4& p);
+EXBSP_EXPORT vec3d perspective_divide(const vec4d& p);
 
 }  // namespace exbsp::clip

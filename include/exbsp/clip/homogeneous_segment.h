@@ -31,12 +31,13 @@ namespace exbsp::clip {
 /// when nothing is left; otherwise sets out_a = P(t0), out_b = P(t1) and, when t0_out / t1_out
 /// are not null, the parameters. A zero-length segment (a == b) is kept iff a is inside.
 /// Non-finite input returns false (nothing to draw); never throws.
-EXBSP_EXPORT bool homogeneous_liang_barsky(const vec4& a, const vec4& b, vec4& out_a, vec4& out_b,
-                                           double* t0_out = nullptr, double* t1_out = nullptr);
+EXBSP_EXPORT bool homogeneous_liang_barsky(const vec4d& a, const vec4d& b, vec4d& out_a,
+                                           vec4d& out_b, double* t0_out = nullptr,
+                                           double* t1_out = nullptr);
 
 /// Cohen–Sutherland with the same contract as homogeneous_liang_barsky.
-EXBSP_EXPORT bool homogeneous_cohen_sutherland(const vec4& a, const vec4& b, vec4& out_a,
-                                               vec4& out_b, double* t0_out = nullptr,
+EXBSP_EXPORT bool homogeneous_cohen_sutherland(const vec4d& a, const vec4d& b, vec4d& out_a,
+                                               vec4d& out_b, double* t0_out = nullptr,
                                                double* t1_out = nullptr);
 
 }  // namespace exbsp::clip

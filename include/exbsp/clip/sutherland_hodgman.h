@@ -42,34 +42,34 @@ namespace exbsp::clip {
 /// Closed half-plane a*x + b*y + c >= 0.
 struct half_plane2 {
   double a, b, c;
-  double value(const vec2& p) const { return a * p[0] + b * p[1] + c; }
+  double value(const vec2d& p) const { return a * p[0] + b * p[1] + c; }
 };
 
 /// Closed half-space n·p + d >= 0.
 struct half_space3 {
-  vec3 n;
+  vec3d n;
   double d;
-  double value(const vec3& p) const { return n[0] * p[0] + n[1] * p[1] + n[2] * p[2] + d; }
+  double value(const vec3d& p) const { return n[0] * p[0] + n[1] * p[1] + n[2] * p[2] + d; }
 };
 
 /// The part of `polygon` inside every half-plane of `region` (their intersection, which is
 /// convex), in the input's vertex order. An empty region list returns the polygon unchanged;
 /// a result with fewer than 3 vertices (nothing, a point or a segment) is returned empty, as
 /// is an input with fewer than 3 vertices. Throws usage_error on NaN/infinite input.
-EXBSP_EXPORT std::vector<vec2> sutherland_hodgman_clip(const std::vector<vec2>& polygon,
-                                                       const std::vector<half_plane2>& region);
+EXBSP_EXPORT std::vector<vec2d> sutherland_hodgman_clip(const std::vector<vec2d>& polygon,
+                                                        const std::vector<half_plane2>& region);
 /// 3D version: a planar polygon clipped by half-spaces; same guarantees and errors.
-EXBSP_EXPORT std::vector<vec3> sutherland_hodgman_clip(const std::vector<vec3>& polygon,
-                                                       const std::vector<half_space3>& region);
+EXBSP_EXPORT std::vector<vec3d> sutherland_hodgman_clip(const std::vector<vec3d>& polygon,
+                                                        const std::vector<half_space3>& region);
 
 /// sutherland_hodgman_clip split into pieces (see the file comment): each piece is a polygon
 /// of at least 3 vertices; a convex input gives at most one piece, equal to
 /// sutherland_hodgman_clip's result. Throws usage_error on NaN/infinite input.
-EXBSP_EXPORT std::vector<std::vector<vec2>> sutherland_hodgman_pieces(
-    const std::vector<vec2>& polygon, const std::vector<half_plane2>& region);
+EXBSP_EXPORT std::vector<std::vector<vec2d>> sutherland_hodgman_pieces(
+    const std::vector<vec2d>& polygon, const std::vector<half_plane2>& region);
 /// 3D version for a planar polygon; same guarantees and errors.
-EXBSP_EXPORT std::vector<std::vector<vec3>> sutherland_hodgman_pieces(
-    const std::vector<vec3>& polygon, const std::vector<half_space3>& region);
+EXBSP_EXPORT std::vector<std::vector<vec3d>> sutherland_hodgman_pieces(
+    const std::vector<vec3d>& polygon, const std::vector<half_space3>& region);
 
 /// The four half-planes of the closed window: x >= xmin, x <= xmax, y >= ymin, y <= ymax
 /// (in that order). Throws usage_error on NaN/infinite bounds or min > max.

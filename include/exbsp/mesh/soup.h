@@ -8,10 +8,9 @@
 #include <string>
 #include <vector>
 #include <exbsp/core/export.h>
+#include <exbsp/core/vec.h>
 
 namespace exbsp {
-
-using vec3d = std::array<double, 3>;
 
 /// One input triangle: three vertex indices into triangle_soup::vertices and its face id.
 struct soup_triangle {

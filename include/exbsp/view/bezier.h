@@ -21,13 +21,11 @@
 #include <utility>
 #include <vector>
 #include <exbsp/core/export.h>
+#include <exbsp/core/vec.h>
 
 namespace exbsp {
 
-/// A point or vector in 3D (the same type as in mesh/soup.h).
-using vec3d = std::array<double, 3>;
-/// A point in 2D, e.g. a projected point in pixels.
-using vec2d = std::array<double, 2>;
+// vec2d (e.g. a point in pixels) and vec3d: <exbsp/core/vec.h>.
 
 /// The n + 1 Bernstein weights b_{0,n}(t) .. b_{n,n}(t): each >= 0, summing to 1 (up to
 /// rounding). Computed as scaled products (a separate binary exponent is carried), so neither

@@ -37,13 +37,11 @@
 #include <string>
 #include <vector>
 #include <exbsp/core/export.h>
+#include <exbsp/core/vec.h>
 
 namespace exbsp {
 
-/// A point or vector in 3D (the same type as in mesh/soup.h).
-using vec3d = std::array<double, 3>;
-/// A point in 2D (screen pixels).
-using vec2d = std::array<double, 2>;
+// vec2d (e.g. a point in pixels) and vec3d: <exbsp/core/vec.h>.
 
 /// A quaternion w + x i + y j + z k; rotations use unit quaternions. Default: identity.
 struct quaternion {
