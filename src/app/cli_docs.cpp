@@ -27,11 +27,12 @@ std::string roff(const std::string& text) {
   return out;
 }
 
-/// "-o, --output" for an option (positionals: its name).
-std::string option_names(const CLI::Option& o) {
+/// "-o, --output" for an option, the names joined by `separator` (positionals: its name).
+std::string option_names(const CLI::Option& o, const std::string& separator = ", ") {
   std::string names;
-  for (const std::string& s : o.get_snames()) names += (names.empty() ? "-" : ", -") + s;
-  for (const std::string& l : o.get_lnames()) names += (names.empty() ? "--" : ", --") + l;
+  for (const std::string& s : o.get_snames()) names += (names.empty() ? "-" : separator + "-") + s;
+  for (const std::string& l : o.get_lnames())
+    names += (names.empty() ? "--" : separator + "--") + l;
   return names.empty() ? o.get_name() : names;
 }
 
@@ -119,9 +120,7 @@ std::string bash_completion(const CLI::App& app) {
     std::string opts, values;
     for (const CLI::Option* o : options_of(*cmd)) {
       if (o->get_positional()) continue;
-      std::string names;
-      for (const std::string& s : o->get_snames()) names += (names.empty() ? "-" : " -") + s;
-      for (const std::string& l : o->get_lnames()) names += (names.empty() ? "--" : " --") + l;
+      const std::string names = option_names(*o, " ");
       opts += (opts.empty() ? "" : " ") + names;
       const std::vector<std::string> choices = option_choices(*o);
       if (choices.empty()) continue;

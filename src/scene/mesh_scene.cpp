@@ -28,17 +28,10 @@ const std::vector<std::string>& mesh_view_names() { return view::fitted_view_nam
 
 scene mesh_scene(std::shared_ptr<const triangle_soup> soup, const std::string& name,
                  const mesh_view_options& options) {
-  const auto& names = view::fitted_view_names();
-  if (std::find(names.begin(), names.end(), options.view) == names.end())
-    throw usage_error("--view: unknown view '" + options.view +
-                      "' (expected iso, front, back, left, right, top or bottom)");
-  if (options.width < 1 || options.width > 16384 || options.height < 1 || options.height > 16384)
-    throw usage_error("--size: width and height must be in 1..16384");
-  if (!soup || soup->triangles.empty())
-    throw input_error(name, 0, "the mesh has no triangle to render");
-
-  const view::fitted_view v =
-      view::fit_view_of(*soup, options.width, options.height, options.view, name);
+  if (!soup) throw input_error(name, 0, "the mesh has no triangle to render");
+  // Checks the view's name, the size and that there is a triangle (messages naming the options).
+  const view::fitted_view v = view::fit_view_of(*soup, options.width, options.height, options.view,
+                                                name, "--view", "--size");
   const nlohmann::json doc = {
       {"meshes", {{{"file", name}, {"color", {176, 190, 214}}}}},
       {"camera",

@@ -13,6 +13,7 @@
 #include <exbsp/view/projection.h>
 #include <exbsp/view/stages.h>
 #include <exbsp/view/standard_pipeline.h>
+#include "core/name_list.h"
 #include "view/fitted_view.h"
 
 namespace exbsp::view {
@@ -49,15 +50,16 @@ const std::vector<std::string>& fitted_view_names() {
 }
 
 fitted_view fit_view_of(const triangle_soup& soup, int width, int height, const std::string& name,
-                        const std::string& file) {
+                        const std::string& file, const std::string& view_what,
+                        const std::string& size_what) {
   const named_view* chosen = nullptr;
   for (const named_view& v : views)
     if (name == v.name) chosen = &v;
   if (!chosen)
-    throw usage_error("fit_view: unknown view '" + name +
-                      "' (expected iso, front, back, left, right, top or bottom)");
+    throw usage_error(view_what + ": unknown view '" + name + "' (expected " +
+                      name_list(fitted_view_names(), "or") + ")");
   if (width < 1 || width > 16384 || height < 1 || height > 16384)
-    throw usage_error("fit_view: width and height must be in 1..16384");
+    throw usage_error(size_what + ": width and height must be in 1..16384");
   if (soup.triangles.empty()) throw input_error(file, 0, "the mesh has no triangle to render");
 
   // Bounding box of the vertices the triangles use (a stray unused vertex does not move the view).

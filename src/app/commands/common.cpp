@@ -162,23 +162,29 @@ bsp load_tree(const build_cli& o, double* load_seconds) {
   if (load_seconds)
     *load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const build_stats& s = tree.stats();
-  const auto conflict = [&](const char* option, const std::string& given,
-                            const std::string& saved) {
-    if (o.command && o.command->count(option) && given != saved)
-      throw usage_error(o.mesh + " is a saved tree built with " + option + " " + saved + "; " +
-                        option + " " + given + " cannot change it (build from the mesh instead)");
-  };
-  for (const char* option : {"--threads", "--max-fragments"})
-    if (o.command && o.command->count(option))
-      throw usage_error(std::string(option) + " steers a build; " + o.mesh +
-                        " is a saved tree, loaded, not rebuilt");
-  conflict("--kernel", o.kernel, s.kernel);
-  conflict("--heuristic", o.heuristic, s.heuristic);
-  conflict("--seed", std::to_string(o.seed), std::to_string(s.seed));
+  if (o.command)
+    refuse_for_saved_tree(*o.command, o.mesh, {"--threads", "--max-fragments"},
+                          {{"--kernel", o.kernel, s.kernel},
+                           {"--heuristic", o.heuristic, s.heuristic},
+                           {"--seed", std::to_string(o.seed), std::to_string(s.seed)}},
+                          "build from the mesh instead");
   return tree;
 }
 
 }  // namespace
+
+void refuse_for_saved_tree(const CLI::App& cmd, const std::string& path,
+                           std::initializer_list<const char*> steering,
+                           const std::vector<fixed_option>& fixed, const std::string& instead) {
+  for (const char* option : steering)
+    if (cmd.count(option))
+      throw usage_error(std::string(option) + " steers a build; " + path +
+                        " is a saved tree, loaded, not rebuilt");
+  for (const fixed_option& f : fixed)
+    if (cmd.count(f.name) && f.given != f.saved)
+      throw usage_error(path + " is a saved tree built with " + f.name + " " + f.saved + "; " +
+                        f.name + " " + f.given + " cannot change it (" + instead + ")");
+}
 
 bsp build_tree(const build_cli& o, progress_line& progress, double* load_seconds) {
   // A saved tree by its extension or magic; never standard input or a mesh given --format.

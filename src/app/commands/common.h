@@ -6,10 +6,12 @@
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <mutex>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <exbsp/bsp/engine.h>
 
@@ -32,6 +34,20 @@ struct build_cli {
   std::string save;                   ///< build --save: write the tree here
   const CLI::App* command = nullptr;  ///< to tell options given on the command line from defaults
 };
+
+/// An option a saved tree fixed when it was built: its name, the value the command line gave
+/// and the tree's.
+struct fixed_option {
+  const char* name;
+  std::string given, saved;
+};
+
+/// Refuses, for the saved tree `path` (docs/tree-file.md), the options of `cmd` that cannot act
+/// on it: each of `steering` given at all (they steer a build; a flag acts or is refused), and
+/// each of `fixed` given with another value than the tree's (usage_error ending "(`instead`)").
+void refuse_for_saved_tree(const CLI::App& cmd, const std::string& path,
+                           std::initializer_list<const char*> steering,
+                           const std::vector<fixed_option>& fixed, const std::string& instead);
 
 /// Rejects an empty output name (`-o ""`): it would silently mean the default output.
 const CLI::Validator& non_empty_path();

@@ -115,14 +115,10 @@ class render_subcommand final : public command {
       std::shared_ptr<const triangle_soup> soup;
       if (format_.empty() && input_ != "-" && bsp::is_saved_tree(input_)) {
         // A saved tree: drawn as it was built (docs/tree-file.md), never rebuilt.
-        if (sub->count("--max-fragments") > 0)
-          throw usage_error("--max-fragments steers a build; " + input_ +
-                            " is a saved tree, loaded, not rebuilt");
+        refuse_for_saved_tree(*sub, input_, {"--max-fragments"}, {}, "");  // before loading
         bsp tree = bsp::load(input_);
-        if (!kernel_.empty() && parse_kernel(kernel_) != tree.kernel())
-          throw usage_error(input_ + " is a saved tree built with --kernel " +
-                            to_string(tree.kernel()) + "; --kernel " + kernel_ +
-                            " cannot change it (render the mesh instead)");
+        refuse_for_saved_tree(*sub, input_, {}, {{"--kernel", kernel_, to_string(tree.kernel())}},
+                              "render the mesh instead");
         soup = std::make_shared<const triangle_soup>(tree.input());
         request.tree = std::move(tree);
       } else {
