@@ -10,6 +10,7 @@
 
 #include <exbsp/clip/section.h>
 #include "core/json_text.h"
+#include "core/svg_text.h"
 
 namespace exbsp {
 
@@ -151,12 +152,10 @@ std::string section_svg(const section_result& r, const std::array<unsigned char,
                height = (hi[1] - lo[1]) * scale + 2 * margin;
   auto x = [&](std::uint32_t p) { return px((uv[p][0] - lo[0]) * scale + margin); };
   auto y = [&](std::uint32_t p) { return px((hi[1] - uv[p][1]) * scale + margin); };
-  char colour[16];
-  std::snprintf(colour, sizeof colour, "#%02x%02x%02x", cap_color[0], cap_color[1], cap_color[2]);
+  const std::string colour = svg::hex_color(cap_color[0], cap_color[1], cap_color[2]);
 
   const std::string w = px(std::ceil(width)), h = px(std::ceil(height));
-  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + w + "\" height=\"" + h +
-                    "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+  std::string out = svg::open_root(w, h);
   out += "<!-- exbsp section by the plane " + number(r.plane[0]) + "*x + " + number(r.plane[1]) +
          "*y + " + number(r.plane[2]) + "*z + " + number(r.plane[3]) +
          " = 0, seen from the kept side; u = (" + number(basis[0][0]) + ", " + number(basis[0][1]) +

@@ -11,6 +11,7 @@
 
 #include <exbsp/core/errors.h>
 #include "view/cairo_pdf_stream.h"
+#include "core/svg_text.h"
 
 namespace exbsp::drawing {
 
@@ -43,38 +44,8 @@ void put_path(std::string& out, const std::vector<point2>& pts, bool closed, dou
   if (closed) out += 'Z';
 }
 
-std::string hex(view::rgb8 c) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
-  return buf;
-}
-
-std::string xml_escape(const std::string& t) {
-  std::string o;
-  for (char c : t) {
-    switch (c) {
-      case '&':
-        o += "&amp;";
-        break;
-      case '<':
-        o += "&lt;";
-        break;
-      case '>':
-        o += "&gt;";
-        break;
-      case '"':
-        o += "&quot;";
-        break;
-      default:
-        // Control characters are not allowed in XML 1.0 text.
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n')
-          o += ' ';
-        else
-          o += c;
-    }
-  }
-  return o;
-}
+std::string hex(view::rgb8 c) { return svg::hex_color(c.r, c.g, c.b); }
+using svg::xml_escape;
 
 constexpr const char* font_family = "DejaVu Sans";
 
@@ -84,12 +55,9 @@ std::string sheet_svg(const sheet& s) {
   const double h = s.height;
   std::string out;
   out.reserve(1 << 20);
-  out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out +=
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" "
-      "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\"" +
-      number(s.width) + "mm\" height=\"" + number(s.height) + "mm\" viewBox=\"0 0 " +
-      number(s.width) + " " + number(s.height) + "\">\n";
+  out += svg::xml_declaration;
+  out += svg::open_root(number(s.width), number(s.height),
+                        "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\"", "mm");
   out += "<title>" + xml_escape(s.title) + "</title>\n";
   out += "<rect width=\"" + number(s.width) + "\" height=\"" + number(s.height) +
          "\" fill=\"#ffffff\"/>\n";

@@ -18,6 +18,7 @@
 #include "mesh/json_limits.h"
 #include "core/atomic_file.h"
 #include "scene/json_reader.h"
+#include "core/svg_text.h"
 
 namespace exbsp::scene {
 
@@ -361,8 +362,7 @@ std::string clip_svg(const clip_input& in, const json& result) {
     return d + (closed ? " Z" : "");
   };
   std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fixed(width) << "\" height=\""
-      << fixed(height) << "\" viewBox=\"0 0 " << fixed(width) << " " << fixed(height) << "\">\n";
+  svg << svg::open_root(fixed(width), fixed(height));
   svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   json region_pts = json::array();
   for (const auto& p : region) region_pts.push_back({p[0], p[1]});

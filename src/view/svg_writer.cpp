@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "core/atomic_file.h"
+#include "core/svg_text.h"
 
 namespace exbsp::view {
 
@@ -19,11 +20,7 @@ void append_number(std::string& out, double v) {
   out.append(buf, res.ptr);
 }
 
-std::string hex_color(rgb8 c) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
-  return buf;
-}
+std::string hex_color(rgb8 c) { return svg::hex_color(c.r, c.g, c.b); }
 
 /// A grid value as pixels: v / 100 with at most two decimals ("12", "12.5", "-0.25").
 void append_grid(std::string& out, long long v) {
@@ -45,9 +42,8 @@ std::string svg_document(const vector_drawing& d) {
   std::string out;
   const std::string w = std::to_string(d.width), h = std::to_string(d.height);
   const long long y_top = static_cast<long long>(d.height) * grid_per_pixel;
-  out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" +
-         h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+  out += svg::xml_declaration;
+  out += svg::open_root(w, h, "version=\"1.1\"");
   out += "<rect x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
          hex_color(d.background) + "\"/>\n";
   auto point = [&](const grid_point& q) {
@@ -134,10 +130,8 @@ std::string place_svg(const std::string& document, int height, const drawing_pla
   inner.replace(inner.find("<svg "), 5, "<svg x=\"" + x + "\" y=\"" + y + "\" ");
   const std::string iw = std::to_string(placement.image_width),
                     ih = std::to_string(placement.image_height);
-  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
-         "version=\"1.1\" width=\"" +
-         iw + "\" height=\"" + ih + "\" viewBox=\"0 0 " + iw + " " + ih +
-         "\">\n<rect x=\"0\" y=\"0\" width=\"" + iw + "\" height=\"" + ih + "\" fill=\"" +
+  return svg::xml_declaration + svg::open_root(iw, ih, "version=\"1.1\"") +
+         "<rect x=\"0\" y=\"0\" width=\"" + iw + "\" height=\"" + ih + "\" fill=\"" +
          hex_color(placement.background) + "\"/>\n" + inner + "</svg>\n";
 }
 
@@ -152,9 +146,8 @@ std::string svg_document(const viewport& vp, rgb8 background,
   std::string out;
   out.reserve(256 + polygons.size() * 120 + lines.size() * 40);
   const std::string w = std::to_string(vp.width), h = std::to_string(vp.height);
-  out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" +
-         h + "\" viewBox=\"0 0 " + w + " " + h + "\">\n";
+  out += svg::xml_declaration;
+  out += svg::open_root(w, h, "version=\"1.1\"");
   out += "<rect x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
          hex_color(shader ? shader->background : background) + "\"/>\n";
   if (svg_seam_stroke > 0) {
