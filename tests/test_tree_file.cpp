@@ -11,6 +11,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -494,6 +495,57 @@ TEST(TreeFile, forged_rationals_must_be_canonical) {
   put_u64(b, 16, b.size() - 28);
   fix_crc(b);
   expect_rejected(b, "zero denominator", "q = 0");
+}
+
+TEST(TreeFile, forged_nested_split_points_cost_time_and_memory_bounded_by_the_file) {
+  // Small slanted triangles whose planes cross the x axis near x = t_k, far apart from each
+  // other's planes (the tree splits nothing, so its file has no constructed point), then a
+  // forged chain of points on the x axis: c_0 and c_1 input vertices at x = -1 and x = 1,
+  // c_k = SEG(c_{k-1}, c_{k-2}, plane of triangle k), t_k the midpoint of t_{k-1} and t_{k-2}.
+  // Every check of the loader passes (each segment crosses its plane, the file is canonical),
+  // but each exact value is about twice the size of the one before (the planes' coefficients
+  // are not powers of two): 40 levels ask for 2^40 times a point's size. The loaded tree must
+  // refuse, quickly, once its exact values outgrow the budget of a file of its size.
+  constexpr int levels = 40;
+  exbsp::triangle_soup s;
+  const double tiny = 1.0 / 1024;
+  s.add_triangle({-1, 0, 0}, {-1, tiny, 0}, {-1, 0, tiny});  // c_0: vertex 0
+  s.add_triangle({1, 0, 0}, {1, tiny, 0}, {1, 0, tiny});     // c_1: vertex 3
+  std::vector<double> t{-1, 1};
+  for (int k = 2; k < levels + 2; ++k) {
+    t.push_back((t[k - 1] + t[k - 2]) / 2);
+    const double e = std::ldexp(1.0, -(k + 3));  // far below the spacing 2^-(k-2) of the t's
+    // Triangle k: the plane x = t_k + y / 2 + (z - e) / 10.
+    s.add_triangle({t[k], 0, e}, {t[k] + 0.3 * e, e, -e}, {t[k] - 0.7 * e, -e, -e});
+  }
+  std::string b = build(s, kernel_id::exact, "naive").serialize();
+  const exact_layout l = layout_of(b);
+  ASSERT_EQ(get_u64(b, l.points), 0u) << "parallel triangles: no split point";
+  const auto vertices = static_cast<std::uint32_t>(get_u64(b, l.vertices));
+  const auto id_of = [&](int k) {
+    return k == 0 ? 0u : k == 1 ? 3u : vertices + static_cast<std::uint32_t>(k - 2);
+  };
+  std::string points(12 * levels, '\0');
+  for (int k = 2; k < levels + 2; ++k) {
+    const std::size_t at = 12 * static_cast<std::size_t>(k - 2);
+    put_u32(points, at, id_of(k - 1));
+    put_u32(points, at + 4, id_of(k - 2));
+    put_u32(points, at + 8, static_cast<std::uint32_t>(k));
+  }
+  b.insert(l.first_point, points);
+  put_u64(b, l.points, levels);
+  put_u32(b, l.fragments + points.size() + 8, id_of(levels + 1));  // fragment 0's first corner
+  put_u64(b, 16, b.size() - 28);
+  fix_crc(b);
+  try {
+    // Refused while loading (the loader's exact checks) or when the value is asked for.
+    const bsp loaded = bsp::deserialize(b, "nested.exbsp");
+    (void)loaded.fragment_exact(0);
+    ADD_FAILURE() << "the nested point's exact value was made";
+  } catch (const exbsp::input_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("nested.exbsp: ", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("nest so deeply"), std::string::npos) << e.what();
+  }
 }
 
 // ---- Files -------------------------------------------------------------------------------------

@@ -202,6 +202,17 @@ const exact_geometry::exact_value* exact_geometry::value_of(std::uint32_t id,
   return &vertex;
 }
 
+namespace {
+
+/// Bits of the integers of an exact value or plane (three coordinates and w or d).
+std::uint64_t bits_of(const std::array<mpz_class, 3>& x, const mpz_class& w) {
+  std::uint64_t b = mpz_sizeinbase(w.get_mpz_t(), 2);
+  for (const mpz_class& c : x) b += mpz_sizeinbase(c.get_mpz_t(), 2);
+  return b;
+}
+
+}  // namespace
+
 const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) const {
   // Iterative over the constructed points x depends on (their ids are smaller: a point is
   // made after its endpoints), so a long chain of nested split points cannot overflow the
@@ -229,6 +240,17 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
     // denominator is not zero; its sign is Fp's, made positive.
     exact_value made;
     const exact_plane& pl = plane_of(pt.plane);
+    if (exact_budget_bits_ != std::numeric_limits<std::uint64_t>::max()) {
+      // The value's size is about the sum of its operands' (see below): refuse before making it.
+      const std::uint64_t estimate =
+          bits_of(pl.n, pl.d) + bits_of(ep->x, ep->w) + bits_of(eq->x, eq->w);
+      if (exact_bits_.load(std::memory_order_relaxed) + estimate > exact_budget_bits_)
+        throw input_error(
+            exact_budget_file_, 0,
+            "its split points nest so deeply that their exact values need more than " +
+                std::to_string(exact_budget_bits_ / 8 / 1024 / 1024) +
+                " MB (the budget of a file of its size); exbsp writes no such file");
+    }
     const mpz_class Fp =
         pl.n[0] * ep->x[0] + pl.n[1] * ep->x[1] + pl.n[2] * ep->x[2] - pl.d * ep->w;
     const mpz_class Fq =
@@ -241,6 +263,8 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
     }
     remove_common_twos(made.x, made.w);
     check_gmp_memory();
+    if (exact_budget_bits_ != std::numeric_limits<std::uint64_t>::max())
+      exact_bits_.fetch_add(bits_of(made.x, made.w), std::memory_order_relaxed);
     {
       // Another thread may have made the same value meanwhile: the first one stays.
       const std::lock_guard<std::mutex> lock(exact_mutex_);

@@ -27,6 +27,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -206,6 +207,13 @@ class exact_geometry {
   mutable std::mutex exact_mutex_;
   /// (Node-based maps: a value's address never changes, so references to it stay valid.)
   mutable std::unordered_map<std::uint32_t, const exact_value> exact_values_;
+  /// A tree loaded from a file (read_fragments) may make exact values of at most this many
+  /// bits in all, a budget from the file's size: nested split points double their values' size
+  /// at each level, so a small forged file could otherwise ask for unbounded time and memory.
+  /// Built trees have no budget (their input bounds them).
+  std::uint64_t exact_budget_bits_ = std::numeric_limits<std::uint64_t>::max();
+  std::string exact_budget_file_;
+  mutable std::atomic<std::uint64_t> exact_bits_{0};
   mutable std::unordered_map<std::uint32_t, const exact_plane> exact_planes_;
   std::atomic<point**> chunk_table_{nullptr};
   std::vector<std::unique_ptr<point*[]>> chunk_tables_;  ///< every table made (the last in use)

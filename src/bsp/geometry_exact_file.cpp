@@ -74,6 +74,12 @@ void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& 
           std::string(what) + " " + std::to_string(plane) + " is a degenerate triangle (no plane)");
   };
 
+  // The exact values this tree may make (the checks below, orders, roundings): 4096 bits per
+  // byte of the file, at least 16 MB. Trees exbsp writes need 10-20 bits per byte (the CGAL
+  // corpus, every point's exact value once).
+  exact_budget_bits_ = std::max<std::uint64_t>(std::uint64_t{1} << 27,
+                                               std::uint64_t{in.offset() + in.remaining()} * 4096);
+  exact_budget_file_ = in.name();
   // Constructed points, each checked and approximated after its endpoints.
   const std::uint64_t capacity = (std::uint64_t{1} << max_point_bits) - 2 * block - inputs_;
   const auto constructed = static_cast<std::uint32_t>(in.count("points", 12, capacity));
