@@ -255,14 +255,17 @@ class mend_ahead {
   /// The walk is at polygon k (it walks down from the last).
   void at(std::size_t k) { cursor_.store(k, std::memory_order_relaxed); }
 
-  /// Polygon k's path, mended, by this thread or by the helper (waiting for it to finish).
+  /// Polygon k's path, mended, by this thread or by the helper (waiting for it to finish, or
+  /// taking it over when the helper gave it back).
   cl::Path& mended(std::size_t k) {
-    if (claim(k)) {
-      make(k, walk_scratch_);
-      return paths_[k];
+    for (;;) {
+      if (claim(k)) {
+        make(k, walk_scratch_);
+        return paths_[k];
+      }
+      if (state_[k].load(std::memory_order_acquire) == done) return paths_[k];
+      std::this_thread::yield();
     }
-    while (state_[k].load(std::memory_order_acquire) != done) std::this_thread::yield();
-    return paths_[k];
   }
 
   /// The helper's loop: mends the polygons just below the walk's position until stop().
@@ -273,7 +276,15 @@ class mend_ahead {
       next = std::min(next, cursor_.load(std::memory_order_relaxed));
       if (next == 0) return;
       --next;
-      if (claim(next)) make(next, scratch);
+      if (!claim(next)) continue;
+      try {
+        make(next, scratch);
+      } catch (...) {
+        // Out of memory here: give the polygon back (make starts it afresh) and stop helping;
+        // the walk mends the rest itself and reports its own failures.
+        state_[next].store(0, std::memory_order_release);
+        return;
+      }
     }
   }
 
