@@ -25,7 +25,15 @@ void run_workers(unsigned workers, Work work) {
     }
   };
   std::vector<std::thread> threads;
-  for (unsigned w = 1; w < workers; ++w) threads.emplace_back(guarded, w);
+  unsigned w = 1;
+  for (; w < workers; ++w) {
+    try {
+      threads.emplace_back(guarded, w);
+    } catch (...) {
+      break;  // no thread to be had: this one does the remaining workers' share
+    }
+  }
+  for (unsigned rest = w; rest < workers; ++rest) guarded(rest);
   guarded(0);
   for (std::thread& t : threads) t.join();
   for (const std::exception_ptr& e : errors)
