@@ -41,6 +41,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <exbsp/core/export.h>
@@ -115,20 +116,23 @@ struct section_result {
 /// "kept" (kept triangles) after "removed", then "seconds" (double).
 template <class Visit>
 void for_each_section_stat(const section_result& r, Visit&& visit) {
-  const section_stats& s = r.stats;
-  visit("input_triangles", s.input_triangles);
-  visit("degenerate_input", s.degenerate_input);
-  visit("kept_whole", s.kept_whole);
-  visit("in_plane", s.in_plane);
-  visit("split", s.split);
-  visit("removed", s.removed);
-  visit("kept", r.kept.size());
-  visit("cut_points", s.cut_points);
-  visit("outline_edges", s.outline_edges);
-  visit("cap_triangles", s.cap_triangles);
-  visit("cap_steiner_points", s.cap_steiner_points);
-  visit("split_constraints", s.split_constraints);
-  visit("seconds", s.seconds);
+  // The counts in output order; "kept" (no member) counts r.kept.
+  using count = std::size_t section_stats::*;
+  static constexpr std::pair<const char*, count> counts[] = {
+      {"input_triangles", &section_stats::input_triangles},
+      {"degenerate_input", &section_stats::degenerate_input},
+      {"kept_whole", &section_stats::kept_whole},
+      {"in_plane", &section_stats::in_plane},
+      {"split", &section_stats::split},
+      {"removed", &section_stats::removed},
+      {"kept", nullptr},
+      {"cut_points", &section_stats::cut_points},
+      {"outline_edges", &section_stats::outline_edges},
+      {"cap_triangles", &section_stats::cap_triangles},
+      {"cap_steiner_points", &section_stats::cap_steiner_points},
+      {"split_constraints", &section_stats::split_constraints}};
+  for (const auto& [name, member] : counts) visit(name, member ? r.stats.*member : r.kept.size());
+  visit("seconds", r.stats.seconds);
 }
 
 /// Options of section().
