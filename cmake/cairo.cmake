@@ -6,9 +6,6 @@
 # Defines the imported target exbsp::cairo. Installed with the package and included by
 # exbspConfig.cmake (the static libexbsp.a needs it at link time); in a consumer's
 # find_package(exbsp) a missing cairo sets exbsp_FOUND to FALSE instead of failing.
-if(TARGET exbsp::cairo)
-  return()
-endif()
 include(${CMAKE_CURRENT_LIST_DIR}/imported_dependency.cmake)
 exbsp_pkg_config_library(exbsp::cairo cairo cairo-pdf.h cairo
   "cairo (cairo-pdf.h, libcairo) not found: apt-get install libcairo2-dev (exbsp's scripts/setup does)" cairo)

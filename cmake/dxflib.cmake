@@ -7,9 +7,6 @@
 # Defines the imported target exbsp::dxflib. Installed with the package and included by
 # exbspConfig.cmake (the static libexbsp_gpl.a needs it at link time); in a consumer's
 # find_package(exbsp) a missing dxflib sets exbsp_FOUND to FALSE instead of failing.
-if(TARGET exbsp::dxflib)
-  return()
-endif()
 include(${CMAKE_CURRENT_LIST_DIR}/imported_dependency.cmake)
 exbsp_pkg_config_library(exbsp::dxflib dxflib dxflib/dl_dxf.h dxflib
   "dxflib (dxflib/dl_dxf.h, libdxflib) not found: apt-get install libdxflib-dev (exbsp's scripts/setup does)")

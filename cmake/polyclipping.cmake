@@ -7,9 +7,6 @@
 # Defines the imported target exbsp::polyclipping. Installed with the package and included by
 # exbspConfig.cmake (the static libexbsp.a needs it at link time); in a consumer's
 # find_package(exbsp) a missing Clipper sets exbsp_FOUND to FALSE instead of failing.
-if(TARGET exbsp::polyclipping)
-  return()
-endif()
 include(${CMAKE_CURRENT_LIST_DIR}/imported_dependency.cmake)
 exbsp_pkg_config_library(exbsp::polyclipping polyclipping polyclipping/clipper.hpp polyclipping
   "Clipper (polyclipping/clipper.hpp, libpolyclipping) not found: apt-get install libpolyclipping-dev (exbsp's scripts/setup does)")
