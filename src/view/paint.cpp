@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
-#include <thread>
 
 #include <exbsp/core/errors.h>
 #include "view/line_raster.h"
@@ -192,10 +190,10 @@ void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vect
 /// its own coverage mask and writes only its own rows, so the bands share nothing but the
 /// read-only frame.
 void paint_front_to_back(const frame& f, int scale, const pixel_rows& rows) {
-  const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int bands = f.raster_threads > 0
-                        ? std::min(static_cast<int>(std::min(f.raster_threads, 1024u)), rows.height)
-                        : std::max(1, std::min({hardware, 8, rows.height / 64}));
+  const int bands =
+      f.raster_threads > 0
+          ? std::min(static_cast<int>(std::min(f.raster_threads, 1024u)), rows.height)
+          : std::max(1, std::min(static_cast<int>(hardware_workers()), rows.height / 64));
   run_workers(static_cast<unsigned>(bands), [&](unsigned w) {
     const int b = static_cast<int>(w);
     coverage_mask mask(rows.width, rows.height * b / bands, rows.height * (b + 1) / bands - 1);

@@ -189,11 +189,6 @@ void append_curve(vector_drawing& d, vector_path&& piece) {
   d.paths.push_back(std::move(piece));
 }
 
-/// Threads of the phases that split into independent items (regions, underlay groups): one
-/// per hardware thread, at most 8. Their results go to slots by item, so the drawing does not
-/// depend on the count.
-unsigned vector_workers() { return std::clamp(std::thread::hardware_concurrency(), 1u, 8u); }
-
 /// The frame's polygons on the grid, counter-clockwise, in one array (polygon k: points
 /// [start[k], start[k + 1]), none when it has no area), with their boxes. Paths are made only
 /// for the polygons the coverage walk takes (most hidden ones never need one).
@@ -215,6 +210,7 @@ snapped_polygons snap(const frame& f) {
   s.start.reserve(f.polygons.size() + 1);
   s.boxes.resize(f.polygons.size());
   s.start.push_back(0);
+  cl::Path poly;  // polygon k for Clipper's area, one buffer for all
   for (std::size_t k = 0; k < f.polygons.size(); ++k) {
     const std::size_t first = s.points.size();
     for (const window_point& w : f.polygons[k].v) {
@@ -222,7 +218,7 @@ snapped_polygons snap(const frame& f) {
       if (s.points.size() == first || !(s.points.back() == q)) s.points.push_back(q);
     }
     while (s.points.size() > first + 1 && s.points[first] == s.points.back()) s.points.pop_back();
-    const cl::Path poly(s.points.begin() + static_cast<std::ptrdiff_t>(first), s.points.end());
+    poly.assign(s.points.begin() + static_cast<std::ptrdiff_t>(first), s.points.end());
     const double area = poly.size() < 3 ? 0 : cl::Area(poly);
     if (area == 0) {  // seen edge-on: no area
       s.points.resize(first);
@@ -391,7 +387,7 @@ vector_drawing visible_drawing(const frame& f) {
   std::size_t next_line = f.lines.size();  // lines are sorted by slot; taken from the back
   // Snap every polygon to the grid (counter-clockwise), then index the points for mending
   // T-junctions. (Split over the cores this was no faster: the edges' thread runs meanwhile.)
-  const unsigned workers = vector_workers();
+  const unsigned workers = hardware_workers();  // regions, underlay groups: results in slots
   const snapped_polygons snapped = snap(f);
   const t_junction_mender mender(snapped.points, static_cast<long long>(vp.width) * grid_per_pixel,
                                  static_cast<long long>(vp.height) * grid_per_pixel);

@@ -620,7 +620,6 @@ class tiled_coverage::impl {
 tiled_coverage::tiled_coverage(long long width, long long height)
     : impl_(std::make_unique<impl>(width, height)) {}
 tiled_coverage::~tiled_coverage() = default;
-bool tiled_coverage::hides(const cl::Path& p) const { return impl_->hides(bbox_of(p)); }
 bool tiled_coverage::hides(const bbox_i& box) const { return impl_->hides(box); }
 std::uint32_t tiled_coverage::add(cl::Path& p, std::uint32_t mesh) { return impl_->add(p, mesh); }
 const cl::Paths& tiled_coverage::rings(std::uint32_t id) const { return impl_->rings(id); }

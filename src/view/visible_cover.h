@@ -63,8 +63,6 @@ class tiled_coverage {
   tiled_coverage(const tiled_coverage&) = delete;
   tiled_coverage& operator=(const tiled_coverage&) = delete;
 
-  /// True when every tile p's bounding box meets is full (p is hidden).
-  bool hides(const ClipperLib::Path& p) const;
   /// True when every tile the box meets is full.
   bool hides(const bbox_i& box) const;
   /// Adds the counter-clockwise polygon p of mesh `mesh` (p is moved from when wholly

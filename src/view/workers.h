@@ -12,6 +12,12 @@
 
 namespace exbsp::view {
 
+/// The default number of workers: one per hardware thread, at most 8 (the raster's bands and
+/// the drawing's items; their results do not depend on the count).
+inline unsigned hardware_workers() {
+  return std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+}
+
 /// Calls work(w) for w in [0, workers) on as many threads (w = 0 on this one); rethrows the
 /// first exception (by worker) after all have returned.
 template <class Work>
