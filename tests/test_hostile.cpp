@@ -8,7 +8,11 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <fcntl.h>
+#include <poll.h>
+#include <sched.h>
 #include <signal.h>
+#include <sys/inotify.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -26,6 +30,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <exbsp/core/errors.h>
@@ -329,6 +334,186 @@ INSTANTIATE_TEST_SUITE_P(Signals, SignalDuringWrite,
                          [](const ::testing::TestParamInfo<int>& i) {
                            return std::string(sigabbrev_np(i.param));
                          });
+
+// The same through the command line: each command that writes a file is stopped (SIGSTOP) as
+// soon as a temporary output file of its appears in its directory (inotify), while that file
+// exists; then it gets the signal and is let go. It must die of that signal and leave
+// nothing behind: no temporary file (its own or dxflib's, which TMPDIR puts in the same
+// directory) and no output.
+
+/// The inputs of every command, made once: a UV sphere (big enough that each output takes
+/// milliseconds to write, so the stop lands inside the write) and a clip input.
+struct write_phase_inputs {
+  fs::path dir, mesh, clip;
+  write_phase_inputs() : dir(exbsp_test::make_temp_dir("signal-inputs")) {
+    exbsp::triangle_soup soup;
+    const int rings = 30, sectors = 60;
+    const auto at = [](int i, int j) {
+      const double t = 3.141592653589793 * i / rings, p = 6.283185307179586 * j / sectors;
+      return exbsp::vec3d{std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
+    };
+    for (int i = 0; i < rings; ++i)
+      for (int j = 0; j < sectors; ++j) {
+        if (i > 0) soup.add_triangle(at(i, j), at(i + 1, j), at(i, j + 1));
+        if (i + 1 < rings) soup.add_triangle(at(i, j + 1), at(i + 1, j), at(i + 1, j + 1));
+      }
+    mesh = dir / "sphere.off";
+    write_file(mesh, exbsp_test::off_text(soup));
+    std::string segments;
+    for (int k = 0; k < 40000; ++k)
+      segments += (k ? ", " : "") + std::string("[[") + std::to_string(k % 200 * 0.01 - 0.5) +
+                  ", -1], [" + std::to_string(k % 173 * 0.01) + ", 2]]";
+    clip = dir / "clip.json";
+    write_file(clip, R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [)" + segments + "]}");
+  }
+  ~write_phase_inputs() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+const write_phase_inputs& signal_inputs() {
+  static const write_phase_inputs inputs;
+  return inputs;
+}
+
+/// A command and its output file, named in the working directory.
+struct write_phase_command {
+  const char* name;
+  std::vector<std::string> args;  ///< "MESH" and "CLIP" stand for the inputs
+};
+
+const std::vector<write_phase_command>& write_phase_commands() {
+  static const std::vector<write_phase_command> commands = {
+      {"build_save", {"build", "MESH", "--save", "t.exbsp"}},
+      {"order", {"order", "MESH", "--eye", "0.3,0.2,5", "-o", "o.json"}},
+      {"render_png", {"render", "MESH", "--size", "2000x2000", "-o", "r.png"}},
+      {"render_svg", {"render", "MESH", "--edges", "visible+hidden", "-o", "r.svg"}},
+      {"render_pdf", {"render", "MESH", "-o", "r.pdf"}},
+      {"section_json", {"section", "MESH", "--plane", "1,1,1,0.1", "-o", "s.json"}},
+      {"section_off", {"section", "MESH", "--plane", "1,1,1,0.1", "-o", "s.off"}},
+      {"clip_json", {"clip", "CLIP", "-o", "c.json"}},
+      {"clip_svg", {"clip", "CLIP", "-o", "c.svg"}},
+      {"drawing_svg", {"drawing", "MESH", "-o", "d.svg"}},
+      {"drawing_dxf", {"drawing", "MESH", "-o", "d.dxf"}},
+  };
+  return commands;
+}
+
+class SignalDuringCommandWrite
+    : public exbsp_test::cli_fixture,
+      public ::testing::WithParamInterface<std::tuple<std::size_t, int>> {};
+
+bool is_temporary_output(const std::string& name) {
+  return name.rfind(".exbsp-", 0) == 0 || name.rfind("exbsp-dxf-", 0) == 0;
+}
+
+TEST_P(SignalDuringCommandWrite, leaves_no_file_behind) {
+  const write_phase_command& command = write_phase_commands()[std::get<0>(GetParam())];
+  const int sig = std::get<1>(GetParam());
+  const write_phase_inputs& inputs = signal_inputs();
+  // Everything the child needs is made before the fork: it only calls async-signal-safe
+  // functions between fork and exec.
+  std::vector<std::string> args{EXBSP_CLI};
+  for (const std::string& a : command.args)
+    args.push_back(a == "MESH" ? inputs.mesh.string() : a == "CLIP" ? inputs.clip.string() : a);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::vector<std::string> env_strings{"TMPDIR=" + dir.string()};
+  for (char** e = environ; *e; ++e)
+    if (std::string(*e).rfind("TMPDIR=", 0) != 0) env_strings.emplace_back(*e);
+  std::vector<char*> envp;
+  for (std::string& e : env_strings) envp.push_back(e.data());
+  envp.push_back(nullptr);
+
+  // The child runs on this thread's CPU only, so the inotify event that wakes this thread
+  // preempts the child at once: the stop lands while a write of a few hundred kilobytes is
+  // still running, not only during a long one.
+  cpu_set_t before, one;
+  ASSERT_EQ(::sched_getaffinity(0, sizeof before, &before), 0);
+  CPU_ZERO(&one);
+  for (int c = 0; c < CPU_SETSIZE; ++c)
+    if (CPU_ISSET(c, &before)) {
+      CPU_SET(c, &one);
+      break;
+    }
+  ASSERT_EQ(::sched_setaffinity(0, sizeof one, &one), 0);
+  struct restore_affinity {
+    cpu_set_t set;
+    ~restore_affinity() { ::sched_setaffinity(0, sizeof set, &set); }
+  } restore{before};
+  const int watch = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  ASSERT_GE(watch, 0);
+  ASSERT_GE(::inotify_add_watch(watch, dir.c_str(), IN_CREATE), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const struct rlimit no_core { 0, 0 };
+    ::setrlimit(RLIMIT_CORE, &no_core);  // SIGQUIT dumps core by default
+    const int null = ::open("/dev/null", O_RDWR);
+    ::dup2(null, 0);
+    ::dup2(null, 1);
+    ::dup2(null, 2);
+    if (::chdir(dir.c_str()) != 0) ::_exit(127);
+    ::execve(argv[0], argv.data(), envp.data());
+    ::_exit(127);
+  }
+  // Watch until a temporary file is caught existing while the child is stopped, or the child
+  // ends on its own (the write was too quick to catch: a failed test, not a flaky pass).
+  bool signalled = false;
+  std::string caught;
+  int status = 0;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (!signalled) {
+    if (::waitpid(child, &status, WNOHANG) == child) break;
+    if (std::chrono::steady_clock::now() > give_up) {
+      ::kill(child, SIGKILL);
+      break;
+    }
+    struct pollfd p {
+      watch, POLLIN, 0
+    };
+    if (::poll(&p, 1, 50) <= 0) continue;
+    alignas(inotify_event) char buffer[4096];
+    const ssize_t n = ::read(watch, buffer, sizeof buffer);
+    for (ssize_t at = 0; at < n && !signalled;) {
+      const auto* event = reinterpret_cast<const inotify_event*>(buffer + at);
+      at += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
+      if (event->len == 0 || !is_temporary_output(event->name)) continue;
+      ::kill(child, SIGSTOP);
+      int stopped = 0;
+      if (::waitpid(child, &stopped, WUNTRACED) != child || !WIFSTOPPED(stopped)) {
+        status = stopped;
+        break;
+      }
+      if (fs::exists(dir / event->name)) {
+        caught = event->name;
+        ::kill(child, sig);
+        signalled = true;
+      }
+      ::kill(child, SIGCONT);
+    }
+  }
+  if (signalled) ::waitpid(child, &status, 0);
+  ::close(watch);
+  ASSERT_TRUE(signalled) << command.name << ": no temporary file was caught in the write "
+                         << "phase; the command ended with status " << status;
+  ASSERT_TRUE(WIFSIGNALED(status)) << caught << ": status " << status;
+  EXPECT_EQ(WTERMSIG(status), sig) << caught;
+  const std::vector<std::string> left = file_names();
+  EXPECT_TRUE(left.empty()) << command.name << " stopped at " << caught << " left " << left.size()
+                            << " file(s), the first " << left.front();
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Commands, SignalDuringCommandWrite,
+    ::testing::Combine(::testing::Range(std::size_t{0}, write_phase_commands().size()),
+                       ::testing::Values(SIGTERM, SIGINT, SIGHUP, SIGQUIT, SIGXFSZ, SIGPIPE)),
+    [](const ::testing::TestParamInfo<std::tuple<std::size_t, int>>& i) {
+      return std::string(write_phase_commands()[std::get<0>(i.param)].name) + "_" +
+             sigabbrev_np(std::get<1>(i.param));
+    });
 
 // ---- 3. memory exhaustion: exit 3, never abort ---------------------------------------------
 

@@ -17,6 +17,8 @@
 #   FUZZ_MAX_LEN      largest input in bytes (default 16384)
 #   FUZZ_TIMEOUT      seconds per input before libFuzzer reports a timeout (default 2)
 #   FUZZ_JOBS         parallel compile jobs (default 2)
+#   FUZZ_SEED         libFuzzer's random seed (default: a new one each run; CI fixes it, so
+#                     that a run repeats the same mutations on the same code)
 #   EXBSP_FUZZ_ALLOW  known findings fuzz_scene lets pass (see fuzz_scene.cpp, README.md)
 #   CXX               the clang++ to use (default clang++)
 set -euo pipefail
@@ -27,8 +29,13 @@ targets="${FUZZ_TARGETS:-fuzz_off fuzz_obj fuzz_ply fuzz_stl fuzz_scene fuzz_num
 max_len="${FUZZ_MAX_LEN:-16384}"
 timeout="${FUZZ_TIMEOUT:-2}"
 jobs="${FUZZ_JOBS:-2}"
+seed="${FUZZ_SEED:-0}"  # libFuzzer: -seed=0 means "pick one"
 build="$here/build"
 
+if ! [[ "$seed" =~ ^[0-9]+$ ]]; then
+  echo "$0: FUZZ_SEED must be a non-negative integer, got '$seed'" >&2
+  exit 2
+fi
 if ! [[ "$runs" =~ ^[0-9]+$ ]]; then
   echo "usage: $0 [RUNS]   (RUNS: a non-negative integer, default 1000000)" >&2
   exit 2
@@ -83,7 +90,7 @@ for target in $targets; do
   touch "$marker"
   start=$(date +%s)
   set +e
-  "$binary" "$work" "$seeds" -runs="$runs" -max_len="$max_len" -timeout="$timeout" \
+  "$binary" "$work" "$seeds" -runs="$runs" -seed="$seed" -max_len="$max_len" -timeout="$timeout" \
     -rss_limit_mb=2048 -dict="$here/dict/$format.dict" -artifact_prefix="$artifacts/" \
     -report_slow_units=1 -print_final_stats=1 >"$log" 2>&1
   rc=$?
@@ -132,6 +139,6 @@ for target in $targets; do
 done
 
 echo
-echo "== exbsp fuzz summary (runs=$runs, max_len=$max_len, timeout=${timeout}s${EXBSP_FUZZ_ALLOW:+, EXBSP_FUZZ_ALLOW=$EXBSP_FUZZ_ALLOW}) =="
+echo "== exbsp fuzz summary (runs=$runs, seed=$seed, max_len=$max_len, timeout=${timeout}s${EXBSP_FUZZ_ALLOW:+, EXBSP_FUZZ_ALLOW=$EXBSP_FUZZ_ALLOW}) =="
 printf '%s\n' "${summary[@]}"
 exit "$status"
