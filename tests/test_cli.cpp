@@ -65,32 +65,12 @@ class Cli : public exbsp_test::cli_fixture {
 
 const std::string data_dir = EXBSP_TEST_DATA;
 
-struct bad_file {
-  std::string file;
-  std::size_t line;
-  std::string message;
-};
-
-std::vector<bad_file> bad_manifest() {
-  std::vector<bad_file> out;
-  std::ifstream in(data_dir + "/bad/EXPECTED.tsv");
-  std::string row;
-  while (std::getline(in, row)) {
-    if (row.empty() || row[0] == '#') continue;
-    const auto t1 = row.find('\t'), t2 = row.find('\t', t1 + 1);
-    if (t1 == std::string::npos || t2 == std::string::npos) continue;
-    out.push_back(
-        {row.substr(0, t1), std::stoul(row.substr(t1 + 1, t2 - t1 - 1)), row.substr(t2 + 1)});
-  }
-  return out;
-}
-
 // --- (1) bad input ----------------------------------------------------------------------------
 
 TEST_F(Cli, every_bad_input_file_exits_2_naming_file_and_line_and_writes_no_output) {
-  const auto manifest = bad_manifest();
+  const auto manifest = exbsp_test::bad_input_manifest();
   ASSERT_GE(manifest.size(), 50u) << "tests/data/bad/EXPECTED.tsv";
-  for (const bad_file& b : manifest) {
+  for (const exbsp_test::bad_input& b : manifest) {
     SCOPED_TRACE(b.file);
     const std::string path = data_dir + "/bad/" + b.file;
     const result r = run("build " + quoted(path));

@@ -181,13 +181,8 @@ TEST(EffectParsing, EveryErrorNamesTheEffectOrParameterKey) {
 
 TEST(EffectParsing, DepthOfFieldNeedsALens) {
   json d = valid_scene();
-  d["projection"] = {{"type", "orthographic"},
-                     {"left", -1},
-                     {"right", 1},
-                     {"bottom", -1},
-                     {"top", 1},
-                     {"near", 1},
-                     {"far", 9}};
+  d["projection"] = json::parse(
+      R"({"type": "orthographic", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 9})");
   d["effects"] = {
       {"depth_of_field", {{"focal_length", 0.05}, {"aperture", 0.1}, {"focus_distance", 5}}}};
   std::string message;

@@ -34,6 +34,7 @@
 #include <exbsp/core/errors.h>
 #include <exbsp/mesh/mesh_io.h>
 #include <exbsp/mesh/soup.h>
+#include "support/test_helpers.h"
 
 namespace {
 
@@ -166,18 +167,41 @@ TEST(TriangleSoup, AppendShiftsVertexIndicesAndFaceIds) {
 
 // ---- good path, every format ----
 
-TEST(OffReader, CubeOfQuadsIsFanTriangulatedInFileOrder) {
-  const triangle_soup s = read_mesh(sample("cube.off"));
-  expect_box(s, false, true);
-  expect_box_indices(s);
-  EXPECT_EQ(s.source, sample("cube.off"));
+/// A sample of the unit box (tests/data/samples) in one format and form.
+struct box_sample {
+  const char* file;
+  bool as_float;         ///< coordinates stored as floats (widened exactly)
+  bool faces_are_quads;  ///< six quads fanned into twelve triangles, in the box's vertex order
+  const char* what;      ///< the form the sample tests (the test's name)
+};
+
+class BoxSample : public ::testing::TestWithParam<box_sample> {};
+
+TEST_P(BoxSample, reads_the_unit_box) {
+  const box_sample& b = GetParam();
+  const triangle_soup s = read_mesh(sample(b.file));
+  expect_box(s, b.as_float, b.faces_are_quads);
+  if (b.faces_are_quads) expect_box_indices(s);  // STL has no indices: merged vertices
+  EXPECT_EQ(s.source, sample(b.file));
 }
 
-TEST(OffReader, CoffWithCommentsVertexColoursAndFaceColours) {
-  const triangle_soup s = read_mesh(sample("cube_coff.off"));
-  expect_box(s, false, true);
-  expect_box_indices(s);
-}
+INSTANTIATE_TEST_SUITE_P(
+    Formats, BoxSample,
+    ::testing::Values(
+        box_sample{"cube.off", false, true, "off_quads_fan_triangulated_in_file_order"},
+        box_sample{"cube_coff.off", false, true, "coff_with_comments_vertex_and_face_colours"},
+        box_sample{"cube_relative.obj", false, true,
+                   "obj_relative_indices_slash_forms_and_ignored_statements"},
+        box_sample{"cube_ascii.ply", false, true, "ply_ascii_colours_flags_and_an_extra_element"},
+        // y and z are declared float but ascii text means the double
+        box_sample{"cube_ascii_extras.ply", false, true,
+                   "ply_ascii_properties_before_the_index_list_nan_normals_float_lists_crlf"},
+        box_sample{"cube_binary_le.ply", false, true, "ply_binary_little_endian_doubles"},
+        box_sample{"cube_binary_be.ply", true, true, "ply_binary_big_endian_floats_widen_exactly"},
+        box_sample{"cube_ascii.stl", false, false, "stl_ascii_merges_exactly_equal_vertices"},
+        box_sample{"cube_binary.stl", true, false,
+                   "stl_binary_whose_header_starts_with_solid_is_read_as_binary"}),
+    [](const ::testing::TestParamInfo<box_sample>& i) { return std::string(i.param.what); });
 
 TEST(OffReader, CountsOnTheHeaderLineAndNoEdgeCount) {
   const triangle_soup s =
@@ -200,12 +224,6 @@ TEST(OffReader, ZeroFacesGiveAnEmptySoup) {
   EXPECT_EQ(s.face_count, 0u);
 }
 
-TEST(ObjReader, CubeWithRelativeIndicesSlashFormsAndIgnoredStatements) {
-  const triangle_soup s = read_mesh(sample("cube_relative.obj"));
-  expect_box(s, false, true);
-  expect_box_indices(s);
-}
-
 TEST(ObjReader, RelativeIndicesCountFromTheVerticesDefinedSoFar) {
   const std::string obj =
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n"
@@ -224,30 +242,6 @@ TEST(ObjReader, WComponentVertexColoursAndLineContinuation) {
   const triangle_soup s = read_mesh_data(obj, mesh_format::obj, "w.obj");
   ASSERT_EQ(s.triangles.size(), 1u);
   EXPECT_EQ(s.vertices[1], (vec3d{1, 0, 0}));  // w is ignored, not divided by
-}
-
-TEST(PlyReader, AsciiCubeWithColoursFlagsAndAnExtraElement) {
-  const triangle_soup s = read_mesh(sample("cube_ascii.ply"));
-  expect_box(s, false, true);
-  expect_box_indices(s);
-}
-
-TEST(PlyReader, AsciiPropertiesBeforeTheIndexListNanNormalsFloatListsAndCrlf) {
-  const triangle_soup s = read_mesh(sample("cube_ascii_extras.ply"));
-  expect_box(s, false, true);  // y and z are declared float but ascii text means the double
-  expect_box_indices(s);
-}
-
-TEST(PlyReader, BinaryLittleEndianDoubleCoordinates) {
-  const triangle_soup s = read_mesh(sample("cube_binary_le.ply"));
-  expect_box(s, false, true);
-  expect_box_indices(s);
-}
-
-TEST(PlyReader, BinaryBigEndianFloatCoordinatesWidenExactly) {
-  const triangle_soup s = read_mesh(sample("cube_binary_be.ply"));
-  expect_box(s, true, true);
-  expect_box_indices(s);
 }
 
 TEST(PlyReader, FacesBeforeVerticesAreCheckedOnceAllElementsAreRead) {
@@ -286,16 +280,6 @@ TEST(PlyReader, VertexOnlyFileGivesNoTriangles) {
   const triangle_soup s = read_mesh_data(ply, mesh_format::ply, "points.ply");
   EXPECT_EQ(s.vertices.size(), 1u);
   EXPECT_TRUE(s.triangles.empty());
-}
-
-TEST(StlReader, AsciiCubeMergesExactlyEqualVertices) {
-  const triangle_soup s = read_mesh(sample("cube_ascii.stl"));
-  expect_box(s, false, false);
-}
-
-TEST(StlReader, BinaryCubeWhoseHeaderStartsWithSolidIsReadAsBinary) {
-  const triangle_soup s = read_mesh(sample("cube_binary.stl"));
-  expect_box(s, true, false);
 }
 
 TEST(StlReader, BinaryWithZeroTrianglesIsAnEmptySoup) {
@@ -590,33 +574,9 @@ TEST(MeshErrors, EveryReaderRejectsAnEmptyBuffer) {
 
 // ---- the malformed corpus ----
 
-struct bad_case {
-  std::string file;
-  std::size_t line;
-  std::string substring;
-};
-
-std::vector<bad_case> read_manifest() {
-  std::vector<bad_case> cases;
-  std::ifstream in(data_dir + "/bad/EXPECTED.tsv");
-  EXPECT_TRUE(in) << "cannot open tests/data/bad/EXPECTED.tsv";
-  std::string row;
-  while (std::getline(in, row)) {
-    if (row.empty()) continue;
-    const std::size_t tab1 = row.find('\t');
-    const std::size_t tab2 = row.find('\t', tab1 + 1);
-    EXPECT_TRUE(tab1 != std::string::npos && tab2 != std::string::npos)
-        << "bad manifest row: " << row;
-    if (tab1 == std::string::npos || tab2 == std::string::npos) continue;
-    cases.push_back({row.substr(0, tab1), std::stoul(row.substr(tab1 + 1, tab2 - tab1 - 1)),
-                     row.substr(tab2 + 1)});
-  }
-  return cases;
-}
-
 TEST(BadCorpus, EveryFileThrowsInputErrorWithTheExpectedLineAndMessage) {
-  const std::vector<bad_case> cases = read_manifest();
-  for (const bad_case& c : cases) {
+  const std::vector<exbsp_test::bad_input> cases = exbsp_test::bad_input_manifest();
+  for (const exbsp_test::bad_input& c : cases) {
     SCOPED_TRACE(c.file);
     const std::string path = data_dir + "/bad/" + c.file;
     try {
@@ -627,8 +587,8 @@ TEST(BadCorpus, EveryFileThrowsInputErrorWithTheExpectedLineAndMessage) {
       EXPECT_EQ(e.line(), c.line) << what;
       EXPECT_EQ(e.file(), path);
       EXPECT_NE(what.find(c.file), std::string::npos) << what;
-      EXPECT_NE(what.find(c.substring), std::string::npos)
-          << "message: " << what << "\nwanted: " << c.substring;
+      EXPECT_NE(what.find(c.message), std::string::npos)
+          << "message: " << what << "\nwanted: " << c.message;
       if (c.line != 0) {
         EXPECT_EQ(what.rfind(path + ":" + std::to_string(c.line) + ": ", 0), 0u) << what;
       }
@@ -639,10 +599,10 @@ TEST(BadCorpus, EveryFileThrowsInputErrorWithTheExpectedLineAndMessage) {
 }
 
 TEST(BadCorpus, ManifestListsEveryFileOnceAndHasAtLeastThirtyCases) {
-  const std::vector<bad_case> cases = read_manifest();
+  const std::vector<exbsp_test::bad_input> cases = exbsp_test::bad_input_manifest();
   EXPECT_GE(cases.size(), 30u);
   std::set<std::string> listed;
-  for (const bad_case& c : cases)
+  for (const exbsp_test::bad_input& c : cases)
     EXPECT_TRUE(listed.insert(c.file).second) << "listed twice: " << c.file;
   std::set<std::string> present;
   for (const auto& entry : std::filesystem::directory_iterator(data_dir + "/bad")) {
@@ -653,7 +613,7 @@ TEST(BadCorpus, ManifestListsEveryFileOnceAndHasAtLeastThirtyCases) {
   // Each format has truncated, empty and garbage cases.
   for (const char* prefix : {"off_", "obj_", "ply_", "stl_"}) {
     int empty = 0, garbage = 0;
-    for (const bad_case& c : cases) {
+    for (const exbsp_test::bad_input& c : cases) {
       if (c.file.rfind(prefix, 0) != 0) continue;
       empty += c.file.find("empty") != std::string::npos;
       garbage += c.file.find("garbage") != std::string::npos;

@@ -100,6 +100,11 @@ struct bad_case {
   const char* key;
 };
 
+/// A mutation that sets the value at JSON pointer `at` to the JSON text `value`.
+std::function<void(json&)> set(const char* at, const char* value) {
+  return [at, value](json& d) { d[json::json_pointer(at)] = json::parse(value); };
+}
+
 TEST(SceneParse, EveryErrorNamesItsKey) {
   const std::vector<bad_case> cases = {
       {"meshes missing", [](json& d) { d.erase("meshes"); }, "/meshes"},
@@ -108,31 +113,11 @@ TEST(SceneParse, EveryErrorNamesItsKey) {
       {"mesh file missing", [](json& d) { d["meshes"][0].erase("file"); }, "/meshes/0/file"},
       {"mesh file not a string", [](json& d) { d["meshes"][0]["file"] = 7; }, "/meshes/0/file"},
       {"color not an array", [](json& d) { d["meshes"][0]["color"] = "red"; }, "/meshes/0/color"},
-      {"color two numbers",
-       [](json& d) {
-         d["meshes"][0]["color"] = {1, 2};
-       },
-       "/meshes/0/color"},
-      {"color above 255",
-       [](json& d) {
-         d["meshes"][0]["color"] = {1, 256, 3};
-       },
-       "/meshes/0/color/1"},
-      {"color negative",
-       [](json& d) {
-         d["meshes"][0]["color"] = {-1, 2, 3};
-       },
-       "/meshes/0/color/0"},
-      {"color fraction",
-       [](json& d) {
-         d["meshes"][0]["color"] = {1, 2, 3.5};
-       },
-       "/meshes/0/color/2"},
-      {"color string",
-       [](json& d) {
-         d["meshes"][0]["color"] = {1, "2", 3};
-       },
-       "/meshes/0/color/1"},
+      {"color two numbers", set("/meshes/0/color", R"([1, 2])"), "/meshes/0/color"},
+      {"color above 255", set("/meshes/0/color", R"([1, 256, 3])"), "/meshes/0/color/1"},
+      {"color negative", set("/meshes/0/color", R"([-1, 2, 3])"), "/meshes/0/color/0"},
+      {"color fraction", set("/meshes/0/color", R"([1, 2, 3.5])"), "/meshes/0/color/2"},
+      {"color string", set("/meshes/0/color", R"([1, "2", 3])"), "/meshes/0/color/1"},
       {"transform 15 numbers",
        [](json& d) { d["meshes"][0]["transform"] = std::vector<double>(15, 0.0); },
        "/meshes/0/transform"},
@@ -144,37 +129,13 @@ TEST(SceneParse, EveryErrorNamesItsKey) {
        },
        "/meshes/0/transform/5"},
       {"camera missing", [](json& d) { d.erase("camera"); }, "/camera"},
-      {"camera not an object",
-       [](json& d) {
-         d["camera"] = {1, 2, 3};
-       },
-       "/camera"},
+      {"camera not an object", set("/camera", R"([1, 2, 3])"), "/camera"},
       {"eye missing", [](json& d) { d["camera"].erase("eye"); }, "/camera/eye"},
-      {"eye two numbers",
-       [](json& d) {
-         d["camera"]["eye"] = {1, 2};
-       },
-       "/camera/eye"},
-      {"eye string",
-       [](json& d) {
-         d["camera"]["eye"] = {1, "2", 3};
-       },
-       "/camera/eye/1"},
-      {"look_at equals eye",
-       [](json& d) {
-         d["camera"]["look_at"] = {0, 0, 5};
-       },
-       "/camera/look_at"},
-      {"up parallel to gaze",
-       [](json& d) {
-         d["camera"]["up"] = {0, 0, 2};
-       },
-       "/camera/up"},
-      {"up zero",
-       [](json& d) {
-         d["camera"]["up"] = {0, 0, 0};
-       },
-       "/camera/up"},
+      {"eye two numbers", set("/camera/eye", R"([1, 2])"), "/camera/eye"},
+      {"eye string", set("/camera/eye", R"([1, "2", 3])"), "/camera/eye/1"},
+      {"look_at equals eye", set("/camera/look_at", R"([0, 0, 5])"), "/camera/look_at"},
+      {"up parallel to gaze", set("/camera/up", R"([0, 0, 2])"), "/camera/up"},
+      {"up zero", set("/camera/up", R"([0, 0, 0])"), "/camera/up"},
       {"projection missing", [](json& d) { d.erase("projection"); }, "/projection"},
       {"projection type missing", [](json& d) { d["projection"].erase("type"); },
        "/projection/type"},
@@ -190,57 +151,32 @@ TEST(SceneParse, EveryErrorNamesItsKey) {
       {"near equals far", [](json& d) { d["projection"]["far"] = 1; }, "/projection/far"},
       {"near beyond far", [](json& d) { d["projection"]["far"] = 0.5; }, "/projection/far"},
       {"ortho left missing",
-       [](json& d) {
-         d["projection"] = {{"type", "orthographic"},
-                            {"right", 1},
-                            {"bottom", -1},
-                            {"top", 1},
-                            {"near", 1},
-                            {"far", 9}};
-       },
+       set("/projection",
+           R"({"type": "orthographic", "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 9})"),
        "/projection/left"},
       {"ortho left equals right",
-       [](json& d) {
-         d["projection"] = {{"type", "orthographic"},
-                            {"left", 1},
-                            {"right", 1},
-                            {"bottom", -1},
-                            {"top", 1},
-                            {"near", 1},
-                            {"far", 9}};
-       },
+       set("/projection",
+           R"({"type": "orthographic", "left": 1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 9})"),
        "/projection/right"},
       {"frustum bottom above top",
-       [](json& d) {
-         d["projection"] = {{"type", "frustum"}, {"left", -1}, {"right", 1}, {"bottom", 2},
-                            {"top", 1},          {"near", 1},  {"far", 9}};
-       },
+       set("/projection",
+           R"({"type": "frustum", "left": -1, "right": 1, "bottom": 2, "top": 1, "near": 1, "far": 9})"),
        "/projection/top"},
       {"frustum near zero",
-       [](json& d) {
-         d["projection"] = {{"type", "frustum"}, {"left", -1}, {"right", 1}, {"bottom", -1},
-                            {"top", 1},          {"near", 0},  {"far", 9}};
-       },
+       set("/projection",
+           R"({"type": "frustum", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 0, "far": 9})"),
        "/projection/near"},
       {"oblique direction missing",
-       [](json& d) {
-         d["projection"] = {{"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1},
-                            {"top", 1},          {"near", 1},  {"far", 9}};
-       },
+       set("/projection",
+           R"({"type": "oblique", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 9})"),
        "/projection/direction"},
       {"oblique direction away from the scene",
-       [](json& d) {
-         d["projection"] = {
-             {"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1},
-             {"top", 1},          {"near", 1},  {"far", 9},   {"direction", {0.5, 0, 1}}};
-       },
+       set("/projection",
+           R"({"type": "oblique", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 9, "direction": [0.5, 0, 1]})"),
        "/projection/direction"},
       {"oblique direction zero",
-       [](json& d) {
-         d["projection"] = {
-             {"type", "oblique"}, {"left", -1}, {"right", 1}, {"bottom", -1},
-             {"top", 1},          {"near", 1},  {"far", 9},   {"direction", {0, 0, 0}}};
-       },
+       set("/projection",
+           R"({"type": "oblique", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 9, "direction": [0, 0, 0]})"),
        "/projection/direction"},
       {"viewport missing", [](json& d) { d.erase("viewport"); }, "/viewport"},
       {"viewport width zero", [](json& d) { d["viewport"]["width"] = 0; }, "/viewport/width"},
@@ -250,11 +186,7 @@ TEST(SceneParse, EveryErrorNamesItsKey) {
        "/viewport/width"},
       {"viewport height missing", [](json& d) { d["viewport"].erase("height"); },
        "/viewport/height"},
-      {"background out of range",
-       [](json& d) {
-         d["background"] = {0, 0, 300};
-       },
-       "/background/2"},
+      {"background out of range", set("/background", R"([0, 0, 300])"), "/background/2"},
       {"background wrong type", [](json& d) { d["background"] = "white"; }, "/background"},
       {"effects not an object", [](json& d) { d["effects"] = {"backface_culling"}; }, "/effects"},
       {"effect unknown",
@@ -399,13 +331,8 @@ TEST(SceneParse, SyntaxErrorsAndMissingFiles) {
 
 TEST(SceneParse, ObliqueAndOrthographicViews) {
   json d = valid_scene();
-  d["projection"] = {{"type", "orthographic"},
-                     {"left", -2},
-                     {"right", 2},
-                     {"bottom", -1.5},
-                     {"top", 1.5},
-                     {"near", 1},
-                     {"far", 9}};
+  d["projection"] = json::parse(
+      R"({"type": "orthographic", "left": -2, "right": 2, "bottom": -1.5, "top": 1.5, "near": 1, "far": 9})");
   view::view_setup v = scene::make_view_setup(parse(d));
   EXPECT_TRUE(v.is_parallel());
   EXPECT_DOUBLE_EQ(v.direction.z, -1);  // the gaze

@@ -196,20 +196,11 @@ void count_sides(std::size_t i, const Classify& cls, std::size_t m, const Positi
   for (std::size_t k = 0; k < m; ++k) {
     const std::size_t j = position(k);
     if (j == i) continue;
-    switch (cls(i, j)) {
-      case geom::classification::straddling:
-        ++in.straddling;
-        break;
-      case geom::classification::positive:
-        ++in.positive;
-        break;
-      case geom::classification::negative:
-        ++in.negative;
-        break;
-      case geom::classification::coplanar:
-        ++in.coplanar;
-        break;
-    }
+    const geom::classification c = cls(i, j);  // counted as side_counts::add counts
+    in.straddling += c == geom::classification::straddling;
+    in.positive += c == geom::classification::positive;
+    in.negative += c == geom::classification::negative;
+    in.coplanar += c == geom::classification::coplanar;
   }
 }
 

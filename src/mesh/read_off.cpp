@@ -89,12 +89,17 @@ triangle_soup read_off(std::string_view text, const std::string& file) {
   soup.vertices.reserve(bounded_reserve(nv, bytes_left, 6));
   soup.triangles.reserve(bounded_reserve(nf, bytes_left, 8));
 
-  for (std::uint64_t i = 0; i < nv; ++i) {
+  // Advances to record i of n ("vertices" or "faces"); returns its line number.
+  const auto next_record = [&](std::uint64_t i, std::uint64_t n, const char* what) {
     if (!next_content_line())
       fail(file, lines.line_number(),
-           "unexpected end of file: read " + std::to_string(i) + " of " + std::to_string(nv) +
-               " vertices");
-    const std::size_t line = lines.line_number();
+           "unexpected end of file: read " + std::to_string(i) + " of " + std::to_string(n) + " " +
+               what);
+    return lines.line_number();
+  };
+
+  for (std::uint64_t i = 0; i < nv; ++i) {
+    const std::size_t line = next_record(i, nv, "vertices");
     if (tokens.size() < 3)
       fail(file, line,
            "vertex " + std::to_string(i) + " has " + std::to_string(tokens.size()) +
@@ -110,11 +115,7 @@ triangle_soup read_off(std::string_view text, const std::string& file) {
 
   std::vector<std::uint32_t> polygon;
   for (std::uint64_t f = 0; f < nf; ++f) {
-    if (!next_content_line())
-      fail(file, lines.line_number(),
-           "unexpected end of file: read " + std::to_string(f) + " of " + std::to_string(nf) +
-               " faces");
-    const std::size_t line = lines.line_number();
+    const std::size_t line = next_record(f, nf, "faces");
     std::int64_t k = 0;
     if (!parse_integer(tokens[0], k))
       fail(file, line, "face vertex count " + quote(tokens[0]) + " is not an integer");

@@ -68,6 +68,19 @@ class reader {
     return &*it;
   }
 
+  /// Calls visit(entry, entry_key) for each entry of the array member `name` of `obj` (at
+  /// pointer `key`, "" for the document), in order; nothing when it is absent or null; fails
+  /// when it is not an array.
+  template <class Visit>
+  void for_each_entry(const json& obj, const std::string& key, const char* name,
+                      Visit&& visit) const {
+    const json* a = optional(obj, name);
+    if (!a) return;
+    const std::string at = key + "/" + name;
+    if (!a->is_array()) fail(at, std::string("must be an array (got ") + a->type_name() + ")");
+    for (std::size_t i = 0; i < a->size(); ++i) visit((*a)[i], at + "/" + std::to_string(i));
+  }
+
   /// Warns about (strict: fails on) each member of `obj` whose name is not in `known`, and
   /// says which names were expected there (a misspelt key is then easy to spot).
   void warn_unknown(const json& obj, const std::string& key,

@@ -135,28 +135,15 @@ void parse_effects(const reader& r, const json& doc, scene& s) {
 }
 
 void parse_curves(const reader& r, const json& doc, scene& s) {
-  const json* c = r.optional(doc, "curves");
-  if (!c) return;
-  if (!c->is_array())
-    r.fail("/curves", std::string("must be an array (got ") + c->type_name() + ")");
-  for (std::size_t i = 0; i < c->size(); ++i) {
-    const std::string key = "/curves/" + std::to_string(i);
-    const json& entry = r.object((*c)[i], key);
+  r.for_each_entry(doc, "", "curves", [&](const json& e, const std::string& key) {
+    const json& entry = r.object(e, key);
     r.warn_unknown(entry, key, {"bezier", "color"});
-    const json& b = r.require(entry, key, "bezier");
-    if (!b.is_array() || b.empty())
-      r.fail(key + "/bezier", "must be an array of at least 1 control point [x, y, z]");
-    if (b.size() > max_curve_control_points)
-      r.fail(key + "/bezier", "at most " + std::to_string(max_curve_control_points) +
-                                  " control points (got " + std::to_string(b.size()) + ")");
     view::curve_spec curve;
-    for (std::size_t k = 0; k < b.size(); ++k) {
-      const view::vector3 p = r.triple(b[k], key + "/bezier/" + std::to_string(k));
-      curve.control_points.push_back({p.x, p.y, p.z});
-    }
+    curve.control_points =
+        detail::parse_points(r, entry, key, "bezier", 1, max_curve_control_points, "control point");
     if (const json* col = r.optional(entry, "color")) curve.color = r.color(*col, key + "/color");
     s.curves.push_back(std::move(curve));
-  }
+  });
 }
 
 /// "svg": {"mode", "edges", "crease_deg"} (docs/contract.md "Pixels"; also used for PDF output).

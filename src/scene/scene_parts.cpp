@@ -111,13 +111,9 @@ mesh_spec parse_mesh_entry(const reader& r, const json& entry, const std::string
 /// The meshes of one group object (or the document) at `key` ("" for the document).
 void parse_group_meshes(const reader& r, const json& group, const std::string& key,
                         const std::filesystem::path& base, view::matrix_stack& stack, scene& s) {
-  const json* meshes = r.optional(group, "meshes");
-  if (!meshes) return;
-  if (!meshes->is_array())
-    r.fail(key + "/meshes", std::string("must be an array (got ") + meshes->type_name() + ")");
-  for (std::size_t i = 0; i < meshes->size(); ++i)
-    s.meshes.push_back(
-        parse_mesh_entry(r, (*meshes)[i], key + "/meshes/" + std::to_string(i), base, stack));
+  r.for_each_entry(group, key, "meshes", [&](const json& entry, const std::string& at) {
+    s.meshes.push_back(parse_mesh_entry(r, entry, at, base, stack));
+  });
 }
 
 const json* groups_of(const reader& r, const json& group, const std::string& key) {
@@ -411,26 +407,33 @@ void place_viewport(const scene& s, view::view_setup& v) {
   v.place_y = s.viewport_y + dy;
 }
 
+std::vector<vec3d> parse_points(const reader& r, const json& entry, const std::string& key,
+                                const char* name, std::size_t min, std::size_t max,
+                                const char* noun) {
+  const json& pts = r.require(entry, key, name);
+  const std::string at = key + "/" + name;
+  const std::string nouns = std::string(noun) + "s";
+  if (!pts.is_array() || pts.size() < min)
+    r.fail(at, "must be an array of at least " + std::to_string(min) + " " +
+                   (min == 1 ? noun : nouns) + " [x, y, z]");
+  if (pts.size() > max)
+    r.fail(at, "at most " + std::to_string(max) + " " + nouns + " (got " +
+                   std::to_string(pts.size()) + ")");
+  std::vector<vec3d> points;
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    const view::vector3 p = r.triple(pts[k], at + "/" + std::to_string(k));
+    points.push_back({p.x, p.y, p.z});
+  }
+  return points;
+}
+
 void parse_lines(const reader& r, const json& doc, scene& s) {
-  const json* lines = r.optional(doc, "lines");
-  if (!lines) return;
-  if (!lines->is_array())
-    r.fail("/lines", std::string("must be an array (got ") + lines->type_name() + ")");
-  for (std::size_t i = 0; i < lines->size(); ++i) {
-    const std::string key = "/lines/" + std::to_string(i);
-    const json& entry = r.object((*lines)[i], key);
+  r.for_each_entry(doc, "", "lines", [&](const json& e, const std::string& key) {
+    const json& entry = r.object(e, key);
     r.warn_unknown(entry, key, {"points", "color", "clipper"});
-    const json& pts = r.require(entry, key, "points");
-    if (!pts.is_array() || pts.size() < 2)
-      r.fail(key + "/points", "must be an array of at least 2 points [x, y, z]");
-    if (pts.size() > max_line_points)
-      r.fail(key + "/points", "at most " + std::to_string(max_line_points) + " points");
     view::curve_spec line;
     line.polyline = true;
-    for (std::size_t k = 0; k < pts.size(); ++k) {
-      const view::vector3 p = r.triple(pts[k], key + "/points/" + std::to_string(k));
-      line.control_points.push_back({p.x, p.y, p.z});
-    }
+    line.control_points = parse_points(r, entry, key, "points", 2, max_line_points, "point");
     if (const json* c = r.optional(entry, "color")) line.color = r.color(*c, key + "/color");
     if (const json* c = r.optional(entry, "clipper")) {
       const std::string v = c->is_string() ? c->get<std::string>() : std::string();
@@ -441,7 +444,7 @@ void parse_lines(const reader& r, const json& doc, scene& s) {
     }
     s.curves.push_back(std::move(line));
     ++s.line_count;
-  }
+  });
 }
 
 void parse_trackball(const reader& r, const json& doc, scene& s) {

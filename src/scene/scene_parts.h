@@ -28,6 +28,12 @@ void parse_viewport_and_image(const reader& r, const json& doc, scene& s);
 /// (v.image_width, v.image_height, v.place_x, v.place_y).
 void place_viewport(const scene& s, view::view_setup& v);
 
+/// The points of a curve or line: the member `name` of `entry` (at pointer `key`), an array of
+/// `min` to `max` points [x, y, z]; `noun` names one point in messages ("control point").
+std::vector<vec3d> parse_points(const reader& r, const json& entry, const std::string& key,
+                                const char* name, std::size_t min, std::size_t max,
+                                const char* noun);
+
 /// "lines" appended to s.curves as polylines.
 void parse_lines(const reader& r, const json& doc, scene& s);
 

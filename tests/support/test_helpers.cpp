@@ -128,6 +128,24 @@ double relative_difference(const exbsp::view::mat4& a, const exbsp::view::mat4& 
   return exbsp::view::max_abs_difference(a, b) / scale;
 }
 
+std::vector<bad_input> bad_input_manifest() {
+  const std::string path = std::string(EXBSP_SOURCE_DIR) + "/tests/data/bad/EXPECTED.tsv";
+  std::vector<bad_input> rows;
+  std::ifstream in(path);
+  EXPECT_TRUE(in) << "cannot open " << path;
+  std::string row;
+  while (std::getline(in, row)) {
+    if (row.empty() || row[0] == '#') continue;
+    const std::size_t tab1 = row.find('\t'), tab2 = row.find('\t', tab1 + 1);
+    EXPECT_TRUE(tab1 != std::string::npos && tab2 != std::string::npos)
+        << path << ": a row without two tabs: " << row;
+    if (tab1 == std::string::npos || tab2 == std::string::npos) continue;
+    rows.push_back({row.substr(0, tab1), std::stoul(row.substr(tab1 + 1, tab2 - tab1 - 1)),
+                    row.substr(tab2 + 1)});
+  }
+  return rows;
+}
+
 std::string corpus_dir() { return std::string(EXBSP_SOURCE_DIR) + "/data/meshes/"; }
 
 bool corpus_required() {

@@ -46,6 +46,18 @@ bool fixed_rc_seed();
 /// A soup of the given triangles, one face each (face id = index).
 exbsp::triangle_soup soup_of(const std::vector<std::array<exbsp::vec3d, 3>>& tris);
 
+/// One row of tests/data/bad/EXPECTED.tsv: a malformed file of tests/data/bad/, the line its
+/// error must name (0: none) and a part of the message.
+struct bad_input {
+  std::string file;
+  std::size_t line = 0;
+  std::string message;
+};
+
+/// The rows of tests/data/bad/EXPECTED.tsv (blank lines and # comments skipped); a row without
+/// its two tabs, or a file that cannot be read, is a test failure.
+std::vector<bad_input> bad_input_manifest();
+
 // --- errors ------------------------------------------------------------------------------------
 
 /// The key named by the scene_error that `parse()` throws (e.g. "/camera/eye/1"), or
