@@ -532,12 +532,19 @@ TEST(SutherlandHodgman, WindowBoundariesAreHitExactly) {
   EXPECT_EQ(on_boundary, static_cast<int>(out.size()));
 }
 
-RC_GTEST_PROP(SutherlandHodgman, ResultIsInsideEveryHalfPlaneAndNotLarger, ()) {
-  const auto poly = gen_convex_polygon(10);
+/// A random convex polygon (at least 3 vertices) and a region of 1 to `max_planes` random
+/// half-planes.
+std::pair<std::vector<vec2d>, std::vector<half_plane2>> gen_polygon_and_region(int max_planes) {
+  std::vector<vec2d> poly = gen_convex_polygon(10);
   RC_PRE(poly.size() >= 3);
   std::vector<half_plane2> region;
-  const int m = uniform_int(1, 7);
+  const int m = uniform_int(1, max_planes);
   for (int i = 0; i < m; ++i) region.push_back(gen_half_plane(6));
+  return {std::move(poly), std::move(region)};
+}
+
+RC_GTEST_PROP(SutherlandHodgman, ResultIsInsideEveryHalfPlaneAndNotLarger, ()) {
+  const auto [poly, region] = gen_polygon_and_region(7);
   const auto out = sutherland_hodgman_clip(poly, region);
   const double scale = polygon_scale(poly);
   for (const vec2d& p : out)
@@ -558,11 +565,7 @@ RC_GTEST_PROP(SutherlandHodgman, ConvexPolygonInsideTheWindowIsUnchanged, ()) {
 }
 
 RC_GTEST_PROP(SutherlandHodgman, RandomConvexPolygonsMatchPointSampling, ()) {
-  const auto poly = gen_convex_polygon(10);
-  RC_PRE(poly.size() >= 3);
-  std::vector<half_plane2> region;
-  const int m = uniform_int(1, 6);
-  for (int i = 0; i < m; ++i) region.push_back(gen_half_plane(6));
+  const auto [poly, region] = gen_polygon_and_region(6);
   const auto out = sutherland_hodgman_clip(poly, region);
   const double tol = 1e-9 * polygon_scale(poly);
   std::vector<half_plane2> lines = region;

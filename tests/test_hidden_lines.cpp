@@ -663,11 +663,22 @@ TEST(HiddenLines, CubeIsometricPerspectiveWithVisibleEdgesOnlyDrawsNoHiddenEdge)
 
 // ---- exbsp's drawing: the standard views -------------------------------------------------------
 
+/// One drawing to check: a model (a synthetic shape's or a corpus mesh's name) in a view,
+/// perspective or parallel. Both suites below take it as their parameter.
 struct view_case {
-  std::string shape_name;
+  std::string model;
   view_spec view;
   bool parallel;
+  /// "model view projection", for reports.
+  std::string label() const { return model + " " + view.name + " " + projection_name(parallel); }
 };
+
+void PrintTo(const view_case& c, std::ostream* os) { *os << c.label(); }
+
+/// The test's name: the label with underscores.
+std::string case_name(const ::testing::TestParamInfo<view_case>& i) {
+  return i.param.model + "_" + i.param.view.name + "_" + projection_name(i.param.parallel);
+}
 
 std::vector<view_case> all_view_cases() {
   std::vector<view_case> out;
@@ -687,28 +698,20 @@ const shape& synthetic_shape(const std::string& name) {
   throw std::runtime_error("no shape " + name);
 }
 
-void PrintTo(const view_case& c, std::ostream* os) {
-  *os << c.shape_name << " " << c.view.name << " " << projection_name(c.parallel);
-}
-
 class HiddenLinesViews : public ::testing::TestWithParam<view_case> {};
 
 TEST_P(HiddenLinesViews, DrawingAgreesWithTheRayCastOracle) {
   const view_case& c = GetParam();
-  const shape& s = synthetic_shape(c.shape_name);
+  const shape& s = synthetic_shape(c.model);
   frame f = make_view(s.soup, s.offsets, c.view, c.parallel);
   const vector_drawing d = draw(f);
   const hidden_line_report r = check_hidden_lines(f, d);
-  print_report(c.shape_name + " " + c.view.name + " " + projection_name(c.parallel), r);
+  print_report(c.label(), r);
   EXPECT_TRUE(r.exact);
   expect_agreement(r);
 }
 
-INSTANTIATE_TEST_SUITE_P(, HiddenLinesViews, ::testing::ValuesIn(all_view_cases()),
-                         [](const ::testing::TestParamInfo<view_case>& i) {
-                           return i.param.shape_name + "_" + i.param.view.name + "_" +
-                                  projection_name(i.param.parallel);
-                         });
+INSTANTIATE_TEST_SUITE_P(, HiddenLinesViews, ::testing::ValuesIn(all_view_cases()), case_name);
 
 // ---- fills against edges -----------------------------------------------------------------------
 
@@ -822,13 +825,12 @@ fill_check check_fills(const frame& f, const vector_drawing& d) {
 TEST(HiddenLinesFills, StopAtTheSolidOutlinesAndMeetAtSolidCreasesInEveryView) {
   std::size_t checked = 0;
   for (const view_case& c : all_view_cases()) {
-    const shape& s = synthetic_shape(c.shape_name);
+    const shape& s = synthetic_shape(c.model);
     frame f = make_view(s.soup, s.offsets, c.view, c.parallel);
     const vector_drawing d = draw(f);
     const fill_check r = check_fills(f, d);
     checked += r.checked;
-    EXPECT_EQ(r.wrong, 0u) << c.shape_name << " " << c.view.name << " "
-                           << projection_name(c.parallel) << ": " << r.first;
+    EXPECT_EQ(r.wrong, 0u) << c.label() << ": " << r.first;
   }
   std::cout << "[ hidden-lines ] fills against solid edges: " << checked << " points\n";
   EXPECT_GT(checked, 1000u);
@@ -872,33 +874,22 @@ TEST(HiddenLinesFills, RejectRegionsGrownPastTheirOutlineOrShrunkFromIt) {
 /// included) skips it, so a right drawing agrees on every checked sample.
 constexpr double corpus_min_agreement = 1.0;
 
-// A view_case with a corpus mesh's name instead of a synthetic shape's (same form: the two
-// parameter lists of gtest's suites).
-struct corpus_case {
-  std::string mesh;
-  view_spec view;
-  bool parallel;
-};
-
-std::vector<corpus_case> all_corpus_cases() {
-  std::vector<corpus_case> out;
+/// The corpus meshes' cases (view_case::model is the mesh's name).
+std::vector<view_case> all_corpus_cases() {
+  std::vector<view_case> out;
   for (const char* m : {"joint", "pinion", "couplingdown", "cross"})
     for (const view_spec& v : {standard_views()[0], standard_views()[6], general_views()[0]})
       for (bool parallel : {false, true}) out.push_back({m, v, parallel});
   return out;
 }
 
-void PrintTo(const corpus_case& c, std::ostream* os) {
-  *os << c.mesh << " " << c.view.name << " " << projection_name(c.parallel);
-}
-
 /// The case's mesh drawn in its view at 400 x 300 (the fixture's SetUp fails or skips when the
 /// corpus is missing).
-class HiddenLinesCorpus : public ::testing::TestWithParam<corpus_case> {
+class HiddenLinesCorpus : public ::testing::TestWithParam<view_case> {
  protected:
   void SetUp() override {
-    const corpus_case& c = GetParam();
-    const std::string path = exbsp_test::corpus_dir() + c.mesh + ".off";
+    const view_case& c = GetParam();
+    const std::string path = exbsp_test::corpus_dir() + c.model + ".off";
     EXBSP_NEED_CORPUS(std::filesystem::exists(path), path);
     const triangle_soup soup = read_mesh(path);
     f = make_view(soup, {0, soup.face_count}, c.view, c.parallel, 400, 300);
@@ -909,19 +900,18 @@ class HiddenLinesCorpus : public ::testing::TestWithParam<corpus_case> {
 };
 
 TEST_P(HiddenLinesCorpus, DrawingAgreesWithTheRayCastOracle) {
-  const corpus_case& c = GetParam();
+  const view_case& c = GetParam();
   const hidden_line_report r = check_hidden_lines(f, d);
-  print_report(c.mesh + " " + c.view.name + " " + projection_name(c.parallel), r);
+  print_report(c.label(), r);
   EXPECT_GT(r.checked(), 100u) << r.summary();
   EXPECT_GE(r.agreement(), corpus_min_agreement) << r.summary();
   EXPECT_GE(r.run_agreement(), corpus_min_agreement) << r.summary();
 }
 
 TEST_P(HiddenLinesCorpus, FillsStopAtTheSolidOutlinesAndMeetAtSolidCreases) {
-  const corpus_case& c = GetParam();
+  const view_case& c = GetParam();
   const fill_check r = check_fills(f, d);
-  std::cout << "[ hidden-lines ] " << c.mesh << " " << c.view.name << " "
-            << projection_name(c.parallel) << ": fills against solid edges, " << r.checked
+  std::cout << "[ hidden-lines ] " << c.label() << ": fills against solid edges, " << r.checked
             << " points, " << r.wrong << " wrong\n";
   EXPECT_EQ(r.wrong, 0u) << r.first;
   // cross's front parallel view: each outline edge lies exactly over a visible back edge (the
@@ -932,11 +922,7 @@ TEST_P(HiddenLinesCorpus, FillsStopAtTheSolidOutlinesAndMeetAtSolidCreases) {
                     "edge (coincident outlines)";
 }
 
-INSTANTIATE_TEST_SUITE_P(, HiddenLinesCorpus, ::testing::ValuesIn(all_corpus_cases()),
-                         [](const ::testing::TestParamInfo<corpus_case>& i) {
-                           return i.param.mesh + "_" + i.param.view.name + "_" +
-                                  projection_name(i.param.parallel);
-                         });
+INSTANTIATE_TEST_SUITE_P(, HiddenLinesCorpus, ::testing::ValuesIn(all_corpus_cases()), case_name);
 
 // ---- property: random boxes and prisms ---------------------------------------------------------
 

@@ -711,20 +711,14 @@ TEST(PlyHeader, two_hundred_thousand_property_and_element_lines_are_read_correct
   EXPECT_EQ(soup.vertices.size(), 3u);
   // The duplicate checks still work at the end of such a header.
   const std::size_t lines = 9 + 200000 + 2 * 100000;
-  try {
-    exbsp::read_mesh_data(ply + "property int a\n" + body, exbsp::mesh_format::ply, "big.ply");
-    FAIL() << "no error";
-  } catch (const input_error& e) {
-    EXPECT_EQ(e.line(), lines + 1);
-    EXPECT_TRUE(contains(e.what(), "second property named 'a'")) << e.what();
-  }
-  try {
-    exbsp::read_mesh_data(ply + "element empty7 0\n" + body, exbsp::mesh_format::ply, "big.ply");
-    FAIL() << "no error";
-  } catch (const input_error& e) {
-    EXPECT_EQ(e.line(), lines + 1);
-    EXPECT_TRUE(contains(e.what(), "second element named 'empty7'")) << e.what();
-  }
+  const input_error property =
+      exbsp_test::mesh_data_error(ply + "property int a\n" + body, exbsp::mesh_format::ply);
+  EXPECT_EQ(property.line(), lines + 1);
+  EXPECT_TRUE(contains(property.what(), "second property named 'a'")) << property.what();
+  const input_error element =
+      exbsp_test::mesh_data_error(ply + "element empty7 0\n" + body, exbsp::mesh_format::ply);
+  EXPECT_EQ(element.line(), lines + 1);
+  EXPECT_TRUE(contains(element.what(), "second element named 'empty7'")) << element.what();
 }
 
 // ---- 8. messages with a place ----------------------------------------------------------------
@@ -890,18 +884,13 @@ TEST(TextFiles, line_numbers_stay_right_with_a_bom_and_cr_only_line_ends) {
   const std::string bad_stl =
       "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
       "vertex 0 1 x\nendloop\nendfacet\nendsolid t\n";  // line 6
-  // The line an input_error names for `text` read as `format` (0: no error).
-  const auto error_line = [](const std::string& text, exbsp::mesh_format format) {
-    try {
-      exbsp::read_mesh_data(text, format, "f");
-    } catch (const input_error& e) {
-      return e.line();
-    }
-    return std::size_t{0};
-  };
   for (const char* eol : {"\n", "\r\n", "\r"}) {
-    EXPECT_EQ(error_line(recode(bad_off, bom, eol), exbsp::mesh_format::off), 5u) << eol[0];
-    EXPECT_EQ(error_line(recode(bad_stl, bom, eol), exbsp::mesh_format::stl), 6u) << eol[0];
+    EXPECT_EQ(
+        exbsp_test::mesh_data_error(recode(bad_off, bom, eol), exbsp::mesh_format::off).line(), 5u)
+        << eol[0];
+    EXPECT_EQ(
+        exbsp_test::mesh_data_error(recode(bad_stl, bom, eol), exbsp::mesh_format::stl).line(), 6u)
+        << eol[0];
   }
 }
 

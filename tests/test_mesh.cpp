@@ -109,17 +109,6 @@ input_error expect_input_error(const std::string& path) {
   return input_error(path, 0, "none");
 }
 
-input_error expect_data_error(const std::string& data, mesh_format format,
-                              const std::string& name = "mem") {
-  try {
-    read_mesh_data(data, format, name);
-  } catch (const input_error& e) {
-    return e;
-  }
-  ADD_FAILURE() << name << ": no input_error thrown";
-  return input_error(name, 0, "none");
-}
-
 std::string le_bytes(std::uint32_t v, std::size_t n) {
   std::string s;
   for (std::size_t i = 0; i < n; ++i) s += static_cast<char>((v >> (8 * i)) & 0xff);
@@ -214,7 +203,7 @@ TEST(OffReader, NoffAndStoffAllowExtraColumnsPlainOffDoesNot) {
   const std::string body = "3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n";
   EXPECT_EQ(read_mesh_data("NOFF\n" + body, mesh_format::off, "n.off").triangles.size(), 1u);
   EXPECT_EQ(read_mesh_data("STCNOFF\n" + body, mesh_format::off, "n.off").triangles.size(), 1u);
-  EXPECT_EQ(expect_data_error("OFF\n" + body, mesh_format::off).line(), 3u);
+  EXPECT_EQ(exbsp_test::mesh_data_error("OFF\n" + body, mesh_format::off).line(), 3u);
 }
 
 TEST(OffReader, ZeroFacesGiveAnEmptySoup) {
@@ -344,7 +333,7 @@ TEST(LineEndings, CrlfFilesReadLikeLfFilesInEveryTextFormat) {
   }
   // Line numbers count CRLF lines once.
   const std::string bad = "OFF\r\n3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 9\r\n";
-  EXPECT_EQ(expect_data_error(bad, mesh_format::off).line(), 6u);
+  EXPECT_EQ(exbsp_test::mesh_data_error(bad, mesh_format::off).line(), 6u);
 }
 
 // ---- triangulation, face ids, non-manifold input ----
@@ -523,14 +512,15 @@ TEST(MeshErrors, ExtensionIsCaseInsensitive) {
 }
 
 TEST(MeshErrors, MessageIsFileColonLineColonWhat) {
-  const input_error e = expect_data_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 12 1\n",
-                                          mesh_format::off, "part.off");
+  const input_error e = exbsp_test::mesh_data_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 12 1\n",
+                                                    mesh_format::off, "part.off");
   EXPECT_STREQ(e.what(), "part.off:6: vertex index 12 out of range (3 vertices)");
   EXPECT_EQ(e.file(), "part.off");
 }
 
 TEST(MeshErrors, GarbageBytesAreEscapedInMessages) {
-  const input_error e = expect_data_error(std::string("\x01\x02\xff OFF\n", 8), mesh_format::off);
+  const input_error e =
+      exbsp_test::mesh_data_error(std::string("\x01\x02\xff OFF\n", 8), mesh_format::off);
   const std::string what = e.what();
   EXPECT_NE(what.find("'\\x01\\x02\\xff'"), std::string::npos) << what;
 }
@@ -541,32 +531,39 @@ TEST(MeshErrors, GarbageBytesAreEscapedInMessages) {
 TEST(HugeDeclaredCounts, FailAtTheEndOfTheDataWithoutAllocating) {
   const auto start = std::chrono::steady_clock::now();
   const std::string tri = "0 0 0\n1 0 0\n0 1 0\n";
-  EXPECT_EQ(expect_data_error("OFF\n4000000000 4000000000 0\n" + tri, mesh_format::off).line(), 5u);
-  EXPECT_EQ(expect_data_error("OFF\n3 4294967295 0\n" + tri + "3 0 1 2\n", mesh_format::off).line(),
-            6u);
-  EXPECT_EQ(expect_data_error("OFF\n3 1 0\n" + tri + "2000000000 0 1 2\n", mesh_format::off).line(),
-            6u);
+  EXPECT_EQ(
+      exbsp_test::mesh_data_error("OFF\n4000000000 4000000000 0\n" + tri, mesh_format::off).line(),
+      5u);
+  EXPECT_EQ(
+      exbsp_test::mesh_data_error("OFF\n3 4294967295 0\n" + tri + "3 0 1 2\n", mesh_format::off)
+          .line(),
+      6u);
+  EXPECT_EQ(
+      exbsp_test::mesh_data_error("OFF\n3 1 0\n" + tri + "2000000000 0 1 2\n", mesh_format::off)
+          .line(),
+      6u);
   const std::string ply_head =
       "ply\nformat binary_little_endian 1.0\nelement vertex 4294967295\nproperty float x\nproperty "
       "float y\n"
       "property float z\nelement face 4294967295\nproperty list uint int "
       "vertex_indices\nend_header\n";
-  EXPECT_EQ(expect_data_error(ply_head + std::string(36, '\0'), mesh_format::ply).line(), 0u);
+  EXPECT_EQ(exbsp_test::mesh_data_error(ply_head + std::string(36, '\0'), mesh_format::ply).line(),
+            0u);
   const std::string ply_list =
       "ply\nformat binary_little_endian 1.0\nelement face 1\nproperty list uint int "
       "vertex_indices\nend_header\n" +
       le_bytes(0xFFFFFFFFu, 4) + le_bytes(0, 4);
-  const input_error list_error = expect_data_error(ply_list, mesh_format::ply);
+  const input_error list_error = exbsp_test::mesh_data_error(ply_list, mesh_format::ply);
   EXPECT_NE(std::string(list_error.what()).find("unexpected end of file"), std::string::npos)
       << list_error.what();
   const std::string stl = std::string(80, 'x') + le_bytes(0xFFFFFFFFu, 4) + std::string(100, '\0');
-  EXPECT_EQ(expect_data_error(stl, mesh_format::stl).line(), 0u);
+  EXPECT_EQ(exbsp_test::mesh_data_error(stl, mesh_format::stl).line(), 0u);
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
 }
 
 TEST(MeshErrors, EveryReaderRejectsAnEmptyBuffer) {
   for (mesh_format f : {mesh_format::off, mesh_format::obj, mesh_format::ply, mesh_format::stl}) {
-    const input_error e = expect_data_error("", f, "empty");
+    const input_error e = exbsp_test::mesh_data_error("", f, "empty");
     EXPECT_EQ(e.line(), 0u);
     EXPECT_NE(std::string(e.what()).find("empty file"), std::string::npos);
   }

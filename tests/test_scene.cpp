@@ -105,6 +105,17 @@ std::function<void(json&)> set(const char* at, const char* value) {
   return [at, value](json& d) { d[json::json_pointer(at)] = json::parse(value); };
 }
 
+/// A mutation that sets "projection" to {"type": type, "left": -1, "right": 1, "bottom": -1,
+/// "top": 1, "near": 1, "far": 9} with `changes` merged in (RFC 7396: null removes a key).
+std::function<void(json&)> projection(const char* type, const char* changes = "{}") {
+  return [type, changes](json& d) {
+    d["projection"] = json::parse(R"({"left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1,
+                                     "far": 9})");
+    d["projection"]["type"] = type;
+    d["projection"].merge_patch(json::parse(changes));
+  };
+}
+
 TEST(SceneParse, EveryErrorNamesItsKey) {
   const std::vector<bad_case> cases = {
       {"meshes missing", [](json& d) { d.erase("meshes"); }, "/meshes"},
@@ -150,33 +161,15 @@ TEST(SceneParse, EveryErrorNamesItsKey) {
       {"near missing", [](json& d) { d["projection"].erase("near"); }, "/projection/near"},
       {"near equals far", [](json& d) { d["projection"]["far"] = 1; }, "/projection/far"},
       {"near beyond far", [](json& d) { d["projection"]["far"] = 0.5; }, "/projection/far"},
-      {"ortho left missing",
-       set("/projection",
-           R"({"type": "orthographic", "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 9})"),
-       "/projection/left"},
-      {"ortho left equals right",
-       set("/projection",
-           R"({"type": "orthographic", "left": 1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 9})"),
+      {"ortho left missing", projection("orthographic", R"({"left": null})"), "/projection/left"},
+      {"ortho left equals right", projection("orthographic", R"({"left": 1})"),
        "/projection/right"},
-      {"frustum bottom above top",
-       set("/projection",
-           R"({"type": "frustum", "left": -1, "right": 1, "bottom": 2, "top": 1, "near": 1, "far": 9})"),
-       "/projection/top"},
-      {"frustum near zero",
-       set("/projection",
-           R"({"type": "frustum", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 0, "far": 9})"),
-       "/projection/near"},
-      {"oblique direction missing",
-       set("/projection",
-           R"({"type": "oblique", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 9})"),
-       "/projection/direction"},
+      {"frustum bottom above top", projection("frustum", R"({"bottom": 2})"), "/projection/top"},
+      {"frustum near zero", projection("frustum", R"({"near": 0})"), "/projection/near"},
+      {"oblique direction missing", projection("oblique"), "/projection/direction"},
       {"oblique direction away from the scene",
-       set("/projection",
-           R"({"type": "oblique", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 9, "direction": [0.5, 0, 1]})"),
-       "/projection/direction"},
-      {"oblique direction zero",
-       set("/projection",
-           R"({"type": "oblique", "left": -1, "right": 1, "bottom": -1, "top": 1, "near": 1, "far": 9, "direction": [0, 0, 0]})"),
+       projection("oblique", R"({"direction": [0.5, 0, 1]})"), "/projection/direction"},
+      {"oblique direction zero", projection("oblique", R"({"direction": [0, 0, 0]})"),
        "/projection/direction"},
       {"viewport missing", [](json& d) { d.erase("viewport"); }, "/viewport"},
       {"viewport width zero", [](json& d) { d["viewport"]["width"] = 0; }, "/viewport/width"},

@@ -215,14 +215,21 @@ std::vector<const vector_path*> regions_of(const vector_drawing& d) {
   return r;
 }
 
+/// `s` seen from (0, 0, 5) towards the origin at 80 x 60 (face colours red and blue), drawn
+/// to SVG.
+frame front_view_svg(triangle_soup s) {
+  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
+                              {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
+  run(f, {}, output_kind::svg);
+  return f;
+}
+
 TEST(VisibleRegions, AFaceSeenEdgeOnHasNoRegion) {
   triangle_soup s;
   add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});  // faces the eye
   add_quad(s, {-0.5, 0, -1}, {0.5, 0, -1}, {0.5, 0, 1},
            {-0.5, 0, 1});  // in the plane y = 0 through the eye
-  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
-                              {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
-  run(f, {}, output_kind::svg);
+  frame f = front_view_svg(std::move(s));
   const vector_drawing d = visible_drawing(f);
   const auto r = regions_of(d);
   ASSERT_EQ(r.size(), 1u);
@@ -310,9 +317,7 @@ TEST(VisibleRegions, AFaceExactlyBehindAnotherOfTheSameOutlineIsHidden) {
   add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
   // Behind it, the same outline as seen from the eye (scaled about the eye at (0, 0, 5)).
   add_quad(s, {-2, -2, -5}, {2, -2, -5}, {2, 2, -5}, {-2, 2, -5});
-  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
-                              {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
-  run(f, {}, output_kind::svg);
+  frame f = front_view_svg(std::move(s));
   const vector_drawing d = visible_drawing(f);  // regions_of points into it
   const auto r = regions_of(d);
   ASSERT_EQ(r.size(), 1u);
@@ -341,9 +346,7 @@ TEST(VisibleRegions, OneRegionPerFaceWithItsHole) {
   triangle_soup s;
   add_quad(s, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
   add_quad(s, {-0.2, -0.2, 1}, {0.2, -0.2, 1}, {0.2, 0.2, 1}, {-0.2, 0.2, 1});
-  frame f = perspective_frame(std::move(s), {{200, 0, 0}, {0, 0, 200}},
-                              {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 80, 60);
-  run(f, {}, output_kind::svg);
+  frame f = front_view_svg(std::move(s));
   const vector_drawing d = visible_drawing(f);  // regions_of points into it
   const auto r = regions_of(d);
   ASSERT_EQ(r.size(), 2u);

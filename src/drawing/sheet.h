@@ -22,6 +22,8 @@
 
 #include <exbsp/view/image.h>
 
+#include "core/named_table.h"
+
 namespace exbsp::drawing {
 
 /// A point on the sheet (mm, y up).
@@ -31,26 +33,14 @@ struct point2 {
 
 /// The layers, in drawing order (notation above).
 enum class layer_id { fills, hatching, hidden, visible, cutting_planes, frame };
-constexpr layer_id all_layers[] = {layer_id::fills,   layer_id::hatching,       layer_id::hidden,
-                                   layer_id::visible, layer_id::cutting_planes, layer_id::frame};
-/// "fills", "hatching", "hidden", "visible", "cutting-planes", "frame".
-inline const char* layer_name(layer_id l) {
-  switch (l) {
-    case layer_id::fills:
-      return "fills";
-    case layer_id::hatching:
-      return "hatching";
-    case layer_id::hidden:
-      return "hidden";
-    case layer_id::visible:
-      return "visible";
-    case layer_id::cutting_planes:
-      return "cutting-planes";
-    case layer_id::frame:
-      return "frame";
-  }
-  return "?";
-}
+/// The layers in drawing order with their names (SVG group ids, DXF layer names).
+constexpr enum_name<layer_id> layer_table[] = {{layer_id::fills, "fills"},
+                                               {layer_id::hatching, "hatching"},
+                                               {layer_id::hidden, "hidden"},
+                                               {layer_id::visible, "visible"},
+                                               {layer_id::cutting_planes, "cutting-planes"},
+                                               {layer_id::frame, "frame"}};
+inline const char* layer_name(layer_id l) { return name_of(l, layer_table); }
 
 /// ISO 128-20 line types.
 enum class line_style {

@@ -61,8 +61,8 @@ std::string sheet_svg(const sheet& s) {
   out += "<title>" + xml_escape(s.title) + "</title>\n";
   out += "<rect width=\"" + number(s.width) + "\" height=\"" + number(s.height) +
          "\" fill=\"#ffffff\"/>\n";
-  for (layer_id layer : all_layers) {
-    const std::string name = layer_name(layer);
+  for (const auto& [layer, layer_text] : layer_table) {
+    const std::string name = layer_text;
     out += "<g inkscape:groupmode=\"layer\" inkscape:label=\"" + name + "\" id=\"layer-" + name +
            "\" fill=\"none\" stroke=\"#000000\">\n";
     for (const sheet_fill& f : s.fills) {
@@ -131,7 +131,8 @@ std::string sheet_pdf(const sheet& s, const std::string& date) {
       if (closed) cairo_close_path(cr);
     };
     cairo_select_font_face(cr, font_family, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    for (layer_id layer : all_layers) {
+    for (const auto& row : layer_table) {
+      const layer_id layer = row.value;
       for (const sheet_fill& f : s.fills) {
         if (f.layer != layer) continue;
         cairo_set_source_rgb(cr, f.color.r / 255.0, f.color.g / 255.0, f.color.b / 255.0);

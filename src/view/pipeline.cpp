@@ -6,21 +6,17 @@
 #include <cstdio>
 
 #include <exbsp/core/errors.h>
+#include "core/named_table.h"
 
 namespace exbsp::view {
 
 const char* to_string(projection_kind k) {
-  switch (k) {
-    case projection_kind::perspective:
-      return "perspective";
-    case projection_kind::frustum:
-      return "frustum";
-    case projection_kind::orthographic:
-      return "orthographic";
-    case projection_kind::oblique:
-      return "oblique";
-  }
-  return "?";
+  static constexpr enum_name<projection_kind> names[] = {
+      {projection_kind::perspective, "perspective"},
+      {projection_kind::frustum, "frustum"},
+      {projection_kind::orthographic, "orthographic"},
+      {projection_kind::oblique, "oblique"}};
+  return name_of(k, names);
 }
 
 void pipeline::add(std::string name, std::function<std::string(frame&)> run) {

@@ -127,6 +127,18 @@ std::vector<tri_d> triangles_of(const exbsp::triangle_soup& s) {
   return out;
 }
 
+/// A generator of soups of kind `name`: fill(tris) picks the triangles, which are then
+/// shuffled (so that no case depends on the order the generator wrote them in).
+template <class Fill>
+rc::Gen<soup_case> shuffled_soup(const char* name, Fill fill) {
+  return rc::gen::exec([name, fill] {
+    soup_case c{name, {}, {}};
+    fill(c.tris);
+    shuffle_picked(c.tris);
+    return c;
+  });
+}
+
 }  // namespace
 
 /// Generic random soups: 1..max_triangles triangles with 52-bit random coordinates in [-10,10].
@@ -157,8 +169,7 @@ rc::Gen<soup_case> grid_soup(int max_triangles) {
 /// exactly on the plane (two-piece splits), ones touching it with a vertex or an edge, and
 /// parallel ones. Shuffled, so the splitter is sometimes a crosser, sometimes a stack triangle.
 rc::Gen<soup_case> coplanar_stack() {
-  return rc::gen::exec([] {
-    soup_case c{"coplanar_stack", {}, {}};
+  return shuffled_soup("coplanar_stack", [](std::vector<tri_d>& tris) {
     const lattice_plane pl = pick_lattice_plane();
     auto on = [&] { return pl.at(pick_half(-2, 2), pick_half(-2, 2)); };
     const int m = pick_int(2, 7);
@@ -173,7 +184,7 @@ rc::Gen<soup_case> coplanar_stack() {
       const tri_d& t = stack[static_cast<std::size_t>(pick_int(0, m - 1))];
       stack.push_back(pick_bool() ? t : flipped(t));
     }
-    c.tris = stack;
+    tris = stack;
     const int crossers = pick_int(1, 4);
     for (int i = 0; i < crossers; ++i) {
       auto off = [&](double w) { return pl.at(pick_half(-2, 2), pick_half(-2, 2), w); };
@@ -202,10 +213,8 @@ rc::Gen<soup_case> coplanar_stack() {
           break;
       }
       for (int k = pick_int(0, 2); k > 0; --k) t = {t[1], t[2], t[0]};  // vertex on plane anywhere
-      c.tris.push_back(t);
+      tris.push_back(t);
     }
-    shuffle_picked(c.tris);
-    return c;
   });
 }
 
@@ -214,8 +223,7 @@ rc::Gen<soup_case> coplanar_stack() {
 /// are each hx/hy/hz with probability 1/2, so vertices lie on 0..3 planes (on their lines of
 /// intersection and at their common point), and some vertices lie exactly on the sloped plane.
 rc::Gen<soup_case> vertex_on_plane() {
-  return rc::gen::exec([] {
-    soup_case c{"vertex_on_plane", {}, {}};
+  return shuffled_soup("vertex_on_plane", [](std::vector<tri_d>& tris) {
     const vec3d h{pick_half(-1, 1), pick_half(-1, 1), pick_half(-1, 1)};
     for (int axis = 0; axis < 3; ++axis) {
       if (pick_int(0, 3) == 0) continue;
@@ -227,10 +235,10 @@ rc::Gen<soup_case> vertex_on_plane() {
         t[k][i] = corner[k][0];
         t[k][j] = corner[k][1];
       }
-      c.tris.push_back(pick_bool() ? t : flipped(t));
+      tris.push_back(pick_bool() ? t : flipped(t));
     }
     const lattice_plane sloped = pick_lattice_plane();
-    c.tris.push_back({sloped.at(-2, -2), sloped.at(2, -1), sloped.at(-1, 2)});
+    tris.push_back({sloped.at(-2, -2), sloped.at(2, -1), sloped.at(-1, 2)});
     const int n = pick_int(1, 6);
     for (int i = 0; i < n; ++i) {
       tri_d t;
@@ -241,10 +249,8 @@ rc::Gen<soup_case> vertex_on_plane() {
           for (int k = 0; k < 3; ++k) p[k] = pick_bool() ? h[k] : pick_half(-3, 3);
         }
       }
-      c.tris.push_back(t);
+      tris.push_back(t);
     }
-    shuffle_picked(c.tris);
-    return c;
   });
 }
 
@@ -253,8 +259,7 @@ rc::Gen<soup_case> vertex_on_plane() {
 /// ulps off it on either side (nextafter on the coordinate that defines the plane; for h = 0
 /// that is a subnormal, 4.9e-324).
 rc::Gen<soup_case> near_coplanar() {
-  return rc::gen::exec([] {
-    soup_case c{"near_coplanar", {}, {}};
+  return shuffled_soup("near_coplanar", [](std::vector<tri_d>& tris) {
     double h = 0;
     switch (pick_int(0, 5)) {
       case 0:
@@ -289,15 +294,13 @@ rc::Gen<soup_case> near_coplanar() {
       }
     };
     const int exact = pick_int(1, 3);
-    for (int i = 0; i < exact; ++i) c.tris.push_back({point(0), point(0), point(0)});
+    for (int i = 0; i < exact; ++i) tris.push_back({point(0), point(0), point(0)});
     const int near = pick_int(1, 5);
     for (int i = 0; i < near; ++i) {
       tri_d t;
       for (vec3d& p : t) p = point(pick_int(-2, 2));
-      c.tris.push_back(t);
+      tris.push_back(t);
     }
-    shuffle_picked(c.tris);
-    return c;
   });
 }
 
@@ -306,42 +309,39 @@ rc::Gen<soup_case> near_coplanar() {
 /// (1) all coordinates near 1e-300 (products underflow in double); (2) unit triangles through
 /// the origin with tiny (1e-300) triangles crossing them.
 rc::Gen<soup_case> scale_disparity() {
-  return rc::gen::exec([] {
-    soup_case c{"scale_disparity", {}, {}};
+  return shuffled_soup("scale_disparity", [](std::vector<tri_d>& tris) {
     const int mode = pick_int(0, 2);
     if (mode == 0) {
       const vec3d centre{1e9 * (1 + pick_real(0, 1)), -1e9 * (1 + pick_real(0, 1)),
                          1e9 * pick_real(0.5, 1)};
       auto feature = [&] { return add(centre, pick_point(-1e-3, 1e-3)); };
       const int n = pick_int(2, 6);
-      for (int i = 0; i < n; ++i) c.tris.push_back({feature(), feature(), feature()});
+      for (int i = 0; i < n; ++i) tris.push_back({feature(), feature(), feature()});
       // A huge triangle in the plane z = centre.z, and a huge generic one.
-      c.tris.push_back({vec3d{centre[0] - 1e9, centre[1] - 1e9, centre[2]},
-                        vec3d{centre[0] + 1e9, centre[1], centre[2]},
-                        vec3d{centre[0], centre[1] + 1e9, centre[2]}});
+      tris.push_back({vec3d{centre[0] - 1e9, centre[1] - 1e9, centre[2]},
+                      vec3d{centre[0] + 1e9, centre[1], centre[2]},
+                      vec3d{centre[0], centre[1] + 1e9, centre[2]}});
       if (pick_bool()) {
         vec3d a = feature();
         a[2] = centre[2];  // a feature vertex exactly in the huge plane
-        c.tris.push_back({a, feature(), feature()});
+        tris.push_back({a, feature(), feature()});
       }
       if (pick_bool())
-        c.tris.push_back(
+        tris.push_back(
             {add(centre, pick_point(-1e9, 1e9)), add(centre, pick_point(-1e9, 1e9)), feature()});
     } else if (mode == 1) {
       const int n = pick_int(2, 6);
       for (int i = 0; i < n; ++i)
-        c.tris.push_back({scale(1e-300, pick_point(-1, 1)), scale(1e-300, pick_point(-1, 1)),
-                          scale(1e-300, pick_point(-1, 1))});
+        tris.push_back({scale(1e-300, pick_point(-1, 1)), scale(1e-300, pick_point(-1, 1)),
+                        scale(1e-300, pick_point(-1, 1))});
     } else {
-      c.tris.push_back({vec3d{-1, -1, 0}, vec3d{1, -1, 0}, vec3d{0, 1, 0}});
-      if (pick_bool()) c.tris.push_back({pick_point(-1, 1), pick_point(-1, 1), pick_point(-1, 1)});
+      tris.push_back({vec3d{-1, -1, 0}, vec3d{1, -1, 0}, vec3d{0, 1, 0}});
+      if (pick_bool()) tris.push_back({pick_point(-1, 1), pick_point(-1, 1), pick_point(-1, 1)});
       const int n = pick_int(1, 4);
       for (int i = 0; i < n; ++i)
-        c.tris.push_back({scale(1e-300, pick_point(-1, 1)), scale(1e-300, pick_point(-1, 1)),
-                          scale(1e-300, pick_point(-1, 1))});
+        tris.push_back({scale(1e-300, pick_point(-1, 1)), scale(1e-300, pick_point(-1, 1)),
+                        scale(1e-300, pick_point(-1, 1))});
     }
-    shuffle_picked(c.tris);
-    return c;
   });
 }
 
@@ -349,30 +349,27 @@ rc::Gen<soup_case> scale_disparity() {
 /// triangles with relative widths 1e-3 .. 1e-15, crossing each other and generic triangles;
 /// sometimes an exactly collinear triangle (skipped and counted).
 rc::Gen<soup_case> slivers() {
-  return rc::gen::exec([] {
-    soup_case c{"slivers", {}, {}};
+  return shuffled_soup("slivers", [](std::vector<tri_d>& tris) {
     const int n = pick_int(2, 6);
     for (int i = 0; i < n; ++i) {
       const vec3d a = pick_point(-2, 2), u = pick_point(-3, 3), v = pick_point(-1, 1);
       const double eps = std::pow(10.0, -3 * pick_int(1, 5));
       switch (pick_int(0, 2)) {
         case 0:
-          c.tris.push_back({a, add(a, u), add(add(a, u), scale(eps, v))});
+          tris.push_back({a, add(a, u), add(add(a, u), scale(eps, v))});
           break;  // needle
         case 1:
-          c.tris.push_back({a, add(a, u), add(add(a, scale(0.5, u)), scale(eps, v))});
+          tris.push_back({a, add(a, u), add(add(a, scale(0.5, u)), scale(eps, v))});
           break;  // cap
         default:
-          c.tris.push_back({a, add(add(a, u), scale(eps, v)), sub(add(a, u), scale(eps, v))});
+          tris.push_back({a, add(add(a, u), scale(eps, v)), sub(add(a, u), scale(eps, v))});
           break;
       }
     }
-    if (pick_int(0, 3) == 0) c.tris.push_back({vec3d{0, 0, 0}, vec3d{1, 2, 3}, vec3d{2, 4, 6}});
+    if (pick_int(0, 3) == 0) tris.push_back({vec3d{0, 0, 0}, vec3d{1, 2, 3}, vec3d{2, 4, 6}});
     const int crossers = pick_int(0, 3);
     for (int i = 0; i < crossers; ++i)
-      c.tris.push_back({pick_point(-3, 3), pick_point(-3, 3), pick_point(-3, 3)});
-    shuffle_picked(c.tris);
-    return c;
+      tris.push_back({pick_point(-3, 3), pick_point(-3, 3), pick_point(-3, 3)});
   });
 }
 
@@ -381,8 +378,7 @@ rc::Gen<soup_case> slivers() {
 /// exact duplicates, reversed copies (the same triangle in both orientations), sometimes a
 /// second sheet crossing it and lattice crossers.
 rc::Gen<soup_case> mesh_like() {
-  return rc::gen::exec([] {
-    soup_case c{"mesh_like", {}, {}};
+  return shuffled_soup("mesh_like", [](std::vector<tri_d>& tris) {
     const int n = pick_int(1, 3);
     std::vector<std::vector<double>> h(static_cast<std::size_t>(n + 1),
                                        std::vector<double>(static_cast<std::size_t>(n + 1)));
@@ -395,44 +391,42 @@ rc::Gen<soup_case> mesh_like() {
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
         if (pick_bool()) {
-          c.tris.push_back({P(i, j), P(i + 1, j), P(i + 1, j + 1)});
-          c.tris.push_back({P(i, j), P(i + 1, j + 1), P(i, j + 1)});
+          tris.push_back({P(i, j), P(i + 1, j), P(i + 1, j + 1)});
+          tris.push_back({P(i, j), P(i + 1, j + 1), P(i, j + 1)});
         } else {
-          c.tris.push_back({P(i, j), P(i + 1, j), P(i, j + 1)});
-          c.tris.push_back({P(i + 1, j), P(i + 1, j + 1), P(i, j + 1)});
+          tris.push_back({P(i, j), P(i + 1, j), P(i, j + 1)});
+          tris.push_back({P(i + 1, j), P(i + 1, j + 1), P(i, j + 1)});
         }
       }
     for (int k = pick_int(0, 2); k > 0; --k) {  // T-junctions
       const std::size_t t =
-          static_cast<std::size_t>(pick_int(0, static_cast<int>(c.tris.size()) - 1));
+          static_cast<std::size_t>(pick_int(0, static_cast<int>(tris.size()) - 1));
       const int e = pick_int(0, 2);
-      const tri_d o = c.tris[t];
+      const tri_d o = tris[t];
       const vec3d& a = o[static_cast<std::size_t>(e)];
       const vec3d& b = o[static_cast<std::size_t>((e + 1) % 3)];
       const vec3d& d = o[static_cast<std::size_t>((e + 2) % 3)];
       const vec3d m = scale(0.5, add(a, b));
-      c.tris[t] = {a, m, d};
-      c.tris.push_back({m, b, d});
+      tris[t] = {a, m, d};
+      tris.push_back({m, b, d});
     }
     for (int k = pick_int(0, 2); k > 0; --k)
-      c.tris.push_back(
-          c.tris[static_cast<std::size_t>(pick_int(0, static_cast<int>(c.tris.size()) - 1))]);
+      tris.push_back(
+          tris[static_cast<std::size_t>(pick_int(0, static_cast<int>(tris.size()) - 1))]);
     for (int k = pick_int(0, 2); k > 0; --k)
-      c.tris.push_back(flipped(
-          c.tris[static_cast<std::size_t>(pick_int(0, static_cast<int>(c.tris.size()) - 1))]));
+      tris.push_back(
+          flipped(tris[static_cast<std::size_t>(pick_int(0, static_cast<int>(tris.size()) - 1))]));
     if (pick_bool()) {  // a second sheet, roughly the plane y = 0.5 + x/2, crossing the first
       for (int i = 0; i < n; ++i) {
         const double y0 = 0.5 + i / 2.0, y1 = 0.5 + (i + 1) / 2.0;
-        c.tris.push_back({vec3d{double(i), y0, -1.5}, vec3d{double(i + 1), y1, -1.5},
-                          vec3d{double(i), y0, 1.5}});
+        tris.push_back({vec3d{double(i), y0, -1.5}, vec3d{double(i + 1), y1, -1.5},
+                        vec3d{double(i), y0, 1.5}});
       }
     }
     for (int k = pick_int(0, 2); k > 0; --k) {
       auto p = [&] { return vec3d{pick_half(-1, n + 1), pick_half(-1, n + 1), pick_half(-2, 2)}; };
-      c.tris.push_back({p(), p(), p()});
+      tris.push_back({p(), p(), p()});
     }
-    shuffle_picked(c.tris);
-    return c;
   });
 }
 

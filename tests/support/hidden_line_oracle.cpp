@@ -14,6 +14,8 @@
 #include <sstream>
 #include <utility>
 
+#include "core/named_table.h"
+
 namespace exbsp_test {
 
 using exbsp::vec3d;
@@ -163,29 +165,20 @@ constexpr std::size_t no_edge = static_cast<std::size_t>(-1);
 }  // namespace
 
 const char* to_string(feature_kind k) {
-  switch (k) {
-    case feature_kind::boundary:
-      return "boundary";
-    case feature_kind::non_manifold:
-      return "non-manifold";
-    case feature_kind::crease:
-      return "crease";
-    case feature_kind::silhouette:
-      return "silhouette";
-  }
-  return "?";
+  static constexpr exbsp::enum_name<feature_kind> names[] = {
+      {feature_kind::boundary, "boundary"},
+      {feature_kind::non_manifold, "non-manifold"},
+      {feature_kind::crease, "crease"},
+      {feature_kind::silhouette, "silhouette"}};
+  return exbsp::name_of(k, names);
 }
 
 const char* to_string(point_visibility v) {
-  switch (v) {
-    case point_visibility::visible:
-      return "visible";
-    case point_visibility::hidden:
-      return "hidden";
-    case point_visibility::unknown:
-      return "unknown";
-  }
-  return "?";
+  static constexpr exbsp::enum_name<point_visibility> names[] = {
+      {point_visibility::visible, "visible"},
+      {point_visibility::hidden, "hidden"},
+      {point_visibility::unknown, "unknown"}};
+  return exbsp::name_of(v, names);
 }
 
 double edge_image::length() const { return dist(g0, g1); }

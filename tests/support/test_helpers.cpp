@@ -128,6 +128,17 @@ double relative_difference(const exbsp::view::mat4& a, const exbsp::view::mat4& 
   return exbsp::view::max_abs_difference(a, b) / scale;
 }
 
+exbsp::input_error mesh_data_error(const std::string& data, exbsp::mesh_format format,
+                                   const std::string& name) {
+  try {
+    exbsp::read_mesh_data(data, format, name);
+  } catch (const exbsp::input_error& e) {
+    return e;
+  }
+  ADD_FAILURE() << name << ": no input_error thrown";
+  return exbsp::input_error(name, 0, "none");
+}
+
 std::vector<bad_input> bad_input_manifest() {
   const std::string path = std::string(EXBSP_SOURCE_DIR) + "/tests/data/bad/EXPECTED.tsv";
   std::vector<bad_input> rows;

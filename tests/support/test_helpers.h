@@ -20,6 +20,7 @@
 #include <vector>
 
 #include <exbsp/core/errors.h>
+#include <exbsp/mesh/mesh_io.h>
 #include <exbsp/mesh/soup.h>
 #include <exbsp/view/camera.h>
 #include <exbsp/view/image.h>
@@ -59,6 +60,11 @@ struct bad_input {
 std::vector<bad_input> bad_input_manifest();
 
 // --- errors ------------------------------------------------------------------------------------
+
+/// The input_error that reading `data` as `format` (file name `name`) throws; a test failure,
+/// and an error naming "none", when it throws none.
+exbsp::input_error mesh_data_error(const std::string& data, exbsp::mesh_format format,
+                                   const std::string& name = "mem");
 
 /// The key named by the scene_error that `parse()` throws (e.g. "/camera/eye/1"), or
 /// "(no error)" when it throws none; the error's message goes to `message` if given.
