@@ -505,28 +505,28 @@ TEST(HiddenLinesOracle, ReferenceDrawingOfACubeCornerHasNineSolidAndThreeDashedR
   expect_judged_right("reference drawing, cube corner perspective", r);
 }
 
-/// Moves the last run of the drawing's `from` edges to its `to` edges (a wrong drawing).
-void move_last_run(vector_drawing& d, vector_path::kind_type from, vector_path::kind_type to) {
-  auto& source = path_of(d, from).rings;
-  path_of(d, to).rings.push_back(source.back());
+/// The oracle's report on the cube corner's drawing with its last run of `from` edges moved to
+/// its `to` edges (a wrong drawing).
+hidden_line_report report_with_last_run_moved(vector_path::kind_type from,
+                                              vector_path::kind_type to) {
+  corner_case c = cube_corner();
+  auto& source = path_of(c.drawing, from).rings;
+  path_of(c.drawing, to).rings.push_back(source.back());
   source.pop_back();
+  return check_hidden_lines(*c.oracle, c.drawing);
 }
 
 TEST(HiddenLinesOracle, RejectsAVisibleRunMovedToTheHiddenPath) {
-  corner_case c = cube_corner();
-  move_last_run(c.drawing, vector_path::kind_type::visible_edge,
-                vector_path::kind_type::hidden_edge);
-  const hidden_line_report r = check_hidden_lines(*c.oracle, c.drawing);
+  const hidden_line_report r = report_with_last_run_moved(vector_path::kind_type::visible_edge,
+                                                          vector_path::kind_type::hidden_edge);
   EXPECT_GT(r.visible_dashed, 0u) << r.summary();
   EXPECT_GT(r.dashed_under_visible, 0u) << r.summary();
   EXPECT_LT(r.agreement(), 1.0);
 }
 
 TEST(HiddenLinesOracle, RejectsAHiddenRunMovedToTheVisiblePath) {
-  corner_case c = cube_corner();
-  move_last_run(c.drawing, vector_path::kind_type::hidden_edge,
-                vector_path::kind_type::visible_edge);
-  const hidden_line_report r = check_hidden_lines(*c.oracle, c.drawing);
+  const hidden_line_report r = report_with_last_run_moved(vector_path::kind_type::hidden_edge,
+                                                          vector_path::kind_type::visible_edge);
   EXPECT_GT(r.hidden_solid, 0u) << r.summary();
   EXPECT_GT(r.solid_over_hidden, 0u) << r.summary();
 }

@@ -262,11 +262,10 @@ TEST(PlyReader, BinaryBigEndianIntegerCoordinatesAndUshortIndexLists) {
 }
 
 TEST(PlyReader, VertexOnlyFileGivesNoTriangles) {
-  const std::string ply =
-      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float "
-      "z\n"
-      "end_header\n1 2 3\n";
-  const triangle_soup s = read_mesh_data(ply, mesh_format::ply, "points.ply");
+  const triangle_soup s = read_mesh_data(
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n1 2 3\n",
+      mesh_format::ply, "points.ply");
   EXPECT_EQ(s.vertices.size(), 1u);
   EXPECT_TRUE(s.triangles.empty());
 }

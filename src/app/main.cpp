@@ -23,11 +23,29 @@
 
 namespace {
 
-/// The commands, in the order of `exbsp --help`.
-const exbsp::cli::command_factory commands[] = {
-    exbsp::cli::make_build_command,  exbsp::cli::make_order_command,
-    exbsp::cli::make_render_command, exbsp::cli::make_section_command,
-    exbsp::cli::make_clip_command,   exbsp::cli::make_drawing_command};
+/// The commands, in the order of `exbsp --help`: one row each (its rows are alike by design, the
+/// form of a plug-in table).
+const exbsp::cli::command_row commands[] = {
+    {"build", "build the BSP tree of MESH and print its statistics",
+     exbsp::cli::make_build_command},
+    {"order", "write the back-to-front fragment order of MESH for an eye point or a direction",
+     exbsp::cli::make_order_command},
+    {"render",
+     "render SCENE.json, a mesh with a view fitted to it, or the "
+     "built-in demo scene to PNG, SVG or PDF",
+     exbsp::cli::make_render_command},
+    {"section", "cut MESH exactly by a plane: kept part, outline loops and (closed meshes) the cap",
+     exbsp::cli::make_section_command},
+    {"clip",
+     "clip the segments and polygons of INPUT.json against its region "
+     "(rect, box, convex, halfspaces)",
+     exbsp::cli::make_clip_command},
+    {"drawing",
+     "a drawing sheet (ISO views, sections, title block) of a "
+     "mesh, a scene or a folder of meshes, "
+     "as SVG, PDF or DXF",
+     exbsp::cli::make_drawing_command},
+};
 
 }  // namespace
 
@@ -45,7 +63,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("exbsp ") + exbsp::version_string,
                        "print the version and exit");
   std::vector<std::unique_ptr<exbsp::cli::command>> made;
-  for (const exbsp::cli::command_factory make : commands) made.push_back(make(app));
+  for (const exbsp::cli::command_row& row : commands)
+    made.push_back(row.make(*app.add_subcommand(row.name, row.description)));
   // Hidden (no group): the man page and bash completion, made from the definitions above.
   bool man = false, completion = false;
   app.add_flag("--man", man, "print the man page (roff)")->group("");

@@ -15,8 +15,7 @@ namespace {
 
 class build_subcommand final : public command {
  public:
-  explicit build_subcommand(CLI::App& app) {
-    sub = app.add_subcommand("build", "build the BSP tree of MESH and print its statistics");
+  explicit build_subcommand(CLI::App& subcommand) : command(subcommand) {
     add_build_options(sub, o_);
     sub->add_option("--save", o_.save,
                     "write the tree to a saved-tree file T.exbsp, for order and build")
@@ -61,8 +60,8 @@ class build_subcommand final : public command {
 
 }  // namespace
 
-std::unique_ptr<command> make_build_command(CLI::App& app) {
-  return std::make_unique<build_subcommand>(app);
+std::unique_ptr<command> make_build_command(CLI::App& subcommand) {
+  return std::make_unique<build_subcommand>(subcommand);
 }
 
 }  // namespace exbsp::cli

@@ -15,10 +15,7 @@ namespace {
 
 class clip_subcommand final : public command {
  public:
-  explicit clip_subcommand(CLI::App& app) {
-    sub = app.add_subcommand("clip",
-                             "clip the segments and polygons of INPUT.json against its region "
-                             "(rect, box, convex, halfspaces)");
+  explicit clip_subcommand(CLI::App& subcommand) : command(subcommand) {
     sub->add_option("INPUT", in_,
                     "clip input (JSON): {\"region\": ..., \"segments\": ..., \"polygons\": ...}")
         ->required();
@@ -45,8 +42,8 @@ class clip_subcommand final : public command {
 
 }  // namespace
 
-std::unique_ptr<command> make_clip_command(CLI::App& app) {
-  return std::make_unique<clip_subcommand>(app);
+std::unique_ptr<command> make_clip_command(CLI::App& subcommand) {
+  return std::make_unique<clip_subcommand>(subcommand);
 }
 
 }  // namespace exbsp::cli

@@ -23,11 +23,7 @@ namespace {
 
 class drawing_subcommand final : public command {
  public:
-  explicit drawing_subcommand(CLI::App& app) {
-    sub = app.add_subcommand("drawing",
-                             "a drawing sheet (ISO views, sections, title block) of a "
-                             "mesh, a scene or a folder of meshes, "
-                             "as SVG, PDF or DXF");
+  explicit drawing_subcommand(CLI::App& subcommand) : command(subcommand) {
     sub->add_option("INPUT", input_,
                     "mesh (.off, .obj, .ply, .stl), scene (.json: its meshes as one part) or a "
                     "folder (one sheet per mesh)")
@@ -193,8 +189,8 @@ class drawing_subcommand final : public command {
 
 }  // namespace
 
-std::unique_ptr<command> make_drawing_command(CLI::App& app) {
-  return std::make_unique<drawing_subcommand>(app);
+std::unique_ptr<command> make_drawing_command(CLI::App& subcommand) {
+  return std::make_unique<drawing_subcommand>(subcommand);
 }
 
 }  // namespace exbsp::cli

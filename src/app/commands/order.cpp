@@ -18,9 +18,7 @@ namespace {
 
 class order_subcommand final : public command {
  public:
-  explicit order_subcommand(CLI::App& app) {
-    sub = app.add_subcommand(
-        "order", "write the back-to-front fragment order of MESH for an eye point or a direction");
+  explicit order_subcommand(CLI::App& subcommand) : command(subcommand) {
     add_build_options(sub, o_);
     auto* eye_opt = sub->add_option("--eye", eye_, "eye point X,Y,Z (perspective view)");
     auto* dir_opt = sub->add_option("--direction", direction_,
@@ -61,8 +59,8 @@ class order_subcommand final : public command {
 
 }  // namespace
 
-std::unique_ptr<command> make_order_command(CLI::App& app) {
-  return std::make_unique<order_subcommand>(app);
+std::unique_ptr<command> make_order_command(CLI::App& subcommand) {
+  return std::make_unique<order_subcommand>(subcommand);
 }
 
 }  // namespace exbsp::cli

@@ -26,10 +26,7 @@ namespace {
 
 class render_subcommand final : public command {
  public:
-  explicit render_subcommand(CLI::App& app) {
-    sub = app.add_subcommand("render",
-                             "render SCENE.json, a mesh with a view fitted to it, or the "
-                             "built-in demo scene to PNG, SVG or PDF");
+  explicit render_subcommand(CLI::App& subcommand) : command(subcommand) {
     sub->add_option(
         "INPUT", input_,
         "scene file (.json), or a mesh (.off, .obj, .ply, .stl; '-': standard input with "
@@ -173,8 +170,8 @@ class render_subcommand final : public command {
 
 }  // namespace
 
-std::unique_ptr<command> make_render_command(CLI::App& app) {
-  return std::make_unique<render_subcommand>(app);
+std::unique_ptr<command> make_render_command(CLI::App& subcommand) {
+  return std::make_unique<render_subcommand>(subcommand);
 }
 
 }  // namespace exbsp::cli

@@ -20,10 +20,7 @@ namespace {
 
 class section_subcommand final : public command {
  public:
-  explicit section_subcommand(CLI::App& app) {
-    sub = app.add_subcommand(
-        "section",
-        "cut MESH exactly by a plane: kept part, outline loops and (closed meshes) the cap");
+  explicit section_subcommand(CLI::App& subcommand) : command(subcommand) {
     sub->add_option("MESH", mesh_,
                     "mesh file: .off, .obj, .ply or .stl ('-': standard input, with --format)")
         ->required();
@@ -61,8 +58,8 @@ class section_subcommand final : public command {
 
 }  // namespace
 
-std::unique_ptr<command> make_section_command(CLI::App& app) {
-  return std::make_unique<section_subcommand>(app);
+std::unique_ptr<command> make_section_command(CLI::App& subcommand) {
+  return std::make_unique<section_subcommand>(subcommand);
 }
 
 }  // namespace exbsp::cli
