@@ -7,7 +7,9 @@
 # corpus is there (vector_fandisk_chromium.png); and the README's pair of one CAD part,
 # data/meshes/joint.off, lit, in a view fitted to it, as exbsp's PNG and as the visible-region SVG
 # with visible and hidden edges (docs/images/joint.png, docs/images/joint.svg, and from the
-# front docs/images/joint_front.svg), when the corpus is there. Anyone can rerun it (needs chromium):
+# front docs/images/joint_front.svg), and the PNG with those edges drawn over it
+# (docs/images/joint_edges.png) and its wireframe (docs/images/joint_wireframe.png), when the
+# corpus is there. Anyone can rerun it (needs chromium):
 #   scenes/make_vector_images.sh [path/to/exbsp]     (default: $EXBSP, then build/src/app/exbsp)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -71,6 +73,9 @@ if [ -f "$joint" ]; then
   "$exbsp" render "$joint" -q --size 640x480 -o "$docs/joint.png"
   "$exbsp" render "$joint" -q --size 640x480 --edges visible+hidden -o "$docs/joint.svg"
   "$exbsp" render "$joint" -q --size 640x480 --edges visible+hidden --view front -o "$docs/joint_front.svg"
+  # Shaded with edges: the same edges drawn over the PNG ("raster": {"edges"}).
+  "$exbsp" render "$joint" -q --size 640x480 --edges visible+hidden -o "$docs/joint_edges.png"
+  "$exbsp" render "$joint" -q --size 640x480 --wireframe -o "$docs/joint_wireframe.png"
   echo "make_vector_images: wrote docs/images/joint.png ($(stat -c %s "$docs/joint.png") bytes) and joint.svg ($(stat -c %s "$docs/joint.svg") bytes)"
 fi
 echo "make_vector_images: wrote $(ls "$out"/vector_*.png | wc -l) images into $out"

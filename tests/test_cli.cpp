@@ -525,8 +525,8 @@ TEST_F(Cli, render_of_a_bad_mesh_or_bad_mesh_options_exits_2_and_writes_nothing)
 }
 
 // Every render flag acts or is refused (issue 25): a saved tree is drawn as it was built, the
-// flags of a mesh's fitted view are refused on a scene, --edges overrides a scene's and is
-// refused for PNG, --frames needs an orbit and at least one frame.
+// flags of a mesh's fitted view are refused on a scene, --edges overrides a scene's (SVG and
+// PDF: its "svg" edges; PNG: its "raster" edges), --frames needs an orbit and at least one frame.
 TEST_F(Cli, render_of_a_saved_tree_gives_the_bytes_of_the_mesh_without_a_build) {
   const std::string mesh = quoted(data_dir + "/nonmanifold.off");
   ASSERT_EQ(run("build " + mesh + " --save t.exbsp").status, 0);
@@ -560,9 +560,9 @@ TEST_F(Cli, render_flags_act_on_a_scene_or_are_refused_with_the_reason) {
       {"render " + scene + " --view front -o a.png", "has its own \"camera\""},
       {"render " + scene + " --size 100x100 -o a.png", "sets it in \"viewport\""},
       {"render --size 100x100 -o a.png", "the demo scene"},
-      {"render " + scene + " --edges visible -o a.png", "applies to SVG and PDF output"},
-      {"render " + quoted(data_dir + "/cube.off") + " --edges visible+hidden -o a.png",
-       "applies to SVG and PDF output"},
+      {"render " + scene + " --edges all -o a.png", "--edges: all not in"},
+      {"render " + scene + " --wireframe -o a.svg", "--wireframe applies to PNG output"},
+      {"render " + scene + " --wireframe --edges none -o a.png", "--wireframe needs edges"},
       {"render " + scene + " --frames 3 -o a.png", "needs --orbit-drag"},
       {"render " + scene + " --frames 0 -o a.png", "needs --orbit-drag"},
       {"render " + scene + " --orbit-drag 1,2:3,4 --frames 0 -o a.png", "at least 1"},
@@ -580,6 +580,18 @@ TEST_F(Cli, render_flags_act_on_a_scene_or_are_refused_with_the_reason) {
   EXPECT_EQ(read_file(dir / "plain.svg").find("hidden-edges"), std::string::npos);
   EXPECT_NE(read_file(dir / "edges.svg").find("<g id=\"visible-edges\""), std::string::npos);
   EXPECT_NE(read_file(dir / "edges.svg").find("<g id=\"hidden-edges\""), std::string::npos);
+  // On a PNG it draws the same edges over the picture; without it the PNG is the scene's.
+  ASSERT_EQ(run("render " + scene + " -q -o plain.png").status, 0);
+  const result edges = run("render " + scene + " -v --edges visible+hidden -o edges.png");
+  ASSERT_EQ(edges.status, 0) << edges.err;
+  EXPECT_NE(edges.err.find("stage edges:"), std::string::npos) << edges.err;
+  EXPECT_NE(read_file(dir / "plain.png"), read_file(dir / "edges.png"));
+  const result none = run("render " + scene + " -v --edges none -o none.png");
+  EXPECT_EQ(none.err.find("stage edges:"), std::string::npos) << "no stage when none is asked";
+  EXPECT_EQ(read_file(dir / "plain.png"), read_file(dir / "none.png"));
+  const result wire = run("render " + scene + " -v --wireframe -o wire.png");
+  ASSERT_EQ(wire.status, 0) << wire.err;
+  EXPECT_NE(wire.err.find("a wireframe of"), std::string::npos) << wire.err;
 }
 
 // The progress line on a terminal (issue 25): every stage over a second shows, the line is

@@ -181,6 +181,13 @@ TEST(SceneParse, EveryErrorNamesItsKey) {
        "/viewport/height"},
       {"background out of range", set("/background", R"([0, 0, 300])"), "/background/2"},
       {"background wrong type", [](json& d) { d["background"] = "white"; }, "/background"},
+      {"raster not an object", set("/raster", R"("edges")"), "/raster"},
+      {"raster edges unknown", set("/raster", R"({"edges": "all"})"), "/raster/edges"},
+      {"raster crease zero", set("/raster", R"({"crease_deg": 0})"), "/raster/crease_deg"},
+      {"raster mode", set("/raster", R"({"mode": "painter"})"), "/raster/mode"},
+      {"raster wireframe not a bool", set("/raster", R"({"wireframe": 1})"), "/raster/wireframe"},
+      {"raster wireframe without edges", set("/raster", R"({"wireframe": true, "edges": "none"})"),
+       "/raster/wireframe"},
       {"effects not an object", [](json& d) { d["effects"] = {"backface_culling"}; }, "/effects"},
       {"effect unknown",
        [](json& d) {

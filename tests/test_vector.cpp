@@ -908,4 +908,150 @@ TEST(Browser, SvgInChromiumAndPdfInPopplerMatchThePngAndMesasZBuffer) {
 #endif
 }
 
+// ---- a PNG's edges (raster_edges_stage) ----------------------------------------------------
+
+/// The cube [-1, 1]^3 (each face a quad of its own colour) seen from (0, 0, 5) through
+/// gluPerspective(45, 4/3) at 400 x 300, rendered to PNG with `edges` drawn over it (with
+/// `wireframe`, alone).
+frame cube_png(vector_options::edges_kind edges, bool wireframe = false) {
+  triangle_soup s;
+  const double c[2] = {-1, 1};
+  for (int axis = 0; axis < 3; ++axis)
+    for (double side : c) {
+      const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+      vec3d q[4];
+      const double u[4] = {-1, 1, 1, -1}, v[4] = {-1, -1, 1, 1};
+      for (int k = 0; k < 4; ++k) {
+        q[k][axis] = side;
+        q[k][i] = u[k];
+        q[k][j] = side > 0 ? v[k] : -v[k];  // counter-clockwise seen from outside
+      }
+      add_quad(s, q[0], q[1], q[2], q[3]);
+    }
+  frame f = perspective_frame(
+      std::move(s),
+      {{200, 60, 60}, {60, 200, 60}, {60, 60, 200}, {200, 200, 60}, {60, 200, 200}, {200, 60, 200}},
+      {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}}, 400, 300);
+  f.raster_edges.edges = edges;
+  f.wireframe = wireframe;
+  run(f, {}, output_kind::png);
+  if (edges != vector_options::edges_kind::none) raster_edges_stage(f);
+  return f;
+}
+
+/// The oracle's image of world point p for cube_png's camera (a pinhole written out here, not
+/// the pipeline's matrices): window coordinates, y up.
+std::array<double, 2> cube_image(const vec3d& p) {
+  const double t = std::tan(45.0 / 2 * M_PI / 180), depth = 5 - p[2];
+  return {(p[0] / (depth * t * 4.0 / 3.0) + 1) / 2 * 400, (p[1] / (depth * t) + 1) / 2 * 300};
+}
+
+/// Of the pixels under the image of segment [a, b] (sampled each pixel, the ends' 3 px left
+/// out), the fraction that `with` paints darker than `without` by more than 60 in the sum of
+/// the channels (an edge stroke is black over a face).
+double darkened_along(const image& without, const image& with, const vec3d& a, const vec3d& b) {
+  const auto p = cube_image(a), q = cube_image(b);
+  const double length = std::hypot(q[0] - p[0], q[1] - p[1]);
+  int dark = 0, samples = 0;
+  for (double s = 3; s <= length - 3; s += 1, ++samples) {
+    const int i = static_cast<int>(p[0] + (q[0] - p[0]) * s / length);
+    const int j = static_cast<int>(p[1] + (q[1] - p[1]) * s / length);
+    const rgb8 x = without.pixel(i, j), y = with.pixel(i, j);
+    dark += (x.r + x.g + x.b) - (y.r + y.g + y.b) > 60;
+  }
+  return samples ? static_cast<double>(dark) / samples : 0;
+}
+
+TEST(RasterEdges, VisibleEdgesAreSolidHiddenOnesDashedAndNothingElseChanges) {
+  const frame plain = cube_png(vector_options::edges_kind::none);
+  const frame visible = cube_png(vector_options::edges_kind::visible);
+  const frame both = cube_png(vector_options::edges_kind::visible_hidden);
+  // Visible from (0, 0, 5): the front face's outline. Hidden: the back square and the four
+  // edges that recede to it, all inside the front face's image.
+  const vec3d front[4] = {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+  const vec3d back[4] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}};
+  for (int k = 0; k < 4; ++k) {
+    const vec3d &a = front[k], &b = front[(k + 1) % 4];
+    EXPECT_GE(darkened_along(plain.picture, visible.picture, a, b), 0.95) << "front edge " << k;
+    EXPECT_GE(darkened_along(plain.picture, both.picture, a, b), 0.95) << "front edge " << k;
+    const std::pair<vec3d, vec3d> hidden[2] = {{back[k], back[(k + 1) % 4]}, {back[k], front[k]}};
+    for (const auto& [c, d] : hidden) {
+      // Untouched without "hidden"; dashes (3 px on, 2 off) with it.
+      EXPECT_EQ(darkened_along(plain.picture, visible.picture, c, d), 0.0) << "hidden " << k;
+      const double dashed = darkened_along(plain.picture, both.picture, c, d);
+      EXPECT_GT(dashed, 0.3) << "hidden " << k;
+      EXPECT_LT(dashed, 0.9) << "hidden " << k << ": solid, not dashed";
+    }
+  }
+  // Away from every edge's image (2 px), the picture is the plain raster's.
+  std::vector<std::array<std::array<double, 2>, 2>> lines;
+  for (int k = 0; k < 4; ++k) {
+    lines.push_back({cube_image(front[k]), cube_image(front[(k + 1) % 4])});
+    lines.push_back({cube_image(back[k]), cube_image(back[(k + 1) % 4])});
+    lines.push_back({cube_image(front[k]), cube_image(back[k])});
+  }
+  const auto near_a_line = [&](double x, double y) {
+    for (const auto& l : lines) {
+      const double dx = l[1][0] - l[0][0], dy = l[1][1] - l[0][1];
+      const double t =
+          std::clamp(((x - l[0][0]) * dx + (y - l[0][1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      if (std::hypot(x - l[0][0] - t * dx, y - l[0][1] - t * dy) < 2) return true;
+    }
+    return false;
+  };
+  int changed_far = 0, changed = 0;
+  for (int j = 0; j < 300; ++j)
+    for (int i = 0; i < 400; ++i) {
+      const bool differs = plain.picture.pixel(i, j) != both.picture.pixel(i, j);
+      changed += differs;
+      changed_far += differs && !near_a_line(i + 0.5, j + 0.5);
+    }
+  EXPECT_GT(changed, 1000);
+  EXPECT_EQ(changed_far, 0);
+}
+
+TEST(RasterEdges, AWireframeDrawsEveryEdgeSolidOnTheBackgroundAlone) {
+  const frame wire = cube_png(vector_options::edges_kind::visible_hidden, true);
+  const image paper(400, 300, wire.background);
+  const vec3d front[4] = {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+  const vec3d back[4] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}};
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_GE(darkened_along(paper, wire.picture, front[k], front[(k + 1) % 4]), 0.95) << k;
+    EXPECT_GE(darkened_along(paper, wire.picture, back[k], back[(k + 1) % 4]), 0.95) << k;
+    EXPECT_GE(darkened_along(paper, wire.picture, back[k], front[k]), 0.95) << k;
+  }
+  // No face is painted: every pixel is grey (an edge's anti-aliased black over white).
+  for (int j = 0; j < 300; ++j)
+    for (int i = 0; i < 400; ++i) {
+      const rgb8 c = wire.picture.pixel(i, j);
+      ASSERT_TRUE(c.r == c.g && c.g == c.b) << i << "," << j;
+    }
+}
+
+TEST(RasterEdges, ASceneAsksWithRasterEdgesAndTheDefaultPictureIsUnchanged) {
+  const fs::path dir = temp_path() / "raster_edges";
+  fs::create_directories(dir);
+  exbsp_test::write_file(dir / "t.off",
+                         "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                         "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const std::string scene = R"({"meshes": [{"file": "t.off"}],
+    "camera": {"eye": [2, 1.5, 3], "look_at": [0.3, 0.3, 0.3], "up": [0, 1, 0]},
+    "projection": {"type": "perspective", "fovy_deg": 40, "near": 0.5, "far": 20},
+    "viewport": {"width": 160, "height": 120})";
+  exbsp_test::write_file(dir / "plain.json", scene + "}");
+  exbsp_test::write_file(dir / "edges.json",
+                         scene + R"(, "raster": {"edges": "visible+hidden", "crease_deg": 20}})");
+  const scene::scene plain_scene = scene::load_scene((dir / "plain.json").string());
+  const scene::scene edges_scene = scene::load_scene((dir / "edges.json").string());
+  EXPECT_EQ(plain_scene.raster_edges.edges, vector_options::edges_kind::none);
+  EXPECT_EQ(edges_scene.raster_edges.edges, vector_options::edges_kind::visible_hidden);
+  EXPECT_EQ(edges_scene.raster_edges.crease_deg, 20);
+  EXPECT_EQ(edges_scene.vector.edges, vector_options::edges_kind::none);  // the SVG's own
+  EXPECT_FALSE(edges_scene.wireframe);
+  exbsp_test::write_file(dir / "wire.json", scene + R"(, "raster": {"wireframe": true}})");
+  const scene::scene wire_scene = scene::load_scene((dir / "wire.json").string());
+  EXPECT_TRUE(wire_scene.wireframe);
+  EXPECT_EQ(wire_scene.raster_edges.edges, vector_options::edges_kind::visible_hidden);
+}
+
 }  // namespace

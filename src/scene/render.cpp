@@ -141,13 +141,21 @@ render_summary render_command(const render_request& request, std::ostream& log) 
     s.trackball = request.trackball;
   }
   if (!request.edges.empty()) {
-    if (kind == view::output_kind::png)
-      throw usage_error("render: --edges applies to SVG and PDF output, not to " + out);
-    const auto kind = view::edges_kind_named(request.edges);
-    if (!kind)
+    const auto edges = view::edges_kind_named(request.edges);
+    if (!edges)
       throw usage_error("render: --edges must be " + view::edges_kind_names() + ", got " +
                         request.edges);
-    s.vector.edges = *kind;
+    (kind == view::output_kind::png ? s.raster_edges : s.vector).edges = *edges;
+  }
+  if (request.wireframe) {
+    if (kind != view::output_kind::png)
+      throw usage_error("render: --wireframe applies to PNG output; " + out +
+                        " is already a line drawing (--edges visible+hidden)");
+    s.wireframe = true;
+    if (request.edges.empty())
+      s.raster_edges.edges = view::vector_options::edges_kind::visible_hidden;
+    if (s.raster_edges.edges == view::vector_options::edges_kind::none)
+      throw usage_error("render: --wireframe needs edges (--edges none was given)");
   }
   view::frame f = scene::make_frame(s);
   const double load_seconds =
@@ -174,7 +182,11 @@ render_summary render_command(const render_request& request, std::ostream& log) 
     log << "exbsp: warning: " << s.path << ": /effects/" << name
         << ": applies to PNG output only; ignored for " << out << "\n";
   const bool curves = !s.curves.empty();
-  const view::pipeline per_view = view::per_view_pipeline(s.effects, kind, curves);
+  view::pipeline per_view = view::per_view_pipeline(s.effects, kind, curves);
+  // A PNG's edges: drawn over the finished picture (its effects included), before placement.
+  const bool raster_edges = kind == view::output_kind::png &&
+                            s.raster_edges.edges != view::vector_options::edges_kind::none;
+  if (raster_edges) per_view.add("edges", view::raster_edges_stage);
   std::ostream* stage_log = request.verbose ? &log : nullptr;
 
   if (request.verbose) {
@@ -197,8 +209,8 @@ render_summary render_command(const render_request& request, std::ostream& log) 
       for (const view::stage& st : per_view.stages()) p.add(st.name, st.run);
     } else {
       p.add("reject", view::mesh_reject_stage);
-      const view::pipeline standard = view::standard_pipeline(s.effects, kind, curves);
-      for (const view::stage& st : standard.stages()) p.add(st.name, st.run);
+      p.add("build", view::build_stage);
+      for (const view::stage& st : per_view.stages()) p.add(st.name, st.run);
     }
     if (f.view.needs_placement()) p.add("place", view::place_stage);
     const view::stage w = write_stage(out, format);

@@ -60,9 +60,12 @@ struct render_request {
   /// scene::mesh_scene(tree.input())): drawn as it is, not rebuilt ("adopt" replaces "reject"
   /// and "build"); `kernel` and `max_fragments` do not apply.
   std::optional<bsp> tree;
-  /// SVG/PDF edges, overriding the scene's "svg" "edges" (`--edges`): "none", "visible" or
-  /// "visible+hidden"; empty: the scene's.
+  /// The edges, overriding the scene's "svg" "edges" (SVG, PDF) or "raster" "edges" (PNG)
+  /// (`--edges`): "none", "visible" or "visible+hidden"; empty: the scene's.
   std::string edges;
+  /// PNG only: a wireframe (every feature edge solid on the background, no faces); edges
+  /// default visible+hidden. Refused for SVG and PDF.
+  bool wireframe = false;
 };
 
 /// What a render did, for the one-line summary the command line prints.

@@ -146,41 +146,46 @@ void parse_curves(const reader& r, const json& doc, scene& s) {
   });
 }
 
-/// "svg": {"mode", "edges", "crease_deg"} (docs/contract.md "Pixels"; also used for PDF output).
-void parse_vector(const reader& r, const json& doc, scene& s) {
-  const json* v = r.optional(doc, "svg");
+/// "svg": {"mode", "edges", "crease_deg"} (docs/contract.md "Pixels"; also used for PDF output)
+/// into `out`; with `name` "raster" ({"edges", "crease_deg"}, the PNG's edges) there is no mode.
+void parse_vector(const reader& r, const json& doc, const char* name, view::vector_options& out) {
+  const json* v = r.optional(doc, name);
   if (!v) return;
-  r.object(*v, "/svg");
-  r.reject_unknown(*v, "/svg", "svg", {"mode", "edges", "crease_deg"});
-  auto text = [&](const char* name) -> std::string {
-    const json& t = (*v)[name];
+  const std::string key = std::string("/") + name;
+  const bool svg = key == "/svg";
+  r.object(*v, key);
+  if (svg)
+    r.reject_unknown(*v, key, name, {"mode", "edges", "crease_deg"});
+  else
+    r.reject_unknown(*v, key, name, {"edges", "crease_deg", "wireframe"});
+  auto text = [&](const char* member) -> std::string {
+    const json& t = (*v)[member];
     if (!t.is_string())
-      r.fail(std::string("/svg/") + name,
-             std::string("must be a string (got ") + t.type_name() + ")");
+      r.fail(key + "/" + member, std::string("must be a string (got ") + t.type_name() + ")");
     return t.get<std::string>();
   };
-  if (r.optional(*v, "mode")) {
+  if (svg && r.optional(*v, "mode")) {
     const std::string m = text("mode");
     if (m == "visible")
-      s.vector.mode = view::vector_options::mode_kind::visible;
+      out.mode = view::vector_options::mode_kind::visible;
     else if (m == "painter")
-      s.vector.mode = view::vector_options::mode_kind::painter;
+      out.mode = view::vector_options::mode_kind::painter;
     else
-      r.fail("/svg/mode", "unknown mode \"" + m + "\" (expected visible or painter)");
+      r.fail(key + "/mode", "unknown mode \"" + m + "\" (expected visible or painter)");
   }
   if (r.optional(*v, "edges")) {
     const std::string e = text("edges");
     if (const auto kind = view::edges_kind_named(e))
-      s.vector.edges = *kind;
+      out.edges = *kind;
     else
-      r.fail("/svg/edges",
+      r.fail(key + "/edges",
              "unknown edges \"" + e + "\" (expected " + view::edges_kind_names() + ")");
   }
   if (const json* c = r.optional(*v, "crease_deg")) {
-    const double d = r.number(*c, "/svg/crease_deg");
+    const double d = r.number(*c, key + "/crease_deg");
     if (!(d > 0 && d <= 180))
-      r.fail("/svg/crease_deg", "must be in (0, 180] (got " + number_text(d) + ")");
-    s.vector.crease_deg = d;
+      r.fail(key + "/crease_deg", "must be in (0, 180] (got " + number_text(d) + ")");
+    out.crease_deg = d;
   }
 }
 
@@ -315,7 +320,7 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   r.warn_unknown(
       doc, "",
       {"meshes", "groups", "curves", "lines", "camera", "projection", "viewport", "image", "aspect",
-       "background", "effects", "trackball", "svg", "clip_planes", "caps", "drawing"});
+       "background", "effects", "trackball", "svg", "raster", "clip_planes", "caps", "drawing"});
   scene s;
   s.path = path;
   detail::parse_mesh_tree(r, doc, path, s);
@@ -332,7 +337,19 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
   detail::parse_trackball(r, doc, s);
   if (const json* b = r.optional(doc, "background")) s.background = r.color(*b, "/background");
   parse_effects(r, doc, s);
-  parse_vector(r, doc, s);
+  parse_vector(r, doc, "svg", s.vector);
+  parse_vector(r, doc, "raster", s.raster_edges);
+  if (const json* raster = r.optional(doc, "raster"))
+    if (const json* w = r.optional(*raster, "wireframe")) {
+      if (!w->is_boolean())
+        r.fail("/raster/wireframe",
+               std::string("must be true or false (got ") + w->type_name() + ")");
+      s.wireframe = w->get<bool>();
+      if (s.wireframe && !r.optional(*raster, "edges"))
+        s.raster_edges.edges = view::vector_options::edges_kind::visible_hidden;
+      if (s.wireframe && s.raster_edges.edges == view::vector_options::edges_kind::none)
+        r.fail("/raster/wireframe", "a wireframe needs edges (\"edges\" is \"none\")");
+    }
   parse_clip_planes(r, doc, s);
   parse_drawing(r, doc, s);
   make_view_setup(s);  // reject cameras and projections whose matrices overflow, before any work
@@ -487,6 +504,8 @@ view::frame make_frame(const scene& s) {
   f.curves = s.curves;
   f.mesh_face_offsets = std::move(geometry.face_offsets);
   f.vector = s.vector;
+  f.raster_edges = s.raster_edges;
+  f.wireframe = s.wireframe;
   return f;
 }
 

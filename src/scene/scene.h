@@ -145,8 +145,13 @@ struct scene {
   int viewport_x = 0, viewport_y = 0;         ///< glViewport x, y (from the image's lower left)
   int image_width = 0, image_height = 0;      ///< "image" (default: the viewport's size)
   aspect_policy aspect = aspect_policy::stretch;
-  std::string trackball = "arcball";               ///< "arcball" or "virtual" (orbit drags)
-  view::vector_options vector;                     ///< "svg": vector output options (SVG and PDF)
+  std::string trackball = "arcball";  ///< "arcball" or "virtual" (orbit drags)
+  view::vector_options vector;        ///< "svg": vector output options (SVG and PDF)
+  /// "raster": the feature edges drawn over a PNG ("edges", "crease_deg"; default none) and
+  /// "wireframe" (true: those edges alone, hidden ones solid; edges default visible+hidden).
+  bool wireframe = false;
+  view::vector_options raster_edges{view::vector_options::mode_kind::visible,
+                                    view::vector_options::edges_kind::none, 30};
   std::vector<std::array<double, 4>> clip_planes;  ///< "clip_planes" (A, B, C, D), keep >= 0
   bool caps = false;                               ///< "caps" present: draw the cut faces
   view::rgb8 cap_color{200, 60, 50};               ///< "caps": {"color"}

@@ -59,7 +59,15 @@ struct frame {
   /// Front-to-back bands painted in parallel (0: one per core). Default 1: on the shared 2-core
   /// machine of bench/RESULTS.md section 3, two bands were slower than one.
   unsigned raster_threads = 1;
-  vector_options vector;                ///< SVG / PDF: visible regions or painter's stack, edges
+  vector_options vector;  ///< SVG / PDF: visible regions or painter's stack, edges
+  /// PNG: the feature edges the "edges" stage draws over the picture (raster_edges_stage in
+  /// stages.h): `edges` and `crease_deg` as for SVG, the same exact visibility; `mode` unused.
+  /// Default: none, and no stage.
+  vector_options raster_edges{vector_options::mode_kind::visible, vector_options::edges_kind::none,
+                              30};
+  /// PNG: the "edges" stage draws its edges on the background alone, hidden ones solid like
+  /// the visible ones: a wireframe (CAD's display mode: every feature edge, no faces).
+  bool wireframe = false;
   vector_phase_seconds vector_seconds;  ///< svg / pdf stage (visible regions): phase times
   /// Called with each stage's name as it starts (pipeline::run), e.g. for a progress line;
   /// may be empty.

@@ -44,6 +44,14 @@ EXBSP_EXPORT std::string transform_clip_stage(frame& f);
 /// otherwise or there are lines (effective_paint_order).
 EXBSP_EXPORT std::string raster_stage(frame& f);
 
+/// "edges" (PNG, after the raster and its effects, before "place"): the feature edges of
+/// f.raster_edges drawn over f.picture, the same paths as the SVG's (edge_paths.h: exact
+/// visibility, visible solid, hidden dashed, the SVG's widths and colours), stroked
+/// anti-aliased by cairo. With f.wireframe the picture is first cleared to the background and
+/// hidden edges are drawn solid. Throws usage_error when crease_deg is outside (0, 180] or cairo
+/// fails.
+EXBSP_EXPORT std::string raster_edges_stage(frame& f);
+
 /// "svg": f.svg = the SVG document: the visible-region drawing of the frame (vector_drawing.h),
 /// or, with f.vector.mode painter, the painter's stack of f.polygons and f.lines (svg_writer.h).
 EXBSP_EXPORT std::string svg_stage(frame& f);

@@ -44,13 +44,18 @@ class render_subcommand final : public command {
     sub->add_option("--size", size_, "a mesh's image size WIDTHxHEIGHT in pixels")
         ->capture_default_str();
     sub->add_option("--edges", edges_,
-                    "edges in SVG/PDF output: none, visible or visible+hidden (a mesh's default: "
-                    "visible; on a scene it overrides \"svg\" \"edges\"; refused for PNG)")
+                    "feature edges: none, visible or visible+hidden (hidden ones dashed); SVG/PDF: "
+                    "a mesh's default is visible, on a scene it overrides \"svg\" \"edges\"; "
+                    "PNG: drawn over the shaded picture (default none; on a scene it overrides "
+                    "\"raster\" \"edges\")")
         ->check(CLI::IsMember({"none", "visible", "visible+hidden"}))
         ->capture_default_str();
     sub->add_option("--kernel", kernel_, render_kernel_help())
         ->check(CLI::IsMember(kernel_names()));
     sub->add_option("--max-fragments", max_fragments_, max_fragments_help())->check(not_negative());
+    sub->add_flag("--wireframe", wireframe_,
+                  "PNG: every feature edge drawn solid on the background, no faces (CAD's "
+                  "wireframe; --edges visible keeps only the visible ones)");
     sub->add_flag("--strict", strict_, "unknown scene keys are errors (exit 2), not warnings");
     sub->add_flag("-v,--verbose", verbose_, "print the pipeline stages that ran and their timings");
     sub->add_flag("-q,--quiet", quiet_, "no progress line and no summary line");
@@ -90,10 +95,11 @@ class render_subcommand final : public command {
                                                                           : parse_kernel(kernel_));
     const bool scene_input = input_.empty() || has_extension(input_, ".json");
     const std::string what = input_.empty() ? std::string("the demo scene") : "the scene " + input_;
-    if (sub->count("--edges") > 0) request.edges = edges_;  // refused for PNG output
+    if (sub->count("--edges") > 0) request.edges = edges_;  // SVG/PDF: "svg"; PNG: "raster"
+    request.wireframe = wireframe_;
     if (scene_input) {
       // A scene sets its own camera and viewport: --view and --size are a mesh's. --edges
-      // overrides the scene's "svg" "edges" (docs/contract.md "Command line").
+      // overrides the scene's "svg" or "raster" "edges" (docs/contract.md "Command line").
       if (!format_.empty()) throw usage_error("--format applies to a mesh input, not to " + what);
       if (sub->count("--view") > 0)
         throw usage_error("--view chooses a mesh's fitted view; " + what +
@@ -161,6 +167,7 @@ class render_subcommand final : public command {
  private:
   std::string input_;  ///< scene (.json), mesh, '-' or empty (the demo)
   std::string output_ = "exbsp.png";
+  bool wireframe_ = false;
   std::string format_, view_ = "iso", size_ = "800x600", edges_ = "visible";
   std::string orbit_drag_, trackball_, kernel_;
   std::size_t frames_ = 0;
