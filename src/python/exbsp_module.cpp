@@ -500,8 +500,9 @@ py::dict drawing(const py::object& input, const py::object& outputs, const py::o
 py::object render_tree(const exbsp::bsp& tree, int width, int height, const std::string& view,
                        const std::optional<exbsp::vec3d>& eye,
                        const std::optional<exbsp::vec3d>& look_at, const exbsp::vec3d& up,
-                       double fovy_deg, const std::string& format, const std::string& edges,
-                       const std::array<int, 3>& color, const std::array<int, 3>& background) {
+                       double fovy_deg, const std::string& format,
+                       const std::optional<std::string>& edges, const std::array<int, 3>& color,
+                       const std::array<int, 3>& background) {
   namespace v = exbsp::view;
   if (format != "image" && format != "png" && format != "svg")
     throw usage_error("render: format must be 'image', 'png' or 'svg', got '" + format + "'");
@@ -524,10 +525,11 @@ py::object render_tree(const exbsp::bsp& tree, int width, int height, const std:
                   tree, {v::to_point(*eye), v::to_point(*look_at), v::vector3{up[0], up[1], up[2]}},
                   fovy_deg)
             : v::fit_view(tree.input(), width, height, view);
+    // Edges by default: visible ones in an SVG (a line drawing), none over a picture.
     if (format == "svg")
-      svg = v::render_tree_svg(tree, fitted, width, height, style, edges);
+      svg = v::render_tree_svg(tree, fitted, width, height, style, edges.value_or("visible"));
     else
-      picture = v::render_tree(tree, fitted, width, height, style);
+      picture = v::render_tree(tree, fitted, width, height, style, edges.value_or("none"));
   }
   if (format == "svg") return py::str(svg);
   if (format == "png") {
@@ -695,7 +697,7 @@ PYBIND11_MODULE(_exbsp, m) {
           [](py::handle self, int width, int height, const std::string& view,
              const std::optional<exbsp::vec3d>& eye, const std::optional<exbsp::vec3d>& look_at,
              const exbsp::vec3d& up, double fovy_deg, const std::string& format,
-             const std::string& edges, const std::array<int, 3>& color,
+             const std::optional<std::string>& edges, const std::array<int, 3>& color,
              const std::array<int, 3>& background) {
             return render_tree(tree_of(self), width, height, view, eye, look_at, up, fovy_deg,
                                format, edges, color, background);
@@ -703,7 +705,7 @@ PYBIND11_MODULE(_exbsp, m) {
           py::kw_only(), py::arg("width") = 800, py::arg("height") = 600, py::arg("view") = "iso",
           py::arg("eye") = py::none(), py::arg("look_at") = py::none(),
           py::arg("up") = exbsp::vec3d{0, 1, 0}, py::arg("fovy_deg") = 30.0,
-          py::arg("format") = "image", py::arg("edges") = "visible",
+          py::arg("format") = "image", py::arg("edges") = py::none(),
           py::arg("color") = std::array<int, 3>{176, 190, 214},
           py::arg("background") = std::array<int, 3>{250, 250, 252},
           "The tree painted back to front (painter's algorithm, flat light from over the "
@@ -711,7 +713,9 @@ PYBIND11_MODULE(_exbsp, m) {
           "left, right, top, bottom: the view `exbsp render MESH --view` uses) or by a "
           "perspective camera at `eye` looking at `look_at` (with `up`, `fovy_deg`). format "
           "'image': a (height, width, 3) uint8 array, top row first; 'png': PNG bytes; 'svg': "
-          "the SVG text, with `edges` 'none', 'visible' or 'visible+hidden' (exact visibility).")
+          "the SVG text. `edges` 'none', 'visible' or 'visible+hidden': the feature edges with "
+          "exact visibility, hidden ones dashed (default: 'visible' in an SVG, 'none' over an "
+          "image or PNG, where they are drawn over the shaded faces).")
       .def(py::pickle([](py::handle self) { return py::bytes(tree_of(self).serialize()); },
                       [](const py::bytes& b) {
                         return exbsp::bsp::deserialize(std::string(b), "<pickled exbsp.Tree>");

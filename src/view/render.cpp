@@ -200,8 +200,7 @@ frame tree_frame(const bsp& tree, const fitted_view& view, int width, int height
 /// "none", "visible" or "visible+hidden" (vector_options' names).
 vector_options::edges_kind edges_named(const std::string& name) {
   if (const auto kind = edges_kind_named(name)) return *kind;
-  throw usage_error("render_tree_svg: edges must be " + edges_kind_names() + ", got '" + name +
-                    "'");
+  throw usage_error("render: edges must be " + edges_kind_names() + ", got '" + name + "'");
 }
 
 /// The painted frame of render_tree: its picture and its back-to-front order.
@@ -215,8 +214,16 @@ frame painted(const bsp& tree, const fitted_view& view, int width, int height,
 }  // namespace
 
 image render_tree(const bsp& tree, const fitted_view& view, int width, int height,
-                  const render_style& style) {
-  return std::move(painted(tree, view, width, height, style).picture);
+                  const render_style& style, const std::string& edges) {
+  const vector_options::edges_kind kind = edges_named(edges);
+  if (kind == vector_options::edges_kind::none)
+    return std::move(painted(tree, view, width, height, style).picture);
+  frame f = tree_frame(tree, view, width, height, style);
+  f.soup = tree.input();  // the feature edges are the input mesh's (as in render_tree_svg)
+  f.raster_edges.edges = kind;
+  per_view_pipeline({"lighting"}, output_kind::png).run(f, nullptr);
+  raster_edges_stage(f);
+  return std::move(f.picture);
 }
 
 std::string render_tree_svg(const bsp& tree, const fitted_view& view, int width, int height,

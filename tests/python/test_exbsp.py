@@ -345,3 +345,27 @@ def test_version_and_names():
     assert exbsp.__version__ == exbsp.version and exbsp.version.count(".") == 2
     assert "min-split" in exbsp.HEURISTICS and exbsp.DEFAULT_HEURISTIC in exbsp.HEURISTICS
     assert exbsp.KERNELS[0] == "exact"
+
+
+# --- rendering ----------------------------------------------------------------------------------
+
+
+def test_render_draws_edges_over_the_picture_only_when_asked():
+    v, quads = unit_cube()
+    t = exbsp.build(v, quads)
+    plain = t.render(width=160, height=120)
+    assert plain.shape == (120, 160, 3) and plain.dtype == np.uint8
+    assert np.array_equal(plain, t.render(width=160, height=120, edges="none"))
+    edged = t.render(width=160, height=120, edges="visible+hidden")
+    changed = (edged != plain).any(axis=2)
+    assert changed.sum() > 100
+    # Edges are strokes over the faces: every changed pixel is darker than the plain one.
+    darker = edged.astype(int).sum(axis=2) < plain.astype(int).sum(axis=2)
+    assert (darker | ~changed).all()
+    assert edged.tobytes() != plain.tobytes()
+    png = t.render(width=160, height=120, format="png", edges="visible")
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    assert 'id="visible-edges"' in t.render(format="svg")  # the SVG's default: visible edges
+    assert "visible-edges" not in t.render(format="svg", edges="none")
+    with pytest.raises(exbsp.UsageError, match="edges must be"):
+        t.render(edges="all")

@@ -72,9 +72,10 @@ struct render_style {
 /// The picture of a built tree seen by `view` (a fitted view, or any perspective camera with
 /// its field of view, near and far distances and light) in a width x height image. The tree
 /// is shared, not copied (bsp copies share it). usage_error for a size outside 1..16384 or a
-/// camera gluLookAt refuses.
+/// camera gluLookAt refuses. `edges` "visible" or "visible+hidden" draws the feature edges of
+/// render_tree_svg over the picture (they need bsp::input(), as there); default "none".
 EXBSP_EXPORT image render_tree(const bsp& tree, const fitted_view& view, int width, int height,
-                               const render_style& style = {});
+                               const render_style& style = {}, const std::string& edges = "none");
 
 /// The same view as an SVG document: visible regions and visible feature edges
 /// (docs/contract.md's exact edge visibility), `edges` "none", "visible" or "visible+hidden";

@@ -86,7 +86,7 @@ class Tree:
         up: Vec3 = ...,
         fovy_deg: float = ...,
         format: Literal["image"] = ...,
-        edges: str = ...,
+        edges: Optional[str] = ...,
         color: RGB = ...,
         background: RGB = ...,
     ) -> npt.NDArray[np.uint8]: ...
@@ -102,7 +102,7 @@ class Tree:
         up: Vec3 = ...,
         fovy_deg: float = ...,
         format: Literal["png"],
-        edges: str = ...,
+        edges: Optional[str] = ...,
         color: RGB = ...,
         background: RGB = ...,
     ) -> bytes: ...
@@ -118,7 +118,7 @@ class Tree:
         up: Vec3 = ...,
         fovy_deg: float = ...,
         format: Literal["svg"],
-        edges: str = ...,
+        edges: Optional[str] = ...,
         color: RGB = ...,
         background: RGB = ...,
     ) -> str: ...
