@@ -33,6 +33,8 @@ for name in effects_lighting effects_fog effects_dof effects_antialias; do
   "$exbsp" render "$tmp/$name.json" -o "$out/${name}_without.png"
   echo "wrote images/$name.png and images/${name}_without.png"
 done
+"$exbsp" render "$here/effects_highlights.json" -o "$out/effects_highlights.png"
+echo "wrote images/effects_highlights.png"
 "$exbsp" render "$here/curves.json" -o "$out/curves.png"
 without "$here/curves.json" curves "$tmp/curves.json"
 "$exbsp" render "$tmp/curves.json" -o "$out/curves_without.png"

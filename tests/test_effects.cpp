@@ -119,6 +119,28 @@ TEST(EffectParsing, EveryErrorNamesTheEffectOrParameterKey) {
       {"lighting two_sided a number",
        {{"lighting", {{"two_sided", 1}}}},
        "/effects/lighting/two_sided"},
+      {"lighting headlight and direction",
+       {{"lighting", {{"headlight", true}, {"direction", {0, 0, 1}}}}},
+       "/effects/lighting/direction"},
+      {"lighting direction overflows",
+       {{"lighting", {{"direction", {1e200, 0, 0}}}}},
+       "/effects/lighting/direction"},
+      {"lighting specular negative",
+       {{"lighting", {{"specular", -1}}}},
+       "/effects/lighting/specular"},
+      {"lighting lights not an array", {{"lighting", {{"lights", 3}}}}, "/effects/lighting/lights"},
+      {"lighting light with two kinds",
+       {{"lighting", {{"lights", {{{"direction", {0, 0, 1}}, {"position", {0, 0, 1}}}}}}}},
+       "/effects/lighting/lights/0"},
+      {"lighting light of no kind",
+       {{"lighting", {{"lights", {{{"intensity", 1}}}}}}},
+       "/effects/lighting/lights/0"},
+      {"lighting light unknown key",
+       {{"lighting", {{"lights", {{{"position", {0, 0, 1}}, {"colour", 1}}}}}}},
+       "/effects/lighting/lights/0/colour"},
+      {"lighting nine lights",
+       {{"lighting", {{"lights", std::vector<json>(8, {{"headlight", true}})}}}},
+       "/effects/lighting/lights"},
       {"fog unknown mode", {{"fog", {{"mode", "exp2"}}}}, "/effects/fog/mode"},
       {"fog end before start", {{"fog", {{"start", 10}, {"end", 5}}}}, "/effects/fog/end"},
       {"fog start negative", {{"fog", {{"start", -1}, {"end", 5}}}}, "/effects/fog/start"},
@@ -286,6 +308,17 @@ TEST(NoEffects, FrameProductsOfEffectsStayEmpty) {
 // Lighting
 
 /// A unit square in the plane z = 0, wound so that its normal is +z (or -z), seen from +z.
+/// The main light only: direction, intensity, ambient, two_sided (the other members default).
+lighting_settings lighting(const vector3& direction, double intensity, double ambient,
+                           bool two_sided) {
+  lighting_settings s;
+  s.direction = direction;
+  s.intensity = intensity;
+  s.ambient = ambient;
+  s.two_sided = two_sided;
+  return s;
+}
+
 frame lit_square_frame(bool normal_up) {
   triangle_soup s;
   if (normal_up)
@@ -298,18 +331,18 @@ frame lit_square_frame(bool normal_up) {
 
 TEST(Lighting, FaceTowardsTheLightGetsAmbientPlusIntensityAndAwayGetsAmbient) {
   frame f = lit_square_frame(true);
-  f.settings.lighting = {{0, 0, 5}, 0.6, 0.3, true};  // any length: normalised
+  f.settings.lighting = lighting({0, 0, 5}, 0.6, 0.3, true);  // any length: normalised
   run(f, {"lighting"});
   EXPECT_EQ(f.picture.pixel(20, 20), (rgb8{180, 90, 45}));  // 200 * 0.9, 100 * 0.9, 50 * 0.9
 
   frame g = lit_square_frame(true);
-  g.settings.lighting = {{0, 0, -1}, 0.6, 0.3, true};  // the light is behind the square
+  g.settings.lighting = lighting({0, 0, -1}, 0.6, 0.3, true);  // the light is behind the square
   run(g, {"lighting"});
   EXPECT_EQ(g.picture.pixel(20, 20), (rgb8{60, 30, 15}));  // ambient only
 
   // At 60 degrees: N . L = 1/2.
   frame h = lit_square_frame(true);
-  h.settings.lighting = {{std::sqrt(3.0), 0, 1}, 0.6, 0.3, true};
+  h.settings.lighting = lighting({std::sqrt(3.0), 0, 1}, 0.6, 0.3, true);
   run(h, {"lighting"});
   EXPECT_EQ(h.picture.pixel(20, 20), (rgb8{120, 60, 30}));  // * (0.3 + 0.3)
 }
@@ -317,17 +350,17 @@ TEST(Lighting, FaceTowardsTheLightGetsAmbientPlusIntensityAndAwayGetsAmbient) {
 TEST(Lighting, TwoSidedFacesTheViewerAndOneSidedKeepsTheWinding) {
   // The square's winding normal points away from the viewer (-z); the light is at +z.
   frame two = lit_square_frame(false);
-  two.settings.lighting = {{0, 0, 1}, 0.6, 0.3, true};
+  two.settings.lighting = lighting({0, 0, 1}, 0.6, 0.3, true);
   run(two, {"lighting"});
   EXPECT_EQ(two.picture.pixel(20, 20), (rgb8{180, 90, 45}));
   frame one = lit_square_frame(false);
-  one.settings.lighting = {{0, 0, 1}, 0.6, 0.3, false};
+  one.settings.lighting = lighting({0, 0, 1}, 0.6, 0.3, false);
   run(one, {"lighting"});
   EXPECT_EQ(one.picture.pixel(20, 20), (rgb8{60, 30, 15}));
 }
 
 TEST(Lighting, ColoursClampAt255AndSplitPiecesShareTheirColour) {
-  EXPECT_EQ(lambert_color({200, 100, 0}, {0, 0, 1}, {{0, 0, 1}, 1.0, 0.5, true}),
+  EXPECT_EQ(lambert_color({200, 100, 0}, {0, 0, 1}, lighting({0, 0, 1}, 1.0, 0.5, true)),
             (rgb8{255, 150, 0}));
   // The cyclic planks force a split: every piece of a face gets the same colour.
   triangle_soup s;
@@ -340,15 +373,94 @@ TEST(Lighting, ColoursClampAt255AndSplitPiecesShareTheirColour) {
           {cx + 2.1 * t * ux + 0.3 * w * nx, cy + 2.1 * t * uy + 0.3 * w * ny, 0.25 * 2.1 * t});
     add_quad(s, v[0], v[1], v[2], v[3]);
   }
-  frame f = perspective_frame(std::move(s), {{250, 0, 0}, {0, 250, 0}, {0, 0, 250}},
-                              {{0.3, -2, 8}, {0, 0, 0}, {0, 1, 0}}, 100, 100);
-  f.settings.lighting = {{0.3, -0.2, 1}, 0.7, 0.2, true};
-  run(f, {"lighting"});
-  ASSERT_GT(f.tree->stats().splits, 0u);
-  std::vector<std::set<std::tuple<int, int, int>>> by_face(3);
-  for (const screen_polygon& p : f.polygons)
-    by_face[p.face].insert({p.color.r, p.color.g, p.color.b});
-  for (const auto& colours : by_face) EXPECT_EQ(colours.size(), 1u);
+  // Also with a headlight, a point light and highlights, which depend on the face's place.
+  lighting_settings placed = lighting({0.3, -0.2, 1}, 0.5, 0.2, true);
+  placed.headlight = true;
+  placed.specular = 0.5;
+  placed.lights.push_back({light_source::kind_type::point, {1, -1, 3}, 0.4});
+  for (const lighting_settings& light : {lighting({0.3, -0.2, 1}, 0.7, 0.2, true), placed}) {
+    frame f = perspective_frame(s, {{250, 0, 0}, {0, 250, 0}, {0, 0, 250}},
+                                {{0.3, -2, 8}, {0, 0, 0}, {0, 1, 0}}, 100, 100);
+    f.settings.lighting = light;
+    run(f, {"lighting"});
+    ASSERT_GT(f.tree->stats().splits, 0u);
+    std::vector<std::set<std::tuple<int, int, int>>> by_face(3);
+    for (const screen_polygon& p : f.polygons)
+      by_face[p.face].insert({p.color.r, p.color.g, p.color.b});
+    for (const auto& colours : by_face) EXPECT_EQ(colours.size(), 1u) << light.headlight;
+  }
+}
+
+/// lit_color for a face with normal +z at the origin seen from (0, 0, 4) (view_setup of a
+/// lit_square_frame).
+rgb8 lit_at_origin(const lighting_settings& s, rgb8 base = {100, 50, 0}) {
+  const frame f = lit_square_frame(true);
+  return lit_color(base, {0, 0, 1}, {0, 0, 0}, f.view, s);
+}
+
+TEST(Lighting, WithoutExtrasTheColourIsLambertsExactly) {
+  const frame f = lit_square_frame(true);
+  const lighting_settings s = lighting({0.3, -0.2, 1}, 0.7, 0.2, true);
+  for (const vector3& n : {vector3{0, 0, 1}, vector3{0.6, 0, 0.8}, vector3{0, -1, 0}})
+    EXPECT_EQ(lit_color({200, 100, 50}, n, {0.5, 0.25, 0}, f.view, s),
+              lambert_color({200, 100, 50}, n, s));
+}
+
+TEST(Lighting, BlinnPhongHighlightsFollowTheHalfVector) {
+  lighting_settings s = lighting({0, 0, 1}, 0.5, 0.2, true);
+  s.specular = 0.4;
+  s.shininess = 4;
+  // L = V = N: N . H = 1, so 100 * (0.2 + 0.5) + 255 * 0.5 * 0.4 = 121 (and 86, 51).
+  EXPECT_EQ(lit_at_origin(s), (rgb8{121, 86, 51}));
+  // L at 45 degrees from N in the xz plane, V = N: H lies at 22.5 degrees.
+  s.direction = {1, 0, 1};
+  const double diffuse = 0.2 + 0.5 * std::cos(M_PI / 4);
+  const double highlight = 255 * 0.5 * 0.4 * std::pow(std::cos(M_PI / 8), 4);
+  EXPECT_EQ(lit_at_origin(s),
+            (rgb8{static_cast<std::uint8_t>(std::lround(100 * diffuse + highlight)),
+                  static_cast<std::uint8_t>(std::lround(50 * diffuse + highlight)),
+                  static_cast<std::uint8_t>(std::lround(highlight))}));
+  // A light behind the face gives no highlight: ambient only.
+  s.direction = {0, 0, -1};
+  EXPECT_EQ(lit_at_origin(s), (rgb8{20, 10, 0}));
+}
+
+TEST(Lighting, HeadlightsAndPointLightsTakeTheirDirectionFromTheFragment) {
+  lighting_settings s =
+      lighting({0, 0, -1}, 0.6, 0.3, true);  // a main light behind the face: ambient
+  EXPECT_EQ(lit_at_origin(s), (rgb8{30, 15, 0}));
+  s.headlight = true;  // from the eye at (0, 0, 4): N . L = 1
+  EXPECT_EQ(lit_at_origin(s), (rgb8{90, 45, 0}));
+  s.headlight = false;
+  // A point light at (2, 0, 2) seen from the origin: N . L = cos 45 degrees.
+  s.lights.push_back({light_source::kind_type::point, {2, 0, 2}, 0.5});
+  const double k = 0.3 + 0.5 * std::cos(M_PI / 4);
+  EXPECT_EQ(lit_at_origin(s), (rgb8{static_cast<std::uint8_t>(std::lround(100 * k)),
+                                    static_cast<std::uint8_t>(std::lround(50 * k)), 0}));
+  // A second, directional one adds its term; a point light in the face's plane adds nothing.
+  s.lights.push_back({light_source::kind_type::directional, {0, 0, 3}, 0.1});
+  s.lights.push_back({light_source::kind_type::point, {0, 0, 0}, 0.9});
+  const double k2 = k + 0.1;
+  EXPECT_EQ(lit_at_origin(s), (rgb8{static_cast<std::uint8_t>(std::lround(100 * k2)),
+                                    static_cast<std::uint8_t>(std::lround(50 * k2)), 0}));
+}
+
+TEST(Lighting, AHeadlightLightsTheSideTheViewerSees) {
+  // The eye is at +z; a directional light from -z leaves the (two-sided) face in its ambient
+  // light, as an orbit to the unlit side does; a headlight lights it.
+  frame dark = lit_square_frame(false);
+  dark.settings.lighting = lighting({0, 0, -1}, 0.6, 0.3, true);
+  run(dark, {"lighting"});
+  EXPECT_EQ(dark.picture.pixel(20, 20), (rgb8{60, 30, 15}));
+  frame lit = lit_square_frame(false);
+  lit.settings.lighting = lighting({0, 0, 1}, 0.6, 0.3, true);
+  lit.settings.lighting.headlight = true;
+  run(lit, {"lighting"});
+  // The face's centroid (the mean of its two triangles' centroids) is the origin: N . V = 1,
+  // and both triangles of the square get 200 * (0.3 + 0.6) = 180, the same colour.
+  EXPECT_EQ(lit.picture.pixel(20, 20), (rgb8{180, 90, 45}));
+  EXPECT_EQ(lit.picture.pixel(12, 27), (rgb8{180, 90, 45}));
+  EXPECT_EQ(lit.picture.pixel(27, 12), (rgb8{180, 90, 45}));
 }
 
 // ---------------------------------------------------------------------------------------

@@ -28,22 +28,67 @@ void no_parameters(const reader& r, const json& params, const std::string& key, 
 
 /// "lighting" parameters into out.lighting; scene_error names the bad key. Parameters and
 /// defaults: direction [0,0,1] (towards the light, not zero), intensity 0.8 (>= 0), ambient
-/// 0.2 (>= 0), two_sided true.
+/// 0.2 (>= 0), two_sided true, headlight false, specular 0 (>= 0), shininess 32 (>= 0), lights
+/// [] (at most max_lights - 1 objects, each one of "direction" (not zero), "position" or
+/// "headlight": true, and "intensity", default 0.8).
 void parse_lighting_parameters(const reader& r, const json& p, const std::string& key,
                                const effect_scene&, effect_settings& out) {
   lighting_settings& l = out.lighting;
-  r.reject_unknown(p, key, "lighting", {"direction", "intensity", "ambient", "two_sided"});
-  if (const json* v = r.optional(p, "direction")) {
-    l.direction = r.triple(*v, key + "/direction");
-    if (!(view::length(l.direction) > 0)) r.fail(key + "/direction", "must not be the zero vector");
-  }
+  r.reject_unknown(p, key, "lighting",
+                   {"direction", "intensity", "ambient", "two_sided", "headlight", "specular",
+                    "shininess", "lights"});
+  // A direction or position whose length is zero or overflows cannot be normalised.
+  const auto vector_at = [&](const json& v, const std::string& at, bool zero_ok) {
+    const view::vector3 d = r.triple(v, at);
+    const double length = view::length(d);
+    if (!std::isfinite(length)) r.fail(at, "too large: its length overflows a double");
+    if (!zero_ok && !(length > 0)) r.fail(at, "must not be the zero vector");
+    return d;
+  };
+  if (const json* v = r.optional(p, "direction"))
+    l.direction = vector_at(*v, key + "/direction", false);
   if (const json* v = r.optional(p, "intensity"))
     l.intensity = r.positive(*v, key + "/intensity", true);
   if (const json* v = r.optional(p, "ambient")) l.ambient = r.positive(*v, key + "/ambient", true);
-  if (const json* v = r.optional(p, "two_sided")) {
-    if (!v->is_boolean()) r.fail(key + "/two_sided", "must be true or false");
-    l.two_sided = v->get<bool>();
-  }
+  const auto flag = [&](const json& obj, const std::string& at, const char* name, bool& out) {
+    if (const json* v = r.optional(obj, name)) {
+      if (!v->is_boolean()) r.fail(at + "/" + name, "must be true or false");
+      out = v->get<bool>();
+    }
+  };
+  flag(p, key, "two_sided", l.two_sided);
+  flag(p, key, "headlight", l.headlight);
+  if (l.headlight && p.contains("direction"))
+    r.fail(key + "/direction", "a headlight comes from the eye: give direction or headlight");
+  if (const json* v = r.optional(p, "specular"))
+    l.specular = r.positive(*v, key + "/specular", true);
+  if (const json* v = r.optional(p, "shininess"))
+    l.shininess = r.positive(*v, key + "/shininess", true);
+  r.for_each_entry(p, key, "lights", [&](const json& e, const std::string& at) {
+    if (l.lights.size() + 1 >= view::max_lights)
+      r.fail(key + "/lights", "at most " + std::to_string(view::max_lights - 1) + " more lights (" +
+                                  std::to_string(view::max_lights) +
+                                  " in all, as OpenGL's GL_MAX_LIGHTS)");
+    const json& entry = r.object(e, at);
+    r.reject_unknown(entry, at, "light", {"direction", "position", "headlight", "intensity"});
+    view::light_source light;
+    bool head = false;
+    flag(entry, at, "headlight", head);
+    const int given = entry.contains("direction") + entry.contains("position") + head;
+    if (given != 1)
+      r.fail(at, "give exactly one of \"direction\", \"position\" or \"headlight\": true");
+    if (const json* v = r.optional(entry, "direction")) {
+      light.where = vector_at(*v, at + "/direction", false);
+    } else if (const json* v = r.optional(entry, "position")) {
+      light.kind = view::light_source::kind_type::point;
+      light.where = vector_at(*v, at + "/position", true);
+    } else {
+      light.kind = view::light_source::kind_type::headlight;
+    }
+    if (const json* v = r.optional(entry, "intensity"))
+      light.intensity = r.positive(*v, at + "/intensity", true);
+    l.lights.push_back(light);
+  });
 }
 
 /// "fog" parameters into out.fog; scene_error names the bad key. Parameters and defaults:

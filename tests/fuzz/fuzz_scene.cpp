@@ -151,6 +151,12 @@ void check_effect_settings(const exbsp::scene::scene& s) {
             "light direction finite, not zero");
     require(finite(l.intensity) && l.intensity >= 0, "light intensity finite, >= 0");
     require(finite(l.ambient) && l.ambient >= 0, "ambient finite, >= 0");
+    require(finite(l.specular) && l.specular >= 0 && finite(l.shininess) && l.shininess >= 0,
+            "specular and shininess finite, >= 0");
+    require(l.lights.size() < exbsp::view::max_lights, "at most max_lights lights in all");
+    for (const exbsp::view::light_source& light : l.lights)
+      require(finite(light.where) && finite(light.intensity) && light.intensity >= 0,
+              "each light finite, intensity >= 0");
   }
   if (enabled(s, "fog")) {
     const exbsp::view::fog_settings& f = es.fog;

@@ -7,6 +7,9 @@
 // Notation: world units are the units of the scene's coordinates; "eye distance" is measured
 // from the camera's eye point; colours are 0..255 per channel.
 #pragma once
+#include <cstddef>
+#include <vector>
+
 #include <exbsp/core/export.h>
 #include <exbsp/view/image.h>
 #include <exbsp/view/matrix.h>
@@ -14,10 +17,25 @@
 
 namespace exbsp::view {
 
-/// "lighting": flat Lambert shading from one directional light,
-///   colour = base * (ambient + intensity * max(0, N . L)), clamped to 255 and rounded,
-/// N the unit face normal, L = direction / |direction| (pointing from the surface TOWARDS
-/// the light, as OpenGL's GL_POSITION (x, y, z, 0)).
+/// One more light of "lighting" ("lights"): directional (towards the light, as OpenGL's
+/// GL_POSITION (x, y, z, 0)), a point at `where` (GL_POSITION (x, y, z, 1), world space: L
+/// points from the face's centroid to it, no attenuation) or a headlight (L = V).
+struct light_source {
+  enum class kind_type { directional, point, headlight };
+  kind_type kind = kind_type::directional;
+  vector3 where{0, 0, 1};  ///< the direction, or the point's position (as a vector from 0)
+  double intensity = 0.8;  ///< >= 0
+};
+
+/// "lighting": flat shading, one colour per fragment,
+///   colour = base * (ambient + sum_i intensity_i * max(0, N . L_i))
+///            + 255 * sum_i [N . L_i > 0] intensity_i * specular * max(0, N . H_i)^shininess,
+/// per channel, clamped to 255 and rounded. N is the unit face normal, V the unit vector from
+/// the face's centroid toward the eye (parallel views: toward the viewer), H_i = the unit
+/// half vector of L_i and V (Blinn-Phong; white highlights). The lights: the main one,
+/// L = direction / |direction| (pointing from the surface TOWARDS the light, as OpenGL's
+/// GL_POSITION (x, y, z, 0)), or L = V with `headlight`, then those of `lights`. With no
+/// headlight, no specular term and no more lights this is flat Lambert shading.
 struct lighting_settings {
   vector3 direction{0, 0, 1};  ///< towards the light, any length > 0
   double intensity = 0.8;      ///< >= 0
@@ -26,7 +44,14 @@ struct lighting_settings {
   /// false: N = (b - a) x (c - a) as given by the winding, so a face seen from behind is lit
   /// as its front would be.
   bool two_sided = true;
+  bool headlight = false;            ///< the main light comes from the eye (L = V)
+  double specular = 0;               ///< >= 0: the highlights' weight (0: none)
+  double shininess = 32;             ///< >= 0: the highlights' exponent
+  std::vector<light_source> lights;  ///< more lights, at most max_lights - 1
 };
+
+/// Lights a scene may have in all: the main one and "lights" (OpenGL's GL_MAX_LIGHTS).
+constexpr std::size_t max_lights = 8;
 
 /// How fog grows with eye distance d.
 enum class fog_mode {
