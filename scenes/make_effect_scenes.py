@@ -82,27 +82,25 @@ def main():
                 part("gear", grey, ms.compose(gear_t, ms.rotate(7, [0, 0, 1])), baked) +
                 part("shaft", green, gear_t, baked))
 
-    # Lighting: the demo parts in one colour per part, on a floor, lit from the upper left.
-    ms.write_scene("effects_lighting", {
-        "meshes": everything(baked=False) + floor([200, 200, 190], ms.compose(ms.translate(-9, -7, -0.2),
-                                                                              scale(18, 13, 1))),
-        "camera": {"eye": [0.0, -8.5, 11.0], "look_at": [0.0, 0.6, 0.5], "up": [0, 0, 1]},
-        "projection": {"type": "perspective", "fovy_deg": 48, "near": 1, "far": 100},
-        "viewport": small,
-        "background": BACKGROUND,
-        "effects": {"lighting": {"direction": [-0.45, -0.55, 0.7], "intensity": 0.75, "ambient": 0.3}}})
+    def lit_parts(lighting):
+        """The demo parts in one colour per part, on a floor, with the given lighting."""
+        return {
+            "meshes": everything(baked=False) + floor([200, 200, 190], ms.compose(ms.translate(-9, -7, -0.2),
+                                                                                  scale(18, 13, 1))),
+            "camera": {"eye": [0.0, -8.5, 11.0], "look_at": [0.0, 0.6, 0.5], "up": [0, 0, 1]},
+            "projection": {"type": "perspective", "fovy_deg": 48, "near": 1, "far": 100},
+            "viewport": small,
+            "background": BACKGROUND,
+            "effects": {"lighting": lighting}}
 
-    # Highlights: the same parts lit by a headlight (the light follows the camera) and a point
-    # light above the right, with Blinn-Phong highlights.
-    ms.write_scene("effects_highlights", {
-        "meshes": everything(baked=False) + floor([200, 200, 190], ms.compose(ms.translate(-9, -7, -0.2),
-                                                                              scale(18, 13, 1))),
-        "camera": {"eye": [0.0, -8.5, 11.0], "look_at": [0.0, 0.6, 0.5], "up": [0, 0, 1]},
-        "projection": {"type": "perspective", "fovy_deg": 48, "near": 1, "far": 100},
-        "viewport": small,
-        "background": BACKGROUND,
-        "effects": {"lighting": {"headlight": True, "intensity": 0.5, "ambient": 0.25, "specular": 0.3,
-                                 "shininess": 24, "lights": [{"position": [5, -2, 6], "intensity": 0.35}]}}})
+    # Lighting: lit from the upper left.
+    ms.write_scene("effects_lighting",
+                   lit_parts({"direction": [-0.45, -0.55, 0.7], "intensity": 0.75, "ambient": 0.3}))
+    # Highlights: a headlight (the light follows the camera) and a point light above the right,
+    # with Blinn-Phong highlights.
+    ms.write_scene("effects_highlights",
+                   lit_parts({"headlight": True, "intensity": 0.5, "ambient": 0.25, "specular": 0.3,
+                              "shininess": 24, "lights": [{"position": [5, -2, 6], "intensity": 0.35}]}))
 
     # Fog: an avenue of pillars on a long floor, far plane at 40 while the floor runs to 90:
     # without fog the far plane cuts floor and pillars with a hard edge ("pop" when moving).
