@@ -381,7 +381,8 @@ TEST_F(Cli, version_prints_the_library_version_and_no_command_is_a_clear_error) 
   EXPECT_EQ(v.out, std::string("exbsp ") + exbsp::version_string + "\n");
   const result none = run("");
   EXPECT_EQ(none.status, 2);
-  EXPECT_NE(none.err.find("a command is required: build, order, render, section, clip or drawing"),
+  EXPECT_NE(none.err.find(
+                "a command is required: build, order, render, section, clip, drawing or matrices"),
             std::string::npos)
       << none.err;
 }

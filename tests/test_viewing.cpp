@@ -27,6 +27,7 @@
 #include <exbsp/view/projection.h>
 #include <exbsp/view/trackball.h>
 #include <exbsp/view/transforms.h>
+#include "scene/matrices_command.h"
 #include "scene/render.h"
 #include "scene/scene.h"
 #include "view/effects.h"
@@ -697,6 +698,121 @@ TEST(CommandLine, BadNewKeysExit2NamingTheKeyWithNoOutput) {
   std::string err;
   EXPECT_EQ(run("render --trackball spaceball -o '" + dir() + "/x.png'", err), 2);
   EXPECT_FALSE(fs::exists(dir() + "/x.png"));
+}
+
+// ---- exbsp matrices: the course's chains beside OpenGL's -------------------------------------
+
+/// The matrices of scenes/NAME.json.
+scene::scene_matrices scene_matrices_of(const std::string& name) {
+  return scene::matrices_of(
+      scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json"));
+}
+
+const scene::matrix_chain* chain_named(const scene::scene_matrices& m, const std::string& name) {
+  for (const scene::matrix_chain& c : m.chains)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+/// m * p divided by w.
+view::point3 divided(const mat4& m, const view::point3& p) {
+  const view::hpoint h = m * p;
+  return {h.x / h.w, h.y / h.w, h.z / h.w};
+}
+
+TEST(CourseMatrices, TheViewingChainIsOpenGLsWindowMinusHalfAPixelWithZTurned) {
+  for (const std::string name : {"perspective", "frustum", "orthographic"}) {
+    SCOPED_TRACE(name);
+    const scene::scene_matrices m = scene_matrices_of(name);
+    const scene::matrix_chain* gl = chain_named(m, "opengl");
+    const scene::matrix_chain* course = chain_named(m, "viewing");
+    ASSERT_TRUE(gl && course);
+    EXPECT_EQ(course->factors.size(), name == "orthographic" ? 3u : 4u);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> coordinate(-3, 3);
+    for (int i = 0; i < 50; ++i) {
+      const view::point3 p{coordinate(rng), coordinate(rng), coordinate(rng)};
+      const view::point3 w = divided(gl->product, p), s = divided(course->product, p);
+      const double tolerance = 1e-9 * (1 + std::abs(w.x) + std::abs(w.y));
+      EXPECT_NEAR(s.x, w.x - 0.5, tolerance);
+      EXPECT_NEAR(s.y, w.y - 0.5, tolerance);
+      EXPECT_NEAR(s.z, -(2 * w.z - 1), 1e-9 * (1 + std::abs(s.z)));  // depth [0,1] -> ndc, turned
+    }
+  }
+  EXPECT_EQ(chain_named(scene_matrices_of("oblique"), "viewing"), nullptr);
+}
+
+TEST(CourseMatrices, NormalisationTakesTheFrustumsCornersToTheCanonicalParallelVolume) {
+  // perspective.json: the camera and lens written out here from the scene file, not from the
+  // code under test.
+  const std::string path = std::string(EXBSP_SOURCE_DIR) + "/scenes/perspective.json";
+  const nlohmann::json doc = nlohmann::json::parse(exbsp_test::read_file(path));
+  const auto triple = [](const nlohmann::json& a) {
+    return view::vector3{a[0].get<double>(), a[1].get<double>(), a[2].get<double>()};
+  };
+  const view::vector3 eye = triple(doc["camera"]["eye"]), at = triple(doc["camera"]["look_at"]);
+  const view::vector3 up = triple(doc["camera"]["up"]);
+  const double fovy = doc["projection"]["fovy_deg"].get<double>();
+  const double near_dist = doc["projection"]["near"].get<double>();
+  const double far_dist = doc["projection"]["far"].get<double>();
+  const double aspect =
+      doc["viewport"]["width"].get<double>() / doc["viewport"]["height"].get<double>();
+  const view::vector3 gaze = view::normalized(at - eye);
+  const view::vector3 right = view::normalized(view::cross(gaze, up)),
+                      true_up = view::cross(right, gaze);
+  const scene::scene_matrices m = scene::matrices_of(scene::load_scene(path));
+  const scene::matrix_chain* chain = chain_named(m, "normalisation");
+  ASSERT_NE(chain, nullptr);
+  ASSERT_EQ(chain->factors.size(), 5u);
+  EXPECT_EQ(chain->factors[0].name, "Dpersp");
+  for (const double distance : {near_dist, far_dist}) {
+    const double half_h = distance * std::tan(fovy * M_PI / 360), half_w = half_h * aspect;
+    for (const double sx : {-1.0, 1.0})
+      for (const double sy : {-1.0, 1.0}) {
+        const view::vector3 corner =
+            eye + distance * gaze + (sx * half_w) * right + (sy * half_h) * true_up;
+        const view::point3 q = divided(chain->product, {corner.x, corner.y, corner.z});
+        EXPECT_NEAR(q.x, sx, 1e-9);
+        EXPECT_NEAR(q.y, sy, 1e-9);
+        EXPECT_NEAR(q.z, distance == near_dist ? 0.0 : 1.0, 1e-9);  // near at 0, far at 1
+      }
+  }
+  // In between, the depth is OpenGL's window depth (glDepthRange 0, 1).
+  const scene::matrix_chain* gl = chain_named(m, "opengl");
+  const view::vector3 inside = eye + (0.5 * (near_dist + far_dist)) * gaze + 0.3 * right;
+  const view::point3 p{inside.x, inside.y, inside.z};
+  EXPECT_NEAR(divided(chain->product, p).z, divided(gl->product, p).z, 1e-12);
+  // The product of the factors is the product shown.
+  mat4 product = mat4::identity();
+  for (const scene::named_matrix& f : chain->factors) product = product * f.m;
+  EXPECT_EQ(view::max_abs_difference(product, chain->product), 0.0);
+}
+
+TEST(CourseMatrices, TheCommandPrintsTextOrJsonAndNamesWhatItLeavesOut) {
+  const auto run = [&](const std::string& args) {
+    const std::string out = dir() + "/matrices.out";
+    const int raw = std::system(
+        ("'" + std::string(EXBSP_CLI) + "' matrices " + args + " >'" + out + "' 2>/dev/null")
+            .c_str());
+    return std::pair<int, std::string>{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1,
+                                       exbsp_test::read_file(out)};
+  };
+  const std::string scenes = std::string(EXBSP_SOURCE_DIR) + "/scenes/";
+  const auto [status, text] = run("'" + scenes + "perspective.json'");
+  EXPECT_EQ(status, 0);
+  for (const char* name : {"Mviewport", "Mprojection", "Mmodelview", "Mvp", "Morth", "Mp (", "Mv (",
+                           "Dpersp", "Sfar", "Sxy", "Mrot", "Ttrans"})
+    EXPECT_NE(text.find(name), std::string::npos) << name;
+  const auto [json_status, json_text] = run("'" + scenes + "orthographic.json' --json");
+  EXPECT_EQ(json_status, 0);
+  const nlohmann::json doc = nlohmann::json::parse(json_text);
+  EXPECT_EQ(doc["projection"], "orthographic");
+  EXPECT_EQ(doc["chains"].size(), 2u);
+  EXPECT_EQ(doc["chains"][1]["factors"].size(), 3u);  // Mvp, Morth, Mv: no Mp
+  EXPECT_EQ(doc["notes"].size(), 1u);
+  EXPECT_EQ(doc["chains"][0]["product"].size(), 4u);
+  EXPECT_EQ(run("'" + scenes + "no_such_scene.json'").first, 2);
+  EXPECT_EQ(run("").first, 0);  // the demo scene
 }
 
 }  // namespace

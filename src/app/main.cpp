@@ -45,6 +45,10 @@ const exbsp::cli::command_row commands[] = {
      "mesh, a scene or a folder of meshes, "
      "as SVG, PDF or DXF",
      exbsp::cli::make_drawing_command},
+    {"matrices",
+     "print every matrix of a scene's view: OpenGL's and the course's (M = Mvp Morth Mp Mv; "
+     "Dpersp Sfar Sxy Mrot Ttrans), each chain with its product",
+     exbsp::cli::make_matrices_command},
 };
 
 }  // namespace

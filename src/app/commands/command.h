@@ -38,11 +38,12 @@ struct command_row {
   command_factory make;
 };
 
-std::unique_ptr<command> make_build_command(CLI::App& subcommand);    // commands/build.cpp
-std::unique_ptr<command> make_order_command(CLI::App& subcommand);    // commands/order.cpp
-std::unique_ptr<command> make_render_command(CLI::App& subcommand);   // commands/render.cpp
-std::unique_ptr<command> make_section_command(CLI::App& subcommand);  // commands/section.cpp
-std::unique_ptr<command> make_clip_command(CLI::App& subcommand);     // commands/clip.cpp
-std::unique_ptr<command> make_drawing_command(CLI::App& subcommand);  // commands/drawing.cpp
+std::unique_ptr<command> make_build_command(CLI::App& subcommand);     // commands/build.cpp
+std::unique_ptr<command> make_order_command(CLI::App& subcommand);     // commands/order.cpp
+std::unique_ptr<command> make_render_command(CLI::App& subcommand);    // commands/render.cpp
+std::unique_ptr<command> make_section_command(CLI::App& subcommand);   // commands/section.cpp
+std::unique_ptr<command> make_clip_command(CLI::App& subcommand);      // commands/clip.cpp
+std::unique_ptr<command> make_drawing_command(CLI::App& subcommand);   // commands/drawing.cpp
+std::unique_ptr<command> make_matrices_command(CLI::App& subcommand);  // commands/matrices.cpp
 
 }  // namespace exbsp::cli
