@@ -143,10 +143,10 @@ def main():
         "effects": {"antialias": {"samples": 4}}})
 
     # Curves: a helix around the gear and its shaft (in front of and behind them), a curve
-    # piercing the slab, one weaving through the cyclic planks, and a curve drawn on a face.
+    # piercing the slab (with its control polygon), one weaving through the cyclic planks, and a curve drawn on a face.
     curves = [{"bezier": c, "color": [20, 20, 20]} for c in helix((4.6, 0.4), 1.9, -0.1, 1.0, 10)]
     curves.append({"bezier": [[-7.2, -1.2, 2.6], [-5.4, 2.6, 0.0], [-4.0, -2.0, 2.4], [-2.4, 2.4, 0.6]],
-                   "color": [200, 20, 120]})
+                   "color": [200, 20, 120], "control_polygon": {"color": [250, 200, 0]}})
     curves.append({"bezier": [[-2.4, -1.8, 0.3], [-1.0, 3.0, 2.2], [0.6, -3.0, -0.4], [2.4, 2.2, 1.6]],
                    "color": [0, 110, 60]})
     top = 1.0 + 1.0  # the cube's top face z (cube [-1,1]^3 moved up by 1)

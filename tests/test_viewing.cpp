@@ -700,6 +700,88 @@ TEST(CommandLine, BadNewKeysExit2NamingTheKeyWithNoOutput) {
   EXPECT_FALSE(fs::exists(dir() + "/x.png"));
 }
 
+// ---- the lens, the depth range and a curve's control polygon ----------------------------------
+
+TEST(Lens, AWidthAngleAndAnAspectGiveGluPerspectivesMatrix) {
+  json d = base_scene();
+  d["projection"] = {
+      {"type", "perspective"}, {"fovx_deg", 90}, {"aspect", 2}, {"near", 1}, {"far", 100}};
+  // tan(fovy / 2) = tan(45 degrees) / 2: fovy = 2 atan(1/2), GLM's gluPerspective as the oracle.
+  const mat4 expected = from_glm(glm::perspective(2 * std::atan(0.5), 2.0, 1.0, 100.0));
+  EXPECT_LT(view::max_abs_difference(scene::make_view_setup(parse(d)).projection, expected), 1e-12);
+  // The height angle with the viewport's aspect (64 x 48) is the default, as before.
+  const mat4 plain = from_glm(glm::perspective(40 * pi / 180, 64.0 / 48.0, 1.0, 100.0));
+  EXPECT_LT(view::max_abs_difference(scene::make_view_setup(parse(base_scene())).projection, plain),
+            1e-12);
+  // With "aspect": "fit", a perspective window of its own aspect is letterboxed: 64 x 32.
+  d["aspect"] = "fit";
+  const view::view_setup fitted = scene::make_view_setup(parse(d));
+  EXPECT_EQ(fitted.vp.width, 64);
+  EXPECT_EQ(fitted.vp.height, 32);
+  EXPECT_EQ(fitted.place_y, 8);
+  json both = base_scene();
+  both["projection"]["fovx_deg"] = 50;
+  EXPECT_EQ(error_key(both), "/projection/fovx_deg");
+  json none = base_scene();
+  none["projection"].erase("fovy_deg");
+  EXPECT_EQ(error_key(none), "/projection/fovy_deg");
+  json wide = base_scene();
+  wide["projection"].erase("fovy_deg");
+  wide["projection"]["fovx_deg"] = 180;
+  EXPECT_EQ(error_key(wide), "/projection/fovx_deg");
+  json flat = base_scene();
+  flat["projection"]["aspect"] = 0;
+  EXPECT_EQ(error_key(flat), "/projection/aspect");
+}
+
+TEST(DepthRange, GlDepthRangeMapsTheWindowDepthAndLeavesThePictureAlone) {
+  json d = base_scene();
+  d["viewport"]["depth_range"] = {0.25, 0.75};
+  const view::view_setup v = scene::make_view_setup(parse(d));
+  EXPECT_EQ(v.vp.depth_near, 0.25);
+  EXPECT_EQ(v.vp.depth_far, 0.75);
+  // z_w = n + (z_ndc + 1) (f - n) / 2: the near plane at 0.25, the far one at 0.75.
+  EXPECT_DOUBLE_EQ(view::to_window(v.vp, 0, 0, -1).z, 0.25);
+  EXPECT_DOUBLE_EQ(view::to_window(v.vp, 0, 0, 1).z, 0.75);
+  // The painter needs no depth: the PNG is the default range's, with fog too (fog reads the
+  // eye's distance back through the range).
+  for (const bool fog : {false, true}) {
+    json plain = base_scene(), ranged = d;
+    if (fog) plain["effects"] = ranged["effects"] = {{"fog", {{"start", 1}, {"end", 8}}}};
+    const std::string a = dir() + "/plain.png", b = dir() + "/ranged.png";
+    std::ofstream(dir() + "/plain.json") << plain.dump();
+    std::ofstream(dir() + "/ranged.json") << ranged.dump();
+    std::ostringstream log;
+    exbsp::render_command({dir() + "/plain.json", a}, log);
+    exbsp::render_command({dir() + "/ranged.json", b}, log);
+    EXPECT_EQ(exbsp_test::read_file(a), exbsp_test::read_file(b)) << "fog " << fog;
+  }
+  json empty = base_scene();
+  empty["viewport"]["depth_range"] = {0.5, 0.5};
+  EXPECT_EQ(error_key(empty), "/viewport/depth_range");
+  json outside = base_scene();
+  outside["viewport"]["depth_range"] = {0, 2};
+  EXPECT_EQ(error_key(outside), "/viewport/depth_range/1");
+}
+
+TEST(ControlPolygon, ACurveMayShowItsControlPolygonAsALine) {
+  json d = base_scene();
+  d["curves"] = {{{"bezier", {{-1, 0, 0}, {0, 2, 0}, {1, 0, 0}}}, {"control_polygon", true}}};
+  const scene::scene s = parse(d);
+  ASSERT_EQ(s.curves.size(), 2u);
+  EXPECT_TRUE(s.curves[0].polyline);
+  EXPECT_EQ(s.curves[0].control_points, s.curves[1].control_points);
+  EXPECT_EQ(s.curves[0].color, (view::rgb8{150, 150, 150}));
+  EXPECT_FALSE(s.curves[1].polyline);
+  EXPECT_EQ(s.line_count, 1u);
+  d["curves"][0]["control_polygon"] = {{"color", {0, 0, 255}}};
+  EXPECT_EQ(parse(d).curves[0].color, (view::rgb8{0, 0, 255}));
+  d["curves"][0]["control_polygon"] = false;
+  EXPECT_EQ(parse(d).curves.size(), 1u);
+  d["curves"][0]["control_polygon"] = 3;
+  EXPECT_EQ(error_key(d), "/curves/0/control_polygon");
+}
+
 // ---- exbsp matrices: the course's chains beside OpenGL's -------------------------------------
 
 /// The matrices of scenes/NAME.json.

@@ -70,12 +70,12 @@ scene_matrices matrices_of(const scene& s) {
     return out;
   }
   const projection_spec& p = s.projection;
-  const double aspect = static_cast<double>(v.vp.width) / v.vp.height;
   double l = p.left, r = p.right, b = p.bottom, t = p.top;
   if (p.kind == view::projection_kind::perspective) {
-    t = p.near_dist * std::tan(p.fovy_deg * M_PI / 360);
+    const perspective_lens lens = lens_of(p, v.vp.width, v.vp.height);
+    t = p.near_dist * std::tan(lens.fovy_deg * M_PI / 360);
     b = -t;
-    r = t * aspect;
+    r = t * lens.aspect;
     l = -r;
   }
   const double n = -p.near_dist, f = -p.far_dist;

@@ -38,11 +38,19 @@ void parse_projection(const reader& r, const json& doc, scene& s) {
   };
   if (t == "perspective") {
     ps.kind = view::projection_kind::perspective;
-    r.warn_unknown(p, "/projection", {"type", "fovy_deg", "near", "far"});
-    ps.fovy_deg = num("fovy_deg");
-    if (!(ps.fovy_deg > 0 && ps.fovy_deg < 180))
-      r.fail("/projection/fovy_deg",
-             "must be in (0, 180) degrees (got " + number_text(ps.fovy_deg) + ")");
+    r.warn_unknown(p, "/projection", {"type", "fovy_deg", "fovx_deg", "aspect", "near", "far"});
+    const bool height = p.contains("fovy_deg"), width = p.contains("fovx_deg");
+    if (height == width)
+      r.fail(height ? "/projection/fovx_deg" : "/projection/fovy_deg",
+             height ? "give the height angle fovy_deg or the width angle fovx_deg, not both"
+                    : "missing key (or fovx_deg, the width angle)");
+    const char* angle = height ? "fovy_deg" : "fovx_deg";
+    (height ? ps.fovy_deg : ps.fovx_deg) = num(angle);
+    const double a = height ? ps.fovy_deg : ps.fovx_deg;
+    if (!(a > 0 && a < 180))
+      r.fail(std::string("/projection/") + angle,
+             "must be in (0, 180) degrees (got " + number_text(a) + ")");
+    if (const json* v = r.optional(p, "aspect")) ps.aspect = r.positive(*v, "/projection/aspect");
   } else if (t == "frustum" || t == "orthographic" || t == "oblique") {
     ps.kind = t == "frustum"        ? view::projection_kind::frustum
               : t == "orthographic" ? view::projection_kind::orthographic
@@ -137,11 +145,29 @@ void parse_effects(const reader& r, const json& doc, scene& s) {
 void parse_curves(const reader& r, const json& doc, scene& s) {
   r.for_each_entry(doc, "", "curves", [&](const json& e, const std::string& key) {
     const json& entry = r.object(e, key);
-    r.warn_unknown(entry, key, {"bezier", "color"});
+    r.warn_unknown(entry, key, {"bezier", "color", "control_polygon"});
     view::curve_spec curve;
     curve.control_points =
         detail::parse_points(r, entry, key, "bezier", 1, max_curve_control_points, "control point");
     if (const json* col = r.optional(entry, "color")) curve.color = r.color(*col, key + "/color");
+    // "control_polygon": true or {"color"}: the polyline through the control points too, drawn
+    // like "lines" (the curve lies in its convex hull).
+    if (const json* polygon = r.optional(entry, "control_polygon")) {
+      const std::string at = key + "/control_polygon";
+      view::curve_spec hull{
+          curve.control_points, {150, 150, 150}, true, view::segment_clipper::liang_barsky};
+      if (polygon->is_object()) {
+        r.warn_unknown(*polygon, at, {"color"});
+        if (const json* col = r.optional(*polygon, "color"))
+          hull.color = r.color(*col, at + "/color");
+      } else if (!polygon->is_boolean()) {
+        r.fail(at, "must be true, false or {\"color\": [r, g, b]}");
+      }
+      if ((!polygon->is_boolean() || polygon->get<bool>()) && curve.control_points.size() >= 2) {
+        s.curves.push_back(std::move(hull));
+        ++s.line_count;
+      }
+    }
     s.curves.push_back(std::move(curve));
   });
 }
@@ -374,6 +400,15 @@ scene load_scene(const std::string& path, std::ostream* warnings, bool strict) {
   return parse_scene_text(read_input_file(path), path, warnings, strict);
 }
 
+perspective_lens lens_of(const projection_spec& p, int viewport_width, int viewport_height) {
+  perspective_lens lens;
+  lens.aspect = p.aspect > 0 ? p.aspect : static_cast<double>(viewport_width) / viewport_height;
+  lens.fovy_deg = p.fovx_deg > 0
+                      ? 2 * std::atan(std::tan(p.fovx_deg * M_PI / 360) / lens.aspect) * 180 / M_PI
+                      : p.fovy_deg;
+  return lens;
+}
+
 view::view_setup make_view_setup(const scene& s) {
   view::view_setup v;
   const projection_spec& p = s.projection;
@@ -391,10 +426,10 @@ view::view_setup make_view_setup(const scene& s) {
       v.direction = s.phigs->direction;
     } else
       switch (p.kind) {
-        case view::projection_kind::perspective:
-          v.projection = view::perspective(
-              p.fovy_deg, static_cast<double>(v.vp.width) / v.vp.height, p.near_dist, p.far_dist);
-          break;
+        case view::projection_kind::perspective: {
+          const perspective_lens lens = lens_of(p, v.vp.width, v.vp.height);
+          v.projection = view::perspective(lens.fovy_deg, lens.aspect, p.near_dist, p.far_dist);
+        } break;
         case view::projection_kind::frustum:
           v.projection = view::frustum(p.left, p.right, p.bottom, p.top, p.near_dist, p.far_dist);
           break;

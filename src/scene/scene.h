@@ -8,7 +8,9 @@
 // of the BSP.
 //
 // Projection keys:
-//   perspective   fovy_deg (0 < fovy_deg < 180), near, far        aspect = width / height
+//   perspective   fovy_deg or fovx_deg (in (0, 180)), near, far   gluPerspective; "aspect"
+//                 (width / height of the window, default the viewport's); fovx_deg, the
+//                 width angle, gives fovy = 2 atan(tan(fovx / 2) / aspect)
 //   frustum       left, right, bottom, top, near, far              glFrustum (window on near plane)
 //   orthographic  left, right, bottom, top, near, far              glOrtho
 //   oblique       left, right, bottom, top, near, far, direction   direction = world-space
@@ -42,9 +44,10 @@
 // like curves (view/curves.h), each segment clipped in clip space by the named algorithm.
 // Trackball: "trackball": "arcball" (default) | "virtual" for orbit drags (render.h).
 //
-// Curves: "curves": [{"bezier": [[x,y,z], ...], "color": [r,g,b]}]: at least one and at most
-// max_curve_control_points finite control points (world space, no transform), colour default
-// black. Drawn as described in view/curves.h.
+// Curves: "curves": [{"bezier": [[x,y,z], ...], "color": [r,g,b], "control_polygon": true |
+// {"color"} (the polyline through the control points, grey by default, drawn like a line)}]: at
+// least one and at most max_curve_control_points finite control points (world space, no transform),
+// colour default black. Drawn as described in view/curves.h.
 //
 // Sections: "clip_planes": [[A,B,C,D], ...] (at most max_clip_planes; finite, (A,B,C) not zero;
 // world coordinates) keep A*x+B*y+C*z+D >= 0 of every mesh, cut exactly after its transform
@@ -108,7 +111,9 @@ struct mesh_spec {
 /// "projection".
 struct projection_spec {
   view::projection_kind kind = view::projection_kind::perspective;
-  double fovy_deg = 0;                              ///< perspective
+  double fovy_deg = 0;  ///< perspective (0: fovx_deg gives it)
+  double fovx_deg = 0;  ///< perspective: the width angle, or 0
+  double aspect = 0;    ///< perspective: the window's width / height (0: the viewport's)
   double left = 0, right = 0, bottom = 0, top = 0;  ///< frustum, orthographic, oblique
   double near_dist = 0, far_dist = 0;
   view::vector3 direction;  ///< oblique: world-space direction of projection
@@ -143,6 +148,7 @@ struct scene {
   std::optional<view::mat4> view_matrix;
   std::optional<view::phigs_matrices> phigs;  ///< phigs form: its projection replaces "projection"
   int viewport_x = 0, viewport_y = 0;         ///< glViewport x, y (from the image's lower left)
+  double depth_near = 0, depth_far = 1;       ///< "viewport" "depth_range" (glDepthRange)
   int image_width = 0, image_height = 0;      ///< "image" (default: the viewport's size)
   aspect_policy aspect = aspect_policy::stretch;
   std::string trackball = "arcball";  ///< "arcball" or "virtual" (orbit drags)
@@ -187,6 +193,13 @@ scene load_scene(const std::string& path, std::ostream* warnings = nullptr, bool
 /// Camera, projection and viewport of a validated scene as the pipeline's view_setup.
 /// Throws scene_error naming the key if the scene was not validated and is impossible.
 view::view_setup make_view_setup(const scene& s);
+
+/// A perspective projection's lens: its height angle and aspect (notation at the top: the
+/// projection's "aspect" or the viewport's, "fovy_deg" or the one "fovx_deg" gives).
+struct perspective_lens {
+  double fovy_deg = 0, aspect = 1;
+};
+perspective_lens lens_of(const projection_spec& p, int viewport_width, int viewport_height);
 
 /// All meshes of a scene, transformed to world space, cut by the clip planes (with their caps
 /// as extra faces of each mesh) and appended into one soup.

@@ -337,7 +337,7 @@ void parse_any_camera(const reader& r, const json& doc, scene& s) {
 
 void parse_viewport_and_image(const reader& r, const json& doc, scene& s) {
   const json& vp = r.object(r.require(doc, "", "viewport"), "/viewport");
-  r.warn_unknown(vp, "/viewport", {"width", "height", "x", "y"});
+  r.warn_unknown(vp, "/viewport", {"width", "height", "x", "y", "depth_range"});
   auto side = [&](const json& obj, const std::string& key, const char* name) {
     const long long v = r.integer(r.require(obj, key, name), key + "/" + name);
     if (v < 1 || v > max_viewport_side)
@@ -358,6 +358,21 @@ void parse_viewport_and_image(const reader& r, const json& doc, scene& s) {
   };
   s.viewport_x = static_cast<int>(offset("x"));
   s.viewport_y = static_cast<int>(offset("y"));
+  if (const json* range = r.optional(vp, "depth_range")) {  // glDepthRange(near, far)
+    if (!range->is_array() || range->size() != 2)
+      r.fail("/viewport/depth_range", "must be [near, far], two numbers in [0, 1]");
+    double d[2];
+    for (int k = 0; k < 2; ++k) {
+      const std::string key = "/viewport/depth_range/" + std::to_string(k);
+      d[k] = r.number((*range)[k], key);
+      if (!(d[k] >= 0 && d[k] <= 1))
+        r.fail(key, "must be in [0, 1] (got " + number_text(d[k]) + ")");
+    }
+    // Fog reads the eye's depth back from the window's: an empty range would lose it.
+    if (d[0] == d[1]) r.fail("/viewport/depth_range", "near and far must differ");
+    s.depth_near = d[0];
+    s.depth_far = d[1];
+  }
   s.image_width = s.width;
   s.image_height = s.height;
   if (const json* img = r.optional(doc, "image")) {
@@ -385,10 +400,13 @@ void parse_viewport_and_image(const reader& r, const json& doc, scene& s) {
 
 void place_viewport(const scene& s, view::view_setup& v) {
   int w = s.width, h = s.height, dx = 0, dy = 0;
-  const bool has_window = s.phigs || s.projection.kind != view::projection_kind::perspective;
+  const bool perspective = !s.phigs && s.projection.kind == view::projection_kind::perspective;
+  // A perspective view's window has the viewport's aspect unless the projection gives one.
+  const bool has_window = !perspective || s.projection.aspect > 0;
   if (s.aspect == aspect_policy::fit && has_window) {
-    const double window_aspect =
-        (s.projection.right - s.projection.left) / (s.projection.top - s.projection.bottom);
+    const double window_aspect = perspective ? s.projection.aspect
+                                             : (s.projection.right - s.projection.left) /
+                                                   (s.projection.top - s.projection.bottom);
     const double viewport_aspect = static_cast<double>(w) / h;
     if (window_aspect > viewport_aspect) {
       const int fitted = std::max(1, static_cast<int>(std::lround(w / window_aspect)));
@@ -400,7 +418,7 @@ void place_viewport(const scene& s, view::view_setup& v) {
       w = fitted;
     }
   }
-  v.vp = view::viewport{0, 0, w, h, 0.0, 1.0};
+  v.vp = view::viewport{0, 0, w, h, s.depth_near, s.depth_far};
   v.image_width = s.image_width > 0 ? s.image_width : s.width;
   v.image_height = s.image_height > 0 ? s.image_height : s.height;
   v.place_x = s.viewport_x + dx;
