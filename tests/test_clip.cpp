@@ -13,11 +13,13 @@
 #include <optional>
 #include <vector>
 
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <exbsp/clip/bbox.h>
 #include <exbsp/clip/cohen_sutherland.h>
+#include <exbsp/clip/cyrus_beck.h>
 #include <exbsp/clip/homogeneous.h>
 #include <exbsp/clip/liang_barsky.h>
 #include <exbsp/clip/sutherland_hodgman.h>
@@ -664,6 +666,134 @@ TEST(SutherlandHodgman, FrustumHalfSpacesFollowGlFrustum) {
   const auto ortho = orthographic_half_spaces(l, r, bo, t, n, f);
   for (const auto& h : ortho) EXPECT_GE(h.value({l, t, -f}), 0);
   EXPECT_THROW(orthographic_half_spaces(l, r, bo, t, f, n), exbsp::usage_error);
+}
+
+// ---------------------------------------------------------------------------------------
+// Cyrus–Beck
+
+namespace {
+
+/// The exact kept interval [t0, t1] of P(t) = p0 + t (p1 - p0) in every half-plane of the
+/// region, with the input's doubles as exact rationals (GMP): the oracle. Empty: t0 > t1.
+template <std::size_t N, class H>
+std::pair<mpq_class, mpq_class> exact_interval(const segment<N>& s, const std::vector<H>& region) {
+  mpq_class t0 = 0, t1 = 1;
+  for (const H& h : region) {
+    std::array<double, N> n;
+    double c;
+    if constexpr (N == 2) {
+      n = {h.a, h.b};
+      c = h.c;
+    } else {
+      n = h.n;
+      c = h.d;
+    }
+    mpq_class nd = 0, f0 = c;
+    for (std::size_t k = 0; k < N; ++k) {
+      nd += mpq_class(n[k]) * (mpq_class(s.p1[k]) - mpq_class(s.p0[k]));
+      f0 += mpq_class(n[k]) * mpq_class(s.p0[k]);
+    }
+    if (nd == 0) {
+      if (f0 < 0) return {1, 0};
+    } else if (nd > 0) {
+      t0 = std::max(t0, mpq_class(-f0 / nd));
+    } else {
+      t1 = std::min(t1, mpq_class(-f0 / nd));
+    }
+  }
+  return {t0, t1};
+}
+
+/// Cyrus–Beck against the oracle: the same verdict where the exact interval is clear of the
+/// rounding (empty by a margin, or longer than a margin), its ends within 1e-12 of the exact
+/// parameters and its points within 1e-12 of the exact points (relative to the coordinates).
+template <std::size_t N, class H>
+void check_cyrus_beck(const segment<N>& s, const std::vector<H>& region) {
+  const auto [e0, e1] = exact_interval(s, region);
+  const auto got = cyrus_beck_clip(s, region);
+  const double length = mpq_class(e1 - e0).get_d();
+  if (std::abs(length) < 1e-9) {
+    RC_CLASSIFY(true, "grazing (not judged)");
+    return;
+  }
+  if (length < 0) {
+    RC_ASSERT(!got);
+    RC_CLASSIFY(true, "rejected");
+    return;
+  }
+  RC_ASSERT(got.has_value());
+  RC_ASSERT(std::abs(got->t0 - e0.get_d()) <= 1e-12);
+  RC_ASSERT(std::abs(got->t1 - e1.get_d()) <= 1e-12);
+  double scale = 1;
+  for (std::size_t k = 0; k < N; ++k)
+    scale = std::max({scale, std::abs(s.p0[k]), std::abs(s.p1[k])});
+  for (std::size_t k = 0; k < N; ++k) {
+    const mpq_class d = mpq_class(s.p1[k]) - mpq_class(s.p0[k]);
+    RC_ASSERT(std::abs(got->clipped.p0[k] - mpq_class(mpq_class(s.p0[k]) + e0 * d).get_d()) <=
+              1e-12 * scale);
+    RC_ASSERT(std::abs(got->clipped.p1[k] - mpq_class(mpq_class(s.p0[k]) + e1 * d).get_d()) <=
+              1e-12 * scale);
+  }
+  if (e0 == 0) RC_ASSERT(got->clipped.p0 == s.p0);  // an own end is kept bit for bit
+  if (e1 == 1) RC_ASSERT(got->clipped.p1 == s.p1);
+  RC_CLASSIFY(e0 == 0 && e1 == 1, "inside");
+  RC_CLASSIFY(e0 > 0 || e1 < 1, "clipped");
+}
+
+}  // namespace
+
+RC_GTEST_PROP(CyrusBeck, SegmentsAgainstConvexPolygonsMatchTheExactInterval, ()) {
+  std::vector<half_plane2> region;
+  const int m = uniform_int(1, 8);
+  for (int i = 0; i < m; ++i) region.push_back(gen_half_plane(6));
+  const segment2 s{{gen_coord(-10, 10), gen_coord(-10, 10)},
+                   {gen_coord(-10, 10), gen_coord(-10, 10)}};
+  check_cyrus_beck(s, region);
+}
+
+RC_GTEST_PROP(CyrusBeck, SegmentsAgainstAFrustumMatchTheExactInterval, ()) {
+  const auto region = frustum_half_spaces(-1, 2, -0.5, 1.5, 1, 10);
+  const segment3 s{{gen_coord(-6, 6), gen_coord(-6, 6), gen_coord(-12, 2)},
+                   {gen_coord(-6, 6), gen_coord(-6, 6), gen_coord(-12, 2)}};
+  check_cyrus_beck(s, region);
+}
+
+RC_GTEST_PROP(CyrusBeck, AgainstARectItKeepsWhatLiangBarskyKeeps, ()) {
+  const window2 w = gen_box<2>();
+  const segment2 s{{gen_coord(-4, 4), gen_coord(-4, 4)}, {gen_coord(-4, 4), gen_coord(-4, 4)}};
+  const std::vector<half_plane2> sides = window_half_planes(w);
+  const auto lb = liang_barsky_clip(s, w);
+  const auto cb = cyrus_beck_clip(s, sides);
+  RC_ASSERT(lb.has_value() == cb.has_value());
+  if (!lb) return;
+  RC_ASSERT(std::abs(lb->t0 - cb->t0) <= 1e-15 && std::abs(lb->t1 - cb->t1) <= 1e-15);
+  for (int k = 0; k < 2; ++k) {
+    RC_ASSERT(std::abs(lb->clipped.p0[k] - cb->clipped.p0[k]) <= 1e-14 * (1 + std::abs(s.p0[k])));
+    RC_ASSERT(std::abs(lb->clipped.p1[k] - cb->clipped.p1[k]) <= 1e-14 * (1 + std::abs(s.p1[k])));
+  }
+}
+
+TEST(CyrusBeck, EdgeCasesAndBadInput) {
+  const std::vector<half_plane2> right_of_y{{1, 0, 0}};  // x >= 0
+  const auto whole = cyrus_beck_clip(segment2{{1, 1}, {2, 2}}, right_of_y);
+  ASSERT_TRUE(whole);
+  EXPECT_EQ(whole->entry, -1);
+  EXPECT_EQ(whole->exit, -1);
+  EXPECT_FALSE(cyrus_beck_clip(segment2{{-1, 0}, {-1, 5}}, right_of_y));       // parallel, outside
+  const auto on_line = cyrus_beck_clip(segment2{{0, 0}, {0, 5}}, right_of_y);  // on the boundary
+  ASSERT_TRUE(on_line);
+  EXPECT_EQ(on_line->clipped.p1, (vec2d{0, 5}));
+  const auto cut = cyrus_beck_clip(segment2{{-2, 1}, {2, 1}}, right_of_y);
+  ASSERT_TRUE(cut);
+  EXPECT_EQ(cut->t0, 0.5);
+  EXPECT_EQ(cut->clipped.p0, (vec2d{0, 1}));
+  EXPECT_EQ(cut->entry, 0);
+  EXPECT_TRUE(cyrus_beck_clip(segment2{{3, 3}, {3, 3}}, right_of_y));  // a point inside
+  EXPECT_TRUE(cyrus_beck_clip(segment2{{-3, 3}, {5, 3}}, {}));         // no half-plane: all
+  EXPECT_THROW(cyrus_beck_clip(segment2{{NAN, 0}, {1, 1}}, right_of_y), exbsp::usage_error);
+  EXPECT_THROW(cyrus_beck_clip(segment2{{0, 0}, {1, 1}}, {{INFINITY, 0, 0}}), exbsp::usage_error);
+  EXPECT_THROW(cyrus_beck_clip(segment2{{-1e308, 0}, {1e308, 0}}, {{1e10, 0, 0}}),
+               exbsp::usage_error);  // n . d overflows
 }
 
 // ---------------------------------------------------------------------------------------

@@ -228,14 +228,26 @@ TEST(ClipInput, BadInputNamesTheKey) {
   EXPECT_EQ(error_key(R"({"region": {"rect": [0, 0, 1, 1]}, "segment": []})"), "/segment");
 }
 
-TEST(ClipInput, SegmentsNeedARectOrBox) {
-  const auto in =
-      parse(R"({"region": {"convex": [[0, 0], [1, 0], [0, 1]]}, "segments": [[[0, 0], [1, 1]]]})");
-  try {
-    scene::run_clip(in, "", nullptr);
-    FAIL();
-  } catch (const scene_error& e) {
-    EXPECT_EQ(e.key(), "/region");
+TEST(ClipInput, SegmentsAgainstAConvexRegionGoToCyrusBeckAndTheBoxClippersNeedARectOrBox) {
+  const auto in = parse(
+      R"({"region": {"convex": [[0, 0], [2, 0], [0, 2]]}, "segments": [[[-1, 0.5], [3, 0.5]]]})");
+  for (const char* algorithm : {"", "cyrus-beck"}) {
+    std::ostringstream log;
+    const json r = scene::run_clip(in, algorithm, &log);
+    EXPECT_EQ(r["algorithm"]["segments"], "cyrus-beck");
+    // Enters by the edge x = 0 at t = 1/4, leaves by x + y = 2 at x = 1.5, t = 5/8.
+    EXPECT_EQ(r["segments"][0], json::parse("[[0, 0.5], [1.5, 0.5]]"));
+    EXPECT_EQ(r["t"][0], json::parse("[0.25, 0.625]"));
+    EXPECT_NE(log.str().find("segment 0: kept t in [0.25, 0.625]"), std::string::npos) << log.str();
+  }
+  for (const char* algorithm : {"cohen-sutherland", "liang-barsky"}) {
+    try {
+      scene::run_clip(in, algorithm, nullptr);
+      FAIL() << algorithm;
+    } catch (const scene_error& e) {
+      EXPECT_EQ(e.key(), "/region");
+      EXPECT_NE(std::string(e.what()).find("use cyrus-beck"), std::string::npos) << e.what();
+    }
   }
   const auto rect = parse(R"({"region": {"rect": [0, 0, 1, 1]}, "segments": [[[0, 0], [1, 1]]]})");
   EXPECT_THROW(scene::run_clip(rect, "sutherland-hodgman", nullptr), scene_error);

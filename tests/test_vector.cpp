@@ -759,8 +759,8 @@ std::string percent(double v) {
 
 #if EXBSP_HAVE_OSMESA
 /// Mesa's z-buffer image of a frame's triangles (world space) with exbsp's matrices, viewport
-/// and placement, each triangle in its face's colour (lit by lighting.h's Lambert rule when the
-/// scene asks for lighting: colours are not what this oracle checks), Mesa's tie rule mirrored
+/// and placement, each triangle in its face's colour (lit by lighting.h's rule when the scene
+/// asks for lighting: colours are not what this oracle checks), Mesa's tie rule mirrored
 /// into exbsp's (osmesa_zbuffer.h).
 image mesa_image(const frame& f, bool cull, bool lit) {
   const view_setup& v = f.view;
@@ -778,13 +778,27 @@ image mesa_image(const frame& f, bool cull, bool lit) {
   z.projection = v.projection.m;
   z.model_view = v.model_view.m;
   const lighting_settings& light = f.settings.lighting;
+  // Each face's centroid (the mean of its triangles' centroids), where a headlight, a point
+  // light and the highlights are evaluated (lighting.h).
+  std::map<std::uint32_t, std::pair<point3, int>> centroid;
+  for (const soup_triangle& t : f.soup.triangles) {
+    auto& [sum, count] = centroid[t.face];
+    for (int c = 0; c < 3; ++c) {
+      const vec3d& p = f.soup.vertices[t.v[c]];
+      sum = {sum.x + p[0] / 3, sum.y + p[1] / 3, sum.z + p[2] / 3};
+    }
+    ++count;
+  }
   for (const soup_triangle& t : f.soup.triangles) {
     fragment_d tri{t.face, {}};
     for (int c = 0; c < 3; ++c) tri.v[c] = f.soup.vertices[t.v[c]];
     z.triangles.push_back(tri.v);
-    z.colors.push_back(
-        lit ? lambert_color(f.color_of(t.face), shading_normal(tri, f.view, light.two_sided), light)
-            : f.color_of(t.face));
+    const auto& [sum, count] = centroid[t.face];
+    const point3 at{sum.x / count, sum.y / count, sum.z / count};
+    z.colors.push_back(lit ? lit_color(f.color_of(t.face),
+                                       shading_normal(tri, f.view, light.two_sided), at, f.view,
+                                       light)
+                           : f.color_of(t.face));
   }
   z.cull_back = cull;
   z.mirror_y = true;

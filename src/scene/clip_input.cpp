@@ -11,6 +11,7 @@
 #include <exbsp/clip/cohen_sutherland.h>
 #include <exbsp/clip/convex_hull.h>
 #include <exbsp/clip/convex_region.h>
+#include <exbsp/clip/cyrus_beck.h>
 #include <exbsp/clip/liang_barsky.h>
 #include <exbsp/core/errors.h>
 #include <exbsp/mesh/mesh_io.h>
@@ -221,6 +222,32 @@ void clip_segments(const std::vector<clip::segment<N>>& segments, const Region& 
     result["t"] = ts;
 }
 
+/// Segments against any convex region's half-planes or half-spaces by Cyrus–Beck: the kept
+/// parts and their parameter intervals ("t"), like Liang–Barsky's.
+template <std::size_t N, class H>
+void clip_segments_cyrus_beck(const std::vector<clip::segment<N>>& segments,
+                              const std::vector<H>& planes, json& result, std::ostream* log) {
+  json out = json::array(), ts = json::array();
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const auto cb = clip::cyrus_beck_clip(segments[i], planes);
+    out.push_back(cb ? json{to_json(cb->clipped.p0), to_json(cb->clipped.p1)} : json());
+    ts.push_back(cb ? json{cb->t0, cb->t1} : json());
+    if (log) {
+      *log << "segment " << i << ": ";
+      if (!cb)
+        *log << "rejected";
+      else if (cb->entry < 0 && cb->exit < 0)
+        *log << "inside";
+      else
+        *log << "kept t in [" << cb->t0 << ", " << cb->t1 << "], entering by half-plane "
+             << cb->entry << ", leaving by " << cb->exit << " (-1: its own end)";
+      *log << "\n";
+    }
+  }
+  result["segments"] = out;
+  result["t"] = ts;
+}
+
 template <class P, class H>
 void clip_polygons(const std::vector<std::vector<P>>& polygons, const std::vector<H>& planes,
                    json& result, std::ostream* log) {
@@ -278,32 +305,44 @@ clip_input load_clip_input(const std::string& path) {
 
 json run_clip(const clip_input& in, const std::string& algorithm, std::ostream* log) {
   if (!algorithm.empty() && algorithm != "cohen-sutherland" && algorithm != "liang-barsky" &&
-      algorithm != "sutherland-hodgman")
+      algorithm != "cyrus-beck" && algorithm != "sutherland-hodgman")
     throw usage_error("clip: unknown --algorithm " + algorithm +
-                      " (expected cohen-sutherland, liang-barsky or sutherland-hodgman)");
+                      " (expected cohen-sutherland, liang-barsky, cyrus-beck or "
+                      "sutherland-hodgman)");
   const bool has_segments = !in.segments2.empty() || !in.segments3.empty();
   const bool box_region =
       in.kind == clip_input::region_kind::rect || in.kind == clip_input::region_kind::box;
   if (has_segments && algorithm == "sutherland-hodgman")
-    throw scene_error(
-        in.path, "/segments",
-        "Sutherland–Hodgman clips polygons; clip segments with cohen-sutherland or liang-barsky");
-  if (has_segments && !box_region)
-    throw scene_error(
-        in.path, "/region",
-        "segments are clipped against a rect or box only (Cohen–Sutherland, Liang–Barsky)");
+    throw scene_error(in.path, "/segments",
+                      "Sutherland–Hodgman clips polygons; clip segments with cohen-sutherland, "
+                      "liang-barsky or cyrus-beck");
+  // Segments: Cohen–Sutherland (default) or Liang–Barsky against a rect or box, Cyrus–Beck
+  // against any convex region (the default for convex and halfspaces regions).
+  const bool cyrus_beck = algorithm == "cyrus-beck" || (algorithm.empty() && !box_region);
+  if (has_segments && !box_region && !cyrus_beck)
+    throw scene_error(in.path, "/region",
+                      algorithm + " clips segments against a rect or box; use cyrus-beck for a " +
+                          (in.kind == clip_input::region_kind::convex ? "convex" : "halfspaces") +
+                          " region");
   const segment_clipper sc = algorithm == "liang-barsky" ? segment_clipper::liang_barsky
                                                          : segment_clipper::cohen_sutherland;
   json result;
   result["dimension"] = in.dimension;
-  result["algorithm"] = {
-      {"segments", sc == segment_clipper::liang_barsky ? "liang-barsky" : "cohen-sutherland"},
-      {"polygons", "sutherland-hodgman"}};
+  result["algorithm"] = {{"segments", cyrus_beck                            ? "cyrus-beck"
+                                      : sc == segment_clipper::liang_barsky ? "liang-barsky"
+                                                                            : "cohen-sutherland"},
+                         {"polygons", "sutherland-hodgman"}};
   if (in.dimension == 2) {
-    if (has_segments) clip_segments<2>(in.segments2, in.window, sc, result, log);
+    if (has_segments && cyrus_beck)
+      clip_segments_cyrus_beck<2>(in.segments2, in.planes2, result, log);
+    else if (has_segments)
+      clip_segments<2>(in.segments2, in.window, sc, result, log);
     clip_polygons(in.polygons2, in.planes2, result, log);
   } else {
-    if (has_segments) clip_segments<3>(in.segments3, in.box, sc, result, log);
+    if (has_segments && cyrus_beck)
+      clip_segments_cyrus_beck<3>(in.segments3, in.planes3, result, log);
+    else if (has_segments)
+      clip_segments<3>(in.segments3, in.box, sc, result, log);
     clip_polygons(in.polygons3, in.planes3, result, log);
   }
   if (!has_segments) result["segments"] = json::array();

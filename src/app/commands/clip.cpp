@@ -21,9 +21,11 @@ class clip_subcommand final : public command {
         ->required();
     sub->add_option(
            "--algorithm", algorithm_,
-           "segment clipper: cohen-sutherland (default) or liang-barsky (rect or box regions); "
-           "polygons are always clipped by sutherland-hodgman (any convex region)")
-        ->check(CLI::IsMember({"cohen-sutherland", "liang-barsky", "sutherland-hodgman"}));
+           "segment clipper: cohen-sutherland (default) or liang-barsky (rect or box regions), "
+           "cyrus-beck (any region; the default for convex and halfspaces); polygons are always "
+           "clipped by sutherland-hodgman (any convex region)")
+        ->check(CLI::IsMember(
+            {"cohen-sutherland", "liang-barsky", "cyrus-beck", "sutherland-hodgman"}));
     sub->add_option("-o,--output", out_, "output .json or .svg (default: JSON on standard output)")
         ->check(non_empty_path());
     sub->add_flag("-v,--verbose", verbose_,
