@@ -42,7 +42,7 @@ rgb8 lit_color(rgb8 base, const vector3& n, const point3& centroid, const view_s
     if (light.kind == light_source::kind_type::directional) l = normalized(light.where);
     if (light.kind == light_source::kind_type::point) {
       const vector3 d = point3{light.where.x, light.where.y, light.where.z} - centroid;
-      if (!(length(d) > 0)) continue;  // the light in the fragment's plane at its centroid
+      if (!(length(d) > 0)) continue;  // a point light at the face's centroid: no direction
       l = normalized(d);
     }
     add(l, light.intensity);
