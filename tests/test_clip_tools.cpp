@@ -254,6 +254,28 @@ TEST(ClipInput, SegmentsAgainstAConvexRegionGoToCyrusBeckAndTheBoxClippersNeedAR
   EXPECT_THROW(scene::run_clip(rect, "bresenham", nullptr), usage_error);
 }
 
+TEST(ClipInput, AFrustumRegionClipsSegmentsAndPolygonsInEyeCoordinates) {
+  // glFrustum(-1, 1, -1, 1, 1, 3): at depth z the volume is |x|, |y| <= -z, -3 <= z <= -1.
+  const auto in = parse(R"({"region": {"frustum": [-1, 1, -1, 1, 1, 3]},
+    "segments": [[[0, 0, 0], [0, 0, -5]], [[-4, 0, -2], [4, 0, -2]], [[5, 5, -2], [6, 5, -2]]],
+    "polygons": [[[-4, -4, -2], [4, -4, -2], [4, 4, -2], [-4, 4, -2]]]})");
+  const json r = scene::run_clip(in, "", nullptr);
+  EXPECT_EQ(r["algorithm"]["segments"], "cyrus-beck");
+  EXPECT_EQ(r["segments"][0], json::parse("[[0, 0, -1], [0, 0, -3]]"));   // near and far planes
+  EXPECT_EQ(r["segments"][1], json::parse("[[-2, 0, -2], [2, 0, -2]]"));  // the side planes
+  EXPECT_TRUE(r["segments"][2].is_null());
+  ASSERT_EQ(r["polygons"][0].size(), 4u);  // the square [-2, 2]^2 at z = -2
+  for (const auto& p : r["polygons"][0]) {
+    EXPECT_EQ(std::abs(p[0].get<double>()), 2);
+    EXPECT_EQ(std::abs(p[1].get<double>()), 2);
+    EXPECT_EQ(p[2].get<double>(), -2);
+  }
+  EXPECT_EQ(error_key(R"({"region": {"frustum": [-1, 1, -1, 1, 0, 3]}})"), "/region/frustum/4");
+  EXPECT_EQ(error_key(R"({"region": {"frustum": [-1, 1, -1, 1, 2, 1]}})"), "/region/frustum/5");
+  EXPECT_EQ(error_key(R"({"region": {"frustum": [1, -1, -1, 1, 1, 3]}})"), "/region/frustum/1");
+  EXPECT_EQ(error_key(R"({"region": {"frustum": [-1, 1, -1, 1, 1]}})"), "/region/frustum");
+}
+
 TEST(ClipInput, CohenSutherlandAndLiangBarskyAgree) {
   const auto in = parse(R"({"region": {"rect": [0, 0, 4, 2]},
     "segments": [[[-1, 1], [5, 1]], [[-1, -1], [-1, 5]], [[1, 1], [2, 1]], [[-2, 0], [2, 4]]]})");

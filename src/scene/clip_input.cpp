@@ -67,7 +67,7 @@ std::vector<std::array<double, N>> points(const reader& r, const json& v, const 
 void parse_region(const reader& r, const json& doc, clip_input& in) {
   const json& region = r.object(r.require(doc, "", "region"), "/region");
   if (region.size() != 1)
-    r.fail("/region", "must have exactly one of rect, box, convex, halfspaces");
+    r.fail("/region", "must have exactly one of rect, box, convex, halfspaces, frustum");
   const std::string name = region.begin().key();
   const std::string key = "/region/" + name;
   const json& v = region.begin().value();
@@ -92,6 +92,17 @@ void parse_region(const reader& r, const json& doc, clip_input& in) {
       in.dimension = 3;
       in.box = clip::box3{{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
       in.planes3 = clip::box_half_spaces(in.box);
+    } else if (name == "frustum") {  // glFrustum's view volume in eye coordinates
+      if (!v.is_array() || v.size() != 6)
+        r.fail(key, "must be [left, right, bottom, top, near, far] (glFrustum, eye coordinates)");
+      const auto f = point<6>(r, v, key);
+      if (!(f[0] < f[1])) r.fail(key + "/1", "right must be > left");
+      if (!(f[2] < f[3])) r.fail(key + "/3", "top must be > bottom");
+      if (!(f[4] > 0)) r.fail(key + "/4", "near must be > 0");
+      if (!(f[5] > f[4])) r.fail(key + "/5", "far must be > near");
+      in.kind = kind::frustum;
+      in.dimension = 3;
+      in.planes3 = clip::frustum_half_spaces(f[0], f[1], f[2], f[3], f[4], f[5]);
     } else if (name == "convex") {
       array_of(r, v, key, "points");
       if (v.empty() || !v[0].is_array() || (v[0].size() != 2 && v[0].size() != 3))
@@ -131,7 +142,7 @@ void parse_region(const reader& r, const json& doc, clip_input& in) {
         }
       }
     } else {
-      r.fail(key, "unknown region (expected rect, box, convex or halfspaces)");
+      r.fail(key, "unknown region (expected rect, box, convex, halfspaces or frustum)");
     }
   } catch (const usage_error& e) {  // the convex-region helpers' checks
     r.fail(key, e.what());
@@ -322,7 +333,9 @@ json run_clip(const clip_input& in, const std::string& algorithm, std::ostream* 
   if (has_segments && !box_region && !cyrus_beck)
     throw scene_error(in.path, "/region",
                       algorithm + " clips segments against a rect or box; use cyrus-beck for a " +
-                          (in.kind == clip_input::region_kind::convex ? "convex" : "halfspaces") +
+                          (in.kind == clip_input::region_kind::convex    ? "convex"
+                           : in.kind == clip_input::region_kind::frustum ? "frustum"
+                                                                         : "halfspaces") +
                           " region");
   const segment_clipper sc = algorithm == "liang-barsky" ? segment_clipper::liang_barsky
                                                          : segment_clipper::cohen_sutherland;

@@ -8,16 +8,19 @@
 //   {"convex": [[x, y, z], ...]}                      convex hull of a 3D point set
 //   {"halfspaces": [[a, b, c], ...]}                  2D half-planes a x + b y + c >= 0
 //   {"halfspaces": [[a, b, c, d], ...]}               3D half-spaces a x + b y + c z + d >= 0
+//   {"frustum": [left, right, bottom, top, near, far]} glFrustum's view volume, eye coordinates
+//                                                     (eye at the origin looking down -z)
 // The region fixes the dimension; every point must have that many coordinates. "segments" and
 // "polygons" are optional (absent = none).
-// Algorithms: segments are clipped by Cohen–Sutherland (the default) or Liang–Barsky, against a
-// rect or box only; polygons always by Sutherland–Hodgman, against any region (a rect or box
-// as its half-spaces; convex regions through clip/convex_region.h). `--algorithm
+// Algorithms: segments are clipped by Cohen–Sutherland (the default) or Liang–Barsky against a
+// rect or box, by Cyrus–Beck against any region (the default for the others); polygons always
+// by Sutherland–Hodgman, against any region (a rect or box as its half-spaces; convex regions
+// through clip/convex_region.h). `--algorithm
 // sutherland-hodgman` with segments in the input is an error (it clips polygons only).
 // Output JSON: {"dimension", "algorithm": {"segments", "polygons"}, "segments": [[p, q] | null,
 // ...] (one per input segment, null when nothing is left), "outcodes": [[c0, c1], ...]
 // (Cohen–Sutherland: the endpoints' outcodes as clip/cohen_sutherland.h defines the bits),
-// "t": [[t0, t1] | null, ...] (Liang–Barsky), "polygons": [[p, ...], ...] (the textbook
+// "t": [[t0, t1] | null, ...] (Liang–Barsky, Cyrus–Beck), "polygons": [[p, ...], ...] (the textbook
 // Sutherland–Hodgman result per input polygon, [] when nothing is left; a concave input may
 // contain the degenerate connecting edges of clip/sutherland_hodgman.h), "pieces": [[[p, ...],
 // ...], ...] (the same result split into its connected pieces)}. Numbers are doubles that read
@@ -47,7 +50,7 @@ enum class segment_clipper { cohen_sutherland, liang_barsky };
 struct clip_input {
   std::string path;
   int dimension = 2;
-  enum class region_kind { rect, box, convex, halfspaces } kind = region_kind::rect;
+  enum class region_kind { rect, box, convex, halfspaces, frustum } kind = region_kind::rect;
   clip::window2 window{};                   ///< rect
   clip::box3 box{};                         ///< box
   std::vector<clip::vec2d> convex_polygon;  ///< 2D convex region's vertices (for drawing)
