@@ -369,7 +369,7 @@ int main(int argc, char** argv) {
     const double pipeline_seconds = std::chrono::duration<double>(clock_type::now() - p0).count();
     const double edges_seconds = best_seconds(repeats, [&] {
       vector_drawing e;
-      add_edge_paths(f, e);
+      add_edge_paths(f, f.vector, e);
     });
     vector_drawing d;
     const double drawing_seconds = best_seconds(repeats, [&] { d = visible_drawing(f); });

@@ -281,7 +281,7 @@ view::vector_drawing draw_view(view::frame& f, const planned_view& v, double k, 
   view::vector_drawing d;
   d.width = v.width_px;
   d.height = v.height_px;
-  view::add_edge_paths(f, d);
+  view::add_edge_paths(f, f.vector, d);
   return d;
 }
 

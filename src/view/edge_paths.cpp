@@ -134,8 +134,7 @@ void chain_segments(vector_path& p) {
 
 }  // namespace
 
-void add_edge_paths(const frame& f, vector_drawing& d) {
-  const vector_options& opt = f.vector;
+void add_edge_paths(const frame& f, const vector_options& opt, vector_drawing& d) {
   const edge_visibility ev = visible_runs(f, opt.crease_deg);
   const triangle_soup& s = f.soup;
   const mat4 pm = f.view.projection * f.view.model_view;

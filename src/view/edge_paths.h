@@ -18,10 +18,11 @@ namespace exbsp::view {
 
 struct frame;
 struct vector_drawing;
+struct vector_options;
 
-/// Appends the frame's hidden edge paths (when f.vector.edges asks for them) and then its
-/// visible edge paths to `d`. Precondition: 0 < f.vector.crease_deg <= 180 (visible_drawing
-/// checks it).
-void add_edge_paths(const frame& f, vector_drawing& d);
+/// Appends the frame's hidden edge paths (when opt.edges asks for them) and then its visible
+/// edge paths to `d`, creases over opt.crease_deg: the SVG's options (f.vector) or a PNG's
+/// (f.raster_edges). Precondition: 0 < opt.crease_deg <= 180 (the callers check it).
+void add_edge_paths(const frame& f, const vector_options& opt, vector_drawing& d);
 
 }  // namespace exbsp::view

@@ -32,17 +32,7 @@ std::string raster_edges_stage(frame& f) {
   vector_drawing d;
   d.width = w;
   d.height = h;
-  {
-    // add_edge_paths reads the SVG's options from the frame: lend it the raster's meanwhile.
-    struct lend {
-      frame& f;
-      vector_options kept;
-      ~lend() { f.vector = kept; }
-    } restore{f, f.vector};
-    f.vector.edges = want.edges;
-    f.vector.crease_deg = want.crease_deg;
-    add_edge_paths(f, d);
-  }
+  add_edge_paths(f, want, d);
   if (f.wireframe)
     for (vector_path& p : d.paths)
       if (p.kind == vector_path::kind_type::hidden_edge)

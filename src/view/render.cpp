@@ -203,11 +203,19 @@ vector_options::edges_kind edges_named(const std::string& name) {
   throw usage_error("render: edges must be " + edges_kind_names() + ", got '" + name + "'");
 }
 
-/// The painted frame of render_tree: its picture and its back-to-front order.
+/// The painted frame of render_tree: its picture (with `edges` drawn over it) and its
+/// back-to-front order.
 frame painted(const bsp& tree, const fitted_view& view, int width, int height,
-              const render_style& style) {
+              const render_style& style,
+              vector_options::edges_kind edges = vector_options::edges_kind::none) {
   frame f = tree_frame(tree, view, width, height, style);
-  per_view_pipeline({"lighting"}, output_kind::png).run(f, nullptr);
+  pipeline p = per_view_pipeline({"lighting"}, output_kind::png);
+  if (edges != vector_options::edges_kind::none) {
+    f.soup = tree.input();  // the feature edges are the input mesh's (as in render_tree_svg)
+    f.raster_edges.edges = edges;
+    p.add("edges", raster_edges_stage);
+  }
+  p.run(f, nullptr);
   return f;
 }
 
@@ -215,15 +223,7 @@ frame painted(const bsp& tree, const fitted_view& view, int width, int height,
 
 image render_tree(const bsp& tree, const fitted_view& view, int width, int height,
                   const render_style& style, const std::string& edges) {
-  const vector_options::edges_kind kind = edges_named(edges);
-  if (kind == vector_options::edges_kind::none)
-    return std::move(painted(tree, view, width, height, style).picture);
-  frame f = tree_frame(tree, view, width, height, style);
-  f.soup = tree.input();  // the feature edges are the input mesh's (as in render_tree_svg)
-  f.raster_edges.edges = kind;
-  per_view_pipeline({"lighting"}, output_kind::png).run(f, nullptr);
-  raster_edges_stage(f);
-  return std::move(f.picture);
+  return std::move(painted(tree, view, width, height, style, edges_named(edges)).picture);
 }
 
 std::string render_tree_svg(const bsp& tree, const fitted_view& view, int width, int height,

@@ -359,7 +359,7 @@ vector_drawing visible_drawing(const frame& f) {
     edges = std::async(std::launch::async, [&f, &d, since] {
       const clock::time_point t0 = clock::now();
       vector_drawing e;
-      add_edge_paths(f, e);
+      add_edge_paths(f, f.vector, e);
       d.seconds.edges = since(t0);  // read by the caller only after get()
       return std::move(e.paths);
     });
