@@ -26,8 +26,9 @@ class bsp_impl {
   virtual std::vector<std::uint32_t> order_for_direction(const vec3d& d,
                                                          bool back_to_front) const = 0;
   virtual std::vector<bsp::ancestor> ancestors(std::size_t i) const = 0;
-  /// Writes the body of a saved tree (tree_file.h): the common part, then the kernel's own.
-  virtual void write_tree(tree_file::writer& out) const = 0;
+  /// Writes the body of a saved tree (tree_file.h): the common part, then the kernel's own;
+  /// without `timings`, build_seconds and peak_rss_bytes are written as 0.
+  virtual void write_tree(tree_file::writer& out, bool timings) const = 0;
   virtual std::size_t node_count() const = 0;
   virtual const triangle_soup& input() const = 0;
   virtual bsp_node node(std::size_t k) const = 0;

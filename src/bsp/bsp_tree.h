@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <exbsp/bsp/engine.h>
@@ -25,6 +27,9 @@
 #include "bsp/tree_file.h"
 
 namespace exbsp {
+namespace detail {
+class parallel_failure;
+}
 
 /// The tree for geometry G; bsp_tree<K> is the tree for CGAL kernel K (geometry_cgal.h).
 template <class G>
@@ -51,6 +56,25 @@ class basic_bsp_tree {
   /// Builds the tree. Throws usage_error (unknown heuristic, non-finite coordinates),
   /// limit_error (options.max_fragments exceeded).
   basic_bsp_tree(const triangle_soup& soup, const build_options& options);
+
+  /// Distributed builds (tree_distributed.h; exact geometry only): the top levels of the
+  /// build above, stopped at the frontier, whose cells are then written (write_cell), grown
+  /// elsewhere (grow_cell) and appended in frontier order (append_part, finish_parts).
+  struct top_only {};
+  basic_bsp_tree(const triangle_soup& soup, const build_options& options, top_only);
+  std::size_t cell_count() const { return frontier_.size(); }
+  /// Frontier cell i's bytes: its side, depth, path key and fragments (it can be written
+  /// once: its fragment list is freed).
+  std::string write_cell(std::size_t i);
+  /// A worker's job: grows the subtree of a cell written by write_cell for the same soup and
+  /// options, and returns the part's bytes (its nodes and fragments).
+  static std::string grow_cell(const triangle_soup& soup, const build_options& options,
+                               std::string_view cell);
+  /// Appends the part grown from cell i (every cell once, in order, after write_cell(i));
+  /// `soup` is the one the tree was made from. Throws input_error for malformed bytes.
+  void append_part(const triangle_soup& soup, std::size_t i, std::string_view part);
+  /// After the last part: the stats of the whole tree, timed from `seconds`.
+  void finish_parts(double seconds);
 
   /// Loads a saved tree (tree_file_impl.h): the kernel's part of a tree file's body from `in`
   /// for the soup and stats of `common`. Throws input_error for anything inconsistent.
@@ -179,6 +203,16 @@ class basic_bsp_tree {
     }
   };
   struct build_context;
+  /// The build's top levels (into nodes_ and fragments_); returns the frontier's cells.
+  std::vector<work> grow_top(const triangle_soup& soup, const build_options& options,
+                             build_context& ctx);
+  /// The frontier's subtrees (in parallel), then merge_parts.
+  void grow_frontier(std::vector<work>& frontier, build_context& ctx);
+  /// Grows one frontier cell into `part` (collected and parked, ready for the merge).
+  void grow_part(work& cell, subtree& part, build_context& ctx,
+                 const detail::parallel_failure& failure);
+  /// Appends the parts in frontier order and sets the stats.
+  void merge_parts(std::vector<subtree>& parts, build_context& ctx);
   template <class PushChild>
   void grow_node(work&& w, subtree& part, build_context& ctx, PushChild&& push_child);
   /// Replaces a grown subtree's pieces by copies of the fragments its nodes hold, node by node
@@ -230,6 +264,19 @@ class basic_bsp_tree {
   std::vector<fragment> fragments_;
   std::vector<node> nodes_;
   build_stats stats_;
+  /// A distributed build (top_only): the frontier's cells until they are written, where each
+  /// one's subtree hangs, the ids of the points each cell's bytes carry (in file order), and
+  /// the top's options (kept for the limit check of the parts).
+  std::vector<work> frontier_;
+  struct cell_origin {
+    std::int32_t parent = -1, side = 0;
+    std::vector<std::uint32_t> points;
+  };
+  std::vector<cell_origin> cell_origins_;
+  std::size_t max_fragments_ = 0, top_total_ = 0, cells_written_ = 0, parts_appended_ = 0;
+  /// A worker's tree: the geometry of the soup, nothing built.
+  struct worker {};
+  basic_bsp_tree(const triangle_soup& soup, worker) : geom_(soup) {}
 };
 
 template <class K>

@@ -129,9 +129,25 @@ class exact_geometry {
   /// accepted triangle i. It checks every id and that each constructed point's segment
   /// crosses its plane strictly (so every exact value is well defined), and restores each
   /// point's certified approximation. Throws input_error through `in`.
-  void write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments) const;
+  void write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments) const {
+    write_fragments(out, fragments, inputs_, nullptr);
+  }
   void read_fragments(tree_file::reader& in, const triangle_soup& soup,
                       const std::vector<char>& usable, std::vector<fragment>& fragments);
+  /// The same for the cells and parts of a distributed build (bsp/tree_distributed.h), whose
+  /// fragments use points already known to the reader. write: the point ids below `known_end`
+  /// (at least the input vertices) are written as they are, not as constructed points; the
+  /// ids of the constructed points written, in file order, go to `written` when not null.
+  /// read: file ids below V are input vertices, the next known.size() name known[...] (points
+  /// of this geometry), the constructed points of the file get new ids. Unlike a saved
+  /// tree's read, it sets no budget on the exact values (the build's own data).
+  void write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments,
+                       std::uint32_t known_end, std::vector<std::uint32_t>* written) const;
+  void read_fragments(tree_file::reader& in, const triangle_soup& soup,
+                      const std::vector<char>& usable, std::vector<fragment>& fragments,
+                      const std::vector<std::uint32_t>& known);
+  /// Point ids in use: ids below this are input vertices or claimed constructed points.
+  std::uint32_t point_id_end();
   /// Frees the exact values and planes memoised so far (the build calls it once its side
   /// tests are done, before its peak step: output makes the values it needs again).
   /// Precondition: no other thread uses the geometry.

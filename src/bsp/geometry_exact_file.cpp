@@ -12,14 +12,21 @@
 
 namespace exbsp {
 
-void exact_geometry::write_fragments(tree_file::writer& out,
-                                     const std::vector<fragment>& fragments) const {
+std::uint32_t exact_geometry::point_id_end() {
+  const std::lock_guard<std::mutex> lock(claim_mutex_);
+  return claimed_;
+}
+
+void exact_geometry::write_fragments(tree_file::writer& out, const std::vector<fragment>& fragments,
+                                     std::uint32_t known_end,
+                                     std::vector<std::uint32_t>* written) const {
   // The constructed points in use, numbered by first use: fragments in order, each point
   // after its endpoints (post-order). Point ids are claimed in an order that depends on thread
   // timing, but which points exist and how they are built does not, so this numbering makes
   // the file the same for every thread count and run. Explicit stack: nesting may be deep.
-  std::vector<std::uint32_t> renumbered(claimed_, none);
-  for (std::uint32_t id = 0; id < inputs_; ++id) renumbered[id] = id;
+  known_end = std::max(known_end, inputs_);
+  std::vector<std::uint32_t> renumbered(std::max(claimed_, known_end), none);
+  for (std::uint32_t id = 0; id < known_end; ++id) renumbered[id] = id;
   std::vector<std::uint32_t> file_order;  // constructed ids, in file order
   std::vector<std::uint32_t> stack;
   for (const fragment& f : fragments)
@@ -39,7 +46,7 @@ void exact_geometry::write_fragments(tree_file::writer& out,
           continue;
         }
         stack.pop_back();
-        renumbered[id] = inputs_ + static_cast<std::uint32_t>(file_order.size());
+        renumbered[id] = known_end + static_cast<std::uint32_t>(file_order.size());
         file_order.push_back(id);
       }
     }
@@ -55,11 +62,25 @@ void exact_geometry::write_fragments(tree_file::writer& out,
     for (std::uint32_t id : f.v) out.u32(renumbered[id]);
     out.u32(f.source);
   }
+  if (written) *written = std::move(file_order);
 }
 
 void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& soup,
                                     const std::vector<char>& usable,
                                     std::vector<fragment>& fragments) {
+  // The exact values this tree may make (the checks below, orders, roundings): 4096 bits per
+  // byte of the file, at least 16 MB. Trees exbsp writes need 10-20 bits per byte (the CGAL
+  // corpus, every point's exact value once).
+  exact_budget_bits_ = std::max<std::uint64_t>(std::uint64_t{1} << 27,
+                                               std::uint64_t{in.offset() + in.remaining()} * 4096);
+  exact_budget_file_ = in.name();
+  read_fragments(in, soup, usable, fragments, {});
+}
+
+void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& soup,
+                                    const std::vector<char>& usable,
+                                    std::vector<fragment>& fragments,
+                                    const std::vector<std::uint32_t>& known) {
   using tree_file::indexed;
   const std::uint32_t triangles = static_cast<std::uint32_t>(soup.triangles.size());
   const auto check_plane = [&](std::size_t at, const std::string& field, std::uint32_t plane,
@@ -74,38 +95,47 @@ void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& 
           std::string(what) + " " + std::to_string(plane) + " is a degenerate triangle (no plane)");
   };
 
-  // The exact values this tree may make (the checks below, orders, roundings): 4096 bits per
-  // byte of the file, at least 16 MB. Trees exbsp writes need 10-20 bits per byte (the CGAL
-  // corpus, every point's exact value once).
-  exact_budget_bits_ = std::max<std::uint64_t>(std::uint64_t{1} << 27,
-                                               std::uint64_t{in.offset() + in.remaining()} * 4096);
-  exact_budget_file_ = in.name();
   // Constructed points, each checked and approximated after its endpoints.
-  const std::uint64_t capacity = (std::uint64_t{1} << max_point_bits) - 2 * block - inputs_;
-  const auto constructed = static_cast<std::uint32_t>(in.count("points", 12, capacity));
-  const std::uint32_t total = inputs_ + constructed;
+  // File ids: V input vertices, then the known points, then the file's constructed points,
+  // which take the ids from `base` on (a fresh geometry: base = V, file ids = ids).
+  const auto known_count = static_cast<std::uint32_t>(known.size());
+  std::uint32_t base = 0;
   {
     const std::lock_guard<std::mutex> lock(claim_mutex_);
-    grow_chunks(total);
-    claimed_ = std::max(claimed_, total);
+    base = claimed_;
   }
-  for (std::uint32_t id = inputs_; id < total; ++id) {
+  const std::uint64_t capacity = (std::uint64_t{1} << max_point_bits) - 2 * block - base;
+  const auto constructed = static_cast<std::uint32_t>(in.count("points", 12, capacity));
+  const std::uint32_t first = inputs_ + known_count;  // the first constructed file id
+  const std::uint32_t total = first + constructed;    // file ids end here
+  {
+    const std::lock_guard<std::mutex> lock(claim_mutex_);
+    grow_chunks(base + constructed);
+    claimed_ = base + constructed;
+  }
+  const auto id_of = [&](std::uint32_t file_id) {
+    return file_id < inputs_ ? file_id
+           : file_id < first ? known[file_id - inputs_]
+                             : base + (file_id - first);
+  };
+  for (std::uint32_t file_id = first; file_id < total; ++file_id) {
     const std::size_t where = in.offset();
     const std::uint32_t p = in.u32("points"), q = in.u32("points"), plane = in.u32("points");
-    const std::string field = indexed("points", id);
-    if (p >= id || q >= id)
+    const std::string field = indexed("points", file_id);
+    if (p >= file_id || q >= file_id)
       in.fail_at(where, field,
                  "endpoint " + std::to_string(std::max(p, q)) + " is not an earlier point");
     check_plane(where, field, plane, "plane");
+    const std::uint32_t id = id_of(file_id);
     point& x = at(id);
-    x.p = p;
-    x.q = q;
+    x.p = id_of(p);
+    x.q = id_of(q);
     x.plane = plane;
     // Exact signs (filter, structure, GMP): p and q strictly on opposite sides, so the
     // point's exact value (fp q - fq p) / (fp - fq) has a non-zero denominator.
     const fast_plane_core fp = filter(plane);
-    const int sp = point_sign_of(plane, fp, p);
-    const int sq = point_sign_of(plane, fp, q);
+    const int sp = point_sign_of(plane, fp, x.p);
+    const int sq = point_sign_of(plane, fp, x.q);
     if (sp * sq >= 0)
       in.fail_at(where, field,
                  "the segment between points " + std::to_string(p) + " and " + std::to_string(q) +
@@ -120,11 +150,13 @@ void exact_geometry::read_fragments(tree_file::reader& in, const triangle_soup& 
     fragment& f = fragments[i];
     for (std::uint32_t& id : f.v) id = in.u32("fragments");
     f.source = in.u32("fragments");
-    for (std::uint32_t id : f.v)
+    for (std::uint32_t& id : f.v) {
       if (id >= total)
         in.fail_at(
             at, indexed("fragments", i),
             "point " + std::to_string(id) + " out of range (" + std::to_string(total) + " points)");
+      id = id_of(id);
+    }
     check_plane(at, indexed("fragments", i), f.source, "source triangle");
     f.face = soup.triangles[f.source].face;
   }

@@ -86,6 +86,21 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   const auto start = clock::now();
   build_options scored;  // a heuristic row's score, when the heuristic is one (heuristic_table.h)
   const auto [heuristic, effective] = detail::heuristic_for(options, scored);
+  build_context ctx(*effective, heuristic, start);
+  // This thread also reports from inside long heuristic steps (cancellation, parallel.h).
+  detail::build_poller poller{[&ctx] {
+                                ctx.report(ctx.placed.load(std::memory_order_relaxed),
+                                           ctx.nodes.load(std::memory_order_relaxed));
+                              },
+                              start + std::chrono::milliseconds(100)};
+  const detail::scoped_poller polling(options.progress ? &poller : nullptr);
+  std::vector<work> frontier = grow_top(soup, options, ctx);
+  grow_frontier(frontier, ctx);
+}
+
+template <class G>
+auto basic_bsp_tree<G>::grow_top(const triangle_soup& soup, const build_options& options,
+                                 build_context& ctx) -> std::vector<work> {
   stats_.kernel = to_string(G::id);
   stats_.heuristic = options.heuristic;
   stats_.seed = options.seed;
@@ -118,15 +133,8 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   // breadth-first on this thread until there are `frontier_size` pending subtrees, then those
   // subtrees in parallel, each into its own node list and piece pool, merged in frontier order.
   // Heuristic seeds come from each node's path key, not from a creation counter, and the
-  // frontier size is fixed, so the tree is the same for any number of threads.
-  build_context ctx(*effective, heuristic, start);
-  // This thread also reports from inside long heuristic steps (cancellation, parallel.h).
-  detail::build_poller poller{[&ctx] {
-                                ctx.report(ctx.placed.load(std::memory_order_relaxed),
-                                           ctx.nodes.load(std::memory_order_relaxed));
-                              },
-                              start + std::chrono::milliseconds(100)};
-  const detail::scoped_poller polling(options.progress ? &poller : nullptr);
+  // frontier size is fixed, so the tree is the same for any number of threads (and for a
+  // build whose subtrees grow on other machines: tree_distributed.h).
   ctx.sources = soup.triangles.size();
   for (const vec3d& v : soup.vertices)
     for (int k = 0; k < 3; ++k) {
@@ -164,10 +172,12 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   collect_fragments(top);
   park_nodes(top);
   append_subtree(top, append_fragments(top));
+  return {std::make_move_iterator(queue.begin()), std::make_move_iterator(queue.end())};
+}
 
-  std::vector<work> frontier(std::make_move_iterator(queue.begin()),
-                             std::make_move_iterator(queue.end()));
-  queue.clear();
+template <class G>
+void basic_bsp_tree<G>::grow_frontier(std::vector<work>& frontier, build_context& ctx) {
+  const build_options& options = ctx.options;
   std::vector<subtree> parts(frontier.size());
   detail::parallel_failure failure;
   const long long count = static_cast<long long>(frontier.size());
@@ -182,25 +192,36 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   for (long long i = 0; i < count; ++i) {
     failure.run([&] {
       subtree& part = parts[static_cast<std::size_t>(i)];
-      part.root_parent = frontier[static_cast<std::size_t>(i)].parent;
-      part.root_side = frontier[static_cast<std::size_t>(i)].side;
-      frontier[static_cast<std::size_t>(i)].parent = -1;  // local to the part from here on
-      std::vector<work> stack;
-      stack.push_back(std::move(frontier[static_cast<std::size_t>(i)]));
-      while (!stack.empty() && !failure.failed()) {
-        work w = std::move(stack.back());
-        stack.pop_back();
-        grow_node(std::move(w), part, ctx,
-                  [&](work&& child) { stack.push_back(std::move(child)); });
-      }
-      // The part waits for the merge holding only its live fragments and nodes, without
-      // growth slack; its build scratch is freed first.
-      part.release_scratch();
-      collect_fragments(part);
-      park_nodes(part);
+      grow_part(frontier[static_cast<std::size_t>(i)], part, ctx, failure);
     });
   }
   failure.rethrow();
+  merge_parts(parts, ctx);
+}
+
+template <class G>
+void basic_bsp_tree<G>::grow_part(work& cell, subtree& part, build_context& ctx,
+                                  const detail::parallel_failure& failure) {
+  part.root_parent = cell.parent;
+  part.root_side = cell.side;
+  cell.parent = -1;  // local to the part from here on
+  std::vector<work> stack;
+  stack.push_back(std::move(cell));
+  while (!stack.empty() && !failure.failed()) {
+    work w = std::move(stack.back());
+    stack.pop_back();
+    grow_node(std::move(w), part, ctx, [&](work&& child) { stack.push_back(std::move(child)); });
+  }
+  // The part waits for the merge holding only its live fragments and nodes, without
+  // growth slack; its build scratch is freed first.
+  part.release_scratch();
+  collect_fragments(part);
+  park_nodes(part);
+}
+
+template <class G>
+void basic_bsp_tree<G>::merge_parts(std::vector<subtree>& parts, build_context& ctx) {
+  const build_options& options = ctx.options;
   // The side tests are done: the exact values they memoised go before the merge (output
   // makes again those it needs).
   if constexpr (detail::has_centres<G>::value) geom_.forget_exact_values();
@@ -223,7 +244,8 @@ basic_bsp_tree<G>::basic_bsp_tree(const triangle_soup& soup, const build_options
   stats_.splits = ctx.splits.load();
   stats_.fragments = fragments_.size();
   stats_.nodes = nodes_.size();
-  stats_.build_seconds = std::chrono::duration<double>(clock::now() - start).count();
+  stats_.build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx.start).count();
   stats_.peak_rss_bytes = peak_rss_bytes();
   if (options.progress)
     options.progress(

@@ -25,13 +25,6 @@ namespace exbsp {
 namespace tree_file {
 namespace {
 
-/// CRC-32 (the polynomial and conventions of zlib, PNG and zip: Boost.CRC's crc_32_type).
-std::uint32_t crc32_of(std::string_view bytes) {
-  boost::crc_32_type crc;
-  crc.process_bytes(bytes.data(), bytes.size());
-  return crc.checksum();
-}
-
 std::uint32_t read_u32_at(std::string_view bytes, std::size_t at) {
   std::uint32_t v = 0;
   for (int i = 0; i < 4; ++i)
@@ -64,54 +57,6 @@ bool plain_name(const std::string& s) {
         c != '+')
       return false;
   return true;
-}
-
-common_part read_common(reader& in) {
-  common_part c;
-  c.stats_offset = in.offset();
-  build_stats& s = c.stats;
-  for (const auto& [field, name] : stats_counts) s.*field = static_cast<std::size_t>(in.u64(name));
-  s.seed = in.u64("stats.seed");
-  const std::size_t seconds_at = in.offset();
-  s.build_seconds = in.f64("stats.build_seconds");
-  if (!std::isfinite(s.build_seconds) || s.build_seconds < 0)
-    in.fail_at(seconds_at, "stats.build_seconds", "not a finite non-negative number");
-  const std::size_t heuristic_at = in.offset();
-  s.heuristic = in.text("stats.heuristic", 64);
-  if (!plain_name(s.heuristic))
-    in.fail_at(heuristic_at, "stats.heuristic",
-               "not a heuristic name (letters, digits, '-', '_', '.', '+')");
-  c.sampled_candidates = in.u32("options.sampled_candidates");
-  c.sampled_samples = in.u32("options.sampled_samples");
-  c.sampled_split_weight = in.u32("options.sampled_split_weight");
-
-  triangle_soup& soup = c.soup;
-  soup.face_count = in.u32("soup.face_count");
-  const std::size_t vertices =
-      in.count("soup.vertices", 24, std::numeric_limits<std::uint32_t>::max());
-  soup.vertices.resize(vertices);
-  for (std::size_t i = 0; i < vertices; ++i) {
-    const std::size_t at = in.offset();
-    for (int k = 0; k < 3; ++k) soup.vertices[i][k] = in.f64("soup.vertices");
-    for (int k = 0; k < 3; ++k)
-      if (!std::isfinite(soup.vertices[i][k]))
-        in.fail_at(at, indexed("soup.vertices", i), "a coordinate is not finite");
-  }
-  const std::size_t triangles =
-      in.count("soup.triangles", 16, std::numeric_limits<std::uint32_t>::max());
-  soup.triangles.resize(triangles);
-  for (std::size_t i = 0; i < triangles; ++i) {
-    const std::size_t at = in.offset();
-    soup_triangle& t = soup.triangles[i];
-    for (int k = 0; k < 3; ++k) t.v[k] = in.u32("soup.triangles");
-    t.face = in.u32("soup.triangles");
-    for (int k = 0; k < 3; ++k)
-      if (t.v[k] >= vertices)
-        in.fail_at(at, indexed("soup.triangles", i),
-                   "vertex " + std::to_string(t.v[k]) + " out of range (" +
-                       std::to_string(vertices) + " vertices)");
-  }
-  return c;
 }
 
 }  // namespace
@@ -180,6 +125,61 @@ void reader::fail_at(std::size_t offset, const std::string& field, const std::st
 
 std::string indexed(const char* field, std::size_t i) {
   return std::string(field) + "[" + std::to_string(i) + "]";
+}
+
+/// CRC-32 (the polynomial and conventions of zlib, PNG and zip: Boost.CRC's crc_32_type).
+std::uint32_t crc32(std::string_view bytes) {
+  boost::crc_32_type crc;
+  crc.process_bytes(bytes.data(), bytes.size());
+  return crc.checksum();
+}
+
+common_part read_common(reader& in) {
+  common_part c;
+  c.stats_offset = in.offset();
+  build_stats& s = c.stats;
+  for (const auto& [field, name] : stats_counts) s.*field = static_cast<std::size_t>(in.u64(name));
+  s.seed = in.u64("stats.seed");
+  const std::size_t seconds_at = in.offset();
+  s.build_seconds = in.f64("stats.build_seconds");
+  if (!std::isfinite(s.build_seconds) || s.build_seconds < 0)
+    in.fail_at(seconds_at, "stats.build_seconds", "not a finite non-negative number");
+  const std::size_t heuristic_at = in.offset();
+  s.heuristic = in.text("stats.heuristic", 64);
+  if (!plain_name(s.heuristic))
+    in.fail_at(heuristic_at, "stats.heuristic",
+               "not a heuristic name (letters, digits, '-', '_', '.', '+')");
+  c.sampled_candidates = in.u32("options.sampled_candidates");
+  c.sampled_samples = in.u32("options.sampled_samples");
+  c.sampled_split_weight = in.u32("options.sampled_split_weight");
+
+  triangle_soup& soup = c.soup;
+  soup.face_count = in.u32("soup.face_count");
+  const std::size_t vertices =
+      in.count("soup.vertices", 24, std::numeric_limits<std::uint32_t>::max());
+  soup.vertices.resize(vertices);
+  for (std::size_t i = 0; i < vertices; ++i) {
+    const std::size_t at = in.offset();
+    for (int k = 0; k < 3; ++k) soup.vertices[i][k] = in.f64("soup.vertices");
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(soup.vertices[i][k]))
+        in.fail_at(at, indexed("soup.vertices", i), "a coordinate is not finite");
+  }
+  const std::size_t triangles =
+      in.count("soup.triangles", 16, std::numeric_limits<std::uint32_t>::max());
+  soup.triangles.resize(triangles);
+  for (std::size_t i = 0; i < triangles; ++i) {
+    const std::size_t at = in.offset();
+    soup_triangle& t = soup.triangles[i];
+    for (int k = 0; k < 3; ++k) t.v[k] = in.u32("soup.triangles");
+    t.face = in.u32("soup.triangles");
+    for (int k = 0; k < 3; ++k)
+      if (t.v[k] >= vertices)
+        in.fail_at(at, indexed("soup.triangles", i),
+                   "vertex " + std::to_string(t.v[k]) + " out of range (" +
+                       std::to_string(vertices) + " vertices)");
+  }
+  return c;
 }
 
 void write_common(writer& out, const build_stats& s, const common_part& common) {
@@ -260,18 +260,13 @@ void read_rational(reader& in, const char* field, mpq_ptr out) {
 }  // namespace tree_file
 
 std::string bsp::serialize() const {
-  using namespace tree_file;
-  writer out;
-  out.bytes(magic, magic_size);
-  out.u32(format_version);
-  out.u32(kernel_row_of(kernel()).file_code);
-  out.u64(0);  // body size, patched below
-  impl_->write_tree(out);
-  std::string& bytes = out.data();
-  const std::uint64_t body = bytes.size() - header_size;
-  for (int i = 0; i < 8; ++i) bytes[16 + i] = static_cast<char>((body >> (8 * i)) & 0xff);
-  out.u32(crc32_of(bytes));
-  return std::move(bytes);
+  return tree_file::framed(kernel_row_of(kernel()).file_code,
+                           [&](tree_file::writer& out) { impl_->write_tree(out, true); });
+}
+
+std::string bsp::serialize_reproducible() const {
+  return tree_file::framed(kernel_row_of(kernel()).file_code,
+                           [&](tree_file::writer& out) { impl_->write_tree(out, false); });
 }
 
 bsp bsp::deserialize(std::string_view bytes, const std::string& name) {
@@ -304,7 +299,7 @@ bsp bsp::deserialize(std::string_view bytes, const std::string& name) {
          std::to_string(actual - body) + " bytes of trailing data after the checksum");
   const std::size_t crc_at = bytes.size() - trailer_size;
   const std::uint32_t stored = read_u32_at(bytes, crc_at);
-  const std::uint32_t computed = crc32_of(bytes.substr(0, crc_at));
+  const std::uint32_t computed = crc32(bytes.substr(0, crc_at));
   if (stored != computed) {
     char text[160];
     std::snprintf(text, sizeof text,

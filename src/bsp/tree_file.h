@@ -33,6 +33,9 @@ inline constexpr std::size_t header_size = 24;
 /// The CRC-32 after the body.
 inline constexpr std::size_t trailer_size = 4;
 
+/// The CRC-32 (zlib's) of the bytes.
+std::uint32_t crc32(std::string_view bytes);
+
 /// Appends little-endian fixed-width fields to a byte string.
 class writer {
  public:
@@ -108,6 +111,25 @@ struct common_part {
 
 /// Writes the common part of a tree's body with the tree's `stats` (common.stats is ignored).
 void write_common(writer& out, const build_stats& stats, const common_part& common);
+/// Reads what write_common wrote (input_error through `in` for anything malformed).
+common_part read_common(reader& in);
+
+/// A whole tree file: the header (magic, version, the kernel's file code, the body's size),
+/// the body `write_body` writes, and the CRC-32 trailer.
+template <class WriteBody>
+std::string framed(std::uint32_t kernel_code, WriteBody&& write_body) {
+  writer out;
+  out.bytes(magic, magic_size);
+  out.u32(format_version);
+  out.u32(kernel_code);
+  out.u64(0);  // body size, patched below
+  write_body(out);
+  std::string& bytes = out.data();
+  const std::uint64_t body = bytes.size() - header_size;
+  for (int i = 0; i < 8; ++i) bytes[16 + i] = static_cast<char>((body >> (8 * i)) & 0xff);
+  out.u32(crc32(bytes));
+  return std::move(bytes);
+}
 
 /// A rational as u32 sign-and-length of the numerator's magnitude (bit 31: negative), its
 /// bytes (least significant first), then the same for the denominator (positive). The

@@ -81,9 +81,14 @@ class bsp_kernel_impl final : public bsp_impl {
     std::reverse(out.begin(), out.end());
     return out;
   }
-  void write_tree(tree_file::writer& out) const override {
+  void write_tree(tree_file::writer& out, bool timings) const override {
     require_input("save");
-    tree_file::write_common(out, tree_.stats(), input_);
+    build_stats stats = tree_.stats();
+    if (!timings) {
+      stats.build_seconds = 0;
+      stats.peak_rss_bytes = 0;
+    }
+    tree_file::write_common(out, stats, input_);
     tree_.write_tree(out);
   }
 

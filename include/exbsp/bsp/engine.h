@@ -263,6 +263,10 @@ class EXBSP_EXPORT bsp {
   void save(const std::string& path) const;
   /// The bytes save writes.
   std::string serialize() const;
+  /// The same with the two measured stats (build_seconds, peak_rss_bytes) written as 0: equal
+  /// trees give equal bytes, whichever run, machine or distributed build made them. A valid
+  /// saved tree (load and deserialize read it).
+  std::string serialize_reproducible() const;
   /// Loads a tree saved by save. Throws input_error naming the file (and, for a malformed
   /// file, the byte offset and field) for an unreadable, truncated, corrupted, wrong-version
   /// or inconsistent file; never returns a tree that fails the checks of docs/tree-file.md.
