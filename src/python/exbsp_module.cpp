@@ -17,10 +17,12 @@
 #include <atomic>
 #include <chrono>
 #include <thread>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <exbsp/bsp/distributed.h>
 #include <exbsp/bsp/engine.h>
 #include <exbsp/clip/section.h>
 #include <exbsp/clip/section_cap.h>
@@ -249,6 +251,36 @@ std::pair<py::array_t<std::uint32_t>, py::array_t<std::uint32_t>> triangle_array
 }
 
 /// exbsp.build: see docs/python.md.
+/// The coordinator of a distributed build (exbsp/bsp/distributed.h) as Python sees it.
+struct distributed_plan {
+  std::unique_ptr<exbsp::distributed_build> build;
+  std::vector<bool> added;
+
+  exbsp::distributed_build& get() {
+    if (!build) throw usage_error("DistributedBuild: finish() was already called");
+    return *build;
+  }
+};
+
+distributed_plan plan_build(
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+    const py::object& faces, const std::optional<std::string>& heuristic, std::uint64_t seed,
+    const std::array<unsigned, 3>& sampled, std::size_t max_fragments, const py::object& face_ids) {
+  const exbsp::triangle_soup soup = soup_from(vertices, faces, face_ids);
+  exbsp::build_options o;
+  o.heuristic = heuristic ? *heuristic : exbsp::default_heuristic();
+  o.seed = seed;
+  o.max_fragments = max_fragments;
+  o.sampled_candidates = sampled[0];
+  o.sampled_samples = sampled[1];
+  o.sampled_split_weight = sampled[2];
+  engine_call no_gil;
+  distributed_plan plan;
+  plan.build = std::make_unique<exbsp::distributed_build>(soup, o);
+  plan.added.assign(plan.build->cell_count(), false);
+  return plan;
+}
+
 exbsp::bsp build(const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
                  const py::object& faces, const std::string& kernel,
                  const std::optional<std::string>& heuristic, std::uint64_t seed,
@@ -690,8 +722,15 @@ PYBIND11_MODULE(_exbsp, m) {
           py::arg("path"),
           "Writes the tree to a file (docs/tree-file.md); exbsp.load reads it back.")
       .def(
-          "serialize", [](py::handle self) { return py::bytes(tree_of(self).serialize()); },
-          "The bytes save writes.")
+          "serialize",
+          [](py::handle self, bool reproducible) {
+            const exbsp::bsp& t = tree_of(self);
+            return py::bytes(reproducible ? t.serialize_reproducible() : t.serialize());
+          },
+          py::kw_only(), py::arg("reproducible") = false,
+          "The bytes save writes; reproducible=True writes the two measured stats "
+          "(build_seconds, peak_rss_bytes) as 0, so that equal trees give equal bytes (a "
+          "distributed build and a local one, two runs, two machines).")
       .def(
           "render",
           [](py::handle self, int width, int height, const std::string& view,
@@ -720,6 +759,70 @@ PYBIND11_MODULE(_exbsp, m) {
                       [](const py::bytes& b) {
                         return exbsp::bsp::deserialize(std::string(b), "<pickled exbsp.Tree>");
                       }));
+
+  py::class_<distributed_plan>(
+      m, "DistributedBuild",
+      "The coordinator of a distributed build (exbsp.plan_build): the top of the tree, grown "
+      "here, and its frontier cells for the workers (exbsp.build_cell).")
+      .def_property_readonly(
+          "input", [](distributed_plan& p) { return py::bytes(p.get().input()); },
+          "The bytes every worker needs besides its cell: the soup and the options.")
+      .def_property_readonly(
+          "cells",
+          [](distributed_plan& p) {
+            py::list out;
+            for (std::size_t i = 0; i < p.get().cell_count(); ++i)
+              out.append(py::bytes(p.get().cell(i)));
+            return out;
+          },
+          "The frontier cells' bytes, in frontier order (at most 16; none when the top holds "
+          "the whole tree).")
+      .def(
+          "add_part",
+          [](distributed_plan& p, std::size_t i, const py::bytes& part) {
+            std::string bytes(part);
+            exbsp::distributed_build& b = p.get();
+            engine_call no_gil;
+            b.add_part(i, std::move(bytes));
+          },
+          py::arg("i"), py::arg("part"),
+          "Adds the part exbsp.build_cell made from cells[i] (any order, each once).")
+      .def(
+          "finish",
+          [](distributed_plan& p) {
+            exbsp::distributed_build& b = p.get();
+            std::optional<exbsp::bsp> tree;
+            {
+              engine_call no_gil;
+              tree = b.finish();
+            }
+            p.build.reset();
+            return std::move(*tree);
+          },
+          "The Tree, once every part is in: the tree exbsp.build makes (byte-identical "
+          "serialize(reproducible=True)). InputError for a malformed or mismatched part.");
+  m.def("plan_build", &plan_build, py::arg("vertices"), py::arg("faces"), py::kw_only(),
+        py::arg("heuristic") = py::none(), py::arg("seed") = 0,
+        py::arg("sampled") = std::array<unsigned, 3>{16, 512, 8}, py::arg("max_fragments") = 0,
+        py::arg("face_ids") = py::none(),
+        "Grows the top levels of exbsp.build(vertices, faces, ...) (exact kernel; named "
+        "heuristics only) and returns a DistributedBuild whose cells any worker can grow with "
+        "exbsp.build_cell. exbsp.build_distributed runs the whole build on a Dask cluster.");
+  m.def(
+      "build_cell",
+      [](const py::bytes& input, const py::bytes& cell) {
+        const std::string in(input), c(cell);
+        std::string part;
+        {
+          engine_call no_gil;
+          part = exbsp::distributed_build::build_cell(in, c);
+        }
+        return py::bytes(part);
+      },
+      py::arg("input"), py::arg("cell"),
+      "A worker's job: the subtree of one cell (DistributedBuild.cells[i]) for the build's "
+      "input (DistributedBuild.input), as bytes for DistributedBuild.add_part. Depends on the "
+      "bytes only; InputError for malformed bytes.");
 
   m.def("build", &build, py::arg("vertices"), py::arg("faces"), py::kw_only(),
         py::arg("kernel") = "exact", py::arg("heuristic") = py::none(), py::arg("seed") = 0,

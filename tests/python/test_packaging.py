@@ -70,7 +70,8 @@ def test_pip_installs_the_module_its_stubs_and_py_typed(venv: pathlib.Path, tmp_
     assert done.returncode == 0, done.stderr
     version, files = done.stdout.splitlines()
     assert version == exbsp.version
-    for name in ("__init__.py", "__init__.pyi", "_exbsp.pyi", "drawing_sets.py", "py.typed"):
+    for name in ("__init__.py", "__init__.pyi", "_exbsp.pyi", "distributed.py", "drawing_sets.py",
+                 "py.typed"):
         assert name in files
     assert any(f.startswith("_exbsp") and f.endswith(".so") for f in eval(files))
     assert "site-packages" in _run(venv, "-c", "import exbsp; print(exbsp.__file__)",

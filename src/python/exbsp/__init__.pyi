@@ -1,5 +1,7 @@
 # SPDX-License-Identifier: LGPL-3.0-or-later
-# Type stubs of the package exbsp: the extension's names (_exbsp.pyi) and drawing_set.
+# Type stubs of the package exbsp: the extension's names (_exbsp.pyi), drawing_set and
+# build_distributed.
+import numpy.typing as npt
 from typing import Any, Callable, Dict, Optional, Sequence, Union
 
 from ._exbsp import *  # noqa: F401,F403
@@ -7,6 +9,7 @@ from ._exbsp import DEFAULT_HEURISTIC as DEFAULT_HEURISTIC
 from ._exbsp import HEURISTICS as HEURISTICS
 from ._exbsp import KERNELS as KERNELS
 from ._exbsp import Candidate as Candidate
+from ._exbsp import DistributedBuild as DistributedBuild
 from ._exbsp import Error as Error
 from ._exbsp import InputError as InputError
 from ._exbsp import LimitError as LimitError
@@ -16,9 +19,11 @@ from ._exbsp import Tree as Tree
 from ._exbsp import UsageError as UsageError
 from ._exbsp import __version__ as __version__
 from ._exbsp import build as build
+from ._exbsp import build_cell as build_cell
 from ._exbsp import deserialize as deserialize
 from ._exbsp import drawing as drawing
 from ._exbsp import load as load
+from ._exbsp import plan_build as plan_build
 from ._exbsp import read_mesh as read_mesh
 from ._exbsp import section as section
 from ._exbsp import today_date as today_date
@@ -35,3 +40,13 @@ def drawing_set(
     progress: Callable[[int, int, str], None] = ...,
     **options: object,
 ) -> Dict[str, Any]: ...
+
+def build_distributed(
+    vertices: npt.ArrayLike,
+    faces: Any,
+    *,
+    scheduler: object = ...,
+    report: Optional[Dict[str, Any]] = ...,
+    progress: Optional[Callable[[int, int], None]] = ...,
+    **options: object,
+) -> Tree: ...
