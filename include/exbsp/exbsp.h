@@ -17,6 +17,7 @@
 // it is the renderer's inside, and changes with it.
 #pragma once
 #include <exbsp/adapters/triangle_list.h>
+#include <exbsp/bsp/distributed.h>
 #include <exbsp/bsp/engine.h>
 #include <exbsp/bsp/traversal.h>
 #include <exbsp/clip/bbox.h>

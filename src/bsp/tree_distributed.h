@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
-// basic_bsp_tree<G> across machines (exact geometry only; bsp/distributed.h is the public side,
-// docs/distributed.md the manual). A build grows its top levels breadth-first until the
-// frontier holds 16 cells, then grows each cell's subtree on its own: a cell's subtree depends
-// only on the soup, the options and the cell (its fragments in list order, its side, depth and
-// path key, from which every heuristic seed below it comes). So the coordinator grows the top
+// basic_bsp_tree<G> across machines (exact geometry only; exbsp/bsp/distributed.h is the public
+// side). A build grows its top levels breadth-first until the frontier holds 16 cells, then
+// grows each cell's subtree on its own: a cell's subtree depends only on the soup, the options
+// and the cell (its fragments in list order, its side, depth and path key, from which every
+// heuristic seed below it comes). So the coordinator grows the top
 // (top_only), writes each cell (write_cell), workers grow them (grow_cell) and the coordinator
 // appends the parts in frontier order (append_part): the tree a local build makes, node for node
 // and fragment for fragment.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
-// A BSP build spread over machines (docs/distributed.md): the same tree as bsp::build, node for
-// node, with the subtrees below the top levels grown anywhere.
+// A BSP build spread over machines (from Python: docs/python.md "Distributed builds"): the same
+// tree as bsp::build, node for node, with the subtrees below the top levels grown anywhere.
 //
 // bsp::build grows its top levels until 16 cells are pending, then each cell's subtree on its
 // own: a subtree depends only on the soup, the options and its cell (fragments in list order,
