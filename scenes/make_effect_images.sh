@@ -35,6 +35,20 @@ for name in effects_lighting effects_fog effects_dof effects_antialias; do
 done
 "$exbsp" render "$here/effects_highlights.json" -o "$out/effects_highlights.png"
 echo "wrote images/effects_highlights.png"
+"$exbsp" render "$here/effects_smooth.json" -o "$out/effects_smooth.png"
+python3 - "$here/effects_smooth.json" "$tmp/effects_smooth_flat.json" <<'PY'
+import json, os, sys
+with open(sys.argv[1]) as f:
+    scene = json.load(f)
+scene["effects"]["lighting"]["smooth"] = False
+base = os.path.dirname(os.path.abspath(sys.argv[1]))
+for mesh in scene["meshes"]:
+    mesh["file"] = os.path.join(base, mesh["file"])
+with open(sys.argv[2], "w") as f:
+    json.dump(scene, f, indent=1)
+PY
+"$exbsp" render "$tmp/effects_smooth_flat.json" -o "$out/effects_smooth_flat.png"
+echo "wrote images/effects_smooth.png and images/effects_smooth_flat.png"
 "$exbsp" render "$here/curves.json" -o "$out/curves.png"
 without "$here/curves.json" curves "$tmp/curves.json"
 "$exbsp" render "$tmp/curves.json" -o "$out/curves_without.png"

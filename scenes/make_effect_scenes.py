@@ -62,9 +62,35 @@ def helix(centre, radius, z0, rise_per_turn, quarter_turns):
     return curves
 
 
+def uv_sphere(slices, stacks):
+    """(vertices, triangles) of a unit UV sphere around z, outward winding, shared vertices."""
+    verts = [[0.0, 0.0, 1.0]]
+    for j in range(1, stacks):
+        th = math.pi * j / stacks
+        for i in range(slices):
+            ph = 2 * math.pi * i / slices
+            verts.append([round(math.sin(th) * math.cos(ph), 9), round(math.sin(th) * math.sin(ph), 9),
+                          round(math.cos(th), 9)])
+    verts.append([0.0, 0.0, -1.0])
+    south = len(verts) - 1
+
+    def at(i, j):
+        return 1 + (j - 1) * slices + i % slices
+    tris = []
+    for i in range(slices):
+        tris.append([0, at(i, 1), at(i + 1, 1)])
+        for j in range(1, stacks - 1):
+            tris.append([at(i, j), at(i, j + 1), at(i + 1, j + 1)])
+            tris.append([at(i, j), at(i + 1, j + 1), at(i + 1, j)])
+        tris.append([at(i, stacks - 1), south, at(i + 1, stacks - 1)])
+    return verts, tris
+
+
 def main():
     ms.write_off(os.path.join(ms.MESHES, "floor", "pz.off"), [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]],
                  [[0, 1, 2, 3]], "unit floor quad facing +z (scaled by the scene transforms)")
+    ms.write_off(os.path.join(ms.MESHES, "sphere", "sphere.off"), *uv_sphere(32, 16),
+                 "unit UV sphere, 32 slices x 16 stacks (smooth shading's scene)")
     red, blue, grey, green = [220, 70, 60], [70, 130, 220], [170, 180, 195], [60, 170, 100]
     plank_colors = [[240, 190, 60], [235, 125, 45], [150, 95, 200]]
     cube_t = ms.compose(ms.translate(-4.6, 0.6, 1.0), ms.rotate(25, [0, 0, 1]))
@@ -101,6 +127,24 @@ def main():
     ms.write_scene("effects_highlights",
                    lit_parts({"headlight": True, "intensity": 0.5, "ambient": 0.25, "specular": 0.3,
                               "shininess": 24, "lights": [{"position": [5, -2, 6], "intensity": 0.35}]}))
+
+    # Smooth shading: a sphere, the gear and its shaft in one colour each; the sphere and the
+    # shaft are curved (normals averaged across their edges), the gear's teeth keep their creases.
+    # A key light and a weak fill light from the right, as CAD viewers light parts.
+    smooth_parts = ([{"file": "meshes/sphere/sphere.off", "color": [210, 90, 70],
+                      "transform": ms.flat(ms.compose(ms.translate(-0.9, 0.4, 1.3), scale(1.4, 1.4, 1.4)))}] +
+                    part("gear", grey, ms.compose(gear_t, ms.rotate(7, [0, 0, 1])), False) +
+                    part("shaft", green, gear_t, False) +
+                    floor([200, 200, 190], ms.compose(ms.translate(-9, -7, -0.2), scale(18, 13, 1))))
+    ms.write_scene("effects_smooth", {
+        "meshes": smooth_parts,
+        "camera": {"eye": [1.6, -8.5, 5.5], "look_at": [1.6, 0.5, 1.0], "up": [0, 0, 1]},
+        "projection": {"type": "perspective", "fovy_deg": 50, "near": 1, "far": 100},
+        "viewport": small,
+        "background": BACKGROUND,
+        "effects": {"lighting": {"direction": [-0.45, -0.55, 0.7], "intensity": 0.7, "ambient": 0.25,
+                                 "lights": [{"direction": [0.6, -0.3, 0.3], "intensity": 0.3}],
+                                 "smooth": True, "crease_deg": 35}}})
 
     # Fog: an avenue of pillars on a long floor, far plane at 40 while the floor runs to 90:
     # without fog the far plane cuts floor and pillars with a hard edge ("pop" when moving).

@@ -12,10 +12,12 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <exbsp/core/errors.h>
@@ -33,6 +35,7 @@
 #include "view/effects.h"
 #include "view/fog.h"
 #include "view/lighting.h"
+#include "view/smooth_shading.h"
 #include "view/line_raster.h"
 #include "view/paint.h"
 #include "view/rasterizer.h"
@@ -119,6 +122,13 @@ TEST(EffectParsing, EveryErrorNamesTheEffectOrParameterKey) {
       {"lighting two_sided a number",
        {{"lighting", {{"two_sided", 1}}}},
        "/effects/lighting/two_sided"},
+      {"lighting smooth a string", {{"lighting", {{"smooth", "yes"}}}}, "/effects/lighting/smooth"},
+      {"lighting crease_deg zero",
+       {{"lighting", {{"crease_deg", 0}}}},
+       "/effects/lighting/crease_deg"},
+      {"lighting crease_deg beyond 180",
+       {{"lighting", {{"crease_deg", 200}}}},
+       "/effects/lighting/crease_deg"},
       {"lighting headlight and direction",
        {{"lighting", {{"headlight", true}, {"direction", {0, 0, 1}}}}},
        "/effects/lighting/direction"},
@@ -222,6 +232,8 @@ TEST(EffectParsing, DefaultsAndGivenValues) {
   EXPECT_EQ(e.lighting.intensity, 0.8);
   EXPECT_EQ(e.lighting.ambient, 0.2);
   EXPECT_TRUE(e.lighting.two_sided);
+  EXPECT_FALSE(e.lighting.smooth);
+  EXPECT_EQ(e.lighting.crease_deg, 30);
   EXPECT_EQ(e.fog.mode, fog_mode::linear);
   EXPECT_EQ(e.fog.start, 1);                   // near
   EXPECT_EQ(e.fog.end, 100);                   // far
@@ -232,7 +244,12 @@ TEST(EffectParsing, DefaultsAndGivenValues) {
       {"fog", {{"mode", "exp"}}},
       {"depth_of_field", {{"focal_length", 0.05}, {"f_number", 2}, {"focus_distance", 5}}},
       {"lighting",
-       {{"direction", {1, 2, 3}}, {"intensity", 0.5}, {"ambient", 0}, {"two_sided", false}}}};
+       {{"direction", {1, 2, 3}},
+        {"intensity", 0.5},
+        {"ambient", 0},
+        {"two_sided", false},
+        {"smooth", true},
+        {"crease_deg", 180}}}};
   s = parse(d);
   EXPECT_EQ(s.effect_settings.fog.mode, fog_mode::exponential);
   EXPECT_NEAR(s.effect_settings.fog.density * 100, std::log(255.0),
@@ -241,6 +258,8 @@ TEST(EffectParsing, DefaultsAndGivenValues) {
   EXPECT_EQ(s.effect_settings.depth_of_field.samples, 32);
   EXPECT_EQ(s.effect_settings.lighting.direction.z, 3);
   EXPECT_FALSE(s.effect_settings.lighting.two_sided);
+  EXPECT_TRUE(s.effect_settings.lighting.smooth);
+  EXPECT_EQ(s.effect_settings.lighting.crease_deg, 180);
 }
 
 TEST(EffectParsing, FogEndingBeyondTheFarPlaneIsWarnedAbout) {
@@ -359,10 +378,9 @@ TEST(Lighting, TwoSidedFacesTheViewerAndOneSidedKeepsTheWinding) {
   EXPECT_EQ(one.picture.pixel(20, 20), (rgb8{60, 30, 15}));
 }
 
-TEST(Lighting, ColoursClampAt255AndSplitPiecesShareTheirColour) {
-  EXPECT_EQ(lambert_color({200, 100, 0}, {0, 0, 1}, lighting({0, 0, 1}, 1.0, 0.5, true)),
-            (rgb8{255, 150, 0}));
-  // The cyclic planks force a split: every piece of a face gets the same colour.
+/// Three tilted planks in a cycle (each above the next somewhere), one quad face each: the
+/// tree must split them.
+triangle_soup tilted_cyclic_planks() {
   triangle_soup s;
   for (int i = 0; i < 3; ++i) {
     const double a = i * 2.0943951023931953, ux = std::cos(a), uy = std::sin(a), nx = -uy, ny = ux;
@@ -373,6 +391,14 @@ TEST(Lighting, ColoursClampAt255AndSplitPiecesShareTheirColour) {
           {cx + 2.1 * t * ux + 0.3 * w * nx, cy + 2.1 * t * uy + 0.3 * w * ny, 0.25 * 2.1 * t});
     add_quad(s, v[0], v[1], v[2], v[3]);
   }
+  return s;
+}
+
+TEST(Lighting, ColoursClampAt255AndSplitPiecesShareTheirColour) {
+  EXPECT_EQ(lambert_color({200, 100, 0}, {0, 0, 1}, lighting({0, 0, 1}, 1.0, 0.5, true)),
+            (rgb8{255, 150, 0}));
+  // The cyclic planks force a split: every piece of a face gets the same colour.
+  const triangle_soup s = tilted_cyclic_planks();
   // Also with a headlight, a point light and highlights, which depend on the face's place.
   lighting_settings placed = lighting({0.3, -0.2, 1}, 0.5, 0.2, true);
   placed.headlight = true;
@@ -461,6 +487,117 @@ TEST(Lighting, AHeadlightLightsTheSideTheViewerSees) {
   EXPECT_EQ(lit.picture.pixel(20, 20), (rgb8{180, 90, 45}));
   EXPECT_EQ(lit.picture.pixel(12, 27), (rgb8{180, 90, 45}));
   EXPECT_EQ(lit.picture.pixel(27, 12), (rgb8{180, 90, 45}));
+}
+
+// ---------------------------------------------------------------------------------------
+// Smooth shading (view/smooth_shading.h)
+
+lighting_settings smooth_lighting(double crease_deg) {
+  lighting_settings s = lighting({0.2, -0.4, 1}, 0.7, 0.25, true);
+  s.smooth = true;
+  s.crease_deg = crease_deg;
+  return s;
+}
+
+TEST(SmoothShading, AFlatMeshIsPaintedExactlyAsFlatShadingPaintsIt) {
+  frame flat = lit_square_frame(true), smooth = lit_square_frame(true);
+  flat.settings.lighting = lighting({0.2, -0.4, 1}, 0.7, 0.25, true);
+  smooth.settings.lighting = smooth_lighting(30);
+  run(flat, {"lighting"});
+  run(smooth, {"lighting"});
+  ASSERT_FALSE(smooth.corner_colors.empty());
+  EXPECT_TRUE(flat.picture.data() == smooth.picture.data());
+}
+
+/// A roof: two triangles sharing the edge (0,-1,0)-(0,1,0), each sloping down by `slope_deg`.
+frame roof_frame(double slope_deg) {
+  const double t = std::tan(slope_deg * 3.14159265358979323846 / 180);
+  triangle_soup s;
+  s.vertices = {{0, -1, 0}, {0, 1, 0}, {-1, 0, -t}, {1, 0, -t}};
+  s.triangles = {{{0, 1, 2}, 0}, {{1, 0, 3}, 1}};
+  s.face_count = 2;
+  return perspective_frame(std::move(s), {{200, 180, 160}, {200, 180, 160}},
+                           {{0.3, -0.2, 5}, {0, 0, 0}, {0, 1, 0}}, 60, 60);
+}
+
+TEST(SmoothShading, SharedCornersAgreeBelowTheCreaseAngleAndDifferAboveIt) {
+  // Dihedral deviation 2 x 10 = 20 degrees: smooth under crease_deg = 30, a crease under 15.
+  for (const double crease : {30.0, 15.0}) {
+    frame f = roof_frame(10);
+    f.settings.lighting = smooth_lighting(crease);
+    run(f, {"lighting"});
+    ASSERT_EQ(f.fragments.size(), 2u);
+    // The corners on the shared edge, found by position in each fragment.
+    std::map<std::pair<double, double>, std::set<std::tuple<int, int, int>>> at;
+    for (std::size_t i = 0; i < 2; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const vec3d& p = f.fragments[i].v[k];
+        const rgb8 c = f.corner_colors[i][k];
+        if (p[0] == 0) at[{p[0], p[1]}].insert({c.r, c.g, c.b});
+      }
+    ASSERT_EQ(at.size(), 2u);
+    for (const auto& [where, colours] : at) EXPECT_EQ(colours.size(), crease > 20 ? 1u : 2u);
+    if (crease > 20) {
+      // The shared normal is the mean of the two: (0, 0, 1), lit as a flat face facing up.
+      const rgb8 up = lambert_color({200, 180, 160}, {0, 0, 1}, f.settings.lighting);
+      for (const auto& [where, colours] : at)
+        EXPECT_EQ(*colours.begin(), std::make_tuple(int(up.r), int(up.g), int(up.b)));
+    }
+  }
+}
+
+TEST(SmoothShading, InterpolationIsPerspectiveCorrect) {
+  // A triangle receding from the eye, corner colours far apart: the colour seen at the image
+  // of the world point sum b_k P_k is sum b_k c_k (to rounding), not the screen-space mix.
+  const frame f = perspective_frame({}, {}, {{0, -3, 1}, {0, 10, 0}, {0, 0, 1}}, 200, 200, 50);
+  const fragment_d tri{0, {{{-2, 0, 0}, {2, 0, 0}, {0, 30, 0}}}};
+  const std::array<rgb8, 3> colors{{{250, 0, 0}, {0, 250, 0}, {0, 0, 250}}};
+  const corner_interpolator smooth(tri, colors, f.view);
+  const mat4 m = f.view.projection * f.view.model_view;
+  for (const std::array<double, 3>& b :
+       {std::array<double, 3>{0.2, 0.3, 0.5}, {0.45, 0.45, 0.1}, {0.1, 0.1, 0.8}}) {
+    point3 p{0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+      p = {p.x + b[k] * tri.v[k][0], p.y + b[k] * tri.v[k][1], p.z + b[k] * tri.v[k][2]};
+    const hpoint c = m * p;
+    const window_point w = to_window(f.view.vp, c.x / c.w, c.y / c.w, c.z / c.w);
+    const rgb8 got = smooth.at(w.x, w.y, {1, 2, 3});
+    EXPECT_NEAR(got.r, 250 * b[0], 1.0);
+    EXPECT_NEAR(got.g, 250 * b[1], 1.0);
+    EXPECT_NEAR(got.b, 250 * b[2], 1.0);
+  }
+  // Screen-space (affine) interpolation would be far off at the far corner's side: the image
+  // of the world centroid is much nearer the far corner's image than the centroid of the images.
+  point3 centroid{0, 10, 0};
+  const hpoint c = m * centroid;
+  const window_point w = to_window(f.view.vp, c.x / c.w, c.y / c.w, c.z / c.w);
+  std::array<window_point, 3> img;
+  for (int k = 0; k < 3; ++k) {
+    const hpoint q = m * point3{tri.v[k][0], tri.v[k][1], tri.v[k][2]};
+    img[k] = to_window(f.view.vp, q.x / q.w, q.y / q.w, q.z / q.w);
+  }
+  const double screen_centroid_y = (img[0].y + img[1].y + img[2].y) / 3;
+  EXPECT_GT(std::abs(w.y - screen_centroid_y), 10.0);
+}
+
+TEST(SmoothShading, SplitPiecesJoinWithoutASeam) {
+  // The cyclic planks force splits; along each split line the pieces' colours agree (they
+  // interpolate one triangle's corners): no pixel in a plank's interior differs from its
+  // neighbours by more than the smooth gradient does elsewhere.
+  const triangle_soup s = tilted_cyclic_planks();
+  frame f = perspective_frame(s, {{250, 200, 150}, {250, 200, 150}, {250, 200, 150}},
+                              {{0.3, -2, 8}, {0, 0, 0}, {0, 1, 0}}, 160, 160);
+  f.settings.lighting = smooth_lighting(30);
+  run(f, {"lighting"});
+  ASSERT_GT(f.tree->stats().splits, 0u);
+  // Flat planks: smooth shading equals the flat colour on each (every corner normal is the
+  // plank's), so a split line would show as a jump: there is none.
+  frame g = perspective_frame(s, {{250, 200, 150}, {250, 200, 150}, {250, 200, 150}},
+                              {{0.3, -2, 8}, {0, 0, 0}, {0, 1, 0}}, 160, 160);
+  g.settings.lighting = smooth_lighting(30);
+  g.settings.lighting.smooth = false;
+  run(g, {"lighting"});
+  EXPECT_TRUE(f.picture.data() == g.picture.data());
 }
 
 // ---------------------------------------------------------------------------------------

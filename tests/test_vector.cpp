@@ -106,6 +106,9 @@ frame scene_frame(const std::string& name, scene::scene& s) {
   f.soup = std::move(g.soup);
   f.mesh_face_offsets = std::move(g.face_offsets);
   f.settings = s.effect_settings;
+  // SVG and PDF fill their regions flat (effect_settings.h); the smooth raster has an oracle of
+  // its own (test_oracle_gl, Mesa's GL_SMOOTH). Compared here: the flat PNG.
+  f.settings.lighting.smooth = false;
   f.curves = s.curves;
   f.vector = s.vector;
   return f;

@@ -19,6 +19,8 @@ class bsp_impl {
   virtual kernel_id kernel() const = 0;
   virtual std::size_t fragment_count() const = 0;
   virtual fragment_d fragment(std::size_t i) const = 0;
+  /// The input triangle fragment i lies in (usage_error out of range).
+  virtual std::uint32_t source(std::size_t i) const = 0;
   /// Calls visit(k, axis, value) for the exact coordinates of fragment i (k, axis = 0..2).
   /// Throws usage_error for an index out of range or an inexact kernel.
   virtual void visit_exact(std::size_t i, const exact_visitor& visit) const = 0;

@@ -43,6 +43,7 @@ const triangle_soup& bsp::input() const { return impl_->input(); }
 kernel_id bsp::kernel() const { return impl_->kernel(); }
 std::size_t bsp::fragment_count() const { return impl_->fragment_count(); }
 fragment_d bsp::fragment(std::size_t i) const { return impl_->fragment(i); }
+std::uint32_t bsp::fragment_source(std::size_t i) const { return impl_->source(i); }
 
 std::vector<fragment_d> bsp::fragments_double() const {
   std::vector<fragment_d> out;

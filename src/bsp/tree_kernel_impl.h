@@ -59,6 +59,10 @@ class bsp_kernel_impl final : public bsp_impl {
     tree_.geometry().prepare_output(tree_.fragments());
     return tree_.geometry().to_double(tree_.fragments()[i]);
   }
+  std::uint32_t source(std::size_t i) const override {
+    if (i >= tree_.fragments().size()) throw usage_error("fragment_source: index out of range");
+    return tree_.fragments()[i].source;
+  }
   void visit_exact(std::size_t i, const exact_visitor& visit) const override {
     if (i >= tree_.fragments().size()) throw usage_error("fragment_exact: index out of range");
     tree_.geometry().visit_exact(tree_.fragments()[i], visit);

@@ -30,13 +30,13 @@ void no_parameters(const reader& r, const json& params, const std::string& key, 
 /// defaults: direction [0,0,1] (towards the light, not zero), intensity 0.8 (>= 0), ambient
 /// 0.2 (>= 0), two_sided true, headlight false, specular 0 (>= 0), shininess 32 (>= 0), lights
 /// [] (at most max_lights - 1 objects, each one of "direction" (not zero), "position" or
-/// "headlight": true, and "intensity", default 0.8).
+/// "headlight": true, and "intensity", default 0.8), smooth false, crease_deg 30 (in (0, 180]).
 void parse_lighting_parameters(const reader& r, const json& p, const std::string& key,
                                const effect_scene&, effect_settings& out) {
   lighting_settings& l = out.lighting;
   r.reject_unknown(p, key, "lighting",
                    {"direction", "intensity", "ambient", "two_sided", "headlight", "specular",
-                    "shininess", "lights"});
+                    "shininess", "lights", "smooth", "crease_deg"});
   // A direction or position whose length is zero or overflows cannot be normalised.
   const auto vector_at = [&](const json& v, const std::string& at, bool zero_ok) {
     const view::vector3 d = r.triple(v, at);
@@ -64,6 +64,11 @@ void parse_lighting_parameters(const reader& r, const json& p, const std::string
     l.specular = r.positive(*v, key + "/specular", true);
   if (const json* v = r.optional(p, "shininess"))
     l.shininess = r.positive(*v, key + "/shininess", true);
+  flag(p, key, "smooth", l.smooth);
+  if (const json* v = r.optional(p, "crease_deg")) {
+    l.crease_deg = r.positive(*v, key + "/crease_deg", false);
+    if (l.crease_deg > 180) r.fail(key + "/crease_deg", "must be in (0, 180]");
+  }
   r.for_each_entry(p, key, "lights", [&](const json& e, const std::string& at) {
     if (l.lights.size() + 1 >= view::max_lights)
       r.fail(key + "/lights", "at most " + std::to_string(view::max_lights - 1) + " more lights (" +

@@ -78,6 +78,7 @@ std::string depth_of_field_stage(frame& f, const pipeline& per_view) {
   std::vector<screen_polygon> polygons = std::move(f.polygons);
   std::vector<screen_line> lines = std::move(f.lines);
   std::vector<rgb8> colors = std::move(f.fragment_colors);
+  std::vector<std::array<rgb8, 3>> corner_colors = std::move(f.corner_colors);
   std::optional<fog_shading> fog = std::move(f.fog);
   std::optional<sample_shader> shader = std::move(f.shader);
   const std::size_t culled = f.culled, fully_clipped = f.fully_clipped;
@@ -97,6 +98,7 @@ std::string depth_of_field_stage(frame& f, const pipeline& per_view) {
   f.polygons = std::move(polygons);
   f.lines = std::move(lines);
   f.fragment_colors = std::move(colors);
+  f.corner_colors = std::move(corner_colors);
   f.fog = std::move(fog);
   f.shader = std::move(shader);
   f.culled = culled;

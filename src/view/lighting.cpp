@@ -2,6 +2,8 @@
 // Flat Lambert shading (notation in lighting.h).
 #include "view/lighting.h"
 
+#include "view/smooth_shading.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -108,7 +110,8 @@ std::string lighting_stage(frame& f) {
     f.fragment_colors[idx] = lit_color(f.color_of(fr.face), shading_normal(fr, f.view, s.two_sided),
                                        centroid, f.view, s);
   }
-  return std::to_string(f.order.size()) + " fragments lit, " +
+  if (s.smooth) smooth_corner_colors(f);
+  return std::to_string(f.order.size()) + " fragments lit, " + (s.smooth ? "smooth, " : "") +
          (s.two_sided ? "two-sided" : "one-sided") +
          (s.lights.empty() ? "" : ", " + std::to_string(1 + s.lights.size()) + " lights") +
          (s.headlight ? ", headlight" : "") + (s.specular > 0 ? ", specular" : "");

@@ -106,6 +106,7 @@ std::string adopt_tree_stage(frame& f) {
 std::string order_stage(frame& f) {
   // A new view: the products of the effect and curve stages of the previous view are stale.
   f.fragment_colors.clear();
+  f.corner_colors.clear();
   f.lines.clear();
   f.fog.reset();
   f.shader.reset();

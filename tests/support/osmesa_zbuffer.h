@@ -136,6 +136,9 @@ struct zbuffer_scene {
   std::array<double, 16> model_view{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  ///< row-major
   std::vector<std::array<std::array<double, 3>, 3>> triangles;  ///< world (object) coordinates
   std::vector<view::rgb8> colors;                               ///< one per triangle
+  /// When not empty: a colour per corner of each triangle, interpolated (GL_SMOOTH: Gouraud,
+  /// perspective-correct in Mesa) instead of `colors`.
+  std::vector<std::array<view::rgb8, 3>> corner_colors;
   /// Cull triangles whose (b - a) x (c - a) faces away from the viewer (counter-clockwise in
   /// window coordinates = front).
   bool cull_back = false;
@@ -192,11 +195,21 @@ inline view::image render_zbuffer(const zbuffer_scene& s) {
   glMultMatrixd(p.data());
   glMatrixMode(GL_MODELVIEW);
   glLoadMatrixd(mv.data());
+  if (!s.corner_colors.empty()) glShadeModel(GL_SMOOTH);
   glBegin(GL_TRIANGLES);
   for (std::size_t k = 0; k < s.triangles.size(); ++k) {
-    const view::rgb8 c = s.colors.at(k);
-    glColor3ub(c.r, c.g, c.b);
-    for (const auto& v : s.triangles[k]) glVertex3d(v[0], v[1], v[2]);
+    if (s.corner_colors.empty()) {
+      const view::rgb8 c = s.colors.at(k);
+      glColor3ub(c.r, c.g, c.b);
+    }
+    for (int i = 0; i < 3; ++i) {
+      if (!s.corner_colors.empty()) {
+        const view::rgb8 c = s.corner_colors.at(k)[i];
+        glColor3ub(c.r, c.g, c.b);
+      }
+      const auto& v = s.triangles[k][i];
+      glVertex3d(v[0], v[1], v[2]);
+    }
   }
   glEnd();
   glFinish();

@@ -219,6 +219,9 @@ class EXBSP_EXPORT bsp {
   std::vector<fragment_d> fragments_double() const;
   /// Exact coordinates; throws usage_error on an inexact kernel.
   exact_triangle fragment_exact(std::size_t i) const;
+  /// The input triangle (index in the soup's triangles) fragment i lies in: the triangle
+  /// itself or the one it was split from. Throws usage_error for i out of range.
+  std::uint32_t fragment_source(std::size_t i) const;
 
   /// Fragment indices back to front (or front to back) for a perspective eye point
   /// (docs/contract.md "The BSP").

@@ -48,6 +48,13 @@ struct lighting_settings {
   double specular = 0;               ///< >= 0: the highlights' weight (0: none)
   double shininess = 32;             ///< >= 0: the highlights' exponent
   std::vector<light_source> lights;  ///< more lights, at most max_lights - 1
+  /// Smooth (Gouraud) shading: the colour is computed at each corner of a fragment from the
+  /// normal there (the normals of the input triangles around the vertex, area-weighted, that
+  /// lie within crease_deg of the triangle's own; between the input corners, interpolated
+  /// linearly and renormalised) and interpolated across the fragment, perspective-correct, as
+  /// OpenGL's GL_SMOOTH does. PNG only: SVG and PDF regions stay flat (the flat colour).
+  bool smooth = false;
+  double crease_deg = 30;  ///< (0, 180]: sharper edges stay creases
 };
 
 /// Lights a scene may have in all: the main one and "lights" (OpenGL's GL_MAX_LIGHTS).

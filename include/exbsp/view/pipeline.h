@@ -85,7 +85,11 @@ struct frame {
   std::string svg;                       ///< "svg": the SVG document
   std::string pdf;                       ///< "pdf": the PDF document
   std::vector<rgb8>
-      fragment_colors;             ///< "lighting": colour by fragment index (empty: face colours)
+      fragment_colors;  ///< "lighting": colour by fragment index (empty: face colours)
+  /// "lighting" with smooth shading: the colours at the three corners of fragment i (empty:
+  /// flat); the raster interpolates them (fragment_colors keeps the flat colour for vector
+  /// output).
+  std::vector<std::array<rgb8, 3>> corner_colors;
   std::vector<screen_line> lines;  ///< "curves": clipped curve pieces in painter's slots
   std::optional<fog_shading> fog;  ///< "fog": its parameters for this view
   std::optional<sample_shader>
