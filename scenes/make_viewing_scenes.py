@@ -87,6 +87,16 @@ def main():
     write("phigs_oblique", view({"phigs": {"vrp": [0, 0, 0], "vpn": [0, -1, 0], "vup": [0, 0, 1],
                                            "prp": [-4, -3, 8], "window": [-6, 6, -2.5, 6.5],
                                            "front": 10, "back": -10, "projection": "parallel"}}))
+    # glLoadMatrix: the projection given as a matrix, here glFrustum(-0.55, 0.35, -0.3, 0.37, 1,
+    # 100) times a shear x += 0.2 z (a view through a tilted window): exbsp finds its centre of
+    # projection from the matrix and orders the tree from it.
+    l, r, b, t, n, f = -0.55, 0.35, -0.3, 0.37, 1.0, 100.0
+    frustum = [[2 * n / (r - l), 0, (r + l) / (r - l), 0], [0, 2 * n / (t - b), (t + b) / (t - b), 0],
+               [0, 0, -(f + n) / (f - n), -2 * f * n / (f - n)], [0, 0, -1, 0]]
+    shear = [[1, 0, 0.2, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]
+    raw = [round(sum(frustum[i][k] * shear[k][j] for k in range(4)), 12) for i in range(4) for j in range(4)]
+    write("projection_matrix", view({"eye": [2, -10, 6], "look_at": [0, 0, 0.8], "up": [0, 0, 1]},
+                                    {"type": "matrix", "matrix": raw}))
     # A 300x150 letterboxed viewport at (80, 40) inside a 400x300 image; glOrtho with a negative near.
     floor = {"file": "meshes/floor/pz.off", "color": [205, 215, 228],
              "transforms": [{"translate": [-9, -7, -0.05]}, {"scale": [18, 14, 1]}]}

@@ -188,6 +188,14 @@ void load_gl_view(const scene::scene& s, bool mirror_y) {
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
   if (mirror_y) glScaled(1, -1, 1);
+  if (s.projection_matrix) {  // "type": "matrix": glLoadMatrix's counterpart
+    const std::array<double, 16> raw = column_major(s.projection_matrix->m);
+    glMultMatrixd(raw.data());
+    glMatrixMode(GL_MODELVIEW);
+    const std::array<double, 16> mv = column_major(mv_rows);
+    glLoadMatrixd(mv.data());
+    return;
+  }
   switch (p.kind) {
     case view::projection_kind::perspective: {  // gluPerspective as a symmetric glFrustum
       const double top = p.near_dist * std::tan(p.fovy_deg * pi / 360);
@@ -624,6 +632,44 @@ scene_writer coplanar_touching_boxes(const std::string& name, tied_meshes& tied)
   tied.insert(w.add_mesh(pane1, {160, 90, 200}));
   tied.insert(w.add_mesh(pane2, {40, 160, 160}));
   return w;
+}
+
+TEST(OracleGL, ARawProjectionMatrixMatchesMesasGlLoadMatrix) {
+  // An off-axis frustum with a shear, given as a matrix: its centre of projection is not the
+  // camera's eye, so the tree must be ordered from the point the matrix makes (scene.cpp).
+  scene_writer w("raw_matrix");
+  const auto cube = aabb_quads({-1, -1, -1}, {1, 1, 1});
+  w.add_box(cube, {210, 80, 60}, trs({0, 0, 0}, {0, 0, 1}, 20, {1.2, 1.2, 1.2}));
+  w.add_box(cube, {70, 130, 220}, trs({0.3, -0.2, 0.4}, {1, 1, 0.3}, 35, {2.6, 0.45, 0.45}));
+  w.add_box(cube, {90, 180, 90}, trs({-0.3, 0.3, 0.0}, {1, 0, 0}, 25, {0.4, 0.4, 2.2}));
+  set_view(w.doc(), perspective_view({4.5, -6, 3.5}, {0, 0, 0}, {0, 0, 1}, 40, 640, 480));
+  // glFrustum(-0.45, 0.35, -0.3, 0.3, 1, 40) times a shear x += 0.25 z, y -= 0.1 z and a shift
+  // of the centre of projection by (0.4, 0.2, 0) in eye coordinates.
+  const double l = -0.45, r = 0.35, b = -0.3, t = 0.3, n = 1, f = 40;
+  const std::array<double, 16> frustum{2 * n / (r - l),
+                                       0,
+                                       (r + l) / (r - l),
+                                       0,  //
+                                       0,
+                                       2 * n / (t - b),
+                                       (t + b) / (t - b),
+                                       0,  //
+                                       0,
+                                       0,
+                                       -(f + n) / (f - n),
+                                       -2 * f * n / (f - n),  //
+                                       0,
+                                       0,
+                                       -1,
+                                       0};
+  const view::mat4 shear =
+      view::mat4::from_rows({1, 0, 0.25, -0.4, 0, 1, -0.1, -0.2, 0, 0, 1, 0, 0, 0, 0, 1});
+  const view::mat4 raw = view::mat4::from_rows(frustum) * shear;
+  w.doc()["projection"] = {{"type", "matrix"}, {"matrix", raw.m}};
+  const scene::scene s = w.load();
+  ASSERT_TRUE(s.projection_matrix.has_value());
+  EXPECT_EQ(s.projection.kind, view::projection_kind::frustum);
+  expect_matches_mesa("raw_matrix", s);
 }
 
 TEST(OracleGL, CoplanarTouchingFacesMatchMesaZBuffer) {

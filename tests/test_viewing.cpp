@@ -734,6 +734,74 @@ TEST(Lens, AWidthAngleAndAnAspectGiveGluPerspectivesMatrix) {
   EXPECT_EQ(error_key(flat), "/projection/aspect");
 }
 
+TEST(RawMatrix, AFrustumsOrAnOrthosMatrixIsThatViewAndRendersTheSamePixels) {
+  // glFrustum(-0.5, 0.4, -0.3, 0.35, 1, 100) as a matrix: the same view as "frustum".
+  json frustum = base_scene();
+  frustum["projection"] = {{"type", "frustum"}, {"left", -0.5}, {"right", 0.4}, {"bottom", -0.3},
+                           {"top", 0.35},       {"near", 1},    {"far", 100}};
+  const view::view_setup fv = scene::make_view_setup(parse(frustum));
+  json raw = base_scene();
+  raw["projection"] = {{"type", "matrix"}, {"matrix", fv.projection.m}};
+  const scene::scene rs = parse(raw);
+  const view::view_setup rv = scene::make_view_setup(rs);
+  EXPECT_EQ(rs.projection.kind, view::projection_kind::frustum);
+  EXPECT_NEAR(rs.projection.left, -0.5, 1e-12);
+  EXPECT_NEAR(rs.projection.top, 0.35, 1e-12);
+  EXPECT_NEAR(rs.projection.near_dist, 1, 1e-9);
+  EXPECT_NEAR(rs.projection.far_dist, 100, 1e-9);
+  EXPECT_LT(view::length(rv.cam.eye - fv.cam.eye), 1e-12);  // the centre of projection
+  EXPECT_EQ(rv.projection.m, fv.projection.m);
+  // glOrtho as a matrix: a parallel view along the gaze.
+  json ortho = base_scene();
+  ortho["projection"] = {{"type", "orthographic"},
+                         {"left", -2},
+                         {"right", 2},
+                         {"bottom", -1.5},
+                         {"top", 1.5},
+                         {"near", 1},
+                         {"far", 20}};
+  const view::view_setup ov = scene::make_view_setup(parse(ortho));
+  json raw_ortho = base_scene();
+  raw_ortho["projection"] = {{"type", "matrix"}, {"matrix", ov.projection.m}};
+  const scene::scene ros = parse(raw_ortho);
+  const view::view_setup rov = scene::make_view_setup(ros);
+  EXPECT_EQ(ros.projection.kind, view::projection_kind::orthographic);
+  EXPECT_TRUE(rov.is_parallel());
+  EXPECT_LT(view::length(rov.direction - ov.direction), 1e-12);
+  EXPECT_NEAR(ros.projection.near_dist, 1, 1e-12);
+  EXPECT_NEAR(ros.projection.far_dist, 20, 1e-12);
+  // The same pixels: the command renders both scenes of each pair to identical PNGs.
+  for (const auto& [a, b] : {std::pair{frustum, raw}, std::pair{ortho, raw_ortho}}) {
+    std::ofstream(dir() + "/a.json") << a.dump();
+    std::ofstream(dir() + "/b.json") << b.dump();
+    std::string err;
+    ASSERT_EQ(run("render " + dir() + "/a.json -o " + dir() + "/a.png", err), 0) << err;
+    ASSERT_EQ(run("render " + dir() + "/b.json -o " + dir() + "/b.png", err), 0) << err;
+    EXPECT_TRUE(view::read_png(dir() + "/a.png").data() == view::read_png(dir() + "/b.png").data());
+  }
+}
+
+TEST(RawMatrix, BadMatricesNameTheKey) {
+  json short_one = base_scene();
+  short_one["projection"] = {{"type", "matrix"}, {"matrix", std::vector<double>(15, 1.0)}};
+  EXPECT_EQ(error_key(short_one), "/projection/matrix");
+  json word = base_scene();
+  std::vector<json> entries(16, 0.0);
+  entries[5] = "one";
+  word["projection"] = {{"type", "matrix"}, {"matrix", entries}};
+  EXPECT_EQ(error_key(word), "/projection/matrix/5");
+  json singular = base_scene();
+  singular["projection"] = {{"type", "matrix"}, {"matrix", std::vector<double>(16, 1.0)}};
+  EXPECT_EQ(error_key(singular), "/projection/matrix");
+  json mirrored = base_scene();
+  mirrored["projection"] = {{"type", "matrix"},
+                            {"matrix", {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1}}};
+  EXPECT_EQ(error_key(mirrored), "/projection/matrix");
+  json missing = base_scene();
+  missing["projection"] = {{"type", "matrix"}};
+  EXPECT_EQ(error_key(missing), "/projection/matrix");
+}
+
 TEST(DepthRange, GlDepthRangeMapsTheWindowDepthAndLeavesThePictureAlone) {
   json d = base_scene();
   d["viewport"]["depth_range"] = {0.25, 0.75};

@@ -47,7 +47,8 @@ scene_matrices matrices_of(const scene& s) {
   const view::view_setup v = make_view_setup(s);
   scene_matrices out;
   out.scene = s.path;
-  out.projection = view::to_string(s.phigs ? v.kind : s.projection.kind);
+  out.projection =
+      s.projection_matrix ? "matrix" : view::to_string(s.phigs ? v.kind : s.projection.kind);
   out.x = v.vp.x;
   out.y = v.vp.y;
   out.width = v.vp.width;
@@ -67,6 +68,12 @@ scene_matrices matrices_of(const scene& s) {
                                 {"O", "view orientation: world to VRC", s.phigs->orientation}}));
     out.notes.push_back(
         "viewing, normalisation: a PHIGS camera defines its own projection (see phigs)");
+    return out;
+  }
+  if (s.projection_matrix) {
+    out.notes.push_back(
+        "viewing, normalisation: the scene gives its projection as a matrix (glLoadMatrix), "
+        "which has no decomposition into the documents' steps");
     return out;
   }
   const projection_spec& p = s.projection;

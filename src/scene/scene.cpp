@@ -27,6 +27,58 @@ using nlohmann::json;
 
 namespace {
 
+/// "projection": {"type": "matrix", "matrix": [16 numbers, row-major]}: glLoadMatrix of an
+/// eye-to-clip matrix P. Its centre of projection is C = P^-1 (0, 0, 1, 0), the eye-space point
+/// (or direction, w = 0) that P sends to infinity along the depth axis: a point makes a
+/// perspective view ordered from that point, a direction a parallel view along it. Window and
+/// near and far distances come from the corners of the near face and the centres of the near
+/// and far faces of the clip volume, mapped back by P^-1 (depths along eye -z, as glFrustum's
+/// and glOrtho's).
+void parse_projection_matrix(const reader& r, const json& m, scene& s) {
+  const view::mat4 p = detail::parse_row_major(r, m, "/projection/matrix");
+  const auto back = [&](double x, double y, double z, double w) {
+    const std::optional<view::hpoint> e = view::solve(p, {x, y, z, w});
+    if (!e)
+      r.fail("/projection/matrix",
+             "is singular (or not finite): no view volume maps onto the clip volume");
+    return *e;
+  };
+  const view::hpoint c = back(0, 0, 1, 0);
+  const double size = std::max({std::abs(c.x), std::abs(c.y), std::abs(c.z)});
+  const bool perspective = std::abs(c.w) > 1e-9 * size;
+  projection_spec& ps = s.projection;
+  ps.kind = perspective ? view::projection_kind::frustum : view::projection_kind::orthographic;
+  const auto eye_point = [&](const view::hpoint& h, const std::string& what) {
+    if (!(std::abs(h.w) > 0))
+      r.fail("/projection/matrix", "maps the " + what + " of the clip volume to infinity");
+    return view::point3{h.x / h.w, h.y / h.w, h.z / h.w};
+  };
+  const view::point3 lo = eye_point(back(-1, -1, -1, 1), "near lower-left corner");
+  const view::point3 hi = eye_point(back(1, 1, -1, 1), "near upper-right corner");
+  const view::point3 near_centre = eye_point(back(0, 0, -1, 1), "near face's centre");
+  const view::point3 far_centre = eye_point(back(0, 0, 1, 1), "far face's centre");
+  ps.left = lo.x;
+  ps.right = hi.x;
+  ps.bottom = lo.y;
+  ps.top = hi.y;
+  if (perspective) {  // depths along eye -z from the centre of projection, as glFrustum's
+    const double centre_z = c.z / c.w;
+    ps.near_dist = centre_z - near_centre.z;
+    ps.far_dist = centre_z - far_centre.z;
+    if (!(ps.near_dist > 0) || !(ps.far_dist > ps.near_dist))
+      r.fail("/projection/matrix",
+             "puts the near face of the view volume behind its centre of projection or "
+             "beyond the far face");
+  } else {
+    ps.near_dist = -near_centre.z;
+    ps.far_dist = -far_centre.z;
+  }
+  if (!(ps.right > ps.left) || !(ps.top > ps.bottom))
+    r.fail("/projection/matrix",
+           "mirrors the window (its near face runs right to left or top to bottom)");
+  s.projection_matrix = p;
+}
+
 void parse_projection(const reader& r, const json& doc, scene& s) {
   const json& p = r.object(r.require(doc, "", "projection"), "/projection");
   const json& type = r.require(p, "/projection", "type");
@@ -64,10 +116,14 @@ void parse_projection(const reader& r, const json& doc, scene& s) {
     ps.kind = view::projection_kind::orthographic;
     ps.ortho2d = true;
     r.warn_unknown(p, "/projection", {"type", "left", "right", "bottom", "top"});
+  } else if (t == "matrix") {
+    r.warn_unknown(p, "/projection", {"type", "matrix"});
+    parse_projection_matrix(r, r.require(p, "/projection", "matrix"), s);
+    return;
   } else {
     r.fail("/projection/type",
            "unknown projection type \"" + t +
-               "\" (expected perspective, frustum, orthographic, oblique or ortho2d)");
+               "\" (expected perspective, frustum, orthographic, oblique, ortho2d or matrix)");
   }
   if (t == "frustum" || t == "orthographic" || t == "oblique" || t == "ortho2d") {
     ps.left = num("left");
@@ -424,6 +480,17 @@ view::view_setup make_view_setup(const scene& s) {
     if (s.phigs) {
       v.projection = s.phigs->projection;
       v.direction = s.phigs->direction;
+    } else if (s.projection_matrix) {
+      // The centre of projection (parse_projection_matrix) in world coordinates: the eye of a
+      // perspective view, the direction of a parallel one (into the scene: deeper along it).
+      v.projection = *s.projection_matrix;
+      const std::optional<view::hpoint> c = view::solve(v.projection, {0, 0, 1, 0});
+      const std::optional<view::hpoint> world = c ? view::solve(v.model_view, *c) : std::nullopt;
+      if (!world) throw usage_error("the viewing transformation is singular");
+      if (p.kind == view::projection_kind::frustum)
+        v.cam.eye = {world->x / world->w, world->y / world->w, world->z / world->w};
+      else
+        v.direction = view::normalized({world->x, world->y, world->z});
     } else
       switch (p.kind) {
         case view::projection_kind::perspective: {

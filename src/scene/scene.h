@@ -147,9 +147,13 @@ struct scene {
   /// then the equivalent gluLookAt camera (view::camera_of): its eye orders the BSP.
   std::optional<view::mat4> view_matrix;
   std::optional<view::phigs_matrices> phigs;  ///< phigs form: its projection replaces "projection"
-  int viewport_x = 0, viewport_y = 0;         ///< glViewport x, y (from the image's lower left)
-  double depth_near = 0, depth_far = 1;       ///< "viewport" "depth_range" (glDepthRange)
-  int image_width = 0, image_height = 0;      ///< "image" (default: the viewport's size)
+  /// "projection": {"type": "matrix"} (glLoadMatrix): the given eye-to-clip matrix; `projection`
+  /// then holds the kind it amounts to (frustum when its centre of projection is a point,
+  /// orthographic when it is at infinity) and its window and near and far distances.
+  std::optional<view::mat4> projection_matrix;
+  int viewport_x = 0, viewport_y = 0;     ///< glViewport x, y (from the image's lower left)
+  double depth_near = 0, depth_far = 1;   ///< "viewport" "depth_range" (glDepthRange)
+  int image_width = 0, image_height = 0;  ///< "image" (default: the viewport's size)
   aspect_policy aspect = aspect_policy::stretch;
   std::string trackball = "arcball";  ///< "arcball" or "virtual" (orbit drags)
   view::vector_options vector;        ///< "svg": vector output options (SVG and PDF)

@@ -93,14 +93,7 @@ mesh_spec parse_mesh_entry(const reader& r, const json& entry, const std::string
   const json* ts = r.optional(m, "transforms");
   if (t && ts) r.fail(key + "/transforms", "give transform or transforms, not both");
   stack.push();
-  if (t) {
-    if (!t->is_array() || t->size() != 16)
-      r.fail(key + "/transform", "must be an array of 16 numbers (row-major 4x4)");
-    std::array<double, 16> rows{};
-    for (int k = 0; k < 16; ++k)
-      rows[k] = r.number((*t)[k], key + "/transform/" + std::to_string(k));
-    stack.multiply(view::mat4::from_rows(rows));
-  }
+  if (t) stack.multiply(parse_row_major(r, *t, key + "/transform"));
   if (ts) apply_transforms(r, *ts, key + "/transforms", stack);
   spec.transform = stack.top();
   spec.transform_key = key + (ts ? "/transforms" : "/transform");
@@ -133,6 +126,14 @@ double angle(const reader& r, const json& obj, const std::string& key, const cha
 }
 
 }  // namespace
+
+view::mat4 parse_row_major(const reader& r, const json& v, const std::string& key) {
+  if (!v.is_array() || v.size() != 16)
+    r.fail(key, "must be an array of 16 numbers (row-major 4x4)");
+  std::array<double, 16> rows{};
+  for (int k = 0; k < 16; ++k) rows[k] = r.number(v[k], key + "/" + std::to_string(k));
+  return view::mat4::from_rows(rows);
+}
 
 void parse_mesh_tree(const reader& r, const json& doc, const std::string& path, scene& s) {
   if (!r.optional(doc, "meshes") && !r.optional(doc, "groups")) r.fail("/meshes", "missing key");

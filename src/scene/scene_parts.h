@@ -28,6 +28,9 @@ void parse_viewport_and_image(const reader& r, const json& doc, scene& s);
 /// (v.image_width, v.image_height, v.place_x, v.place_y).
 void place_viewport(const scene& s, view::view_setup& v);
 
+/// A row-major 4x4 matrix: an array of 16 numbers at `key` (scene_error naming the entry).
+view::mat4 parse_row_major(const reader& r, const json& v, const std::string& key);
+
 /// The points of a curve or line: the member `name` of `entry` (at pointer `key`), an array of
 /// `min` to `max` points [x, y, z]; `noun` names one point in messages ("control point").
 std::vector<vec3d> parse_points(const reader& r, const json& entry, const std::string& key,

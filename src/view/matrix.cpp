@@ -3,6 +3,8 @@
 #include <exbsp/view/matrix.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 #include <exbsp/core/errors.h>
 
@@ -87,6 +89,37 @@ double max_abs_difference(const mat4& a, const mat4& b) {
 
 bool is_finite(const mat4& a) {
   return std::all_of(a.m.begin(), a.m.end(), [](double x) { return std::isfinite(x); });
+}
+
+std::optional<hpoint> solve(const mat4& m, const hpoint& b) {
+  // Four unknowns: elimination by hand rather than a linear-algebra library for one system.
+  double a[4][5];
+  const double rhs[4] = {b.x, b.y, b.z, b.w};
+  double largest = 0;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) {
+      a[r][c] = m(r, c);
+      largest = std::max(largest, std::abs(m(r, c)));
+    }
+    a[r][4] = rhs[r];
+  }
+  if (!(largest > 0) || !std::isfinite(largest)) return std::nullopt;
+  for (int c = 0; c < 4; ++c) {
+    int pivot = c;
+    for (int r = c + 1; r < 4; ++r)
+      if (std::abs(a[r][c]) > std::abs(a[pivot][c])) pivot = r;
+    if (!(std::abs(a[pivot][c]) > 1e-12 * largest)) return std::nullopt;
+    for (int k = 0; k < 5; ++k) std::swap(a[c][k], a[pivot][k]);
+    for (int r = 0; r < 4; ++r) {
+      if (r == c) continue;
+      const double f = a[r][c] / a[c][c];
+      for (int k = c; k < 5; ++k) a[r][k] -= f * a[c][k];
+    }
+  }
+  const hpoint x{a[0][4] / a[0][0], a[1][4] / a[1][1], a[2][4] / a[2][2], a[3][4] / a[3][3]};
+  if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z) || !std::isfinite(x.w))
+    return std::nullopt;
+  return x;
 }
 
 }  // namespace exbsp::view

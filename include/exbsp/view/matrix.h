@@ -11,6 +11,7 @@
 //     (clip coordinates).
 #pragma once
 #include <array>
+#include <optional>
 #include <cmath>
 
 #include <exbsp/core/export.h>
@@ -97,5 +98,8 @@ EXBSP_EXPORT mat4 transpose(const mat4& a);
 EXBSP_EXPORT double max_abs_difference(const mat4& a, const mat4& b);
 /// True when every element is finite.
 EXBSP_EXPORT bool is_finite(const mat4& a);
+/// The solution x of M x = b (Gaussian elimination with partial pivoting), or nullopt when M
+/// is singular (a pivot below 1e-12 times the largest element) or the result is not finite.
+EXBSP_EXPORT std::optional<hpoint> solve(const mat4& m, const hpoint& b);
 
 }  // namespace exbsp::view
