@@ -601,14 +601,22 @@ TEST(OracleGL, CurvesSceneMeshesWithoutTheCurvesMatchMesaZBuffer) {
   expect_matches_mesa("curves_meshes", s);
 }
 
+/// Four rotated boxes passing through each other (the first `count` of them), seen in
+/// perspective from (4.5, -6, 3.5).
+void add_interpenetrating_boxes(scene_writer& w, int count = 4) {
+  const auto cube = aabb_quads({-1, -1, -1}, {1, 1, 1});
+  const std::vector<std::pair<view::rgb8, std::vector<double> > > boxes = {
+      {{210, 80, 60}, trs({0, 0, 0}, {0, 0, 1}, 20, {1.2, 1.2, 1.2})},
+      {{70, 130, 220}, trs({0.3, -0.2, 0.4}, {1, 1, 0.3}, 35, {2.6, 0.45, 0.45})},
+      {{90, 180, 90}, trs({-0.3, 0.3, 0.0}, {1, 0, 0}, 25, {0.4, 0.4, 2.2})},
+      {{230, 190, 60}, trs({0.9, 0.8, -0.6}, {0.2, 1, 0.4}, 50, {0.9, 0.7, 0.5})}};
+  for (int k = 0; k < count; ++k) w.add_box(cube, boxes[k].first, boxes[k].second);
+  set_view(w.doc(), perspective_view({4.5, -6, 3.5}, {0, 0, 0}, {0, 0, 1}, 40, 640, 480));
+}
+
 TEST(OracleGL, InterpenetratingBoxesMatchMesaZBuffer) {
   scene_writer w("interpenetrating_boxes");
-  const auto cube = aabb_quads({-1, -1, -1}, {1, 1, 1});
-  w.add_box(cube, {210, 80, 60}, trs({0, 0, 0}, {0, 0, 1}, 20, {1.2, 1.2, 1.2}));
-  w.add_box(cube, {70, 130, 220}, trs({0.3, -0.2, 0.4}, {1, 1, 0.3}, 35, {2.6, 0.45, 0.45}));
-  w.add_box(cube, {90, 180, 90}, trs({-0.3, 0.3, 0.0}, {1, 0, 0}, 25, {0.4, 0.4, 2.2}));
-  w.add_box(cube, {230, 190, 60}, trs({0.9, 0.8, -0.6}, {0.2, 1, 0.4}, 50, {0.9, 0.7, 0.5}));
-  set_view(w.doc(), perspective_view({4.5, -6, 3.5}, {0, 0, 0}, {0, 0, 1}, 40, 640, 480));
+  add_interpenetrating_boxes(w);
   expect_matches_mesa("interpenetrating_boxes", w.load());
 }
 
@@ -638,11 +646,7 @@ TEST(OracleGL, ARawProjectionMatrixMatchesMesasGlLoadMatrix) {
   // An off-axis frustum with a shear, given as a matrix: its centre of projection is not the
   // camera's eye, so the tree must be ordered from the point the matrix makes (scene.cpp).
   scene_writer w("raw_matrix");
-  const auto cube = aabb_quads({-1, -1, -1}, {1, 1, 1});
-  w.add_box(cube, {210, 80, 60}, trs({0, 0, 0}, {0, 0, 1}, 20, {1.2, 1.2, 1.2}));
-  w.add_box(cube, {70, 130, 220}, trs({0.3, -0.2, 0.4}, {1, 1, 0.3}, 35, {2.6, 0.45, 0.45}));
-  w.add_box(cube, {90, 180, 90}, trs({-0.3, 0.3, 0.0}, {1, 0, 0}, 25, {0.4, 0.4, 2.2}));
-  set_view(w.doc(), perspective_view({4.5, -6, 3.5}, {0, 0, 0}, {0, 0, 1}, 40, 640, 480));
+  add_interpenetrating_boxes(w, 3);
   // glFrustum(-0.45, 0.35, -0.3, 0.3, 1, 40) times a shear x += 0.25 z, y -= 0.1 z and a shift
   // of the centre of projection by (0.4, 0.2, 0) in eye coordinates.
   const double l = -0.45, r = 0.35, b = -0.3, t = 0.3, n = 1, f = 40;
