@@ -27,7 +27,7 @@ with open(out, "w") as f:
 PY
 }
 
-for name in effects_lighting effects_fog effects_dof effects_antialias; do
+for name in effects_lighting effects_fog effects_dof effects_antialias effects_exposure; do
   "$exbsp" render "$here/$name.json" -o "$out/$name.png"
   without "$here/$name.json" effects "$tmp/$name.json"
   "$exbsp" render "$tmp/$name.json" -o "$out/${name}_without.png"

@@ -162,7 +162,7 @@ def main():
         "effects": {"fog": {"mode": "linear", "start": 6, "end": 38}}})
 
     # Depth of field: focus on the gear (middle); the cube in front and the planks behind blur.
-    ms.write_scene("effects_dof", {
+    desk = {
         "meshes": part("cube", red, ms.compose(ms.translate(-1.3, -2.4, 0.3), ms.rotate(25, [0, 0, 1]),
                                                scale(0.5, 0.5, 0.5))) +
                   part("gear", grey, ms.compose(ms.translate(0.4, 1.0, 0.9), ms.rotate(7, [0, 0, 1]))) +
@@ -172,9 +172,14 @@ def main():
         "camera": {"eye": [-1.5, -9.0, 3.8], "look_at": [0.4, 1.0, 0.9], "up": [0, 0, 1]},
         "projection": {"type": "perspective", "fovy_deg": 40, "near": 1, "far": 60},
         "viewport": small,
-        "background": BACKGROUND,
-        "effects": {"depth_of_field": {"focal_length": 0.05, "f_number": 0.1, "focus_distance": 10.6,
-                                       "samples": 48}}})
+        "background": BACKGROUND}
+    ms.write_scene("effects_dof", {**desk, "effects": {"depth_of_field": {
+        "focal_length": 0.05, "f_number": 0.1, "focus_distance": 10.6, "samples": 48}}})
+    # Exposure: the same desk; the camera pans 0.8 right during the frame, the shutter open for
+    # 60% of it (motion blur: the near cube smears more than the far planks).
+    ms.write_scene("effects_exposure", {**desk, "effects": {"exposure": {
+        "shutter": 0.6, "samples": 24,
+        "camera_end": {"eye": [-0.7, -9.0, 3.8], "look_at": [1.2, 1.0, 0.9], "up": [0, 0, 1]}}}})
 
     # Antialias: the gear and the planks, 4 x 4 samples.
     ms.write_scene("effects_antialias", {

@@ -873,6 +873,89 @@ TEST(DepthOfField, ReusesTheBspAndRestoresTheCentreView) {
 }
 
 // ---------------------------------------------------------------------------------------
+// Exposure (view/exposure.h)
+
+/// Two quads at different depths, seen from (0, 0, 0) down -z: the nearer one sweeps farther
+/// across the image when the camera moves sideways (parallax).
+frame parallax_frame(view::projection_kind kind = view::projection_kind::perspective) {
+  triangle_soup s;
+  add_quad(s, {-0.4, -1, -4}, {0.4, -1, -4}, {0.4, 1, -4}, {-0.4, 1, -4});
+  add_quad(s, {-3, -3, -12}, {3, -3, -12}, {3, 3, -12}, {-3, 3, -12});
+  frame f = perspective_frame(std::move(s), {{220, 40, 30}, {40, 60, 210}},
+                              {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}}, 80, 60);
+  if (kind == view::projection_kind::orthographic) {
+    f.view.kind = kind;
+    f.view.projection = ortho(-4, 4, -3, 3, 1, 30);
+    f.view.direction = {0, 0, -1};
+  }
+  return f;
+}
+
+TEST(Exposure, AStillCameraGivesTheStillPictureAndAMovingOneTheMeanOfItsViews) {
+  for (const auto kind :
+       {view::projection_kind::perspective, view::projection_kind::orthographic}) {
+    frame still = parallax_frame(kind);
+    run(still, {});
+    frame same = parallax_frame(kind);
+    same.settings.exposure = {0.5, 6, same.view.cam};
+    run(same, {"exposure"});
+    EXPECT_TRUE(same.picture.data() == still.picture.data());
+
+    // Moving right by 1.2 over a frame, shutter open for 3/4 of it, 4 samples: the mean of
+    // the four pictures taken from t = 0, 0.25, 0.5, 0.75, each rendered on its own.
+    frame moving = parallax_frame(kind);
+    const camera end{{1.2, 0, 0}, {1.2, 0, -1}, {0, 1, 0}};
+    moving.settings.exposure = {0.75, 4, end};
+    run(moving, {"exposure"});
+    std::vector<unsigned> sum(moving.picture.data().size(), 0);
+    for (int k = 0; k < 4; ++k) {
+      frame g = parallax_frame(kind);
+      const double x = 1.2 * 0.25 * k;
+      g.view.cam = {{x, 0, 0}, {x, 0, -1}, {0, 1, 0}};
+      g.view.model_view = look_at(g.view.cam);
+      run(g, {});
+      for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += g.picture.data()[i];
+    }
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < sum.size(); ++i)
+      differ += moving.picture.data()[i] != static_cast<std::uint8_t>((sum[i] + 2) / 4);
+    EXPECT_EQ(differ, 0u);
+    // Blurred: colours between the two quads' appear (at least a few distinct mixtures).
+    EXPECT_GT(exbsp_test::colours_of(moving.picture).size(),
+              exbsp_test::colours_of(still.picture).size() + 2);
+    // The frame's other products are the start view's.
+    EXPECT_EQ(moving.view.cam.eye.x, 0);
+  }
+}
+
+TEST(Exposure, ParametersAreCheckedAndNamed) {
+  json d = valid_scene();
+  const json end = {{"eye", {1, 0, 5}}, {"look_at", {1, 0, 0}}, {"up", {0, 1, 0}}};
+  d["effects"] = {{"exposure", {{"shutter", 0.25}, {"samples", 5}, {"camera_end", end}}}};
+  const scene::scene s = parse(d);
+  EXPECT_EQ(s.effect_settings.exposure.samples, 5);
+  EXPECT_EQ(s.effect_settings.exposure.shutter, 0.25);
+  EXPECT_EQ(s.effect_settings.exposure.camera_end.eye.x, 1);
+  const std::vector<std::pair<json, std::string>> bad = {
+      {{{"exposure", {{"shutter", 0}, {"camera_end", end}}}}, "/effects/exposure/shutter"},
+      {{{"exposure", {{"shutter", 1.5}, {"camera_end", end}}}}, "/effects/exposure/shutter"},
+      {{{"exposure", {{"samples", 1}, {"camera_end", end}}}}, "/effects/exposure/samples"},
+      {{{"exposure", json::object()}}, "/effects/exposure/camera_end"},
+      {{{"exposure",
+         {{"camera_end", {{"eye", {1, 0, 0}}, {"look_at", {1, 0, 0}}, {"up", {0, 1, 0}}}}}}},
+       "/effects/exposure/camera_end"},
+      {{{"exposure", {{"camera_end", end}}},
+        {"depth_of_field", {{"focal_length", 0.05}, {"f_number", 2}, {"focus_distance", 5}}}},
+       "/effects/exposure"},
+  };
+  for (const auto& [effects, key] : bad) {
+    json e = valid_scene();
+    e["effects"] = effects;
+    EXPECT_EQ(error_key(e), key) << effects.dump();
+  }
+}
+
+// ---------------------------------------------------------------------------------------
 // Curves: clipping, the line pixel rule
 
 TEST(SegmentClip, KeepsInsideCutsBehindTheEyeAndRejectsOutside) {

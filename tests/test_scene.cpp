@@ -620,6 +620,8 @@ TEST(Render, EffectScenesRunTheirEffectStages) {
       {"effects_fog", "fog"},
       {"effects_dof", "depth_of_field"},
       {"effects_antialias", "antialias"},
+      {"effects_smooth", "lighting"},
+      {"effects_exposure", "exposure"},
       {"curves", "curves"}};
   for (const auto& [name, stage] : scenes) {
     const std::string scene_path = std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json";
@@ -635,7 +637,7 @@ TEST(Render, EffectScenesRunTheirEffectStages) {
     // SVG: PNG-only effects are skipped with a warning; the others have their stage.
     std::ostringstream svg_log;
     render_command({scene_path, temp_dir() + "/" + name + ".svg", true}, svg_log);
-    const bool png_only = stage == "antialias" || stage == "depth_of_field";
+    const bool png_only = stage == "antialias" || stage == "depth_of_field" || stage == "exposure";
     EXPECT_EQ(svg_log.str().find("stage " + stage + ":") == std::string::npos, png_only) << name;
     EXPECT_EQ(svg_log.str().find("applies to PNG output only") != std::string::npos, png_only)
         << name;

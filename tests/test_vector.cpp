@@ -95,7 +95,8 @@ frame scene_frame(const std::string& name, scene::scene& s) {
                    : scene::load_scene(std::string(EXBSP_SOURCE_DIR) + "/scenes/" + name + ".json");
   s.effects.erase(std::remove_if(s.effects.begin(), s.effects.end(),
                                  [](const std::string& e) {
-                                   return e == "antialias" || e == "depth_of_field" || e == "fog";
+                                   return e == "antialias" || e == "depth_of_field" || e == "fog" ||
+                                          e == "exposure";
                                  }),
                   s.effects.end());
   scene::scene_geometry g = scene::load_geometry(s);

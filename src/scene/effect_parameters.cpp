@@ -6,6 +6,8 @@
 #include <cmath>
 #include <utility>
 
+#include <exbsp/core/errors.h>
+#include <exbsp/view/camera.h>
 #include <exbsp/view/matrix.h>
 
 namespace exbsp::scene {
@@ -197,12 +199,46 @@ void parse_depth_of_field_parameters(const reader& r, const json& p, const std::
   }
 }
 
+/// "exposure" parameters into out.exposure; scene_error names the bad key. Parameters:
+/// shutter 0.5 (in (0, 1]), samples 8 (2..1024), camera_end {"eye", "look_at", "up"}
+/// (required: the camera at the next frame; eye and look_at distinct, up not along the gaze).
+void parse_exposure_parameters(const reader& r, const json& p, const std::string& key,
+                               const effect_scene&, effect_settings& out) {
+  view::exposure_settings& e = out.exposure;
+  r.reject_unknown(p, key, "exposure", {"shutter", "samples", "camera_end"});
+  if (const json* v = r.optional(p, "shutter")) {
+    e.shutter = r.positive(*v, key + "/shutter");
+    if (e.shutter > 1)
+      r.fail(key + "/shutter", "must be in (0, 1]: the fraction of the frame the shutter is open");
+  }
+  if (const json* v = r.optional(p, "samples")) {
+    const long long n = r.integer(*v, key + "/samples");
+    if (n < 2 || n > 1024)
+      r.fail(key + "/samples", "must be in 2..1024 (got " + std::to_string(n) + ")");
+    e.samples = static_cast<int>(n);
+  }
+  const std::string at = key + "/camera_end";
+  const json& c = r.object(r.require(p, key, "camera_end"), at);
+  r.reject_unknown(c, at, "camera_end", {"eye", "look_at", "up"});
+  const view::vector3 eye = r.triple(r.require(c, at, "eye"), at + "/eye");
+  const view::vector3 look = r.triple(r.require(c, at, "look_at"), at + "/look_at");
+  e.camera_end = {{eye.x, eye.y, eye.z},
+                  {look.x, look.y, look.z},
+                  r.triple(r.require(c, at, "up"), at + "/up")};
+  try {
+    view::look_at(e.camera_end);
+  } catch (const usage_error& err) {
+    r.fail(at, err.what());
+  }
+}
+
 const std::pair<const char*, effect_parameters_reader> readers[] = {
     {"backface_culling", no_parameters},
     {"lighting", parse_lighting_parameters},
     {"fog", parse_fog_parameters},
     {"antialias", parse_antialias_parameters},
     {"depth_of_field", parse_depth_of_field_parameters},
+    {"exposure", parse_exposure_parameters},
 };
 
 }  // namespace

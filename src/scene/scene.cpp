@@ -196,6 +196,12 @@ void parse_effects(const reader& r, const json& doc, scene& s) {
     read(r, params, key, facts, s.effect_settings);
     s.effects.push_back(d->name);
   }
+  const auto has = [&](const char* name) {
+    return std::find(s.effects.begin(), s.effects.end(), name) != s.effects.end();
+  };
+  if (has("exposure") && has("depth_of_field"))
+    r.fail("/effects/exposure",
+           "cannot be combined with depth_of_field (each averages views of its own)");
 }
 
 void parse_curves(const reader& r, const json& doc, scene& s) {

@@ -2,6 +2,8 @@
 // Thin-lens depth of field by accumulation (notation in depth_of_field.h).
 #include "view/depth_of_field.h"
 
+#include "view/accumulate.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -70,44 +72,11 @@ std::string depth_of_field_stage(frame& f, const pipeline& per_view) {
   if (f.view.is_parallel())
     throw usage_error("depth_of_field: needs a perspective or frustum projection");
   const std::vector<lens_offset> lens = lens_samples(s.samples, s.aperture);
-  std::vector<std::uint32_t> sum(f.picture.data().begin(), f.picture.data().end());
-
-  // The centre view's products, restored afterwards.
   const view_setup centre = f.view;
-  std::vector<std::uint32_t> order = std::move(f.order);
-  std::vector<screen_polygon> polygons = std::move(f.polygons);
-  std::vector<screen_line> lines = std::move(f.lines);
-  std::vector<rgb8> colors = std::move(f.fragment_colors);
-  std::vector<std::array<rgb8, 3>> corner_colors = std::move(f.corner_colors);
-  std::optional<fog_shading> fog = std::move(f.fog);
-  std::optional<sample_shader> shader = std::move(f.shader);
-  const std::size_t culled = f.culled, fully_clipped = f.fully_clipped;
-  const image centre_picture = f.picture;
-
-  for (std::size_t k = 1; k < lens.size(); ++k) {
-    f.view = lens_view(centre, lens[k], s.focus_distance);
-    per_view.run(f, nullptr);
-    const std::vector<std::uint8_t>& px = f.picture.data();
-    if (px.size() != sum.size())
-      throw usage_error("depth_of_field: a lens sample changed the image size");
-    for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += px[i];
-  }
-
-  f.view = centre;
-  f.order = std::move(order);
-  f.polygons = std::move(polygons);
-  f.lines = std::move(lines);
-  f.fragment_colors = std::move(colors);
-  f.corner_colors = std::move(corner_colors);
-  f.fog = std::move(fog);
-  f.shader = std::move(shader);
-  f.culled = culled;
-  f.fully_clipped = fully_clipped;
-  f.picture = centre_picture;
-  const std::uint32_t n = static_cast<std::uint32_t>(lens.size());
-  std::vector<std::uint8_t>& out = f.picture.data();
-  for (std::size_t i = 0; i < sum.size(); ++i)
-    out[i] = static_cast<std::uint8_t>((sum[i] + n / 2) / n);
+  accumulate_views(
+      f, per_view, lens.size(),
+      [&](std::size_t k) { return lens_view(centre, lens[k], s.focus_distance); },
+      "depth_of_field");
 
   char buf[160];
   std::snprintf(buf, sizeof buf,

@@ -10,6 +10,7 @@
 #include "view/backface_culling.h"
 #include "view/curves.h"
 #include "view/depth_of_field.h"
+#include "view/exposure.h"
 #include "view/fog.h"
 #include "view/lighting.h"
 
@@ -22,6 +23,7 @@ const std::vector<effect_description>& effect_catalog() {
       {"fog", effect_hook::after_transform, true, fog_stage, {}, false},
       {"antialias", effect_hook::raster, true, antialias_stage, {}, true},
       {"depth_of_field", effect_hook::after_raster, true, {}, depth_of_field_stage, true},
+      {"exposure", effect_hook::after_raster, true, {}, exposure_stage, true},
   };
   return catalog;
 }

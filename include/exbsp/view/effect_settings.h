@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <exbsp/core/export.h>
+#include <exbsp/view/camera.h>
 #include <exbsp/view/image.h>
 #include <exbsp/view/matrix.h>
 #include <exbsp/view/viewport.h>
@@ -89,6 +90,16 @@ struct depth_of_field_settings {
   int samples = 32;            ///< lens samples, 2..1024
 };
 
+/// "exposure": motion blur of a moving camera. The camera runs linearly from the scene's
+/// camera (time 0) to `camera_end` (time 1, the next frame); the shutter is open from time 0
+/// to `shutter`, and the picture is the mean of `samples` renders at times
+/// shutter * k / (samples - 1), k = 0..samples-1 (exposure.h). One tree for every sample.
+struct exposure_settings {
+  double shutter = 0.5;  ///< (0, 1]
+  int samples = 8;       ///< 2..1024
+  camera camera_end;     ///< gluLookAt's camera at time 1 (required)
+};
+
 /// "antialias": samples x samples supersampling with a box filter.
 struct antialias_settings {
   int samples = 4;  ///< N in 1..8: N x N sub-pixels per pixel
@@ -100,6 +111,7 @@ struct effect_settings {
   fog_settings fog;
   depth_of_field_settings depth_of_field;
   antialias_settings antialias;
+  exposure_settings exposure;
 };
 
 /// What the defaults and checks of effect parameters depend on in a scene.
