@@ -15,7 +15,9 @@ Side by side in one run on this machine:
   2. the distributed build of the --dask-size assembly (exbsp.build_distributed) on a Dask
      LocalCluster of 1, 2 and 4 worker processes (one thread each), against the local build in
      the same process: wall time, bytes shipped per fragment, and that the tree is byte-identical
-     (Tree.serialize(reproducible=True)).
+     (Tree.serialize(reproducible=True));
+  3. where that build spends its time (perf self time), and what more sampled candidates and
+     samples would save in fragments and cost in time on the smallest assembly.
 """
 import argparse
 import datetime
@@ -31,6 +33,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(here)
 sys.path.insert(0, here)
 from common import ensure_matplotlib, replace_results_section  # noqa: E402
+import perf_profile  # noqa: E402
 
 BEGIN, END = "<!-- assemblies:begin -->", "<!-- assemblies:end -->"
 
@@ -126,6 +129,36 @@ def dask_rows(args, out):
     return rows, fragments, len(reference)
 
 
+def profile_rows(args, out):
+    """perf's self time of `exbsp build` on the --dask-size assembly (all cores), by category
+    and the top functions (bench/perf_profile.py's rules)."""
+    mesh = os.path.join(out, f"assembly-{args.dask_size}.off")
+    data = os.path.join(out, "perf.build.data")
+    try:
+        subprocess.run(["perf", "record", "-q", "-o", data, "--",
+                        os.path.join(args.build_dir, "src/app/exbsp"), "build", mesh, "--json"],
+                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=1800)
+    except (OSError, subprocess.CalledProcessError, subprocess.TimeoutExpired) as e:
+        return {"error": str(e)}
+    return perf_profile.read(data)
+
+
+def heuristic_rows(args, out):
+    """Fragments and build time of the smallest assembly with more sampled candidates and
+    samples than the default (exbsp.build's `sampled`), side by side."""
+    sys.path.insert(0, os.path.join(args.build_dir, "src/python"))
+    import exbsp
+    mesh = os.path.join(out, f"assembly-{args.sizes[0]}.off")
+    v, f, ids = exbsp.read_mesh(mesh)
+    rows = []
+    for sampled in ((16, 512, 8), (32, 512, 8), (64, 512, 8), (64, 4096, 8), (16, 512, 16)):
+        t0 = time.perf_counter()
+        tree = exbsp.build(v, f, face_ids=ids, sampled=sampled)
+        rows.append((sampled, len(tree), time.perf_counter() - t0, len(f)))
+        log(f"sampled {sampled}: {len(tree)} fragments")
+    return rows
+
+
 def plot(rows, path):
     ensure_matplotlib()
     import matplotlib
@@ -172,6 +205,8 @@ def main():
                   if ln.startswith("model name")), "?")
     rows = size_rows(args, out)
     dask = None if args.no_dask else dask_rows(args, out)
+    prof = profile_rows(args, out)
+    heur = heuristic_rows(args, out)
     plot(rows, os.path.join(here, "plots/assemblies.png"))
     load_after = os.getloadavg()[0]
 
@@ -235,6 +270,26 @@ def main():
                   "so that every build makes the same tree, and a larger frontier for very large inputs "
                   "would be a build option of its own (same tree locally and distributed, another tree "
                   "than the default)."]
+    if "rows" in prof:
+        lines += ["", f"**Where the build's time goes** (perf, `exbsp build` of the {num(args.dask_size)}-triangle "
+                  "assembly, all cores; self time by bench/perf_profile.py's categories, then the top "
+                  "functions):", "", "| category | share |", "|---|---|"]
+        for name, share in sorted(prof["categories"].items(), key=lambda kv: -kv[1]):
+            if share >= 0.5:
+                lines.append(f"| {name} | {share:.1f}% |")
+        lines += ["", "| function | share |", "|---|---|"]
+        for r in prof["rows"][:12]:
+            lines.append(f"| `{perf_profile.strip_templates(r['function'])}` | {r['percent']:.1f}% |")
+    if heur:
+        base = heur[0]
+        lines += ["", f"**More candidates and samples** (the sampled heuristic's (candidates, samples, split "
+                  f"weight); default (16, 512, 8); the {num(base[3])}-triangle assembly, exbsp.build in one "
+                  "process, side by side):", "",
+                  "| sampled | fragments | fragments / triangle | against the default | build | against the default |",
+                  "|---|---|---|---|---|---|"]
+        for sampled, frags, secs, tris in heur:
+            lines.append(f"| {sampled} | {num(frags)} | {frags / tris:.2f} | {frags / base[1]:.3f}× | "
+                         f"{fmt_s(secs)} | {secs / base[2]:.2f}× |")
     lines.append(END)
     replace_results_section(BEGIN, END, "\n".join(lines))
     log("bench/RESULTS.md section 9 written")
