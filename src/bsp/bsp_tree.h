@@ -274,6 +274,7 @@ class basic_bsp_tree {
   };
   std::vector<cell_origin> cell_origins_;
   std::size_t max_fragments_ = 0, top_total_ = 0, cells_written_ = 0, parts_appended_ = 0;
+  std::vector<char> usable_;  ///< append_part: which input triangles have a plane
   /// A worker's tree: the geometry of the soup, nothing built.
   struct worker {};
   basic_bsp_tree(const triangle_soup& soup, worker) : geom_(soup) {}

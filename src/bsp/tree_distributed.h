@@ -173,10 +173,13 @@ void basic_bsp_tree<G>::append_part(const triangle_soup& soup, std::size_t i,
   part.root_side = cell_origins_[i].side;
   const std::size_t count = in.count("nodes", 16, std::numeric_limits<std::uint32_t>::max());
   part.parked.resize(count);
-  std::vector<char> usable(soup.triangles.size(), 0);
-  for (std::size_t k = 0; k < soup.triangles.size(); ++k) {
-    fragment f;
-    usable[k] = geom_.add_source(soup, static_cast<std::uint32_t>(k), f) ? 1 : 0;
+  std::vector<char>& usable = usable_;  // the input triangles with a plane, found once
+  if (usable.empty()) {
+    usable.assign(soup.triangles.size(), 0);
+    for (std::size_t k = 0; k < soup.triangles.size(); ++k) {
+      fragment f;
+      usable[k] = geom_.add_source(soup, static_cast<std::uint32_t>(k), f) ? 1 : 0;
+    }
   }
   std::uint64_t held = 0;
   for (std::size_t k = 0; k < count; ++k) {
