@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <exbsp/core/errors.h>
 #include "view/line_raster.h"
@@ -172,30 +173,22 @@ void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vect
   const viewport& vp = f.view.vp;
   poly.clear();
   for (const window_point& w : p.v) poly.push_back({scale * (w.x - vp.x), scale * (w.y - vp.y)});
-  if (!f.corner_colors.empty()) {  // smooth shading (smooth_shading.h)
-    const corner_interpolator smooth(f.fragments[p.fragment], f.corner_colors[p.fragment], f.view);
-    const depth_plane plane = f.shader ? polygon_depth_plane(p.v) : depth_plane{};
-    const double lo = std::min(vp.depth_near, vp.depth_far),
-                 hi = std::max(vp.depth_near, vp.depth_far);
-    paint_spans(poly, rows, mask, [&](int i, int j) {
-      const double x = vp.x + (i + 0.5) / scale, y = vp.y + (j + 0.5) / scale;
-      const rgb8 c = smooth.at(x, y, p.color);
-      if (!f.shader) return c;
-      return f.shader->shade(c, x, y, std::min(hi, std::max(lo, plane.at(x, y))));
-    });
-    return;
-  }
-  if (!f.shader) {
+  std::optional<corner_interpolator> smooth;  // smooth shading (smooth_shading.h)
+  if (!f.corner_colors.empty())
+    smooth.emplace(f.fragments[p.fragment], f.corner_colors[p.fragment], f.view);
+  if (!f.shader && !smooth) {
     paint_spans(poly, rows, mask, [&](int, int) { return p.color; });
     return;
   }
-  const depth_plane plane = polygon_depth_plane(p.v);
+  const depth_plane plane = f.shader ? polygon_depth_plane(p.v) : depth_plane{};
   const double lo = std::min(vp.depth_near, vp.depth_far),
                hi = std::max(vp.depth_near, vp.depth_far);
   paint_spans(poly, rows, mask, [&](int i, int j) {
     const double x = vp.x + (i + 0.5) / scale, y = vp.y + (j + 0.5) / scale;
+    const rgb8 c = smooth ? smooth->at(x, y, p.color) : p.color;
+    if (!f.shader) return c;
     const double z = std::min(hi, std::max(lo, plane.at(x, y)));
-    return f.shader->shade(p.color, x, y, z);
+    return f.shader->shade(c, x, y, z);
   });
 }
 
