@@ -60,9 +60,12 @@ def build_distributed(vertices, faces, *, scheduler=None, report=None, progress=
         client = scheduler if isinstance(scheduler, Client) else Client(scheduler)
         try:
             shipped["workers"] = len(client.scheduler_info()["workers"])
+            # The input goes to every worker once; each cell to the worker that grows it (as
+            # data, not inside the task graph: a cell of a large model is hundreds of MB).
             remote = client.scatter(data, broadcast=True)
+            remote_cells = client.scatter(cells)
             futures = [client.submit(_grow_shipped, i, remote, cell, pure=False)
-                       for i, cell in enumerate(cells)]
+                       for i, cell in enumerate(remote_cells)]
             for k, future in enumerate(as_completed(futures), 1):
                 i, part, _ = future.result()
                 joined(k, i, part)
