@@ -250,11 +250,19 @@ std::pair<py::array_t<std::uint32_t>, py::array_t<std::uint32_t>> triangle_array
       make_array<std::uint32_t>({n}, [&](std::size_t j) { return ts[j].face; })};
 }
 
-/// exbsp.build: see docs/python.md.
+/// The options exbsp.build and exbsp.plan_build share (docs/python.md).
+void set_common_options(exbsp::build_options& o, std::uint64_t seed,
+                        const std::array<unsigned, 3>& sampled, std::size_t max_fragments) {
+  o.seed = seed;
+  o.max_fragments = max_fragments;
+  o.sampled_candidates = sampled[0];
+  o.sampled_samples = sampled[1];
+  o.sampled_split_weight = sampled[2];
+}
+
 /// The coordinator of a distributed build (exbsp/bsp/distributed.h) as Python sees it.
 struct distributed_plan {
   std::unique_ptr<exbsp::distributed_build> build;
-  std::vector<bool> added;
 
   exbsp::distributed_build& get() {
     if (!build) throw usage_error("DistributedBuild: finish() was already called");
@@ -269,18 +277,14 @@ distributed_plan plan_build(
   const exbsp::triangle_soup soup = soup_from(vertices, faces, face_ids);
   exbsp::build_options o;
   o.heuristic = heuristic ? *heuristic : exbsp::default_heuristic();
-  o.seed = seed;
-  o.max_fragments = max_fragments;
-  o.sampled_candidates = sampled[0];
-  o.sampled_samples = sampled[1];
-  o.sampled_split_weight = sampled[2];
+  set_common_options(o, seed, sampled, max_fragments);
   engine_call no_gil;
   distributed_plan plan;
   plan.build = std::make_unique<exbsp::distributed_build>(soup, o);
-  plan.added.assign(plan.build->cell_count(), false);
   return plan;
 }
 
+/// exbsp.build: see docs/python.md.
 exbsp::bsp build(const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
                  const py::object& faces, const std::string& kernel,
                  const std::optional<std::string>& heuristic, std::uint64_t seed,
@@ -291,14 +295,10 @@ exbsp::bsp build(const py::array_t<double, py::array::c_style | py::array::force
   exbsp::build_options o;
   o.kernel = exbsp::parse_kernel(kernel);
   o.heuristic = heuristic ? *heuristic : score.is_none() ? exbsp::default_heuristic() : "custom";
-  o.seed = seed;
+  set_common_options(o, seed, sampled, max_fragments);
   // A Python score runs under the GIL: on other threads each call also makes and drops a
   // Python thread state (5x slower on 2 threads than on 1, measured), so one thread by default.
   o.threads = threads ? *threads : score.is_none() ? 0u : 1u;
-  o.max_fragments = max_fragments;
-  o.sampled_candidates = sampled[0];
-  o.sampled_samples = sampled[1];
-  o.sampled_split_weight = sampled[2];
   if (candidates == "all")
     o.score_candidates = exbsp::candidate_set::all;
   else if (candidates == "sampled")

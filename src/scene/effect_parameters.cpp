@@ -139,6 +139,19 @@ void parse_fog_parameters(const reader& r, const json& p, const std::string& key
   if (const json* v = r.optional(p, "color")) f.color = r.color(*v, key + "/color");
 }
 
+/// The optional integer p["samples"] into `out` when present; scene_error unless it is in
+/// [lo, hi].
+void read_samples(const reader& r, const json& p, const std::string& key, long long lo,
+                  long long hi, int& out) {
+  const json* v = r.optional(p, "samples");
+  if (!v) return;
+  const long long n = r.integer(*v, key + "/samples");
+  if (n < lo || n > hi)
+    r.fail(key + "/samples", "must be in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                                 " (got " + std::to_string(n) + ")");
+  out = static_cast<int>(n);
+}
+
 /// "antialias" parameters into out.antialias; scene_error names the bad key. Parameter:
 /// samples 4 (N in 1..8: N x N sub-pixels; N times the viewport must stay within
 /// scene.max_side).
@@ -146,11 +159,7 @@ void parse_antialias_parameters(const reader& r, const json& p, const std::strin
                                 const effect_scene& scene, effect_settings& out) {
   antialias_settings& a = out.antialias;
   r.reject_unknown(p, key, "antialias", {"samples"});
-  if (const json* v = r.optional(p, "samples")) {
-    const long long n = r.integer(*v, key + "/samples");
-    if (n < 1 || n > 8) r.fail(key + "/samples", "must be in 1..8 (got " + std::to_string(n) + ")");
-    a.samples = static_cast<int>(n);
-  }
+  read_samples(r, p, key, 1, 8, a.samples);
   if (static_cast<long long>(std::max(scene.width, scene.height)) * a.samples > scene.max_side)
     r.fail(key + "/samples", "the supersampled image would exceed " +
                                  std::to_string(scene.max_side) + " pixels a side (viewport " +
@@ -191,12 +200,7 @@ void parse_depth_of_field_parameters(const reader& r, const json& p, const std::
   if (!(d.focus_distance > d.focal_length))
     r.fail(key + "/focus_distance",
            "must be greater than focal_length (a thin lens cannot focus closer than f)");
-  if (const json* v = r.optional(p, "samples")) {
-    const long long n = r.integer(*v, key + "/samples");
-    if (n < 2 || n > 1024)
-      r.fail(key + "/samples", "must be in 2..1024 (got " + std::to_string(n) + ")");
-    d.samples = static_cast<int>(n);
-  }
+  read_samples(r, p, key, 2, 1024, d.samples);
 }
 
 /// "exposure" parameters into out.exposure; scene_error names the bad key. Parameters:
@@ -211,12 +215,7 @@ void parse_exposure_parameters(const reader& r, const json& p, const std::string
     if (e.shutter > 1)
       r.fail(key + "/shutter", "must be in (0, 1]: the fraction of the frame the shutter is open");
   }
-  if (const json* v = r.optional(p, "samples")) {
-    const long long n = r.integer(*v, key + "/samples");
-    if (n < 2 || n > 1024)
-      r.fail(key + "/samples", "must be in 2..1024 (got " + std::to_string(n) + ")");
-    e.samples = static_cast<int>(n);
-  }
+  read_samples(r, p, key, 2, 1024, e.samples);
   const std::string at = key + "/camera_end";
   const json& c = r.object(r.require(p, key, "camera_end"), at);
   r.reject_unknown(c, at, "camera_end", {"eye", "look_at", "up"});

@@ -29,13 +29,13 @@ void check(const exposure_settings& s) {
 }  // namespace
 
 view_setup exposure_view(const view_setup& start, const exposure_settings& s, int k, int count) {
+  if (k == 0) return start;
   const double t = s.shutter * k / (count - 1);
   view_setup v = start;
   v.cam = {blend(start.cam.eye, s.camera_end.eye, t),
            blend(start.cam.look_at, s.camera_end.look_at, t),
            blend(start.cam.up, s.camera_end.up, t)};
   v.model_view = look_at(v.cam);
-  if (k == 0) return start;
   // The centre of projection keeps its place relative to the camera: its eye coordinates in
   // view 0, carried back to the world by the new camera (for the usual projections, at the
   // eye's origin or along the gaze: exactly the blended camera's eye and gaze).
