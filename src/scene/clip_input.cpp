@@ -12,6 +12,8 @@
 #include <exbsp/clip/convex_hull.h>
 #include <exbsp/clip/convex_region.h>
 #include <exbsp/clip/cyrus_beck.h>
+#include <exbsp/clip/homogeneous.h>
+#include <exbsp/clip/homogeneous_segment.h>
 #include <exbsp/clip/liang_barsky.h>
 #include <exbsp/core/errors.h>
 #include <exbsp/mesh/mesh_io.h>
@@ -64,10 +66,54 @@ std::vector<std::array<double, N>> points(const reader& r, const json& v, const 
   return out;
 }
 
+/// A ring of a polygon with holes (clip/polygon_boolean.h): simple, >= 3 distinct points.
+std::vector<clip::vec2d> ring(const reader& r, const json& v, const std::string& key) {
+  std::vector<clip::vec2d> pts = points<2>(r, v, key);
+  const std::string problem = clip::ring_problem(pts);
+  if (!problem.empty()) r.fail(key, "the ring " + problem);
+  return pts;
+}
+
+/// {"outer": ring, "holes": [ring, ...]} ("holes" optional), each hole inside the outer ring.
+clip::polygon_with_holes2 polygon_with_holes(const reader& r, const json& v,
+                                             const std::string& key) {
+  r.object(v, key);
+  for (auto it = v.begin(); it != v.end(); ++it)
+    if (it.key() != "outer" && it.key() != "holes")
+      r.fail(key + "/" + it.key(), "unknown key (expected outer, holes)");
+  clip::polygon_with_holes2 p;
+  p.outer = ring(r, r.require(v, key, "outer"), key + "/outer");
+  if (const json* holes = r.optional(v, "holes")) {
+    array_of(r, *holes, key + "/holes", "rings");
+    for (std::size_t i = 0; i < holes->size(); ++i) {
+      const std::string at = key + "/holes/" + std::to_string(i);
+      p.holes.push_back(ring(r, (*holes)[i], at));
+      if (!clip::ring_inside(p.holes.back(), p.outer))
+        r.fail(at, "the hole is not inside the outer ring " + key + "/outer");
+    }
+  }
+  return p;
+}
+
+/// The region's JSON key.
+const char* region_name(clip_input::region_kind kind) {
+  static const char* const names[] = {"rect",    "box",     "convex",    "halfspaces",
+                                      "frustum", "polygon", "clip_space"};
+  return names[static_cast<int>(kind)];
+}
+
+/// The segment clippers that take a (convex) region of this kind.
+const char* segment_clippers(clip_input::region_kind kind) {
+  return kind == clip_input::region_kind::clip_space
+             ? "cohen-sutherland or liang-barsky"
+             : "cohen-sutherland, liang-barsky or cyrus-beck";
+}
+
 void parse_region(const reader& r, const json& doc, clip_input& in) {
   const json& region = r.object(r.require(doc, "", "region"), "/region");
   if (region.size() != 1)
-    r.fail("/region", "must have exactly one of rect, box, convex, halfspaces, frustum");
+    r.fail("/region",
+           "must have exactly one of rect, box, convex, halfspaces, frustum, polygon, clip_space");
   const std::string name = region.begin().key();
   const std::string key = "/region/" + name;
   const json& v = region.begin().value();
@@ -141,8 +187,19 @@ void parse_region(const reader& r, const json& doc, clip_input& in) {
           in.planes3.push_back({{h[0], h[1], h[2]}, h[3]});
         }
       }
+    } else if (name == "polygon") {  // concave, with holes: weiler-atherton
+      in.kind = kind::polygon;
+      in.dimension = 2;
+      in.polygon.emplace(polygon_with_holes(r, v, key));
+    } else if (name == "clip_space") {  // OpenGL's -w <= x, y, z <= w, before the divide
+      if (!v.is_boolean() || !v.get<bool>())
+        r.fail(key, "must be true (OpenGL's clip space: points [x, y, z, w], -w <= x, y, z <= w)");
+      in.kind = kind::clip_space;
+      in.dimension = 4;
     } else {
-      r.fail(key, "unknown region (expected rect, box, convex, halfspaces or frustum)");
+      r.fail(key,
+             "unknown region (expected rect, box, convex, halfspaces, frustum, polygon or "
+             "clip_space)");
     }
   } catch (const usage_error& e) {  // the convex-region helpers' checks
     r.fail(key, e.what());
@@ -186,36 +243,38 @@ json polygon_json(const std::vector<P>& poly) {
   return a;
 }
 
-/// "0101 (left|bottom)": the outcode's bits, highest first, and their names.
-std::string outcode_text(unsigned code, int dimension) {
+/// "0101 (left|bottom)": the outcode's bits, highest first, and their names (dimension 4:
+/// clip space, the six bits of clip/homogeneous.h).
+std::string outcode_text(unsigned code, std::size_t dimension) {
   static const char* names[] = {"x<min", "x>max", "y<min", "y>max", "z<min", "z>max"};
   static const char* names2[] = {"left", "right", "bottom", "top"};
-  const int bits = 2 * dimension;
+  static const char* names4[] = {"x<-w", "x>w", "y<-w", "y>w", "z<-w", "z>w"};
+  const char* const* bit_names = dimension == 2 ? names2 : dimension == 3 ? names : names4;
+  const std::size_t bits = dimension == 2 ? 4 : 6;
   std::string s;
-  for (int b = bits - 1; b >= 0; --b) s += (code >> b) & 1u ? '1' : '0';
+  for (std::size_t b = bits; b-- > 0;) s += (code >> b) & 1u ? '1' : '0';
   std::string list;
-  for (int b = 0; b < bits; ++b)
-    if ((code >> b) & 1u)
-      list += (list.empty() ? "" : "|") + std::string(dimension == 2 ? names2[b] : names[b]);
+  for (std::size_t b = 0; b < bits; ++b)
+    if ((code >> b) & 1u) list += (list.empty() ? "" : "|") + std::string(bit_names[b]);
   return s + " (" + (list.empty() ? "inside" : list) + ")";
 }
 
-template <std::size_t N, class Region>
-void clip_segments(const std::vector<clip::segment<N>>& segments, const Region& region,
-                   segment_clipper algorithm, json& result, std::ostream* log) {
+/// Segments by a box clipper: `outcode(p)` codes an end, `clip_one(s, t)` returns the kept
+/// part (or nothing) and sets t = {t0, t1} for Liang–Barsky. Writes "segments" and
+/// "outcodes" (Cohen–Sutherland) or "t" (Liang–Barsky).
+template <std::size_t N, class Outcode, class Clip>
+void clip_segments(const std::vector<clip::segment<N>>& segments, segment_clipper algorithm,
+                   Outcode&& outcode, Clip&& clip_one, json& result, std::ostream* log) {
   json out = json::array(), codes = json::array(), ts = json::array();
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const clip::segment<N>& s = segments[i];
-    const unsigned c0 = clip::outcode(s.p0, region), c1 = clip::outcode(s.p1, region);
-    std::optional<clip::segment<N>> kept;
-    if (algorithm == segment_clipper::cohen_sutherland) {
-      kept = clip::cohen_sutherland_clip(s, region);
+    const unsigned c0 = outcode(s.p0), c1 = outcode(s.p1);
+    std::array<double, 2> t{};
+    const std::optional<clip::segment<N>> kept = clip_one(s, t);
+    if (algorithm == segment_clipper::cohen_sutherland)
       codes.push_back({c0, c1});
-    } else {
-      const auto lb = clip::liang_barsky_clip(s, region);
-      if (lb) kept = lb->clipped;
-      ts.push_back(lb ? json{lb->t0, lb->t1} : json());
-    }
+    else
+      ts.push_back(kept ? json{t[0], t[1]} : json());
     out.push_back(kept ? json{to_json(kept->p0), to_json(kept->p1)} : json());
     if (log) {
       const char* what = clip::trivially_accepted(c0, c1)   ? "trivially accepted"
@@ -231,6 +290,23 @@ void clip_segments(const std::vector<clip::segment<N>>& segments, const Region& 
     result["outcodes"] = codes;
   else
     result["t"] = ts;
+}
+
+/// Segments against a rect or box by Cohen–Sutherland or Liang–Barsky.
+template <std::size_t N>
+void clip_segments_box(const std::vector<clip::segment<N>>& segments, const clip::box<N>& region,
+                       segment_clipper algorithm, json& result, std::ostream* log) {
+  clip_segments<N>(
+      segments, algorithm, [&](const std::array<double, N>& p) { return clip::outcode(p, region); },
+      [&](const clip::segment<N>& s, std::array<double, 2>& t) -> std::optional<clip::segment<N>> {
+        if (algorithm == segment_clipper::cohen_sutherland)
+          return clip::cohen_sutherland_clip(s, region);
+        const auto lb = clip::liang_barsky_clip(s, region);
+        if (!lb) return std::nullopt;
+        t = {lb->t0, lb->t1};
+        return lb->clipped;
+      },
+      result, log);
 }
 
 /// Segments against any convex region's half-planes or half-spaces by Cyrus–Beck: the kept
@@ -277,6 +353,119 @@ void clip_polygons(const std::vector<std::vector<P>>& polygons, const std::vecto
   result["pieces"] = pieces;
 }
 
+/// A clip-space point after the perspective divide (NDC), null unless w > 0 (the clipped
+/// output has w >= 0; w = 0 only at the 4D origin).
+json ndc_json(const json& p) {
+  const clip::vec4d q{p[0].get<double>(), p[1].get<double>(), p[2].get<double>(),
+                      p[3].get<double>()};
+  return q[3] > 0 ? to_json(clip::perspective_divide(q)) : json();
+}
+
+json ndc_points(const json& points) {
+  json out = json::array();
+  for (const json& p : points) out.push_back(ndc_json(p));
+  return out;
+}
+
+/// clip_space: segments by the homogeneous Cohen–Sutherland or Liang–Barsky, polygons by the
+/// homogeneous Sutherland–Hodgman, each result also divided by w ("ndc").
+json clip_in_clip_space(const clip_input& in, const std::string& algorithm, std::ostream* log) {
+  if (algorithm == "cyrus-beck")
+    throw scene_error(in.path, "/region",
+                      "cyrus-beck clips against rect, box, convex, halfspaces and frustum "
+                      "regions; clip_space segments are clipped by cohen-sutherland (the default) "
+                      "or liang-barsky in homogeneous coordinates");
+  const segment_clipper sc = algorithm == "liang-barsky" ? segment_clipper::liang_barsky
+                                                         : segment_clipper::cohen_sutherland;
+  json result;
+  result["dimension"] = 4;
+  result["algorithm"] = {
+      {"segments", sc == segment_clipper::liang_barsky ? "liang-barsky" : "cohen-sutherland"},
+      {"polygons", "sutherland-hodgman"}};
+  clip_segments<4>(
+      in.segments4, sc, [](const clip::vec4d& p) { return clip::homogeneous_outcode(p); },
+      [&](const clip::segment<4>& s, std::array<double, 2>& t) -> std::optional<clip::segment<4>> {
+        clip::segment<4> kept{};
+        const bool ok =
+            sc == segment_clipper::liang_barsky
+                ? clip::homogeneous_liang_barsky(s.p0, s.p1, kept.p0, kept.p1, &t[0], &t[1])
+                : clip::homogeneous_cohen_sutherland(s.p0, s.p1, kept.p0, kept.p1);
+        if (!ok) return std::nullopt;
+        return kept;
+      },
+      result, log);
+  json polygons = json::array();
+  for (std::size_t i = 0; i < in.polygons4.size(); ++i) {
+    clip::homogeneous_polygon poly;
+    poly.positions = in.polygons4[i];
+    const clip::homogeneous_polygon kept = clip::homogeneous_clip(poly);
+    polygons.push_back(polygon_json(kept.positions));
+    if (log)
+      *log << "polygon " << i << ": " << poly.size() << " vertices -> " << kept.size()
+           << " vertices\n";
+  }
+  result["polygons"] = polygons;
+  json ndc_segments = json::array(), ndc_polygons = json::array();
+  for (const json& s : result["segments"]) ndc_segments.push_back(s.is_null() ? s : ndc_points(s));
+  for (const json& p : polygons) ndc_polygons.push_back(ndc_points(p));
+  result["ndc"] = {{"segments", ndc_segments}, {"polygons", ndc_polygons}};
+  return result;
+}
+
+json polygons_with_holes_json(const std::vector<clip::polygon_with_holes2>& polygons) {
+  json out = json::array();
+  for (const auto& p : polygons) {
+    json holes = json::array();
+    for (const auto& h : p.holes) holes.push_back(polygon_json(h));
+    out.push_back({{"outer", polygon_json(p.outer)}, {"holes", holes}});
+  }
+  return out;
+}
+
+/// A polygon region: CGAL's exact Boolean intersection (standing in for Weiler–Atherton,
+/// clip/polygon_boolean.h) for polygons, the exact parts in the closed region for segments.
+json clip_against_polygon(const clip_input& in, const std::string& algorithm, std::ostream* log) {
+  if (!algorithm.empty() && algorithm != "weiler-atherton")
+    throw scene_error(in.path, "/region",
+                      "a polygon region (concave, with holes) is clipped by weiler-atherton only "
+                      "(CGAL's exact Boolean operations); " +
+                          algorithm +
+                          " needs a convex region (rect, box, convex, halfspaces, frustum) or "
+                          "clip_space");
+  const clip::polygon_region& region = *in.polygon;
+  json result;
+  result["dimension"] = 2;
+  result["algorithm"] = {{"segments", "weiler-atherton"}, {"polygons", "weiler-atherton"}};
+  json segments = json::array();
+  for (std::size_t i = 0; i < in.segments2.size(); ++i) {
+    json parts = json::array();
+    for (const clip::segment2& s : region.clip_segment(in.segments2[i]))
+      parts.push_back({to_json(s.p0), to_json(s.p1)});
+    if (log)
+      *log << "segment " << i << ": " << parts.size() << (parts.size() == 1 ? " part" : " parts")
+           << " in the region\n";
+    segments.push_back(std::move(parts));
+  }
+  result["segments"] = segments;
+  auto clip_all = [&](const std::vector<clip::polygon_with_holes2>& polygons, const char* what) {
+    json out = json::array();
+    for (std::size_t i = 0; i < polygons.size(); ++i) {
+      const auto kept = region.intersect(polygons[i]);
+      if (log)
+        *log << what << " " << i << ": " << polygons[i].outer.size() << " vertices, "
+             << polygons[i].holes.size() << " holes -> " << kept.size()
+             << (kept.size() == 1 ? " polygon\n" : " polygons\n");
+      out.push_back(polygons_with_holes_json(kept));
+    }
+    return out;
+  };
+  std::vector<clip::polygon_with_holes2> simple;
+  for (const auto& p : in.polygons2) simple.push_back({p, {}});
+  result["polygons"] = clip_all(simple, "polygon");
+  result["polygons_with_holes"] = clip_all(in.holed_polygons2, "polygon with holes");
+  return result;
+}
+
 std::string fixed(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.2f", v);
@@ -290,15 +479,37 @@ clip_input parse_clip_input(const json& doc, const std::string& path) {
   if (!doc.is_object())
     r.fail("", std::string("the input must be a JSON object (got ") + doc.type_name() + ")");
   for (auto it = doc.begin(); it != doc.end(); ++it)
-    if (it.key() != "region" && it.key() != "segments" && it.key() != "polygons")
-      r.fail("/" + it.key(), "unknown key (expected region, segments, polygons)");
+    if (it.key() != "region" && it.key() != "segments" && it.key() != "polygons" &&
+        it.key() != "polygons_with_holes")
+      r.fail("/" + it.key(),
+             "unknown key (expected region, segments, polygons, polygons_with_holes)");
   clip_input in;
   in.path = path;
   parse_region(r, doc, in);
   if (in.dimension == 2)
     parse_items<2>(r, doc, in.segments2, in.polygons2);
-  else
+  else if (in.dimension == 3)
     parse_items<3>(r, doc, in.segments3, in.polygons3);
+  else
+    parse_items<4>(r, doc, in.segments4, in.polygons4);
+  const bool polygon_region = in.kind == clip_input::region_kind::polygon;
+  if (polygon_region)  // the Boolean operations need simple polygons
+    for (std::size_t i = 0; i < in.polygons2.size(); ++i) {
+      const std::string problem = clip::ring_problem(in.polygons2[i]);
+      if (!problem.empty()) r.fail("/polygons/" + std::to_string(i), "the polygon " + problem);
+    }
+  if (const json* holed = r.optional(doc, "polygons_with_holes")) {
+    if (!polygon_region)
+      r.fail("/polygons_with_holes",
+             "polygons with holes are clipped against a polygon region only (weiler-atherton); "
+             "the " +
+                 std::string(region_name(in.kind)) +
+                 " region clips simple polygons (\"polygons\")");
+    array_of(r, *holed, "/polygons_with_holes", "polygons with holes");
+    for (std::size_t i = 0; i < holed->size(); ++i)
+      in.holed_polygons2.push_back(
+          polygon_with_holes(r, (*holed)[i], "/polygons_with_holes/" + std::to_string(i)));
+  }
   return in;
 }
 
@@ -316,27 +527,34 @@ clip_input load_clip_input(const std::string& path) {
 
 json run_clip(const clip_input& in, const std::string& algorithm, std::ostream* log) {
   if (!algorithm.empty() && algorithm != "cohen-sutherland" && algorithm != "liang-barsky" &&
-      algorithm != "cyrus-beck" && algorithm != "sutherland-hodgman")
+      algorithm != "cyrus-beck" && algorithm != "sutherland-hodgman" &&
+      algorithm != "weiler-atherton")
     throw usage_error("clip: unknown --algorithm " + algorithm +
-                      " (expected cohen-sutherland, liang-barsky, cyrus-beck or "
-                      "sutherland-hodgman)");
-  const bool has_segments = !in.segments2.empty() || !in.segments3.empty();
+                      " (expected cohen-sutherland, liang-barsky, cyrus-beck, sutherland-hodgman "
+                      "or weiler-atherton)");
+  if (in.kind == clip_input::region_kind::polygon) return clip_against_polygon(in, algorithm, log);
+  if (algorithm == "weiler-atherton")
+    throw scene_error(in.path, "/region",
+                      std::string("weiler-atherton clips against a polygon region ({\"polygon\": "
+                                  "{\"outer\": ..., \"holes\": ...}}) only; against a ") +
+                          region_name(in.kind) +
+                          " region clip polygons with sutherland-hodgman and segments with " +
+                          segment_clippers(in.kind));
+  const bool has_segments = !in.segments2.empty() || !in.segments3.empty() || !in.segments4.empty();
   const bool box_region =
       in.kind == clip_input::region_kind::rect || in.kind == clip_input::region_kind::box;
   if (has_segments && algorithm == "sutherland-hodgman")
     throw scene_error(in.path, "/segments",
-                      "Sutherland–Hodgman clips polygons; clip segments with cohen-sutherland, "
-                      "liang-barsky or cyrus-beck");
+                      std::string("Sutherland–Hodgman clips polygons; clip segments with ") +
+                          segment_clippers(in.kind));
+  if (in.kind == clip_input::region_kind::clip_space) return clip_in_clip_space(in, algorithm, log);
   // Segments: Cohen–Sutherland (default) or Liang–Barsky against a rect or box, Cyrus–Beck
   // against any convex region (the default for convex and halfspaces regions).
   const bool cyrus_beck = algorithm == "cyrus-beck" || (algorithm.empty() && !box_region);
   if (has_segments && !box_region && !cyrus_beck)
     throw scene_error(in.path, "/region",
                       algorithm + " clips segments against a rect or box; use cyrus-beck for a " +
-                          (in.kind == clip_input::region_kind::convex    ? "convex"
-                           : in.kind == clip_input::region_kind::frustum ? "frustum"
-                                                                         : "halfspaces") +
-                          " region");
+                          region_name(in.kind) + " region");
   const segment_clipper sc = algorithm == "liang-barsky" ? segment_clipper::liang_barsky
                                                          : segment_clipper::cohen_sutherland;
   json result;
@@ -349,13 +567,13 @@ json run_clip(const clip_input& in, const std::string& algorithm, std::ostream* 
     if (has_segments && cyrus_beck)
       clip_segments_cyrus_beck<2>(in.segments2, in.planes2, result, log);
     else if (has_segments)
-      clip_segments<2>(in.segments2, in.window, sc, result, log);
+      clip_segments_box<2>(in.segments2, in.window, sc, result, log);
     clip_polygons(in.polygons2, in.planes2, result, log);
   } else {
     if (has_segments && cyrus_beck)
       clip_segments_cyrus_beck<3>(in.segments3, in.planes3, result, log);
     else if (has_segments)
-      clip_segments<3>(in.segments3, in.box, sc, result, log);
+      clip_segments_box<3>(in.segments3, in.box, sc, result, log);
     clip_polygons(in.polygons3, in.planes3, result, log);
   }
   if (!has_segments) result["segments"] = json::array();
@@ -381,6 +599,13 @@ std::string clip_svg(const clip_input& in, const json& result) {
   }
   for (const auto& poly : in.polygons2)
     for (const auto& p : poly) grow(p);
+  for (const auto& poly : in.holed_polygons2)
+    for (const auto& p : poly.outer) grow(p);
+  // A polygon region: its regularized rings (outer counter-clockwise, holes clockwise).
+  const std::vector<clip::polygon_with_holes2> polygon_region =
+      in.polygon ? in.polygon->polygons() : std::vector<clip::polygon_with_holes2>{};
+  for (const auto& poly : polygon_region)
+    for (const auto& p : poly.outer) grow(p);
   std::vector<clip::vec2d> region;
   if (in.kind == clip_input::region_kind::rect) {
     region = {in.window.min,
@@ -413,24 +638,45 @@ std::string clip_svg(const clip_input& in, const json& result) {
       d += (i ? " L" : "M") + xy(pts[i][0].get<double>(), pts[i][1].get<double>());
     return d + (closed ? " Z" : "");
   };
+  // A polygon with holes ({"outer", "holes"}) as one path of closed rings, for evenodd filling.
+  auto holed_path = [&](const json& p) {
+    std::string d = path(p.at("outer"), true);
+    for (const json& h : p.at("holes")) d += " " + path(h, true);
+    return d;
+  };
   std::ostringstream svg;
   svg << svg::open_root(fixed(width), fixed(height));
   svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   json region_pts = json::array();
   for (const auto& p : region) region_pts.push_back({p[0], p[1]});
-  if (!region_pts.empty())
-    svg << "<path id=\"region\" d=\"" << path(region_pts, true)
-        << "\" fill=\"#dce8f5\" stroke=\"#4a6fa5\" stroke-width=\"1.5\"/>\n";
+  std::string region_d = region_pts.empty() ? std::string() : path(region_pts, true);
+  for (const json& p : polygons_with_holes_json(polygon_region))
+    region_d += (region_d.empty() ? "" : " ") + holed_path(p);
+  if (!region_d.empty())
+    svg << "<path id=\"region\" d=\"" << region_d
+        << "\" fill=\"#dce8f5\" fill-rule=\"evenodd\" stroke=\"#4a6fa5\" stroke-width=\"1.5\"/>\n";
   svg << "<g id=\"input\" fill=\"none\" stroke=\"#888\" stroke-width=\"1\" stroke-dasharray=\"4 "
          "3\">\n";
   for (const auto& s : in.segments2)
     svg << "<path d=\"M" << xy(s.p0[0], s.p0[1]) << " L" << xy(s.p1[0], s.p1[1]) << "\"/>\n";
   for (const auto& poly : in.polygons2)
     svg << "<path d=\"" << path(polygon_json(poly), true) << "\"/>\n";
+  for (const json& p : polygons_with_holes_json(in.holed_polygons2))
+    svg << "<path d=\"" << holed_path(p) << "\"/>\n";
   svg << "</g>\n<g id=\"result\" stroke=\"#c0392b\" stroke-width=\"2\">\n";
+  const char* fill = "\" fill=\"#e74c3c\" fill-opacity=\"0.45\"";
+  if (in.polygon) {  // per input polygon, polygons with holes; per segment, its parts
+    for (const char* key : {"polygons", "polygons_with_holes"})
+      for (const json& kept : result.at(key))
+        for (const json& p : kept)
+          svg << "<path d=\"" << holed_path(p) << fill << " fill-rule=\"evenodd\"/>\n";
+    for (const json& parts : result.at("segments"))
+      for (const json& s : parts) svg << "<path d=\"" << path(s, false) << "\" fill=\"none\"/>\n";
+    svg << "</g>\n</svg>\n";
+    return svg.str();
+  }
   for (const auto& pieces : result.at("pieces"))
-    for (const auto& piece : pieces)
-      svg << "<path d=\"" << path(piece, true) << "\" fill=\"#e74c3c\" fill-opacity=\"0.45\"/>\n";
+    for (const auto& piece : pieces) svg << "<path d=\"" << path(piece, true) << fill << "/>\n";
   for (const auto& s : result.at("segments"))
     if (!s.is_null()) svg << "<path d=\"" << path(s, false) << "\" fill=\"none\"/>\n";
   svg << "</g>\n";
