@@ -2,8 +2,8 @@
 // `exbsp clip` (docs/contract.md "Command line"): the clipping toolbox from a JSON file.
 //
 // Input: {"region": R, "segments": [[p, q], ...], "polygons": [[p, ...], ...],
-//         "polygons_with_holes": [{"outer": [p, ...], "holes": [[p, ...], ...]}, ...]} with R one
-//         of
+//         "polygons_with_holes": [{"outer": [p, ...], "holes": [[p, ...], ...]}, ...]}
+// with R one of
 //   {"rect": [xmin, ymin, xmax, ymax]}                2D window
 //   {"box": [xmin, ymin, zmin, xmax, ymax, zmax]}     3D box
 //   {"convex": [[x, y], ...]}                         convex polygon (either orientation)
