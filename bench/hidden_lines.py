@@ -104,8 +104,8 @@ def main():
              f"{args.frames} frames. PNG frame: order + transform+clip + raster, the raster in one band "
              "(its default) or in one band per core. SVG frame: order + transform+clip + svg (visible "
              "regions, exact visible and hidden edges, the document) + write; the svg stage uses both "
-             "cores (the edges on a second thread, which then mends T-junctions ahead of the coverage "
-             "walk; regions and underlay groups split over the cores).", ""]
+             "cores (the edges on a second thread; the coverage walk in eight strips of tile rows, "
+             "regions and underlay groups, all split over the cores).", ""]
     lines.append("| mesh | triangles | fragments | PNG frame | PNG frame, all cores | SVG frame | "
                  "SVG / PNG | SVG / PNG all cores | SVG size |")
     lines.append("|---|---|---|---|---|---|---|---|---|")

@@ -29,6 +29,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <set>
 #include <sstream>
 
@@ -48,6 +49,7 @@
 #include "view/svg_writer.h"
 #include "view/vector_pdf.h"
 #include "view/visible_cover.h"
+#include "view/visible_strips.h"
 #include "support/test_helpers.h"
 
 #include "support/osmesa_zbuffer.h"
@@ -522,6 +524,199 @@ TEST(VisibleRegions, PiecesSharingEdgesUniteByTheirBoundary) {
   EXPECT_FALSE(cover::union_by_shared_edges({&a, &b}, out));
   const Path left{{0, 0}, {1, 0}, {1, 1}, {1, 2}, {0, 2}}, right{{1, 0}, {2, 0}, {2, 2}, {1, 2}};
   EXPECT_FALSE(cover::union_by_shared_edges({&left, &right}, out));  // (1, 1) on one side only
+}
+
+// ---- strips (view/visible_strips.h) -------------------------------------------------------
+
+TEST(Strips, CrossingPointsAreTheNearestGridPointAndTheSameFromBothEnds) {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<long long> coord(-200000, 200000);
+  for (int i = 0; i < 20000; ++i) {
+    const ClipperLib::IntPoint a{coord(rng), coord(rng)}, b{coord(rng), coord(rng)};
+    if (a.Y == b.Y) continue;
+    const long long y = std::min(a.Y, b.Y) + coord(rng) % (std::abs(b.Y - a.Y));
+    const long long x = cover::crossing_x(a, b, y);
+    EXPECT_EQ(x, cover::crossing_x(b, a, y));
+    // Exact oracle: |x - (a.X + (b.X - a.X)(y - a.Y)/(b.Y - a.Y))| <= 1/2, in integers
+    // (|2 (x - a.X) d - 2 (b.X - a.X)(y - a.Y)| <= |d|, d = b.Y - a.Y; products below 2^62).
+    const long long d = b.Y - a.Y;
+    const long long lhs = std::abs(2 * (x - a.X) * d - 2 * (b.X - a.X) * (y - a.Y));
+    EXPECT_LE(lhs, std::abs(d)) << a.X << "," << a.Y << " " << b.X << "," << b.Y << " y " << y;
+  }
+}
+
+TEST(Strips, APolygonCutAtAStripLineComesBackWholeFromItsHalves) {
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<long long> coord(0, 4000);
+  int crossing = 0;
+  for (int i = 0; i < 3000; ++i) {
+    ClipperLib::Path tri{
+        {coord(rng), coord(rng)}, {coord(rng), coord(rng)}, {coord(rng), coord(rng)}};
+    if (ClipperLib::Area(tri) == 0) continue;
+    if (ClipperLib::Area(tri) < 0) std::reverse(tri.begin(), tri.end());
+    const long long y = 400 * (1 + static_cast<long long>(rng() % 9));
+    ClipperLib::Path low, high;
+    const bool has_low = cover::cut_to_band(tri, -(1LL << 60), y, low);
+    const bool has_high = cover::cut_to_band(tri, y, 1LL << 60, high);
+    for (const auto* half : {&low, &high})
+      for (const ClipperLib::IntPoint& q : *half) {
+        // Each half's points are the triangle's own or crossings on the strip line.
+        const bool own = std::find(tri.begin(), tri.end(), q) != tri.end();
+        EXPECT_TRUE(own || q.Y == y);
+      }
+    if (!has_low || !has_high) continue;
+    ++crossing;
+    // The halves meet along the line point for point: their shared edges cancel into one ring
+    // (the triangle with its crossings, which lie within half a unit of its edges).
+    ClipperLib::Paths whole;
+    ASSERT_TRUE(cover::union_by_shared_edges({&low, &high}, whole));
+    ASSERT_EQ(whole.size(), 1u);
+    EXPECT_LE(std::abs(ClipperLib::Area(whole[0]) - ClipperLib::Area(tri)),
+              0.5 * 2 * 4000 + 1);  // two crossings, each moved under half a unit along the line
+    EXPECT_EQ(ClipperLib::Area(low) + ClipperLib::Area(high), ClipperLib::Area(whole[0]));
+  }
+  EXPECT_GT(crossing, 500);
+}
+
+TEST(Strips, RowsAreIncreasingTileRowsHoldingEqualSharesOfTheCentres) {
+  std::vector<long long> centres;
+  for (long long k = 0; k < 1000; ++k) centres.push_back(k * k % 76800);  // skewed, 768 px
+  const std::vector<int> rows = cover::strip_rows(centres, 76800, 4);
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows.front(), 0);
+  EXPECT_EQ(rows.back(), 192);
+  for (std::size_t s = 0; s + 1 < rows.size(); ++s) {
+    EXPECT_LT(rows[s], rows[s + 1]);
+    const long long y0 = rows[s] * cover::tiled_coverage::tile_side;
+    const long long y1 = rows[s + 1] * cover::tiled_coverage::tile_side;
+    const auto in = std::count_if(centres.begin(), centres.end(),
+                                  [&](long long c) { return c >= y0 && c < y1; });
+    EXPECT_NEAR(static_cast<double>(in), 250.0, 30.0) << "strip " << s;
+  }
+  // Lines to avoid move a cut to the next row; a viewport of one tile row has one strip;
+  // nothing at all, one strip.
+  const std::vector<long long> avoid{rows[1] * cover::tiled_coverage::tile_side,
+                                     rows[2] * cover::tiled_coverage::tile_side};
+  const std::vector<int> moved = cover::strip_rows(centres, 76800, 4, avoid);
+  ASSERT_EQ(moved.size(), 5u);
+  EXPECT_EQ(moved[1], rows[1] + 1);
+  EXPECT_EQ(moved[2], rows[2] + 1);
+  EXPECT_EQ(moved[3], rows[3]);
+  EXPECT_EQ(cover::strip_rows(centres, 300, 4), (std::vector<int>{0, 1}));
+  EXPECT_EQ(cover::strip_rows({}, 76800, 4), (std::vector<int>{0, 192}));
+}
+
+/// A 200 x 200 frame of window-space polygons (back to front) and lines, drawn as visible
+/// regions without edges.
+frame window_frame(std::vector<screen_polygon> polygons, std::vector<screen_line> lines) {
+  frame f;
+  f.view.vp = {0, 0, 200, 200};
+  f.polygons = std::move(polygons);
+  f.lines = std::move(lines);
+  f.vector.edges = vector_options::edges_kind::none;
+  return f;
+}
+
+screen_polygon window_triangle(std::uint32_t face, rgb8 c, window_point a, window_point b,
+                               window_point d) {
+  screen_polygon p;
+  p.face = face;
+  p.fragment = face;
+  p.color = c;
+  p.v = {a, b, d};
+  return p;
+}
+
+TEST(Strips, NoCrackAlongStripLinesAndCurvesCrossThemWhole) {
+  // Back: a square over the whole viewport (faces 0, 1); front: a square (10, 10)-(190, 190)
+  // (faces 2, 3) and, in front of it, many small triangles spread over the viewport so that
+  // the strips fall between rows of them. Whatever the strip lines, the back square must show
+  // only outside the front one, each front face's pieces must unite into one ring, and points
+  // exactly on every tile row (every strip line is one) behind the front square are hidden.
+  std::vector<screen_polygon> polys;
+  polys.push_back(window_triangle(0, {0, 0, 255}, {-5, -5, 0.9}, {205, -5, 0.9}, {205, 205, 0.9}));
+  polys.push_back(window_triangle(1, {0, 0, 250}, {-5, -5, 0.9}, {205, 205, 0.9}, {-5, 205, 0.9}));
+  polys.push_back(window_triangle(2, {200, 0, 0}, {10, 10, 0.5}, {190, 10, 0.5}, {190, 190, 0.5}));
+  polys.push_back(window_triangle(3, {190, 0, 0}, {10, 10, 0.5}, {190, 190, 0.5}, {10, 190, 0.5}));
+  std::uint32_t face = 4;
+  for (int j = 0; j < 12; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const double x = 20 + 60 * i + 3.3 * j, y = 3 + 16.3 * j;
+      polys.push_back(window_triangle(face++, {0, 200, 0}, {x, y, 0.1}, {x + 4.1, y + 0.7, 0.1},
+                                      {x + 1.3, y + 5.9, 0.1}));
+    }
+  std::vector<screen_line> lines;
+  auto point = [&](double x, double y, std::size_t slot) {
+    screen_line l;
+    l.a = l.b = {x, y, 0.7};
+    l.point = true;
+    l.slot = slot;
+    l.color = {1, 2, 3};
+    lines.push_back(l);
+  };
+  for (int y = 4; y < 200; y += 4) point(100.25, y, 0);  // behind everything: hidden
+  for (int y = 4; y < 200; y += 4) point(197.5, y, 2);   // beside the front square: seen
+  screen_line behind;  // behind the front square, across every strip: seen only outside it
+  behind.a = {150.5, 1, 0.7};
+  behind.b = {150.5, 199, 0.7};
+  behind.slot = 2;
+  behind.color = {4, 5, 6};
+  lines.push_back(behind);
+  screen_line front = behind;  // in front of everything: one polyline from end to end
+  front.a = {120.5, 2, 0};
+  front.b = {121.5, 198, 0};
+  front.slot = polys.size();
+  front.curve = 1;
+  front.color = {7, 8, 9};
+  lines.push_back(front);
+  std::stable_sort(lines.begin(), lines.end(),
+                   [](const screen_line& a, const screen_line& b) { return a.slot < b.slot; });
+  frame f = window_frame(polys, lines);
+  const vector_drawing d = visible_drawing(f);
+  double back_area = 0;
+  int front_faces = 0;
+  for (const vector_path* r : regions_of(d)) {
+    double area = 0;
+    int outer = 0;
+    for (const auto& ring : r->rings) {
+      ClipperLib::Path p;
+      for (const grid_point& q : ring) p.push_back({q.x, q.y});
+      area += ClipperLib::Area(p);
+      outer += ClipperLib::Area(p) > 0;
+    }
+    if (r->face <= 1) back_area += area;
+    if (r->face == 2 || r->face == 3) {
+      ++front_faces;
+      // One outline (its halves in every strip reunited); the holes are the small triangles.
+      EXPECT_EQ(outer, 1) << "face " << r->face;
+    }
+  }
+  EXPECT_EQ(front_faces, 2);
+  // The back square (210 px wide, over the viewport's edges) shows as the frame around the
+  // front square, less the small triangles in front of it, never inside it.
+  EXPECT_LE(back_area, (210.0 * 210 - 180.0 * 180) * 1e4 + 1);
+  EXPECT_GT(back_area, (210.0 * 210 - 180.0 * 180) * 1e4 * 0.8);
+  int points_seen = 0, behind_pieces = 0, front_pieces = 0;
+  for (const vector_path& p : d.paths) {
+    if (p.kind == vector_path::kind_type::point) {
+      ++points_seen;
+      EXPECT_EQ(p.rings[0][0].x, 19750) << "a point behind the front square is drawn";
+    }
+    if (p.kind == vector_path::kind_type::curve && p.color == rgb8{4, 5, 6})
+      for (const auto& r : p.rings) {
+        ++behind_pieces;
+        for (const grid_point& q : r) EXPECT_TRUE(q.y <= 1000 || q.y >= 19000) << q.y;
+      }
+    if (p.kind == vector_path::kind_type::curve && p.color == rgb8{1, 2, 3}) ADD_FAILURE();
+    if (p.kind == vector_path::kind_type::curve && p.face == 1) {
+      front_pieces += static_cast<int>(p.rings.size());
+      EXPECT_EQ(p.rings[0].front(), (grid_point{12050, 200}));
+      EXPECT_EQ(p.rings[0].back(), (grid_point{12150, 19800}));
+    }
+  }
+  EXPECT_EQ(points_seen, 49);
+  EXPECT_EQ(behind_pieces, 2);
+  EXPECT_EQ(front_pieces, 1);
 }
 
 // ---- edges ------------------------------------------------------------------------------

@@ -280,6 +280,26 @@ bool separated(const cl::Path& p, const cl::Paths& q) {
   return false;
 }
 
+/// The winding number of the ring about q + (e, e^2) for every small enough e > 0 (Sunday's
+/// crossing rule; a zero cross product is decided by the nudge's first nonzero term: exact).
+int nudged_winding(const cl::Path& r, const cl::IntPoint& q) {
+  int w = 0;
+  for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
+    const cl::IntPoint& a = r[j];
+    const cl::IntPoint& b = r[i];
+    // Side of the nudged q: positive to the left of a -> b.
+    long long side = (b.X - a.X) * (q.Y - a.Y) - (q.X - a.X) * (b.Y - a.Y);
+    if (side == 0) side = b.Y != a.Y ? a.Y - b.Y : b.X - a.X;
+    // q.Y + e^2 lies strictly between integer ordinates exactly when q.Y does, or equals a.Y.
+    if (a.Y <= q.Y) {
+      if (b.Y > q.Y && side > 0) ++w;
+    } else if (b.Y <= q.Y && side < 0) {
+      --w;
+    }
+  }
+  return w;
+}
+
 /// True when the box lies on the closed right side of the line through an edge of the convex
 /// counter-clockwise ring p (p on its left): then separated(p, q) holds for any q in the box,
 /// found from one corner per edge (the one farthest left) without reading q.
@@ -308,11 +328,13 @@ bool box_beyond_an_edge(const cl::Path& p, const bbox_i& box) {
 /// of pieces mean their union.
 class tiled_coverage::impl {
  public:
-  static constexpr long long tile_side = 4 * grid_per_pixel;
+  static constexpr long long tile_side = tiled_coverage::tile_side;
 
-  impl(long long width, long long height)
+  /// Tile rows [row0, row0 + rows) of a viewport `width` grid units wide.
+  impl(long long width, int row0, int rows)
       : nx_(static_cast<int>(std::max<long long>(1, (width + tile_side - 1) / tile_side))),
-        ny_(static_cast<int>(std::max<long long>(1, (height + tile_side - 1) / tile_side))),
+        ny_(std::max(1, rows)),
+        row0_(row0),
         tiles_(static_cast<std::size_t>(nx_) * ny_) {}
 
   /// True when every tile the box meets is full.
@@ -350,6 +372,7 @@ class tiled_coverage::impl {
     for (const candidate& c : near_) clipper_.AddPaths(*c.rings, cl::ptClip, true);
     cl::Paths out;
     clipper_.Execute(cl::ctDifference, out, cl::pftNonZero, cl::pftNonZero);
+
     return out.empty() ? no_piece : insert(std::move(out), mesh);
   }
 
@@ -365,7 +388,7 @@ class tiled_coverage::impl {
         }
         int end = tx + 1;
         while (end < nx_ && of_mesh(end, ty, mesh)) ++end;
-        const long long x0 = tx * tile_side, x1 = end * tile_side, y0 = ty * tile_side,
+        const long long x0 = tx * tile_side, x1 = end * tile_side, y0 = (ty + row0_) * tile_side,
                         y1 = y0 + tile_side;
         out.push_back({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
         tx = end;
@@ -402,15 +425,14 @@ class tiled_coverage::impl {
     return out;
   }
 
-  /// True when the point is strictly covered (nonzero winding of the coverage).
+  /// True when the point q + (e, e^2), for every small enough e > 0, has a nonzero winding
+  /// number in the coverage: q nudged off every line through it, so that a point on the shared
+  /// boundary of two pieces or two full tiles counts as covered, as it is.
   bool covers(const cl::IntPoint& q) {
-    cl::Paths clip;
-    gather({q.X, q.Y, q.X, q.Y}, [&](const cl::Paths& rings, bool, const bbox_i&) {
-      clip.insert(clip.end(), rings.begin(), rings.end());
-    });
     int winding = 0;
-    for (const cl::Path& p : clip)
-      if (cl::PointInPolygon(q, p) == 1) winding += cl::Orientation(p) ? 1 : -1;
+    gather({q.X, q.Y, q.X, q.Y}, [&](const cl::Paths& rings, bool, const bbox_i&) {
+      for (const cl::Path& r : rings) winding += nudged_winding(r, q);
+    });
     return winding != 0;
   }
 
@@ -444,14 +466,14 @@ class tiled_coverage::impl {
       return static_cast<int>(std::clamp<long long>(v / tile_side, 0, nx_ - 1));
     };
     auto clamp_y = [&](long long v) {
-      return static_cast<int>(std::clamp<long long>(v / tile_side, 0, ny_ - 1));
+      return static_cast<int>(std::clamp<long long>(v / tile_side - row0_, 0, ny_ - 1));
     };
     return {clamp_x(std::max(0LL, b.x0)), clamp_y(std::max(0LL, b.y0)),
             clamp_x(std::max(0LL, b.x1)), clamp_y(std::max(0LL, b.y1))};
   }
 
   cl::Path square(int tx, int ty) const {
-    const long long x0 = tx * tile_side, y0 = ty * tile_side;
+    const long long x0 = tx * tile_side, y0 = (ty + row0_) * tile_side;
     return {{x0, y0}, {x0 + tile_side, y0}, {x0 + tile_side, y0 + tile_side}, {x0, y0 + tile_side}};
   }
 
@@ -477,7 +499,7 @@ class tiled_coverage::impl {
     if (convex && (tx1 - tx0 + 1) * (ty1 - ty0 + 1) > 4)
       for (int cy = ty0; cy <= ty1 + 1; ++cy)
         for (int cx = tx0; cx <= tx1 + 1; ++cx)
-          corner_in_.push_back(in_convex(rings[0], cx * tile_side, cy * tile_side));
+          corner_in_.push_back(in_convex(rings[0], cx * tile_side, (cy + row0_) * tile_side));
     auto corner = [&](int cx, int cy) {
       return corner_in_[static_cast<std::size_t>((cy - ty0) * cw + (cx - tx0))];
     };
@@ -489,7 +511,7 @@ class tiled_coverage::impl {
         t.pieces.push_back({static_cast<std::int32_t>(box.x0), static_cast<std::int32_t>(box.y0),
                             static_cast<std::int32_t>(box.x1), static_cast<std::int32_t>(box.y1),
                             id});
-        const long long x0 = tx * tile_side, y0 = ty * tile_side;
+        const long long x0 = tx * tile_side, y0 = (ty + row0_) * tile_side;
         const bool inside =
             box.x0 >= x0 && box.x1 <= x0 + tile_side && box.y0 >= y0 && box.y1 <= y0 + tile_side;
         if (!corner_in_.empty() && corner(tx, ty) && corner(tx + 1, ty) && corner(tx, ty + 1) &&
@@ -610,6 +632,7 @@ class tiled_coverage::impl {
   std::vector<char> corner_in_;
 
   int nx_, ny_;
+  int row0_;  ///< the first tile row held (tile_range and the tiles' corners count from it)
   std::vector<tile> tiles_;
   std::vector<piece> pieces_;
   std::vector<std::uint32_t> stamp_;
@@ -618,7 +641,10 @@ class tiled_coverage::impl {
 };
 
 tiled_coverage::tiled_coverage(long long width, long long height)
-    : impl_(std::make_unique<impl>(width, height)) {}
+    : impl_(std::make_unique<impl>(width, 0,
+                                   static_cast<int>((height + tile_side - 1) / tile_side))) {}
+tiled_coverage::tiled_coverage(long long width, int row0, int rows)
+    : impl_(std::make_unique<impl>(width, row0, rows)) {}
 tiled_coverage::~tiled_coverage() = default;
 bool tiled_coverage::hides(const bbox_i& box) const { return impl_->hides(box); }
 std::uint32_t tiled_coverage::add(cl::Path& p, std::uint32_t mesh) { return impl_->add(p, mesh); }
@@ -636,7 +662,7 @@ bool tiled_coverage::covers(const cl::IntPoint& q) { return impl_->covers(q); }
 /// another (a BSP split point on a neighbour's edge), rounding to the grid moves it up to half a
 /// unit off that edge and opens a crack through which what is behind would show. Every vertex lying
 /// less than one unit from the inside of an edge of another polygon is inserted into that edge, so
-/// the two share the boundary exactly. Vertices are found in a grid of 2-pixel cells (each cell's
+/// the two share the boundary exactly. Vertices are found in a grid of 1-pixel cells (each cell's
 /// distinct points, sorted, in one array: a counting sort), walking the cells along each edge;
 /// a polygon is mended only when it may be visible.
 class t_junction_mender::impl {
@@ -683,7 +709,8 @@ class t_junction_mender::impl {
       cells.clear();
       // The cells met by the edge's one-unit neighbourhood: the edge in pieces of at most one
       // cell, each piece's box grown by two units (one for the neighbourhood, one for the
-      // rounding of the piece's ends). Most edges are shorter than a cell: one to four cells.
+      // rounding of the piece's ends). A cell is a pixel (at 2 pixels, four times the points per
+      // cell cost more than the cells saved).
       const long long pieces = static_cast<long long>(len / cell) + 1;
       for (long long s = 0; s < pieces; ++s) {
         const double t0 = static_cast<double>(s) / static_cast<double>(pieces),
@@ -724,7 +751,7 @@ class t_junction_mender::impl {
   }
 
  private:
-  static constexpr long long cell = 2 * grid_per_pixel;
+  static constexpr long long cell = grid_per_pixel;
   // Cells are clamped into the grid, with one extra cell on every side for points rounded
   // just outside the viewport: a point is always found in the cell it was filed under.
   long long cell_x(long long v) const {

@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include <exbsp/view/vector_drawing.h>
+
 namespace exbsp::view::cover {
 
 /// A bounding box on the grid.
@@ -56,9 +58,14 @@ bool union_by_shared_edges(const std::vector<const ClipperLib::Path*>& rings,
 class tiled_coverage {
  public:
   static constexpr std::uint32_t no_piece = ~std::uint32_t{0};
+  /// The side of a tile, grid units (4 pixels).
+  static constexpr long long tile_side = 4 * grid_per_pixel;
 
   /// A viewport of width x height grid units.
   tiled_coverage(long long width, long long height);
+  /// The band of tile rows [row0, row0 + rows) of a viewport `width` grid units wide (a strip
+  /// of visible_strips.h): what is added must lie in it.
+  tiled_coverage(long long width, int row0, int rows);
   ~tiled_coverage();
   tiled_coverage(const tiled_coverage&) = delete;
   tiled_coverage& operator=(const tiled_coverage&) = delete;
@@ -78,7 +85,8 @@ class tiled_coverage {
   bool inside_full_tiles_of(const bbox_i& box, std::uint32_t mesh) const;
   /// The parts of the open polyline `line` outside the coverage.
   ClipperLib::Paths outside(const ClipperLib::Path& line);
-  /// True when the point is strictly covered (nonzero winding of the coverage).
+  /// True when the point, nudged by (e, e^2) for a small enough e > 0 off every line through
+  /// it, is covered (nonzero winding): a point on the shared boundary of two pieces is covered.
   bool covers(const ClipperLib::IntPoint& q);
 
  private:
