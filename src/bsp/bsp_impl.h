@@ -34,6 +34,9 @@ class bsp_impl {
   virtual std::size_t node_count() const = 0;
   virtual const triangle_soup& input() const = 0;
   virtual bsp_node node(std::size_t k) const = 0;
+  /// bsp::inserted: a new tree, this one untouched (tree_insert.h).
+  virtual std::unique_ptr<bsp_impl> inserted(const triangle_soup& added,
+                                             const insert_options& options) const = 0;
   /// The traversal for an eye point (direction = false) or a direction of projection.
   virtual void traverse(const vec3d& at, bool direction, bsp_visitor& visitor,
                         bool back_to_front) const = 0;

@@ -76,6 +76,14 @@ class basic_bsp_tree {
   /// After the last part: the stats of the whole tree, timed from `seconds`.
   void finish_parts(double seconds);
 
+  /// Incremental insertion (tree_insert.h, bsp::inserted): the tree the naive build makes of
+  /// `soup`, whose first old.stats().input_triangles triangles (and first vertices) are the
+  /// input of `old`, a naive tree; the others are walked down a copy of `old`. Throws
+  /// limit_error beyond options.max_fragments, and what options.progress throws.
+  struct inserting {};
+  basic_bsp_tree(const basic_bsp_tree& old, const triangle_soup& soup,
+                 const insert_options& options, inserting);
+
   /// Loads a saved tree (tree_file_impl.h): the kernel's part of a tree file's body from `in`
   /// for the soup and stats of `common`. Throws input_error for anything inconsistent.
   basic_bsp_tree(const tree_file::common_part& common, tree_file::reader& in);
@@ -144,6 +152,9 @@ class basic_bsp_tree {
   }
 
  private:
+  /// The build's top levels grow breadth-first until this many cells are pending
+  /// (grow_top; lay_out_in_build_order follows the same rule).
+  static constexpr std::size_t frontier_size = 16;
   /// Refs to fragments: a pool_ index, or local_ref | index into a subtree's own pieces.
   static constexpr std::uint32_t local_ref = 0x80000000u;
   struct work {
@@ -258,6 +269,12 @@ class basic_bsp_tree {
   std::size_t choose_splitter(const std::vector<std::uint32_t>& list, subtree& part,
                               const build_context& ctx, std::uint64_t node_key,
                               std::uint32_t depth) const;
+
+  /// After an insert: puts nodes_ in the order the build creates them (the top levels
+  /// breadth-first until 16 cells are pending, then each cell's subtree depth-first, negative
+  /// side first) and fragments_ node by node, each node's old fragments then its `added` ones
+  /// (node index, fragment; in list order).
+  void lay_out_in_build_order(const std::vector<std::pair<std::uint32_t, fragment>>& added);
 
   G geom_;
   std::vector<fragment> pool_;  ///< build time only: inputs and top pieces, by index

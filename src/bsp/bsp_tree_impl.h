@@ -9,6 +9,7 @@
 #include "bsp/tree_build.h"
 #include "bsp/tree_choose.h"
 #include "bsp/tree_grow.h"
+#include "bsp/tree_insert.h"
 #include "bsp/tree_kernel_impl.h"
 
 /// Explicit instantiation of the tree for one geometry G, with the factories make_bsp_<NAME>

@@ -31,6 +31,14 @@ bsp bsp::build(const triangle_soup& soup, const build_options& options) {
   return bsp(kernel_row_of(options.kernel).make(soup, options));
 }
 
+bsp bsp::inserted(const triangle_soup& added, const insert_options& options) const {
+  return bsp(impl_->inserted(added, options));
+}
+
+void bsp::insert(const triangle_soup& added, const insert_options& options) {
+  *this = inserted(added, options);
+}
+
 bsp::bsp(std::unique_ptr<bsp_impl> impl) : impl_(std::move(impl)) {}
 bsp::bsp(const bsp&) noexcept = default;
 bsp& bsp::operator=(const bsp&) noexcept = default;

@@ -123,6 +123,10 @@ class cgal_geometry {
     return true;
   }
 
+  /// Incremental insertion (tree_insert.h): fragments hold their own points, so `old`'s are
+  /// valid here as they are.
+  void import_points(const cgal_geometry& /*old*/, std::vector<fragment>& /*fragments*/) const {}
+
   /// Sign of orientation(plane of input triangle `plane`, vertex k of f).
   int sign(std::uint32_t plane, const fragment& f, int k) const {
     if constexpr (kernel_traits<K>::fast_path) {

@@ -145,6 +145,31 @@ std::uint32_t exact_geometry::allocate(scratch& sc) {
   return sc.next++;
 }
 
+void exact_geometry::import_points(const exact_geometry& old, std::vector<fragment>& fragments) {
+  // old is complete: its claimed_ no longer changes (read without its lock).
+  const std::uint32_t old_inputs = old.inputs_, count = old.claimed_ - old.inputs_;
+  const std::uint32_t shift = inputs_ - old_inputs;
+  const std::lock_guard<std::mutex> lock(claim_mutex_);
+  if (claimed_ != inputs_)
+    throw usage_error("import_points: the geometry has constructed points already");
+  if (std::uint64_t{inputs_} + count > (std::uint64_t{1} << max_point_bits) - 2 * block)
+    throw limit_error("bsp insert: more than 2^28 points in the exact kernel's point table");
+  grow_chunks(inputs_ + count);
+  claimed_ = inputs_ + count;
+  const auto moved = [&](std::uint32_t id) {
+    return id == none || id < old_inputs ? id : id + shift;
+  };
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const point& from = old.at(old_inputs + k);
+    point& to = at(inputs_ + k);
+    to = from;
+    to.p = moved(from.p);
+    to.q = moved(from.q);
+  }
+  for (fragment& f : fragments)
+    for (std::uint32_t& id : f.v) id = moved(id);
+}
+
 bool exact_geometry::add_source(const triangle_soup& soup, std::uint32_t i, fragment& out) {
   const soup_triangle& st = soup.triangles[i];
   const vec3d& a = soup.vertices.at(st.v[0]);

@@ -146,6 +146,12 @@ class exact_geometry {
   void read_fragments(tree_file::reader& in, const triangle_soup& soup,
                       const std::vector<char>& usable, std::vector<fragment>& fragments,
                       const std::vector<std::uint32_t>& known);
+  /// Incremental insertion (tree_insert.h): copies the constructed points of `old`, the
+  /// geometry of a soup whose vertices are the first ones of this geometry's soup (same ids),
+  /// behind this geometry's input vertices, and renumbers `fragments` (point ids of `old`)
+  /// into this geometry. Precondition: nothing constructed here yet. Exact values are not
+  /// copied (made again when asked).
+  void import_points(const exact_geometry& old, std::vector<fragment>& fragments);
   /// Point ids in use: ids below this are input vertices or claimed constructed points.
   std::uint32_t point_id_end();
   /// Frees the exact values and planes memoised so far (the build calls it once its side

@@ -151,7 +151,6 @@ auto basic_bsp_tree<G>::grow_top(const triangle_soup& soup, const build_options&
     queue.push_back({std::move(root_list), -1, 0, 1, 1, std::move(blocks)});
   }
   subtree top;
-  constexpr std::size_t frontier_size = 16;
   while (!queue.empty() && queue.size() < frontier_size) {
     work w = std::move(queue.front());
     queue.pop_front();

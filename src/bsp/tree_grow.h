@@ -111,6 +111,11 @@ void basic_bsp_tree<G>::grow_node(work&& w, subtree& part, build_context& ctx,
     // measured at 3% of pinion's build, one region per node.
     for (std::size_t t = 0; t < nt; ++t) test_task(t);
   }
+  // Split points are shared within the node only (G::split shares SEG(p, q, plane) between
+  // the node's fragments until the scratch's plane changes): a node that follows one with the
+  // same plane starts afresh, so which points are shared depends on the tree, not on the order
+  // nodes are grown in (an insert, tree_insert.h, grows them in another order).
+  part.scratch.plane = ~std::uint32_t{0};
   detail::block_list_builder negative, positive;
   const auto distribute = [&](std::size_t j) {
     const std::uint32_t ref = w.list[j];

@@ -51,6 +51,41 @@ class bsp_kernel_impl final : public bsp_impl {
       : input_(std::move(common)), tree_(input_, in) {
     init_planes(input_.soup);
   }
+  /// An insert into `old` (bsp::inserted): `soup` is old's input followed by the new
+  /// triangles.
+  bsp_kernel_impl(const bsp_kernel_impl& old, triangle_soup&& soup, const insert_options& options)
+      : input_{{},
+               0,
+               old.input_.sampled_candidates,
+               old.input_.sampled_samples,
+               old.input_.sampled_split_weight,
+               std::move(soup)},
+        tree_(old.tree_, input_.soup, options, typename basic_bsp_tree<G>::inserting{}) {
+    init_planes(input_.soup);
+  }
+  std::unique_ptr<bsp_impl> inserted(const triangle_soup& added,
+                                     const insert_options& options) const override {
+    require_input("insert");
+    if (tree_.stats().heuristic != "naive")
+      throw usage_error("insert: the tree was built with the '" + tree_.stats().heuristic +
+                        "' heuristic; only a naive tree can take new triangles (the naive "
+                        "splitter, a node's first fragment, is the only one that new triangles "
+                        "after the old ones cannot change: with another heuristic the result "
+                        "would not be the heuristic's tree of the whole input; build it again)");
+    for (std::size_t i = 0; i < added.vertices.size(); ++i)
+      for (double x : added.vertices[i])
+        if (!std::isfinite(x))
+          throw usage_error("insert: vertex " + std::to_string(i) + " has a non-finite coordinate");
+    for (std::size_t i = 0; i < added.triangles.size(); ++i)
+      for (std::uint32_t v : added.triangles[i].v)
+        if (v >= added.vertices.size())
+          throw usage_error("insert: triangle " + std::to_string(i) + " uses vertex " +
+                            std::to_string(v) + " (" + std::to_string(added.vertices.size()) +
+                            " vertices)");
+    triangle_soup soup = input_.soup;
+    soup.append(added);
+    return std::make_unique<bsp_kernel_impl<G>>(*this, std::move(soup), options);
+  }
   const build_stats& stats() const override { return tree_.stats(); }
   kernel_id kernel() const override { return G::id; }
   std::size_t fragment_count() const override { return tree_.fragments().size(); }

@@ -128,6 +128,18 @@ struct build_options {
   bool keep_input = true;
 };
 
+/// What bsp::inserted and bsp::insert take of a build's options (the kernel, heuristic and
+/// seed are the tree's own).
+struct insert_options {
+  /// 0: no limit; otherwise limit_error when the tree after the insert would hold more
+  /// fragments than this (the tree is left as it was).
+  std::size_t max_fragments = 0;
+  /// As build_options::progress: called about every 256 nodes the new triangles reach and once
+  /// at the end, on the calling thread; throw from it to cancel (the exception propagates and
+  /// the tree is left as it was).
+  std::function<void(const build_progress&)> progress;
+};
+
 /// Statistics of a build (names follow `exbsp build --json`).
 struct build_stats {
   std::size_t input_triangles = 0;  ///< triangles after fan triangulation, degenerate ones included
@@ -198,6 +210,31 @@ class EXBSP_EXPORT bsp {
   /// (cancellation, see build_options::progress). Degenerate triangles are skipped and counted
   /// in stats().degenerate_input.
   static bsp build(const triangle_soup& soup, const build_options& options = {});
+
+  /// Incremental insertion (the course notes' add(root, T)), for trees built with the naive
+  /// heuristic: the tree that bsp::build(c, {same kernel, "naive"}) makes for the
+  /// concatenation c = input() followed by `added` (c.append(added): vertex indices shifted
+  /// by input().vertices.size(), face ids by input().face_count, so the new faces' ids
+  /// continue after the existing ones), exactly: the same nodes, fragments in the same
+  /// storage order, the same stats (but build_seconds: the build's plus the inserts'; and
+  /// peak_rss_bytes), byte-identical serialize_reproducible() and orders, for every kernel.
+  /// Each new triangle walks down from the root as in the build: classified exactly against
+  /// each node's plane, coplanar -> appended to that node's list, positive / negative -> that
+  /// child, straddling -> split by the build's split into ordered pieces; reaching an empty
+  /// child, the new triangles there become a new subtree, its first fragment the splitter.
+  /// Degenerate triangles are skipped and counted in stats().degenerate_input.
+  /// This tree and its copies are left untouched (the result is a new tree): the work is the
+  /// new triangles' walk and splits, plus a copy of this tree and a re-layout of its nodes and
+  /// fragments in build order, linear in the tree's size (no side test of an old fragment).
+  /// Throws usage_error for a tree built with another heuristic (the result would not be that
+  /// heuristic's tree: a node's splitter depends on the whole list), for a tree without its
+  /// input (build_options::keep_input = false), a vertex index out of range or a non-finite
+  /// coordinate in `added`; limit_error beyond options.max_fragments; whatever
+  /// options.progress throws.
+  bsp inserted(const triangle_soup& added, const insert_options& options = {}) const;
+  /// The same in place: *this = inserted(added, options). Copies made before keep the old
+  /// tree; on an exception *this is unchanged.
+  void insert(const triangle_soup& added, const insert_options& options = {});
 
   /// A copy shares the built tree, which is immutable: it costs a reference count, not a
   /// tree (a renderer can hold the tree its caller holds).
