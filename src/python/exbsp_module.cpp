@@ -712,6 +712,26 @@ PYBIND11_MODULE(_exbsp, m) {
           },
           py::arg("i"), "[(input triangle whose plane it is, side +1/-1), ...] from the root down.")
       .def(
+          "inserted",
+          [](py::handle self,
+             const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+             const py::object& faces, std::size_t max_fragments, const py::object& face_ids) {
+            const exbsp::bsp& t = tree_of(self);
+            const exbsp::triangle_soup added = soup_from(vertices, faces, face_ids);
+            exbsp::insert_options o;
+            o.max_fragments = max_fragments;
+            engine_call no_gil;
+            return t.inserted(added, o);
+          },
+          py::arg("vertices"), py::arg("faces"), py::kw_only(), py::arg("max_fragments") = 0,
+          py::arg("face_ids") = py::none(),
+          "A new Tree: this naive tree (heuristic='naive') with the mesh (vertices, faces; as "
+          "exbsp.build takes them) inserted, exactly the tree exbsp.build makes with "
+          "heuristic='naive' of this tree's input followed by the new triangles (face ids "
+          "continue after this tree's: the new ones are shifted by its face count). This tree "
+          "is left as it is. UsageError for a tree built with another heuristic or bad input, "
+          "LimitError beyond max_fragments (0: no limit). The GIL is released while it works.")
+      .def(
           "save",
           [](py::handle self, const py::object& path) {
             const exbsp::bsp& t = tree_of(self);

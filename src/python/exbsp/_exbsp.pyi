@@ -70,6 +70,14 @@ class Tree:
     def fragments(self) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.uint32]]: ...
     def exact(self, i: int) -> Tuple[Tuple[Fraction, Fraction, Fraction], ...]: ...
     def ancestors(self, i: int) -> List[Tuple[int, int]]: ...
+    def inserted(
+        self,
+        vertices: npt.ArrayLike,
+        faces: Faces,
+        *,
+        max_fragments: int = ...,
+        face_ids: Optional[npt.ArrayLike] = ...,
+    ) -> Tree: ...
     # render's three overloads repeat its signature: typing ties the return type to `format`
     # only this way (an image array, PNG bytes or SVG text).
     # The three overloads of render repeat their keyword list on purpose: an overload cannot
