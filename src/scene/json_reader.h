@@ -159,6 +159,8 @@ class reader {
   }
 
   const std::string& file() const { return file_; }
+  std::ostream* warnings() const { return warnings_; }
+  bool strict() const { return strict_; }
 
  private:
   std::string file_;

@@ -401,19 +401,7 @@ void parse_drawing(const reader& r, const json& doc, scene& s) {
 
 }  // namespace
 
-scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings, bool strict) {
-  const reader r(path, warnings, strict);
-  if (!doc.is_object())
-    r.fail("", std::string("the scene must be a JSON object (got ") + doc.type_name() + ")");
-  r.warn_unknown(
-      doc, "",
-      {"meshes", "groups", "curves", "lines", "camera", "projection", "viewport", "image", "aspect",
-       "background", "effects", "trackball", "svg", "raster", "clip_planes", "caps", "drawing"});
-  scene s;
-  s.path = path;
-  detail::parse_mesh_tree(r, doc, path, s);
-  parse_curves(r, doc, s);
-  detail::parse_lines(r, doc, s);
+void detail::parse_camera_and_projection(const reader& r, const json& doc, scene& s) {
   detail::parse_any_camera(r, doc, s);
   if (s.form != camera_form::phigs)
     parse_projection(r, doc, s);
@@ -421,6 +409,22 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
     r.fail("/projection",
            "a phigs camera defines its own projection (window, front, back, projection): remove "
            "this key");
+}
+
+scene parse_scene(const json& doc, const std::string& path, std::ostream* warnings, bool strict) {
+  const reader r(path, warnings, strict);
+  if (!doc.is_object())
+    r.fail("", std::string("the scene must be a JSON object (got ") + doc.type_name() + ")");
+  r.warn_unknown(doc, "",
+                 {"meshes", "groups", "curves", "lines", "camera", "projection", "viewport",
+                  "image", "aspect", "background", "effects", "trackball", "svg", "raster",
+                  "clip_planes", "caps", "drawing", "teaching"});
+  scene s;
+  s.path = path;
+  detail::parse_mesh_tree(r, doc, path, s);
+  parse_curves(r, doc, s);
+  detail::parse_lines(r, doc, s);
+  detail::parse_camera_and_projection(r, doc, s);
   detail::parse_viewport_and_image(r, doc, s);
   detail::parse_trackball(r, doc, s);
   if (const json* b = r.optional(doc, "background")) s.background = r.color(*b, "/background");
@@ -440,6 +444,7 @@ scene parse_scene(const json& doc, const std::string& path, std::ostream* warnin
     }
   parse_clip_planes(r, doc, s);
   parse_drawing(r, doc, s);
+  detail::parse_teaching(r, doc, s);
   make_view_setup(s);  // reject cameras and projections whose matrices overflow, before any work
   return s;
 }
@@ -614,6 +619,8 @@ view::frame make_frame(const scene& s) {
   f.vector = s.vector;
   f.raster_edges = s.raster_edges;
   f.wireframe = s.wireframe;
+  f.visibility = s.teaching.painter;
+  f.near_plane = s.teaching.near_plane;
   return f;
 }
 

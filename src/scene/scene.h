@@ -62,6 +62,19 @@
 // at its reader in view/<effect>.h. `true` or {} takes every default; an unknown NAME or
 // PARAM, or a bad value, is a scene_error naming /effects/NAME or /effects/NAME/PARAM.
 //
+// Teaching views (the course's; none is ever a default, docs/contract.md "Scenes"):
+// "teaching": {"painter": "bsp" (default) | "depth_sort", "depth_key": "farthest" (default) |
+// "centroid", "near_plane": "clip" (default) | "drop" | "drop_mesh", "view_volume": {"camera",
+// "projection", "color", "axes", "axis_length"}}. depth_sort paints the input triangles sorted
+// by depth instead of the BSP order (view/depth_sort.h; refused with curves, lines, a view
+// volume or smooth lighting, which need the tree). drop leaves out every polygon with a corner
+// in front of the near plane instead of cutting it, drop_mesh every polygon of a mesh that has
+// such a corner (stages.h, transform+clip). view_volume draws the view volume of a second,
+// observed camera (any camera form and projection, the scene's viewport aspect) as lines: its
+// near and far rectangles, the four side edges, the edges from its centre of projection to the
+// near corners (perspective), and its reference frame: the origin of its eye coordinates (the
+// eye; PHIGS: the VRP) with its x, y, z (u, v, n) axes in red, green and blue (teaching.cpp).
+//
 // Vector output: "svg": {"mode": "visible" | "painter", "edges": "none" | "visible" |
 // "visible+hidden", "crease_deg": (0, 180]} (view/vector_drawing.h; SVG and PDF), default
 // visible regions without edges.
@@ -126,6 +139,13 @@ enum class aspect_policy {
   fit       ///< letterbox: the largest centred part of the viewport with the window's aspect
 };
 
+/// "teaching": the views the course notes draw to teach (never defaults; notation at the top).
+struct teaching_spec {
+  view::visibility_order painter = view::visibility_order::bsp;    ///< "painter", "depth_key"
+  view::near_plane_rule near_plane = view::near_plane_rule::clip;  ///< "near_plane"
+  std::size_t view_volume_lines = 0;  ///< "view_volume": its lines, the last ones of `curves`
+};
+
 /// The camera forms of docs/contract.md "Scenes" ("camera").
 enum class camera_form { look_at, look, polar, pilot, phigs };
 
@@ -170,6 +190,7 @@ struct scene {
   /// names of the keys it gave (flags of the command override those).
   drawing::drawing_options drawing;
   std::vector<std::string> drawing_keys;
+  teaching_spec teaching;  ///< "teaching" (default: none of its views)
 };
 
 /// Validates a parsed JSON document. `path` names the file in messages and anchors relative

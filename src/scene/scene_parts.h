@@ -18,6 +18,14 @@ void parse_mesh_tree(const reader& r, const json& doc, const std::string& path, 
 /// then be parsed first (needs_camera false).
 void parse_any_camera(const reader& r, const json& doc, scene& s);
 
+/// "camera" (parse_any_camera) and "projection" (none for a phigs camera, which defines its own).
+void parse_camera_and_projection(const reader& r, const json& doc, scene& s);
+
+/// "teaching" (notation in scene.h; teaching.cpp): the depth-sort painter, the near-plane rule
+/// and the observed camera's view volume, drawn as lines appended to s.curves. Needs the
+/// viewport, effects, curves and lines parsed first.
+void parse_teaching(const reader& r, const json& doc, scene& s);
+
 /// True when "projection" is {"type": "ortho2d", ...} (the camera is then optional).
 bool is_ortho2d(const json& doc);
 

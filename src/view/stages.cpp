@@ -9,6 +9,7 @@
 
 #include <exbsp/core/errors.h>
 #include "view/clip_stage.h"
+#include "view/depth_sort.h"
 #include "view/paint.h"
 #include "view/svg_writer.h"
 #include "view/vector_pdf.h"
@@ -77,6 +78,12 @@ clipped_point transform_point(const mat4& pm, const viewport& vp, const vec3d& p
 }  // namespace
 
 std::string build_stage(frame& f) {
+  if (f.visibility != visibility_order::bsp) {  // a depth sort (teaching view): no tree
+    f.tree.reset();
+    f.fragments = soup_fragments(f.soup);
+    index_points(f);
+    return std::to_string(f.fragments.size()) + " triangles for a depth sort (no BSP, no splits)";
+  }
   if (f.soup.triangles.empty()) {  // nothing to draw: no tree, no fragments
     f.tree.reset();
     f.fragments.clear();
@@ -110,6 +117,13 @@ std::string order_stage(frame& f) {
   f.lines.clear();
   f.fog.reset();
   f.shader.reset();
+  if (f.visibility != visibility_order::bsp) {
+    f.order = depth_sorted_order(f.fragments, f.view, f.visibility);
+    return std::to_string(f.order.size()) + " triangles, depth sort by " +
+           (f.visibility == visibility_order::depth_sort_farthest ? "farthest corner"
+                                                                  : "centroid") +
+           " (not the BSP's order)";
+  }
   if (!f.tree) {
     if (!f.fragments.empty()) throw usage_error("order_stage: the BSP has not been built");
     f.order.clear();
@@ -142,6 +156,28 @@ std::string transform_clip_stage(frame& f) {
   f.polygons.reserve(f.order.size());
   f.fully_clipped = 0;
   f.non_finite = 0;
+  f.near_dropped = 0;
+  // near_plane_rule drop_*: a corner in front of the near plane (w + z < 0: bit 4 of the outcode,
+  // clip/homogeneous.h) leaves the polygon out, or every polygon of its mesh.
+  constexpr unsigned in_front_of_near = 1u << 4;
+  const bool drop = f.near_plane != near_plane_rule::clip;
+  std::vector<bool> dropped_mesh;
+  const auto corners_of = [&](std::uint32_t idx, clipped_point* corner) {
+    for (int k = 0; k < 3; ++k)
+      corner[k] = indexed ? points[f.fragment_points[idx][k]]
+                          : transform_point(pm, vp, f.fragments.at(idx).v[k]);
+  };
+  if (f.near_plane == near_plane_rule::drop_mesh)
+    for (std::uint32_t idx : f.order) {
+      const fragment_d& fr = f.fragments.at(idx);
+      if (!fr.finite()) continue;
+      clipped_point corner[3];
+      corners_of(idx, corner);
+      if (((corner[0].code | corner[1].code | corner[2].code) & in_front_of_near) == 0) continue;
+      const std::uint32_t mesh = f.mesh_of(fr.face);
+      if (mesh >= dropped_mesh.size()) dropped_mesh.resize(mesh + 1, false);
+      dropped_mesh[mesh] = true;
+    }
   std::vector<hpoint> in(3), out;
   for (std::uint32_t idx : f.order) {
     const fragment_d& fr = f.fragments.at(idx);
@@ -152,10 +188,16 @@ std::string transform_clip_stage(frame& f) {
       continue;
     }
     clipped_point corner[3];
-    for (int k = 0; k < 3; ++k)
-      corner[k] = indexed ? points[f.fragment_points[idx][k]] : transform_point(pm, vp, fr.v[k]);
+    corners_of(idx, corner);
     const unsigned any = corner[0].code | corner[1].code | corner[2].code;
     const unsigned all = corner[0].code & corner[1].code & corner[2].code;
+    if (drop && (any & clipped_point::not_finite) == 0 && (all & 63) == 0) {
+      const std::uint32_t mesh = f.mesh_of(fr.face);
+      if ((any & in_front_of_near) != 0 || (mesh < dropped_mesh.size() && dropped_mesh[mesh])) {
+        ++f.near_dropped;
+        continue;
+      }
+    }
     const bool inside = any == 0;  // the clipper returns it unchanged, every w > 0
     bool ok = inside;
     if (!inside && (any & clipped_point::not_finite) == 0 && (all & 63) != 0) {
@@ -187,6 +229,8 @@ std::string transform_clip_stage(frame& f) {
   f.polygons.resize(count);
   return std::to_string(f.polygons.size()) + " polygons, " + std::to_string(f.fully_clipped) +
          " fully clipped" +
+         (drop ? ", " + std::to_string(f.near_dropped) + " dropped at the near plane (not cut)"
+               : std::string()) +
          (f.non_finite ? ", " + std::to_string(f.non_finite) + " with a non-finite corner left out"
                        : std::string());
 }

@@ -41,6 +41,21 @@ namespace exbsp::view {
 /// front-to-back with a coverage mask. Both give the same image.
 enum class paint_order { back_to_front, front_to_back };
 
+/// Which order the painter draws in. `bsp` (the default) is the tree's back-to-front order, which
+/// is always right. The others are teaching views (docs/contract.md "Scenes", "teaching"): the
+/// depth-sort painter of the course notes, which sorts the input triangles (never split) by one
+/// depth per triangle and is wrong wherever triangles overlap cyclically or intersect.
+enum class visibility_order {
+  bsp,
+  depth_sort_farthest,  ///< by the depth of the triangle's farthest corner, farthest first
+  depth_sort_centroid   ///< by the mean depth of its corners, farthest first
+};
+
+/// What transform+clip does with a polygon that has a corner in front of the near plane
+/// (clip coordinates w + z < 0). `clip` (the default) cuts it at the plane; the others are the
+/// course's cheap alternative (a teaching view): the polygon, or its whole mesh, is left out.
+enum class near_plane_rule { clip, drop_polygon, drop_mesh };
+
 /// The data flowing through the stages. Inputs are set by the caller; each stage fills the
 /// products it is responsible for.
 struct frame {
@@ -68,6 +83,12 @@ struct frame {
   /// PNG: the "edges" stage draws its edges on the background alone, hidden ones solid like
   /// the visible ones: a wireframe (CAD's display mode: every feature edge, no faces).
   bool wireframe = false;
+  /// "build" and "order": the BSP's order (default), or a teaching view's depth sort (no tree is
+  /// built: f.fragments are the soup's triangles, unsplit; smooth shading and curves, which need
+  /// the tree's cells, are then unavailable).
+  visibility_order visibility = visibility_order::bsp;
+  /// "transform+clip": cut polygons at the near plane (default) or drop them (teaching view).
+  near_plane_rule near_plane = near_plane_rule::clip;
   vector_phase_seconds vector_seconds;  ///< svg / pdf stage (visible regions): phase times
   /// Called with each stage's name as it starts (pipeline::run), e.g. for a progress line;
   /// may be empty.
@@ -98,6 +119,7 @@ struct frame {
   // Counters for --verbose.
   std::size_t culled = 0;         ///< fragments removed by backface_culling
   std::size_t fully_clipped = 0;  ///< fragments entirely outside the view volume
+  std::size_t near_dropped = 0;   ///< fragments left out by near_plane_rule drop_*
   std::size_t non_finite =
       0;  ///< fragments with a NaN or infinite corner (inexact kernels), left out
   std::vector<std::size_t> rejected_meshes;  ///< "reject": meshes dropped by their bounding boxes

@@ -14,7 +14,8 @@ namespace exbsp::view {
 
 /// "build": one BSP of f.soup with f.build, then f.fragments = fragments_double() (converted
 /// once) and their distinct corners f.points / f.fragment_points (each transformed once per
-/// view). Throws usage_error / limit_error from bsp::build.
+/// view). Throws usage_error / limit_error from bsp::build. With f.visibility a depth sort (a
+/// teaching view) no tree is built: f.fragments are the soup's triangles, unsplit.
 EXBSP_EXPORT std::string build_stage(frame& f);
 
 /// "build" for a tree made elsewhere (a saved tree, bsp::load): f.tree is set; fills the
@@ -24,6 +25,7 @@ EXBSP_EXPORT std::string adopt_tree_stage(frame& f);
 
 /// "order": f.order = back-to-front fragment indices: order_from_eye(camera eye) for
 /// perspective and frustum, order_for_direction(f.view.direction) for orthographic and oblique.
+/// With f.visibility a depth sort: the triangles sorted by depth instead (depth_sort.h).
 /// Clears the per-view products of effect and curve stages (fragment_colors, lines, fog).
 /// Precondition: build_stage ran.
 EXBSP_EXPORT std::string order_stage(frame& f);
@@ -35,6 +37,10 @@ EXBSP_EXPORT std::string order_stage(frame& f);
 /// point is transformed once; fragments entirely inside (or outside one plane) skip the clipper,
 /// with the same doubles as its path. Polygon colours: the face colour, or
 /// f.fragment_colors[fragment] when the lighting stage filled it.
+/// With f.near_plane drop_polygon (drop_mesh), a fragment with a corner in front of the near
+/// plane (w + z < 0; or any fragment of a mesh that has one) is left out instead of being cut,
+/// and counted in f.near_dropped (a teaching view; fragments outside another plane entirely
+/// are counted as fully clipped).
 EXBSP_EXPORT std::string transform_clip_stage(frame& f);
 
 /// "raster": painter's algorithm, no z-buffer: f.picture = background, then every polygon of
