@@ -280,7 +280,10 @@ struct strip_hit {
 
 /// What the walk of one strip found.
 struct strip_walk {
-  std::vector<strip_hit> hits;        ///< in walk order (front to back)
+  std::vector<strip_hit> hits;  ///< in walk order (front to back)
+  /// The polygons crossing a strip line that met this strip, and whether their part here was
+  /// wholly visible.
+  std::vector<std::pair<std::uint32_t, bool>> crossing;
   std::vector<cl::Paths> line_parts;  ///< per line (segments): its parts left visible here
   std::vector<char> point_shown;      ///< per line (points in this strip): not covered
 };
@@ -314,15 +317,21 @@ void walk_strip(const frame& f, const snapped_polygons& snapped, const t_junctio
     if (!snapped.has_area(k)) continue;
     const bbox_i& b = snapped.boxes[k];
     if (b.y1 <= y0 || b.y0 >= y1) continue;  // no area in this strip
-    if (cov.hides({b.x0, std::max(b.y0, y0), b.x1, std::min(b.y1, y1)})) continue;
+    const bool crosses = b.y0 < y0 || b.y1 > y1;
+    if (cov.hides({b.x0, std::max(b.y0, y0), b.x1, std::min(b.y1, y1)})) {
+      if (crosses) out.crossing.push_back({static_cast<std::uint32_t>(k), false});
+      continue;
+    }
     poly = snapped.path(k);
     mender.mend(poly, scratch);
     cl::Path* p = &poly;
-    if (b.y0 < y0 || b.y1 > y1) {
+    if (crosses) {
       if (!cut_to_band(poly, y0, y1, cut)) continue;
       p = &cut;
     }
     const std::uint32_t piece = cov.add(*p, f.mesh_of(f.polygons[k].face));
+    // add moved p into the piece when it was wholly visible.
+    if (crosses) out.crossing.push_back({static_cast<std::uint32_t>(k), p->empty()});
     if (piece == tiled_coverage::no_piece) continue;
     double area = 0;
     for (const cl::Path& r : cov.rings(piece)) area += cl::Area(r);
@@ -386,12 +395,33 @@ vector_drawing visible_drawing(const frame& f) {
   // Each face's pieces (strip by strip, each strip in walk order) and its colour: that of the
   // fragment showing most of it, over all strips (a sliver fragment's normal, from its rounded
   // corners, may be far off: lighting is per fragment).
+  // A polygon cut at strip lines and wholly visible in every strip it met counts as its whole
+  // mended self: its region is then as if it had not been cut (the cut's rounded crossings
+  // would only add vertices, and rounding slivers where they crowd).
+  std::vector<std::uint8_t> cut_state(f.polygons.size(), 0);  // 1 whole so far, 2 not whole
+  for (const strip_walk& w : walks)
+    for (const auto& [k, whole] : w.crossing)
+      cut_state[k] = std::max<std::uint8_t>(cut_state[k], whole ? 1 : 2);
+  std::vector<cl::Paths> uncut;  // piece_ref{coverage.size(), i}: the i-th of these
   std::vector<double> shown(f.polygons.size(), -1);  // -1: no visible piece
+  cover::t_junction_mender::scratch scratch;
   for (std::size_t s = 0; s < walks.size(); ++s)
     for (const strip_hit& h : walks[s].hits) {
-      faces[f.polygons[h.polygon].face].pieces.push_back({static_cast<std::uint32_t>(s), h.piece});
+      face_accumulator& acc = faces[f.polygons[h.polygon].face];
+      if (cut_state[h.polygon] != 1) {
+        acc.pieces.push_back({static_cast<std::uint32_t>(s), h.piece});
+      } else if (shown[h.polygon] < 0) {  // its first piece: the whole polygon, once
+        cl::Paths whole(1, snapped.path(h.polygon));
+        mender.mend(whole[0], scratch);
+        acc.pieces.push_back({static_cast<std::uint32_t>(coverage.size()),
+                              static_cast<std::uint32_t>(uncut.size())});
+        uncut.push_back(std::move(whole));
+      }
       shown[h.polygon] = std::max(shown[h.polygon], 0.0) + h.area;
     }
+  auto rings_of = [&](cover::piece_ref r) -> const cl::Paths& {
+    return r.strip == coverage.size() ? uncut[r.id] : coverage.rings(r);
+  };
   for (std::size_t k = f.polygons.size(); k-- > 0;) {
     if (shown[k] < 0) continue;
     const screen_polygon& p = f.polygons[k];
@@ -459,12 +489,12 @@ vector_drawing visible_drawing(const frame& f) {
     cl::Paths& merged = work[w].merged;
     std::vector<const cl::Path*>& convex_rings = work[w].convex_rings;
     merged.clear();
-    const cl::Paths& first = coverage.rings(acc.pieces[0]);
+    const cl::Paths& first = rings_of(acc.pieces[0]);
     // Convex pieces (most faces: the fragments of a face seen whole) meet along edges they
     // share exactly, mended: their union is their boundary. Otherwise Clipper's union.
     convex_rings.clear();
     for (const cover::piece_ref piece : acc.pieces) {
-      const cl::Paths& rs = coverage.rings(piece);
+      const cl::Paths& rs = rings_of(piece);
       if (rs.size() != 1 || !convex_ccw(rs[0])) {
         convex_rings.clear();
         break;
@@ -478,7 +508,7 @@ vector_drawing visible_drawing(const frame& f) {
       cl::Clipper& clipper = work[w].clipper;
       clipper.Clear();
       for (const cover::piece_ref piece : acc.pieces)
-        clipper.AddPaths(coverage.rings(piece), cl::ptSubject, true);
+        clipper.AddPaths(rings_of(piece), cl::ptSubject, true);
       clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
     }
     vector_path& r = slots[i];
