@@ -226,6 +226,9 @@ class EXBSP_EXPORT bsp {
   /// This tree and its copies are left untouched (the result is a new tree): the work is the
   /// new triangles' walk and splits, plus a copy of this tree and a re-layout of its nodes and
   /// fragments in build order, linear in the tree's size (no side test of an old fragment).
+  /// Measured on fandisk (12 946 triangles, naive tree of 506 688 fragments, exact kernel, 2
+  /// busy cores): naive build of the whole 1.03 s; its last 129 triangles inserted into the
+  /// tree of the others 35 ms; its second half into the first half's tree 0.57 s.
   /// Throws usage_error for a tree built with another heuristic (the result would not be that
   /// heuristic's tree: a node's splitter depends on the whole list), for a tree without its
   /// input (build_options::keep_input = false), a vertex index out of range or a non-finite
