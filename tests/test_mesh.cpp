@@ -216,7 +216,7 @@ TEST(OffReader, ZeroFacesGiveAnEmptySoup) {
 TEST(ObjReader, RelativeIndicesCountFromTheVerticesDefinedSoFar) {
   const std::string obj =
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n"
-      "v 5 5 5\nv 6 5 5\nv 5 6 5\nf -3/1 -2/2/2 -1//3\nf 1 -2 6\n";
+      "v 5 5 5\nv 6 5 5\nv 5 6 5\nvt 0 0\nvt 1 0\nf -3/1 -2/2/2 -1//3\nf 1 -2 6\n";
   const triangle_soup s = read_mesh_data(obj, mesh_format::obj, "r.obj");
   ASSERT_EQ(s.triangles.size(), 3u);
   EXPECT_EQ(s.triangles[0].v, (std::array<std::uint32_t, 3>{0, 1, 2}));

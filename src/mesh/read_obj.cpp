@@ -2,12 +2,19 @@
 // OBJ reader (Wavefront, polygonal subset).
 //
 //   v x y z [w] [r g b [a]]      a vertex; w and colour values are ignored (must be numbers)
+//   vt u [v [w]]                 a texture coordinate (v defaults to 0; w is ignored); each
+//                                value a finite number
 //   f r1 r2 r3 ...               a face of >= 3 vertex references; each r is
 //                                i, i/t, i/t/n or i//n. i = 1..(vertices so far) counts from
 //                                the first vertex, i = -1..-(vertices so far) from the last
-//                                one defined before this line; t and n are not used
-//   vt vn vp g o s usemtl mtllib l p ...   attributes, groups, materials, lines and points:
+//                                one defined before this line; t likewise indexes the vt
+//                                statements so far (out of range: an error); n is not used
+//   vn vp g o s usemtl mtllib l p ...   attributes, groups, materials, lines and points:
 //                                ignored (they define no face)
+//
+// Texture coordinates: when a face gives t for every corner, its triangles carry those (u, v)
+// (triangle_soup::triangle_uvs); a file with such faces gives (0, 0) to the corners of faces
+// without t; a file without them has no UVs.
 //
 // '#' starts a comment up to the end of the line; a line ending in '\' continues on the
 // next one (errors then name its first line). A face may only use vertices defined above it.
@@ -21,7 +28,7 @@ namespace exbsp::mesh_detail {
 namespace {
 
 constexpr std::string_view ignored_statements[] = {
-    "vt", "vn",  "vp",     "g",      "o",     "s",        "usemtl",   "mtllib",     "l",        "p",
+    "vn", "vp",  "g",      "o",      "s",     "usemtl",   "mtllib",   "l",          "p",
     "mg", "lod", "maplib", "usemap", "bevel", "c_interp", "d_interp", "shadow_obj", "trace_obj"};
 
 bool is_ignored(std::string_view keyword) {
@@ -29,9 +36,10 @@ bool is_ignored(std::string_view keyword) {
          std::end(ignored_statements);
 }
 
-// Parses one face vertex reference ("i", "i/t", "i/t/n", "i//n") into its vertex number i.
-std::int64_t parse_vertex_reference(std::string_view ref, const std::string& file,
-                                    std::size_t line) {
+// Parses one face vertex reference ("i", "i/t", "i/t/n", "i//n") into its vertex number i;
+// `texture` gets t, or 0 when the reference has none.
+std::int64_t parse_vertex_reference(std::string_view ref, const std::string& file, std::size_t line,
+                                    std::int64_t& texture) {
   std::string_view parts[3];
   std::size_t count = 0;
   std::size_t start = 0;
@@ -50,11 +58,14 @@ std::int64_t parse_vertex_reference(std::string_view ref, const std::string& fil
   };
   std::int64_t v = 0;
   std::int64_t unused = 0;
+  texture = 0;
   if (!parse_integer(parts[0], v)) bad();
-  if (count == 2 && !parse_integer(parts[1], unused)) bad();
-  if (count == 3 &&
-      ((!parts[1].empty() && !parse_integer(parts[1], unused)) || !parse_integer(parts[2], unused)))
+  if (count == 2 && !parse_integer(parts[1], texture)) bad();
+  if (count == 3 && ((!parts[1].empty() && !parse_integer(parts[1], texture)) ||
+                     !parse_integer(parts[2], unused)))
     bad();
+  if (count >= 2 && !parts[1].empty() && texture == 0)
+    fail(file, line, "texture coordinate index 0 is invalid (OBJ indices start at 1)");
   return v;
 }
 
@@ -68,6 +79,8 @@ triangle_soup read_obj(std::string_view text, const std::string& file) {
   line_reader lines(text);
   std::vector<std::string_view> tokens;
   std::vector<std::uint32_t> polygon;
+  std::vector<vec2d> texture_coordinates;  // the vt statements so far
+  std::vector<vec2d> polygon_uvs;
   std::string joined;  // a logical line assembled from '\' continuations
   std::uint64_t faces = 0;
   bool any_statement = false;
@@ -120,6 +133,23 @@ triangle_soup read_obj(std::string_view text, const std::string& file) {
           fail(file, line, "vertex value " + quote(tokens[i]) + " is not a finite number");
       }
       soup.vertices.push_back(p);
+    } else if (keyword == "vt") {
+      const std::size_t values = tokens.size() - 1;
+      if (values < 1 || values > 3)
+        fail(file, line,
+             "texture coordinate has " + std::to_string(values) + " values, expected u [v [w]]");
+      if (texture_coordinates.size() >= max_element_count)
+        fail(file, line,
+             "too many texture coordinates (at most " + std::to_string(max_element_count) + ")");
+      vec2d uv = {0.0, 0.0};
+      for (std::size_t i = 1; i < tokens.size(); ++i) {
+        double value = 0.0;
+        if (parse_double(tokens[i], value) != number_status::ok)
+          fail(file, line,
+               "texture coordinate value " + quote(tokens[i]) + " is not a finite number");
+        if (i <= 2) uv[i - 1] = value;
+      }
+      texture_coordinates.push_back(uv);
     } else if (keyword == "f") {
       const std::size_t k = tokens.size() - 1;
       if (k < 3)
@@ -129,9 +159,23 @@ triangle_soup read_obj(std::string_view text, const std::string& file) {
       if (faces >= max_element_count)
         fail(file, line, "too many faces (at most " + std::to_string(max_element_count) + ")");
       const auto defined = static_cast<std::int64_t>(soup.vertices.size());
+      const auto textures = static_cast<std::int64_t>(texture_coordinates.size());
       polygon.clear();
+      polygon_uvs.clear();
+      bool every_corner_textured = true;
       for (std::size_t c = 1; c <= k; ++c) {
-        const std::int64_t ref = parse_vertex_reference(tokens[c], file, line);
+        std::int64_t tref = 0;
+        const std::int64_t ref = parse_vertex_reference(tokens[c], file, line, tref);
+        if (tref == 0) {
+          every_corner_textured = false;
+        } else {
+          const std::int64_t tindex = tref > 0 ? tref - 1 : textures + tref;
+          if (tindex < 0 || tindex >= textures)
+            fail(file, line,
+                 "texture coordinate index " + std::to_string(tref) + " out of range (" +
+                     std::to_string(textures) + " texture coordinates (vt) defined so far)");
+          polygon_uvs.push_back(texture_coordinates[static_cast<std::size_t>(tindex)]);
+        }
         if (ref == 0) fail(file, line, "vertex index 0 is invalid (OBJ indices start at 1)");
         // 1-based from the front, or negative: relative to the end of the list so far.
         const std::int64_t index = ref > 0 ? ref - 1 : defined + ref;
@@ -141,7 +185,10 @@ triangle_soup read_obj(std::string_view text, const std::string& file) {
                    " vertices defined so far)");
         polygon.push_back(static_cast<std::uint32_t>(index));
       }
-      soup.add_polygon(polygon, static_cast<std::uint32_t>(faces));
+      if (every_corner_textured)
+        soup.add_polygon(polygon, polygon_uvs, static_cast<std::uint32_t>(faces));
+      else
+        soup.add_polygon(polygon, static_cast<std::uint32_t>(faces));
       ++faces;
     } else if (!is_ignored(keyword)) {
       fail(file, line, "unsupported OBJ statement " + quote(keyword));

@@ -13,7 +13,10 @@
 // TYPE: char/int8 uchar/uint8 short/int16 ushort/uint16 int/int32 uint/uint32
 // float/float32 double/float64. Used: element "vertex" (scalar x, y, z of any type; an
 // ascii token means the double nearest to its text, a binary float is widened exactly) and
-// element "face" (list vertex_indices or vertex_index of an integer type). Other properties
+// element "face" (list vertex_indices or vertex_index of an integer type); texture coordinates
+// from the first scalar vertex pair present of (u, v), (s, t), (texture_u, texture_v),
+// (texture_s, texture_t), finite, carried to the triangles' corners (triangle_soup::
+// triangle_uvs; no pair: no UVs). Other properties
 // and elements are checked for size/syntax and skipped; "tristrips" is rejected rather than
 // dropped. ascii: one instance per line, blank lines skipped. Binary: no byte may be left
 // over except trailing whitespace. Header and ascii errors name the line; binary errors
@@ -31,7 +34,7 @@ namespace {
 
 enum class ply_type { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
 enum class ply_encoding { ascii, binary_little_endian, binary_big_endian };
-enum class ply_role { skip, x, y, z, face_indices };
+enum class ply_role { skip, x, y, z, u, v, face_indices };
 
 struct ply_type_name {
   std::string_view name;
@@ -97,6 +100,7 @@ struct ply_element {
 
 struct ply_header {
   ply_encoding encoding = ply_encoding::ascii;
+  bool has_uvs = false;  // the vertex element has a texture coordinate pair
   std::vector<ply_element> elements;
   std::size_t body_offset = 0;  // first byte after the end_header line
   std::size_t end_line = 0;     // line number of end_header
@@ -120,6 +124,7 @@ ply_type parse_type(std::string_view token, const std::string& file, std::size_t
 
 // Assigns roles to the vertex and face properties and checks what the reader relies on.
 void check_elements(ply_header& header, const std::string& file) {
+  header.has_uvs = false;
   const ply_element* vertex = nullptr;
   const ply_element* face = nullptr;
   for (ply_element& e : header.elements) {
@@ -142,6 +147,22 @@ void check_elements(ply_header& header, const std::string& file) {
           fail(file, p->line,
                std::string("vertex property '") + axes[a] + "' must be a scalar, not a list");
         p->role = roles[a];
+      }
+      const auto scalar = [&](std::string_view name) -> ply_property* {
+        for (ply_property& q : e.properties)
+          if (q.name == name && !q.is_list) return &q;
+        return nullptr;
+      };
+      constexpr std::string_view pairs[][2] = {
+          {"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
+      for (const auto& pair : pairs) {
+        ply_property* pu = scalar(pair[0]);
+        ply_property* pv = scalar(pair[1]);
+        if (!pu || !pv) continue;
+        pu->role = ply_role::u;
+        pv->role = ply_role::v;
+        header.has_uvs = true;
+        break;
       }
     } else if (e.name == "face") {
       if (face) fail(file, e.line, "second 'face' element");
@@ -291,7 +312,7 @@ void ascii_skip_value(std::string_view token, ply_type type, const value_name& w
 }
 
 void read_ascii_body(const ply_header& header, std::string_view text, const std::string& file,
-                     triangle_soup& soup, pending_faces& faces) {
+                     triangle_soup& soup, std::vector<vec2d>& uvs, pending_faces& faces) {
   line_reader lines(text, header.body_offset, header.end_line + 1);
   std::vector<std::string_view> tokens;
   std::string_view line_text;
@@ -322,6 +343,7 @@ void read_ascii_body(const ply_header& header, std::string_view text, const std:
       };
       std::size_t t = 0;
       vec3d p = {0.0, 0.0, 0.0};
+      vec2d uv = {0.0, 0.0};
       for (const ply_property& prop : e.properties) {
         const value_name what{"property", prop.name};
         if (!prop.is_list) {
@@ -329,6 +351,17 @@ void read_ascii_body(const ply_header& header, std::string_view text, const std:
           const std::string_view token = tokens[t++];
           if (prop.role == ply_role::skip) {
             ascii_skip_value(token, prop.value_type, what, file, n);
+            continue;
+          }
+          if (prop.role == ply_role::u || prop.role == ply_role::v) {
+            double value = 0.0;
+            if (is_integral(prop.value_type))
+              value = static_cast<double>(ascii_integer(token, prop.value_type, what, file, n));
+            else if (parse_double(token, value) != number_status::ok)
+              fail(file, n,
+                   "texture coordinate " + quote(prop.name) + " value " + quote(token) +
+                       " is not a finite number");
+            uv[prop.role == ply_role::u ? 0 : 1] = value;
             continue;
           }
           const int axis = prop.role == ply_role::x ? 0 : prop.role == ply_role::y ? 1 : 2;
@@ -360,7 +393,10 @@ void read_ascii_body(const ply_header& header, std::string_view text, const std:
         fail(file, n,
              "too many values for element " + quote(e.name) + " (" + std::to_string(tokens.size()) +
                  " on the line, " + std::to_string(t) + " expected)");
-      if (is_vertex) soup.vertices.push_back(p);
+      if (is_vertex) {
+        soup.vertices.push_back(p);
+        if (header.has_uvs) uvs.push_back(uv);
+      }
     }
   }
   while (lines.next(line_text)) {
@@ -428,7 +464,7 @@ class byte_reader {
 };
 
 void read_binary_body(const ply_header& header, std::string_view text, const std::string& file,
-                      triangle_soup& soup, pending_faces& faces) {
+                      triangle_soup& soup, std::vector<vec2d>& uvs, pending_faces& faces) {
   byte_reader in(text, header.body_offset, header.encoding == ply_encoding::binary_big_endian);
   for (const ply_element& e : header.elements) {
     if (e.count == 0) continue;
@@ -466,12 +502,22 @@ void read_binary_body(const ply_header& header, std::string_view text, const std
         if (bytes > in.left()) fail(file, 0, "unexpected end of file in " + where());
       };
       vec3d p = {0.0, 0.0, 0.0};
+      vec2d uv = {0.0, 0.0};
       for (const ply_property& prop : e.properties) {
         if (!prop.is_list) {
           const std::size_t size = size_of(prop.value_type);
           need(size);
           if (prop.role == ply_role::skip) {
             in.skip(size);
+            continue;
+          }
+          if (prop.role == ply_role::u || prop.role == ply_role::v) {
+            const double value = in.real(prop.value_type);
+            if (!std::isfinite(value))
+              fail(file, 0,
+                   where() + ": texture coordinate " + quote(prop.name) +
+                       " is not finite (NaN/Inf are not allowed)");
+            uv[prop.role == ply_role::u ? 0 : 1] = value;
             continue;
           }
           const int axis = prop.role == ply_role::x ? 0 : prop.role == ply_role::y ? 1 : 2;
@@ -500,7 +546,10 @@ void read_binary_body(const ply_header& header, std::string_view text, const std
         for (std::int64_t c = 0; c < count; ++c)
           faces.indices.push_back(in.integer(prop.value_type));
       }
-      if (is_vertex) soup.vertices.push_back(p);
+      if (is_vertex) {
+        soup.vertices.push_back(p);
+        if (header.has_uvs) uvs.push_back(uv);
+      }
     }
   }
   for (std::size_t k = in.offset(); k < text.size(); ++k)
@@ -518,14 +567,16 @@ triangle_soup read_ply(std::string_view text, const std::string& file) {
   triangle_soup soup;
   soup.source = file;
   pending_faces faces;
+  std::vector<vec2d> uvs;  // per vertex, when header.has_uvs
   const bool ascii = header.encoding == ply_encoding::ascii;
   if (ascii)
-    read_ascii_body(header, text, file, soup, faces);
+    read_ascii_body(header, text, file, soup, uvs, faces);
   else
-    read_binary_body(header, text, file, soup, faces);
+    read_binary_body(header, text, file, soup, uvs, faces);
 
   const std::size_t nv = soup.vertices.size();
   std::vector<std::uint32_t> polygon;
+  std::vector<vec2d> polygon_uvs;
   const std::size_t nf = faces.start.size();
   for (std::size_t f = 0; f < nf; ++f) {
     const std::size_t begin = faces.start[f];
@@ -543,7 +594,13 @@ triangle_soup read_ply(std::string_view text, const std::string& file) {
       }
       polygon.push_back(static_cast<std::uint32_t>(index));
     }
-    soup.add_polygon(polygon, static_cast<std::uint32_t>(f));
+    if (header.has_uvs) {
+      polygon_uvs.clear();
+      for (std::uint32_t v : polygon) polygon_uvs.push_back(uvs[v]);
+      soup.add_polygon(polygon, polygon_uvs, static_cast<std::uint32_t>(f));
+    } else {
+      soup.add_polygon(polygon, static_cast<std::uint32_t>(f));
+    }
   }
   return soup;
 }

@@ -12,6 +12,18 @@ void triangle_soup::add_polygon(const std::vector<std::uint32_t>& indices, std::
   for (std::size_t i = 1; i + 1 < indices.size(); ++i)
     triangles.push_back({{indices[0], indices[i], indices[i + 1]}, face});
   if (face + 1 > face_count) face_count = face + 1;
+  if (!triangle_uvs.empty()) triangle_uvs.resize(triangles.size(), {});
+}
+
+void triangle_soup::add_polygon(const std::vector<std::uint32_t>& indices,
+                                const std::vector<vec2d>& uvs, std::uint32_t face) {
+  if (uvs.size() != indices.size())
+    throw usage_error("add_polygon: one texture coordinate per vertex is needed");
+  const std::size_t first = triangles.size();
+  add_polygon(indices, face);
+  triangle_uvs.resize(first, {});
+  for (std::size_t i = 1; i + 1 < indices.size(); ++i)
+    triangle_uvs.push_back({uvs[0], uvs[i], uvs[i + 1]});
 }
 
 std::uint32_t triangle_soup::add_triangle(const vec3d& a, const vec3d& b, const vec3d& c) {
@@ -27,10 +39,17 @@ std::uint32_t triangle_soup::add_triangle(const vec3d& a, const vec3d& b, const 
 void triangle_soup::append(const triangle_soup& other) {
   const auto vbase = static_cast<std::uint32_t>(vertices.size());
   const std::uint32_t fbase = face_count;
+  const std::size_t tbase = triangles.size();
   vertices.insert(vertices.end(), other.vertices.begin(), other.vertices.end());
   for (const soup_triangle& t : other.triangles)
     triangles.push_back({{t.v[0] + vbase, t.v[1] + vbase, t.v[2] + vbase}, t.face + fbase});
   face_count = fbase + other.face_count;
+  if (!triangle_uvs.empty() || other.has_uvs()) {
+    triangle_uvs.resize(tbase, {});
+    if (other.has_uvs())
+      triangle_uvs.insert(triangle_uvs.end(), other.triangle_uvs.begin(), other.triangle_uvs.end());
+    triangle_uvs.resize(triangles.size(), {});
+  }
 }
 
 }  // namespace exbsp

@@ -158,6 +158,7 @@ render_summary render_command(const render_request& request, std::ostream& log) 
       throw usage_error("render: --wireframe needs edges (--edges none was given)");
   }
   view::frame f = scene::make_frame(s);
+  if (kind != view::output_kind::png) scene::use_texture_means(f);  // flat regions (scene.h)
   const double load_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   f.build.progress = request.progress;

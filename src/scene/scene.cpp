@@ -14,6 +14,7 @@
 #include <exbsp/clip/section_cap.h>
 #include <exbsp/core/errors.h>
 #include <exbsp/mesh/mesh_io.h>
+#include <exbsp/view/png_io.h>
 #include <exbsp/view/projection.h>
 #include "mesh/json_limits.h"
 #include "scene/scene_parts.h"
@@ -542,6 +543,34 @@ view::view_setup make_view_setup(const scene& s) {
   return v;
 }
 
+namespace {
+
+/// The texture of mesh `m` (its "texture" given), whose geometry `part` has been read.
+std::shared_ptr<const view::texture> load_texture(const scene& s, const mesh_spec& m,
+                                                  const triangle_soup& part) {
+  const texture_spec& t = *m.texture;
+  const std::string key = m.key + "/texture";
+  if (!part.has_uvs() && !part.triangles.empty())
+    throw scene_error(s.path, key,
+                      "the mesh " + m.path +
+                          " has no texture coordinates (OBJ: vt and f v/vt; PLY: vertex "
+                          "properties u, v or s, t)");
+  if (!s.clip_planes.empty())
+    throw scene_error(s.path, key,
+                      "a textured mesh cannot be cut by clip_planes (the cut pieces carry no "
+                      "texture coordinates)");
+  std::error_code ec;
+  if (!std::filesystem::exists(t.path, ec))
+    throw scene_error(s.path, key + "/png", "texture file not found: " + t.path);
+  try {
+    return std::make_shared<const view::texture>(view::read_png(t.path), t.filter, t.wrap);
+  } catch (const input_error& e) {
+    throw scene_error(s.path, key + "/png", std::string("unreadable texture: ") + e.what());
+  }
+}
+
+}  // namespace
+
 scene_geometry load_geometry(const scene& s) {
   scene_geometry g;
   g.face_offsets.push_back(0);
@@ -595,10 +624,12 @@ scene_geometry load_geometry(const scene& s) {
       }
     }
     const std::uint32_t first_face = g.soup.face_count, own_faces = part.face_count;
+    std::shared_ptr<const view::texture> tex = m.texture ? load_texture(s, m, part) : nullptr;
     if (!s.clip_planes.empty())
       part = s.caps ? clip_soup_with_caps(part, s.clip_planes) : clip_soup(part, s.clip_planes);
     g.soup.append(part);
-    g.face_colors.resize(g.soup.face_count, m.color);
+    g.face_colors.resize(g.soup.face_count, tex ? tex->mean : m.color);
+    g.textures.push_back(std::move(tex));
     for (std::uint32_t f = first_face + own_faces; f < g.soup.face_count; ++f)
       g.face_colors[f] = s.cap_color;
     g.face_offsets.push_back(g.soup.face_count);
@@ -616,12 +647,29 @@ view::frame make_frame(const scene& s) {
   f.settings = s.effect_settings;
   f.curves = s.curves;
   f.mesh_face_offsets = std::move(geometry.face_offsets);
+  // Textured meshes: white faces, so that the raster's texel times the (lit) face colour is the
+  // texel itself when unlit (GL_MODULATE).
+  for (std::size_t k = 0; k < geometry.textures.size(); ++k)
+    if (geometry.textures[k])
+      for (std::uint32_t face = f.mesh_face_offsets[k]; face < f.mesh_face_offsets[k + 1]; ++face)
+        f.face_colors[face] = view::rgb8{255, 255, 255};
+  if (std::any_of(geometry.textures.begin(), geometry.textures.end(),
+                  [](const auto& t) { return t != nullptr; }))
+    f.mesh_textures = std::move(geometry.textures);
   f.vector = s.vector;
   f.raster_edges = s.raster_edges;
   f.wireframe = s.wireframe;
   f.visibility = s.teaching.painter;
   f.near_plane = s.teaching.near_plane;
   return f;
+}
+
+void use_texture_means(view::frame& f) {
+  for (std::size_t k = 0; k < f.mesh_textures.size() && k + 1 < f.mesh_face_offsets.size(); ++k)
+    if (f.mesh_textures[k])
+      for (std::uint32_t face = f.mesh_face_offsets[k]; face < f.mesh_face_offsets[k + 1]; ++face)
+        if (face < f.face_colors.size()) f.face_colors[face] = f.mesh_textures[k]->mean;
+  f.mesh_textures.clear();
 }
 
 std::size_t mesh_of_face(const scene_geometry& g, std::uint32_t face) {

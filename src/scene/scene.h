@@ -110,6 +110,18 @@ constexpr std::size_t max_curve_control_points = 128;
 /// Largest number of "clip_planes" (glClipPlane's GL_MAX_CLIP_PLANES minimum).
 constexpr std::size_t max_clip_planes = 6;
 
+/// A mesh's "texture": {"png": path, "filter": "nearest" (default) | "linear", "wrap":
+/// "repeat" (default) | "clamp"} (view/texture.h). The mesh file must give texture coordinates
+/// (OBJ vt, PLY u/v or s/t); the raster samples the PNG per pixel (GL_MODULATE with the lit
+/// colour of a white face: the texel replaces "color"); SVG and PDF fill the mesh's regions
+/// flat in the texture's mean colour (lit like a face colour).
+struct texture_spec {
+  std::string png;   ///< as written in the scene
+  std::string path;  ///< resolved against the scene file's directory
+  view::texture::filter_kind filter = view::texture::filter_kind::nearest;
+  view::texture::wrap_kind wrap = view::texture::wrap_kind::repeat;
+};
+
 /// One entry of "meshes".
 struct mesh_spec {
   std::string file;           ///< as written in the scene
@@ -119,6 +131,7 @@ struct mesh_spec {
   view::rgb8 color{160, 160, 160};  ///< default grey
   view::mat4 transform = view::mat4::identity();
   std::shared_ptr<const triangle_soup> soup;  ///< inline geometry (built-in demo): file not read
+  std::optional<texture_spec> texture;        ///< "texture" (absent: none)
 };
 
 /// "projection".
@@ -230,20 +243,32 @@ perspective_lens lens_of(const projection_spec& p, int viewport_width, int viewp
 /// as extra faces of each mesh) and appended into one soup.
 struct scene_geometry {
   triangle_soup soup;
-  std::vector<view::rgb8> face_colors;      ///< colour by face id of `soup`
+  std::vector<view::rgb8> face_colors;  ///< colour by face id of `soup`
+  /// The texture of mesh k ("texture": its PNG read; null: none). A textured mesh's faces have
+  /// the texture's mean colour in face_colors (make_frame makes them white for the raster).
+  std::vector<std::shared_ptr<const view::texture>> textures;
   std::vector<std::uint32_t> face_offsets;  ///< first face id of mesh k (size = meshes + 1)
 };
 
 /// Reads every mesh (read_mesh: input_error for bad files), applies its transform and appends
 /// it. Throws scene_error naming /meshes/K/file for a missing file and /meshes/K/transform when
 /// the transform sends a vertex to infinity or so far that the scene's view of it overflows
-/// (/meshes/K/file when the mesh has no transform and its own coordinates do).
+/// (/meshes/K/file when the mesh has no transform and its own coordinates do), and
+/// /meshes/K/texture/png for a texture PNG that is missing or unreadable, /meshes/K/texture for
+/// a textured mesh whose file has no texture coordinates (or with clip_planes, whose cut
+/// pieces carry none).
 scene_geometry load_geometry(const scene& s);
 
 /// The pipeline frame of a scene: its view (make_view_setup), background, effect settings,
 /// curves and vector options, and all its meshes as one soup with their face colours and
-/// offsets (load_geometry; same errors). Build options stay at their defaults.
+/// offsets (load_geometry; same errors), and its textures (frame::mesh_textures; the faces of a
+/// textured mesh white, so that the raster's texel is the colour; use_texture_means undoes
+/// that for vector output). Build options stay at their defaults.
 view::frame make_frame(const scene& s);
+
+/// For SVG / PDF output: every textured mesh's faces take its texture's mean colour and the
+/// frame's textures are dropped (vector output fills regions flat).
+void use_texture_means(view::frame& f);
 
 /// The mesh index of a face id (upper bound in face_offsets); meshes.size() if out of range.
 std::size_t mesh_of_face(const scene_geometry& g, std::uint32_t face);

@@ -73,10 +73,37 @@ void apply_transforms(const reader& r, const json& list, const std::string& key,
   }
 }
 
+/// A mesh's "texture" (scene.h texture_spec).
+texture_spec parse_texture(const reader& r, const json& entry, const std::string& mesh_key,
+                           const std::filesystem::path& base) {
+  const std::string key = mesh_key + "/texture";
+  const json& t = r.object(entry, key);
+  r.warn_unknown(t, key, {"png", "filter", "wrap"});
+  texture_spec spec;
+  const json& png = r.require(t, key, "png");
+  if (!png.is_string() || png.get<std::string>().empty() ||
+      png.get<std::string>().find('\0') != std::string::npos)
+    r.fail(key + "/png", "must be a non-empty string (a PNG file path)");
+  spec.png = png.get<std::string>();
+  const std::filesystem::path fp(spec.png);
+  spec.path = fp.is_absolute() ? fp.string() : (base / fp).string();
+  const auto word = [&](const char* name, const char* a, const char* b) -> int {
+    const json* v = r.optional(t, name);
+    if (!v) return 0;
+    const std::string w = v->is_string() ? v->get<std::string>() : std::string();
+    if (w != a && w != b)
+      r.fail(key + "/" + name, std::string("must be \"") + a + "\" or \"" + b + "\"");
+    return w == a ? 0 : 1;
+  };
+  if (word("filter", "nearest", "linear") == 1) spec.filter = view::texture::filter_kind::linear;
+  if (word("wrap", "repeat", "clamp") == 1) spec.wrap = view::texture::wrap_kind::clamp;
+  return spec;
+}
+
 mesh_spec parse_mesh_entry(const reader& r, const json& entry, const std::string& key,
                            const std::filesystem::path& base, view::matrix_stack& stack) {
   const json& m = r.object(entry, key);
-  r.warn_unknown(m, key, {"file", "color", "transform", "transforms"});
+  r.warn_unknown(m, key, {"file", "color", "transform", "transforms", "texture"});
   mesh_spec spec;
   spec.key = key;
   const json& file = r.require(m, key, "file");
@@ -89,6 +116,7 @@ mesh_spec parse_mesh_entry(const reader& r, const json& entry, const std::string
   const std::filesystem::path fp(spec.file);
   spec.path = fp.is_absolute() ? fp.string() : (base / fp).string();
   if (const json* c = r.optional(m, "color")) spec.color = r.color(*c, key + "/color");
+  if (const json* tex = r.optional(m, "texture")) spec.texture = parse_texture(r, *tex, key, base);
   const json* t = r.optional(m, "transform");
   const json* ts = r.optional(m, "transforms");
   if (t && ts) r.fail(key + "/transforms", "give transform or transforms, not both");

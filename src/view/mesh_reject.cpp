@@ -47,11 +47,17 @@ std::string mesh_reject_stage(frame& f) {
   if (f.rejected_meshes.empty())
     return "0 of " + std::to_string(meshes) + " meshes outside the view volume";
   const std::size_t before = f.soup.triangles.size();
-  f.soup.triangles.erase(std::remove_if(f.soup.triangles.begin(), f.soup.triangles.end(),
-                                        [&](const soup_triangle& t) {
-                                          const std::size_t k = mesh_of(t.face);
-                                          return k < meshes && reject[k];
-                                        }),
+  const auto rejected = [&](const soup_triangle& t) {
+    const std::size_t k = mesh_of(t.face);
+    return k < meshes && reject[k];
+  };
+  if (f.soup.has_uvs()) {  // the texture coordinates stay with their triangles
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < before; ++t)
+      if (!rejected(f.soup.triangles[t])) f.soup.triangle_uvs[kept++] = f.soup.triangle_uvs[t];
+    f.soup.triangle_uvs.resize(kept);
+  }
+  f.soup.triangles.erase(std::remove_if(f.soup.triangles.begin(), f.soup.triangles.end(), rejected),
                          f.soup.triangles.end());
   std::string list;
   for (std::size_t k : f.rejected_meshes) list += (list.empty() ? "" : ", ") + std::to_string(k);

@@ -10,6 +10,7 @@
 #include "view/line_raster.h"
 #include "view/rasterizer.h"
 #include "view/smooth_shading.h"
+#include "view/texture_uvs.h"
 #include "view/workers.h"
 
 namespace exbsp::view {
@@ -176,7 +177,10 @@ void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vect
   std::optional<corner_interpolator> smooth;  // smooth shading (smooth_shading.h)
   if (!f.corner_colors.empty())
     smooth.emplace(f.fragments[p.fragment], f.corner_colors[p.fragment], f.view);
-  if (!f.shader && !smooth) {
+  std::optional<uv_interpolator> uvs;  // a textured mesh (texture_uvs.h)
+  const texture* tex = f.fragment_uvs.empty() ? nullptr : f.texture_of(p.face);
+  if (tex) uvs.emplace(f.fragments[p.fragment], f.fragment_uvs[p.fragment], f.view);
+  if (!f.shader && !smooth && !tex) {
     paint_spans(poly, rows, mask, [&](int, int) { return p.color; });
     return;
   }
@@ -185,7 +189,11 @@ void paint_polygon(const frame& f, const screen_polygon& p, int scale, std::vect
                hi = std::max(vp.depth_near, vp.depth_far);
   paint_spans(poly, rows, mask, [&](int i, int j) {
     const double x = vp.x + (i + 0.5) / scale, y = vp.y + (j + 0.5) / scale;
-    const rgb8 c = smooth ? smooth->at(x, y, p.color) : p.color;
+    rgb8 c = smooth ? smooth->at(x, y, p.color) : p.color;
+    if (tex) {
+      const vec2d uv = uvs->at(x, y);
+      c = modulate(tex->sample(uv[0], uv[1]), c);
+    }
     if (!f.shader) return c;
     const double z = std::min(hi, std::max(lo, plane.at(x, y)));
     return f.shader->shade(c, x, y, z);

@@ -123,9 +123,7 @@ void smooth_corner_colors(frame& f) {
   }
 }
 
-corner_interpolator::corner_interpolator(const fragment_d& fragment,
-                                         const std::array<rgb8, 3>& colors, const view_setup& view)
-    : colors_(colors) {
+perspective_weights::perspective_weights(const fragment_d& fragment, const view_setup& view) {
   const mat4 m = view.projection * view.model_view;
   const viewport& vp = view.vp;
   for (int k = 0; k < 3; ++k) {
@@ -137,7 +135,7 @@ corner_interpolator::corner_interpolator(const fragment_d& fragment,
   }
 }
 
-rgb8 corner_interpolator::at(double x, double y, rgb8 fallback) const {
+bool perspective_weights::at(double x, double y, std::array<double, 3>& k) const {
   // The point of the fragment seen at (x, y) is sum b_k P_k with sum b_k (xw_k - x w_k) = 0,
   // sum b_k (yw_k - y w_k) = 0 and sum b_k = 1: b is the cross product of the two rows.
   const std::array<double, 3> r1{xw_[0] - x * w_[0], xw_[1] - x * w_[1], xw_[2] - x * w_[2]};
@@ -145,10 +143,20 @@ rgb8 corner_interpolator::at(double x, double y, rgb8 fallback) const {
   const double b0 = r1[1] * r2[2] - r1[2] * r2[1], b1 = r1[2] * r2[0] - r1[0] * r2[2],
                b2 = r1[0] * r2[1] - r1[1] * r2[0];
   const double sum = b0 + b1 + b2;
-  if (!(std::abs(sum) > 0) || !std::isfinite(sum)) return fallback;
-  const double k0 = b0 / sum, k1 = b1 / sum, k2 = b2 / sum;
+  if (!(std::abs(sum) > 0) || !std::isfinite(sum)) return false;
+  k = {b0 / sum, b1 / sum, b2 / sum};
+  return true;
+}
+
+corner_interpolator::corner_interpolator(const fragment_d& fragment,
+                                         const std::array<rgb8, 3>& colors, const view_setup& view)
+    : weights_(fragment, view), colors_(colors) {}
+
+rgb8 corner_interpolator::at(double x, double y, rgb8 fallback) const {
+  std::array<double, 3> k;
+  if (!weights_.at(x, y, k)) return fallback;
   const auto channel = [&](std::uint8_t c0, std::uint8_t c1, std::uint8_t c2) {
-    const double v = k0 * c0 + k1 * c1 + k2 * c2;
+    const double v = k[0] * c0 + k[1] * c1 + k[2] * c2;
     return static_cast<std::uint8_t>(std::lround(std::min(255.0, std::max(0.0, v))));
   };
   return {channel(colors_[0].r, colors_[1].r, colors_[2].r),

@@ -24,10 +24,22 @@ namespace exbsp::view {
 /// f.tree (for the fragments' source triangles) and f.soup.
 void smooth_corner_colors(frame& f);
 
-/// Perspective-correct interpolation over one fragment's projection (window coordinates):
-/// made from the fragment's world corners and the view, it gives at window point (x, y) the
-/// colour interpolated between the corner colours. Corners behind the eye are fine (the
-/// homogeneous form never divides by their w).
+/// Perspective-correct weights over one fragment's projection (window coordinates): made from
+/// the fragment's world corners and the view, it gives at window point (x, y) the barycentric
+/// coordinates (k0, k1, k2) of the fragment's point seen there, the weights of its corners'
+/// attributes (colours; texture coordinates, texture_uvs.h). Corners behind the eye are fine
+/// (the homogeneous form never divides by their w).
+class perspective_weights {
+ public:
+  perspective_weights(const fragment_d& fragment, const view_setup& view);
+  /// The weights at window point (x, y); false where the projection is degenerate.
+  bool at(double x, double y, std::array<double, 3>& k) const;
+
+ private:
+  std::array<double, 3> xw_{}, yw_{}, w_{};  ///< homogeneous window corners (x w, y w, w)
+};
+
+/// The corner colours interpolated with perspective_weights.
 class corner_interpolator {
  public:
   corner_interpolator(const fragment_d& fragment, const std::array<rgb8, 3>& colors,
@@ -36,7 +48,7 @@ class corner_interpolator {
   rgb8 at(double x, double y, rgb8 fallback) const;
 
  private:
-  std::array<double, 3> xw_{}, yw_{}, w_{};  ///< homogeneous window corners (x w, y w, w)
+  perspective_weights weights_;
   std::array<rgb8, 3> colors_;
 };
 

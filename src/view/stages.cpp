@@ -12,6 +12,7 @@
 #include "view/depth_sort.h"
 #include "view/paint.h"
 #include "view/svg_writer.h"
+#include "view/texture_uvs.h"
 #include "view/vector_pdf.h"
 
 namespace exbsp::view {
@@ -82,6 +83,7 @@ std::string build_stage(frame& f) {
     f.tree.reset();
     f.fragments = soup_fragments(f.soup);
     index_points(f);
+    texture_uvs(f);
     return std::to_string(f.fragments.size()) + " triangles for a depth sort (no BSP, no splits)";
   }
   if (f.soup.triangles.empty()) {  // nothing to draw: no tree, no fragments
@@ -94,6 +96,7 @@ std::string build_stage(frame& f) {
   f.tree.emplace(bsp::build(f.soup, f.build));
   f.fragments = f.tree->fragments_double();
   index_points(f);
+  texture_uvs(f);
   const build_stats& s = f.tree->stats();
   return std::to_string(s.input_triangles) + " triangles, " + std::to_string(s.fragments) +
          " fragments, " + std::to_string(s.splits) + " splits, " + std::to_string(s.nodes) +
@@ -105,6 +108,7 @@ std::string adopt_tree_stage(frame& f) {
   if (!f.tree) throw usage_error("adopt_tree_stage: the frame holds no tree");
   f.fragments = f.tree->fragments_double();
   index_points(f);
+  texture_uvs(f);
   const build_stats& s = f.tree->stats();
   return std::to_string(s.input_triangles) + " triangles, " + std::to_string(s.fragments) +
          " fragments (a saved tree, not rebuilt), kernel " + s.kernel;

@@ -139,6 +139,13 @@ struct zbuffer_scene {
   /// When not empty: a colour per corner of each triangle, interpolated (GL_SMOOTH: Gouraud,
   /// perspective-correct in Mesa) instead of `colors`.
   std::vector<std::array<view::rgb8, 3>> corner_colors;
+  /// When not empty: texture coordinates (s, t) per corner of each triangle and `texture`
+  /// (row 0 = top, uploaded bottom row first: t = 0 at the image's bottom), GL_MODULATE with the
+  /// triangles' colours, GL_PERSPECTIVE_CORRECTION_HINT GL_NICEST, no mipmaps.
+  std::vector<std::array<std::array<double, 2>, 3>> corner_uvs;
+  view::image texture;
+  bool texture_linear = false;  ///< GL_LINEAR (else GL_NEAREST), both filters
+  bool texture_clamp = false;   ///< GL_CLAMP_TO_EDGE (else GL_REPEAT), both directions
   /// Cull triangles whose (b - a) x (c - a) faces away from the viewer (counter-clockwise in
   /// window coordinates = front).
   bool cull_back = false;
@@ -196,6 +203,29 @@ inline view::image render_zbuffer(const zbuffer_scene& s) {
   glMatrixMode(GL_MODELVIEW);
   glLoadMatrixd(mv.data());
   if (!s.corner_colors.empty()) glShadeModel(GL_SMOOTH);
+  GLuint texture_name = 0;
+  if (!s.corner_uvs.empty()) {
+    std::vector<GLubyte> texels;  // bottom row first
+    for (int j = 0; j < s.texture.height(); ++j)
+      for (int i = 0; i < s.texture.width(); ++i) {
+        const view::rgb8 c = s.texture.pixel(i, j);
+        texels.insert(texels.end(), {c.r, c.g, c.b});
+      }
+    glGenTextures(1, &texture_name);
+    glBindTexture(GL_TEXTURE_2D, texture_name);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, s.texture.width(), s.texture.height(), 0, GL_RGB,
+                 GL_UNSIGNED_BYTE, texels.data());
+    const GLint filter = s.texture_linear ? GL_LINEAR : GL_NEAREST;
+    const GLint wrap = s.texture_clamp ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
+    glEnable(GL_TEXTURE_2D);
+  }
   glBegin(GL_TRIANGLES);
   for (std::size_t k = 0; k < s.triangles.size(); ++k) {
     if (s.corner_colors.empty()) {
@@ -207,12 +237,14 @@ inline view::image render_zbuffer(const zbuffer_scene& s) {
         const view::rgb8 c = s.corner_colors.at(k)[i];
         glColor3ub(c.r, c.g, c.b);
       }
+      if (!s.corner_uvs.empty()) glTexCoord2d(s.corner_uvs.at(k)[i][0], s.corner_uvs.at(k)[i][1]);
       const auto& v = s.triangles[k][i];
       glVertex3d(v[0], v[1], v[2]);
     }
   }
   glEnd();
   glFinish();
+  if (texture_name != 0) glDeleteTextures(1, &texture_name);
   const GLenum err = glGetError();
   if (err != GL_NO_ERROR)
     throw std::runtime_error("OpenGL error " + std::to_string(err) + " while rendering");

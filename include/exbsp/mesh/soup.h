@@ -25,15 +25,30 @@ struct EXBSP_EXPORT triangle_soup {
   std::vector<soup_triangle> triangles;  ///< file order, fans in order
   std::uint32_t face_count = 0;          ///< number of faces in the source (polygons)
   std::string source;                    ///< file name, for messages
+  /// Texture coordinates (u, v) at the three corners of each triangle (OBJ vt, PLY s/t or u/v;
+  /// docs/contract.md "Input"): empty when the source has none, else one entry per triangle,
+  /// in the order of `triangles`. Fans copy their polygon's corner UVs; a file that gives UVs
+  /// to some faces only has (0, 0) at the others' corners.
+  std::vector<std::array<vec2d, 3>> triangle_uvs;
+
+  /// True when the soup carries texture coordinates (triangle_uvs has one entry per triangle).
+  bool has_uvs() const { return !triangle_uvs.empty() && triangle_uvs.size() == triangles.size(); }
 
   /// Append polygon `indices` (k >= 3) as a fan (v0, v[i], v[i+1]) with the given face id.
   /// Precondition: indices are valid (< vertices.size()); throws usage_error otherwise.
   void add_polygon(const std::vector<std::uint32_t>& indices, std::uint32_t face);
 
+  /// add_polygon with the texture coordinates of its corners (uvs.size() == indices.size()):
+  /// the fan's triangles get the UVs of their corners; earlier triangles without UVs get
+  /// (0, 0). Throws usage_error on a size mismatch (and as add_polygon).
+  void add_polygon(const std::vector<std::uint32_t>& indices, const std::vector<vec2d>& uvs,
+                   std::uint32_t face);
+
   /// Append a triangle given by its corner coordinates as a new face (convenience for tests).
   std::uint32_t add_triangle(const vec3d& a, const vec3d& b, const vec3d& c);
 
-  /// Append all of `other`, shifting its face ids by face_count.
+  /// Append all of `other`, shifting its face ids by face_count. UVs: when either soup has
+  /// them, the result has them ((0, 0) at the corners of the side that has none).
   void append(const triangle_soup& other);
 };
 

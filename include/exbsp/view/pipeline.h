@@ -31,6 +31,7 @@
 #include <exbsp/view/sample_shader.h>
 #include <exbsp/view/screen_line.h>
 #include <exbsp/view/screen_polygon.h>
+#include <exbsp/view/texture.h>
 #include <exbsp/view/vector_drawing.h>
 #include <exbsp/view/view_setup.h>
 #include <exbsp/view/viewport.h>
@@ -70,6 +71,10 @@ struct frame {
   std::vector<curve_spec> curves;  ///< world-space Bézier curves and polylines ("curves" stage)
   std::vector<std::uint32_t>
       mesh_face_offsets;  ///< first face id of mesh k (size meshes + 1; "reject")
+  /// The texture of mesh k (texture.h; null or beyond the end: none). A textured mesh needs
+  /// soup.triangle_uvs; its faces' colours should be white: the raster multiplies each texel by
+  /// the face's (lit) colour, OpenGL's GL_MODULATE. Default: none, and no cost.
+  std::vector<std::shared_ptr<const texture>> mesh_textures;
   paint_order painter = paint_order::front_to_back;  ///< walk of "raster" and "antialias" (paint.h)
   /// Front-to-back bands painted in parallel (0: one per core). Default 1: on the shared 2-core
   /// machine of bench/RESULTS.md section 3, two bands were slower than one.
@@ -111,6 +116,10 @@ struct frame {
   /// flat); the raster interpolates them (fragment_colors keeps the flat colour for vector
   /// output).
   std::vector<std::array<rgb8, 3>> corner_colors;
+  /// "build" (and "adopt"), when a mesh is textured: the texture coordinates at the three
+  /// corners of fragment i (view/texture_uvs.h: exact barycentric interpolation in the
+  /// source triangle, rounded once); empty otherwise.
+  std::vector<std::array<vec2d, 3>> fragment_uvs;
   std::vector<screen_line> lines;  ///< "curves": clipped curve pieces in painter's slots
   std::optional<fog_shading> fog;  ///< "fog": its parameters for this view
   std::optional<sample_shader>
@@ -127,6 +136,17 @@ struct frame {
   /// Colour of a face id (default_color when the id has no colour).
   rgb8 color_of(std::uint32_t face) const {
     return face < face_colors.size() ? face_colors[face] : default_color;
+  }
+  /// The texture of a face id's mesh, or null.
+  const texture* texture_of(std::uint32_t face) const {
+    if (mesh_textures.empty()) return nullptr;
+    const std::uint32_t mesh = mesh_of(face);
+    return mesh < mesh_textures.size() ? mesh_textures[mesh].get() : nullptr;
+  }
+  /// True when some mesh has a texture.
+  bool textured() const {
+    return std::any_of(mesh_textures.begin(), mesh_textures.end(),
+                       [](const std::shared_ptr<const texture>& t) { return t != nullptr; });
   }
   /// Mesh index of a face id (mesh_face_offsets: first face of mesh k; mesh 0 when empty).
   std::uint32_t mesh_of(std::uint32_t face) const {
