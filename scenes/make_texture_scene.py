@@ -7,7 +7,8 @@
 The floor is a large quad whose checkerboard repeats three times (nearest, repeat: the squares
 shrink towards the horizon, perspective-correct); the crate is a cube tilted into the floor
 (the BSP splits floor and crate where they meet; each piece keeps the exact texture
-coordinates), bilinear; the panel (PLY with u, v properties) stands upright, clamped. The
+coordinates), bilinear, its texture turned a quarter turn about the texture's centre by a texture
+matrix ("transforms", GL_TEXTURE); the panel (PLY with u, v properties) stands upright, clamped. The
 scene is lit (one directional light): each texel is multiplied by the lit colour of a white
 face (GL_MODULATE).
 Run: python3 scenes/make_texture_scene.py
@@ -90,7 +91,9 @@ def main():
             {"file": "meshes/textured/crate.obj",
              "transform": [v for row in crate_m for v in row],
              "texture": {"png": "meshes/textured/crate.png", "filter": "linear",
-                         "wrap": "repeat"}},
+                         "wrap": "repeat",
+                         "transforms": [{"translate": [0.5, 0.5, 0]}, {"rotate": [90, 0, 0, 1]},
+                                        {"translate": [-0.5, -0.5, 0]}]}},
             {"file": "meshes/textured/panel.ply",
              "transform": [2.2, 0, 0, -3.2, 0, 1, 0, 1.5, 0, 0, 2.2, 0, 0, 0, 0, 1],
              "texture": {"png": "meshes/textured/crate.png", "filter": "linear",

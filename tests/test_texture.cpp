@@ -387,6 +387,28 @@ TEST(TextureScene, KeyErrorsNameTheKey) {
   EXPECT_NE(message.find("no texture coordinates"), std::string::npos) << message;
 }
 
+TEST(TextureScene, TransformsAreTheTextureMatrixAppliedToEveryCorner) {
+  // glMatrixMode(GL_TEXTURE); glTranslated(0.5, 0, 0); glScaled(2, 3, 1): (s, t) ->
+  // (2 s + 0.5, 3 t), per vertex as OpenGL applies it, before any interpolation.
+  const scene_dir d;
+  d.write("quad.obj", quad_obj);
+  view::write_png(view::image(2, 2, {255, 0, 0}), (d.dir / "red.png").string());
+  const fs::path p = d.write(
+      "s.json", d.scene("quad.obj", R"({"png": "red.png", "transforms": [{"translate": [0.5, 0, 0]},
+                                                             {"scale": [2, 3, 1]}]})"));
+  const scene::scene_geometry g = scene::load_geometry(scene::load_scene(p.string()));
+  ASSERT_TRUE(g.soup.has_uvs());
+  EXPECT_EQ(g.soup.triangle_uvs[0], (uv3{{{0.5, 0}, {4.5, 0}, {4.5, 6}}}));
+  EXPECT_EQ(g.soup.triangle_uvs[1], (uv3{{{0.5, 0}, {4.5, 6}, {0.5, 6}}}));
+  // A projective texture matrix (q != 1) is refused, naming the key.
+  const fs::path q = d.write(
+      "q.json",
+      d.scene("quad.obj", R"({"png": "red.png", "transforms": [{"matrix": [1, 0, 0, 0, 0, 1, 0, 0,
+              0, 0, 1, 0, 0.5, 0, 0, 1], "order": "row-major"}]})"));
+  EXPECT_EQ(exbsp_test::error_key([&] { scene::load_scene(q.string()); }),
+            "/meshes/0/texture/transforms");
+}
+
 TEST(TextureScene, PngSamplesTheTextureSvgFillsWithItsMean) {
   const scene_dir d;
   d.write("quad.obj", quad_obj);

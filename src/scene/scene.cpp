@@ -545,9 +545,10 @@ view::view_setup make_view_setup(const scene& s) {
 
 namespace {
 
-/// The texture of mesh `m` (its "texture" given), whose geometry `part` has been read.
+/// The texture of mesh `m` (its "texture" given), whose geometry `part` has been read; the
+/// texture matrix ("transforms") applied to part's texture coordinates.
 std::shared_ptr<const view::texture> load_texture(const scene& s, const mesh_spec& m,
-                                                  const triangle_soup& part) {
+                                                  triangle_soup& part) {
   const texture_spec& t = *m.texture;
   const std::string key = m.key + "/texture";
   if (!part.has_uvs() && !part.triangles.empty())
@@ -559,6 +560,15 @@ std::shared_ptr<const view::texture> load_texture(const scene& s, const mesh_spe
     throw scene_error(s.path, key,
                       "a textured mesh cannot be cut by clip_planes (the cut pieces carry no "
                       "texture coordinates)");
+  if (t.matrix)
+    for (std::array<vec2d, 3>& corners : part.triangle_uvs)
+      for (vec2d& uv : corners) {
+        const view::hpoint q = *t.matrix * view::point3{uv[0], uv[1], 0};
+        if (!std::isfinite(q.x) || !std::isfinite(q.y))
+          throw scene_error(s.path, key + "/transforms",
+                            "sends a texture coordinate of " + m.path + " to infinity");
+        uv = {q.x, q.y};
+      }
   std::error_code ec;
   if (!std::filesystem::exists(t.path, ec))
     throw scene_error(s.path, key + "/png", "texture file not found: " + t.path);

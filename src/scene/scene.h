@@ -111,15 +111,20 @@ constexpr std::size_t max_curve_control_points = 128;
 constexpr std::size_t max_clip_planes = 6;
 
 /// A mesh's "texture": {"png": path, "filter": "nearest" (default) | "linear", "wrap":
-/// "repeat" (default) | "clamp"} (view/texture.h). The mesh file must give texture coordinates
-/// (OBJ vt, PLY u/v or s/t); the raster samples the PNG per pixel (GL_MODULATE with the lit
-/// colour of a white face: the texel replaces "color"); SVG and PDF fill the mesh's regions
-/// flat in the texture's mean colour (lit like a face colour).
+/// "repeat" (default) | "clamp", "transforms": [...]} (view/texture.h). The mesh file must give
+/// texture coordinates (OBJ vt, PLY u/v or s/t); the raster samples the PNG per pixel
+/// (GL_MODULATE with the lit colour of a white face: the texel replaces "color"); SVG and PDF
+/// fill the mesh's regions flat in the texture's mean colour (lit like a face colour).
+/// "transforms" is the texture matrix (glMatrixMode(GL_TEXTURE)): a list as a mesh's, applied
+/// to (s, t, 0, 1) of every corner in double when the mesh is loaded (the results are the
+/// texture coordinates the exact interpolation starts from); it must leave q = 1 (bottom row
+/// 0 0 0 1: no projective texturing).
 struct texture_spec {
   std::string png;   ///< as written in the scene
   std::string path;  ///< resolved against the scene file's directory
   view::texture::filter_kind filter = view::texture::filter_kind::nearest;
   view::texture::wrap_kind wrap = view::texture::wrap_kind::repeat;
+  std::optional<view::mat4> matrix;  ///< "transforms" (absent: identity)
 };
 
 /// One entry of "meshes".

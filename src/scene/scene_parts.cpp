@@ -78,7 +78,7 @@ texture_spec parse_texture(const reader& r, const json& entry, const std::string
                            const std::filesystem::path& base) {
   const std::string key = mesh_key + "/texture";
   const json& t = r.object(entry, key);
-  r.warn_unknown(t, key, {"png", "filter", "wrap"});
+  r.warn_unknown(t, key, {"png", "filter", "wrap", "transforms"});
   texture_spec spec;
   const json& png = r.require(t, key, "png");
   if (!png.is_string() || png.get<std::string>().empty() ||
@@ -97,6 +97,15 @@ texture_spec parse_texture(const reader& r, const json& entry, const std::string
   };
   if (word("filter", "nearest", "linear") == 1) spec.filter = view::texture::filter_kind::linear;
   if (word("wrap", "repeat", "clamp") == 1) spec.wrap = view::texture::wrap_kind::clamp;
+  if (const json* list = r.optional(t, "transforms")) {  // the GL_TEXTURE matrix stack's top
+    view::matrix_stack stack;
+    apply_transforms(r, *list, key + "/transforms", stack);
+    const view::mat4& m = stack.top();
+    if (m(3, 0) != 0 || m(3, 1) != 0 || m(3, 2) != 0 || m(3, 3) != 1)
+      r.fail(key + "/transforms",
+             "must keep q = 1 (bottom row 0 0 0 1): projective texture matrices are not supported");
+    spec.matrix = m;
+  }
   return spec;
 }
 
