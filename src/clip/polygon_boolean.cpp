@@ -4,7 +4,7 @@
 // material's algorithm for concave polygons with holes; issue 29 allows them, said here): the
 // subject and the region become Polygon_set_2 objects on the exact kernel (Epeck, the input
 // doubles converted exactly), their regularized intersection is read back as polygons with
-// holes, and each coordinate is rounded once to the nearest double (MPFR).
+// holes, and each coordinate is rounded once to the nearest double (MPFR, geom/rational.h).
 // Segments: the breakpoints of the segment (its ends and every exact intersection with a
 // boundary edge of the region, the ends of collinear overlaps included) cut it into open
 // pieces that are wholly inside, wholly on the boundary or wholly outside; each breakpoint and
@@ -21,7 +21,6 @@
 #include <CGAL/Polygon_set_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/exceptions.h>
-#include <mpfr.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +30,7 @@
 
 #include <exbsp/core/errors.h>
 #include "clip/clip_checks.h"
-#include "geom/rational.h"  // mpq_of (inline)
+#include "geom/rational.h"
 
 namespace exbsp::clip {
 
@@ -45,22 +44,7 @@ using exact_polygon = CGAL::Polygon_2<kernel>;
 using exact_polygon_with_holes = CGAL::Polygon_with_holes_2<kernel>;
 using polygon_set = CGAL::Polygon_set_2<kernel>;
 
-/// The double nearest to v (ties to even), subnormals included. (geom::rational_to_double does
-/// the same inside libexbsp_core, whose internals the shared gpl library cannot reach: its
-/// symbols are hidden; docs/package.md "Symbols".)
-double nearest(const ft& v) {
-  const mpfr_exp_t emin = mpfr_get_emin(), emax = mpfr_get_emax();
-  mpfr_set_emin(-1073);  // a double's exponent range, for mpfr_subnormalize
-  mpfr_set_emax(1024);
-  mpfr_t r;
-  mpfr_init2(r, 53);
-  mpfr_subnormalize(r, mpfr_set_q(r, geom::mpq_of(CGAL::exact(v)), MPFR_RNDN), MPFR_RNDN);
-  const double d = mpfr_get_d(r, MPFR_RNDN);
-  mpfr_clear(r);
-  mpfr_set_emin(emin);
-  mpfr_set_emax(emax);
-  return d;
-}
+double nearest(const ft& v) { return geom::rational_to_double(geom::mpq_of(CGAL::exact(v))); }
 
 vec2d rounded(const point& p) { return {nearest(p.x()), nearest(p.y())}; }
 

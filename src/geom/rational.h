@@ -8,6 +8,8 @@
 
 #include <string>
 
+#include <exbsp/core/export.h>
+
 namespace exbsp::geom {
 
 /// The GMP rational of an exact number: Epeck's exact number type is mpq_class or boost's
@@ -26,8 +28,9 @@ mpq_ptr mutable_mpq_of(Number& q) {
 /// The reduced rational as "p/q", or "p" when q = 1. Precondition: q is canonical.
 std::string rational_to_string(mpq_srcptr q);
 
-/// The double nearest to q (round to nearest, ties to even), via MPFR.
-double rational_to_double(mpq_srcptr q);
+/// The double nearest to q (round to nearest, ties to even), via MPFR. Exported from the
+/// shared core: the render and gpl libraries round their exact values with it too.
+EXBSP_EXPORT double rational_to_double(mpq_srcptr q);
 
 /// The double nearest to num / den (den > 0; the fraction need not be reduced), rounded
 /// like rational_to_double, without the gcd a canonical mpq would cost.
