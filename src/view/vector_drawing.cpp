@@ -134,22 +134,29 @@ bool spike_at(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& 
   return longer > 0 && std::abs(ax * cy - ay * cx) < longer;
 }
 
-/// The ring without spikes (spike_at), removed until none is left.
-void remove_spikes(cl::Path& ring) {
+/// The ring without spikes (spike_at), removed until none is left, but for tips on the lines
+/// y = keep_y (sorted): the strip lines, where a polygon cut by a strip line has two crossings
+/// that may lie a unit apart and the face across the line has the same two; taking one as a
+/// spike's tip would cut a unit-wide sliver along the long edge beside it, and a crack between
+/// the two faces.
+void remove_spikes(cl::Path& ring, const std::vector<long long>& keep_y) {
+  auto spike = [&](const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c) {
+    return spike_at(a, b, c) && !std::binary_search(keep_y.begin(), keep_y.end(), b.Y);
+  };
   cl::Path out;
   out.reserve(ring.size());
   for (const cl::IntPoint& p : ring) {
     out.push_back(p);
-    while (out.size() >= 3 && spike_at(out[out.size() - 3], out[out.size() - 2], out.back()))
+    while (out.size() >= 3 && spike(out[out.size() - 3], out[out.size() - 2], out.back()))
       out.erase(out.end() - 2);
   }
   for (bool changed = true; changed && out.size() >= 3;) {
     changed = false;
     const std::size_t n = out.size();
-    if (spike_at(out[n - 2], out[n - 1], out[0])) {
+    if (spike(out[n - 2], out[n - 1], out[0])) {
       out.pop_back();
       changed = true;
-    } else if (spike_at(out[n - 1], out[0], out[1])) {
+    } else if (spike(out[n - 1], out[0], out[1])) {
       out.erase(out.begin());
       changed = true;
     }
@@ -280,10 +287,7 @@ struct strip_hit {
 
 /// What the walk of one strip found.
 struct strip_walk {
-  std::vector<strip_hit> hits;  ///< in walk order (front to back)
-  /// The polygons crossing a strip line that met this strip, and whether their part here was
-  /// wholly visible.
-  std::vector<std::pair<std::uint32_t, bool>> crossing;
+  std::vector<strip_hit> hits;        ///< in walk order (front to back)
   std::vector<cl::Paths> line_parts;  ///< per line (segments): its parts left visible here
   std::vector<char> point_shown;      ///< per line (points in this strip): not covered
 };
@@ -317,21 +321,15 @@ void walk_strip(const frame& f, const snapped_polygons& snapped, const t_junctio
     if (!snapped.has_area(k)) continue;
     const bbox_i& b = snapped.boxes[k];
     if (b.y1 <= y0 || b.y0 >= y1) continue;  // no area in this strip
-    const bool crosses = b.y0 < y0 || b.y1 > y1;
-    if (cov.hides({b.x0, std::max(b.y0, y0), b.x1, std::min(b.y1, y1)})) {
-      if (crosses) out.crossing.push_back({static_cast<std::uint32_t>(k), false});
-      continue;
-    }
+    if (cov.hides({b.x0, std::max(b.y0, y0), b.x1, std::min(b.y1, y1)})) continue;
     poly = snapped.path(k);
     mender.mend(poly, scratch);
     cl::Path* p = &poly;
-    if (crosses) {
+    if (b.y0 < y0 || b.y1 > y1) {
       if (!cut_to_band(poly, y0, y1, cut)) continue;
       p = &cut;
     }
     const std::uint32_t piece = cov.add(*p, f.mesh_of(f.polygons[k].face));
-    // add moved p into the piece when it was wholly visible.
-    if (crosses) out.crossing.push_back({static_cast<std::uint32_t>(k), p->empty()});
     if (piece == tiled_coverage::no_piece) continue;
     double area = 0;
     for (const cl::Path& r : cov.rings(piece)) area += cl::Area(r);
@@ -395,33 +393,12 @@ vector_drawing visible_drawing(const frame& f) {
   // Each face's pieces (strip by strip, each strip in walk order) and its colour: that of the
   // fragment showing most of it, over all strips (a sliver fragment's normal, from its rounded
   // corners, may be far off: lighting is per fragment).
-  // A polygon cut at strip lines and wholly visible in every strip it met counts as its whole
-  // mended self: its region is then as if it had not been cut (the cut's rounded crossings
-  // would only add vertices, and rounding slivers where they crowd).
-  std::vector<std::uint8_t> cut_state(f.polygons.size(), 0);  // 1 whole so far, 2 not whole
-  for (const strip_walk& w : walks)
-    for (const auto& [k, whole] : w.crossing)
-      cut_state[k] = std::max<std::uint8_t>(cut_state[k], whole ? 1 : 2);
-  std::vector<cl::Paths> uncut;  // piece_ref{coverage.size(), i}: the i-th of these
   std::vector<double> shown(f.polygons.size(), -1);  // -1: no visible piece
-  cover::t_junction_mender::scratch scratch;
   for (std::size_t s = 0; s < walks.size(); ++s)
     for (const strip_hit& h : walks[s].hits) {
-      face_accumulator& acc = faces[f.polygons[h.polygon].face];
-      if (cut_state[h.polygon] != 1) {
-        acc.pieces.push_back({static_cast<std::uint32_t>(s), h.piece});
-      } else if (shown[h.polygon] < 0) {  // its first piece: the whole polygon, once
-        cl::Paths whole(1, snapped.path(h.polygon));
-        mender.mend(whole[0], scratch);
-        acc.pieces.push_back({static_cast<std::uint32_t>(coverage.size()),
-                              static_cast<std::uint32_t>(uncut.size())});
-        uncut.push_back(std::move(whole));
-      }
+      faces[f.polygons[h.polygon].face].pieces.push_back({static_cast<std::uint32_t>(s), h.piece});
       shown[h.polygon] = std::max(shown[h.polygon], 0.0) + h.area;
     }
-  auto rings_of = [&](cover::piece_ref r) -> const cl::Paths& {
-    return r.strip == coverage.size() ? uncut[r.id] : coverage.rings(r);
-  };
   for (std::size_t k = f.polygons.size(); k-- > 0;) {
     if (shown[k] < 0) continue;
     const screen_polygon& p = f.polygons[k];
@@ -467,6 +444,8 @@ vector_drawing visible_drawing(const frame& f) {
   d.seconds.coverage = since(t0);
   t0 = clock::now();
 
+  std::vector<long long> strip_lines;  // sorted
+  for (std::size_t s = 1; s < coverage.size(); ++s) strip_lines.push_back(coverage.y0(s));
   // One region per face: the union of its pieces, rounding slivers dropped.
   std::vector<std::uint32_t> face_ids;
   for (std::uint32_t face = 0; face < face_end; ++face)
@@ -489,12 +468,12 @@ vector_drawing visible_drawing(const frame& f) {
     cl::Paths& merged = work[w].merged;
     std::vector<const cl::Path*>& convex_rings = work[w].convex_rings;
     merged.clear();
-    const cl::Paths& first = rings_of(acc.pieces[0]);
+    const cl::Paths& first = coverage.rings(acc.pieces[0]);
     // Convex pieces (most faces: the fragments of a face seen whole) meet along edges they
     // share exactly, mended: their union is their boundary. Otherwise Clipper's union.
     convex_rings.clear();
     for (const cover::piece_ref piece : acc.pieces) {
-      const cl::Paths& rs = rings_of(piece);
+      const cl::Paths& rs = coverage.rings(piece);
       if (rs.size() != 1 || !convex_ccw(rs[0])) {
         convex_rings.clear();
         break;
@@ -508,7 +487,7 @@ vector_drawing visible_drawing(const frame& f) {
       cl::Clipper& clipper = work[w].clipper;
       clipper.Clear();
       for (const cover::piece_ref piece : acc.pieces)
-        clipper.AddPaths(rings_of(piece), cl::ptSubject, true);
+        clipper.AddPaths(coverage.rings(piece), cl::ptSubject, true);
       clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
     }
     vector_path& r = slots[i];
@@ -518,7 +497,7 @@ vector_drawing visible_drawing(const frame& f) {
     const double n = static_cast<double>(acc.n);
     r.color = shaded(f, acc.color, acc.sx / n, acc.sy / n, acc.sz / n);
     for (cl::Path& ring : merged) {
-      remove_spikes(ring);
+      remove_spikes(ring, strip_lines);
       if (ring.size() >= 3 && mean_width(ring) >= min_region_width)
         r.rings.push_back(to_ring(ring));
     }
@@ -578,7 +557,7 @@ vector_drawing visible_drawing(const frame& f) {
       merged.clear();
       clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
       for (cl::Path& ring : merged) {
-        remove_spikes(ring);
+        remove_spikes(ring, strip_lines);
         if (ring.size() >= 3) unions[g].push_back(to_ring(ring));
       }
     });
