@@ -290,7 +290,7 @@ int nudged_winding(const cl::Path& r, const cl::IntPoint& q) {
     // Side of the nudged q: positive to the left of a -> b.
     long long side = (b.X - a.X) * (q.Y - a.Y) - (q.X - a.X) * (b.Y - a.Y);
     if (side == 0) side = b.Y != a.Y ? a.Y - b.Y : b.X - a.X;
-    // q.Y + e^2 lies strictly between integer ordinates exactly when q.Y does, or equals a.Y.
+    // Integer ordinates: q.Y + e^2 is above a.Y iff q.Y >= a.Y, below b.Y iff q.Y < b.Y.
     if (a.Y <= q.Y) {
       if (b.Y > q.Y && side > 0) ++w;
     } else if (b.Y <= q.Y && side < 0) {
