@@ -134,7 +134,7 @@ using exbsp_test::cross;
 using exbsp_test::dot;
 using exbsp_test::scale;
 using exbsp_test::sub;
-v3 unit(const v3& a) { return scale(1 / std::sqrt(dot(a, a)), a); }
+using exbsp_test::unit;
 v3 from(const view::point3& p) { return {p.x, p.y, p.z}; }
 v3 from(const view::vector3& p) { return {p.x, p.y, p.z}; }
 

@@ -40,8 +40,8 @@ using exbsp_test::cross;
 using exbsp_test::dot;
 using exbsp_test::scale;
 using exbsp_test::sub;
+using exbsp_test::unit;
 
-v3 unit(const v3& a) { return scale(1 / std::sqrt(dot(a, a)), a); }
 v3 triple(const json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
 
 std::string example_path(const std::string& name) {

@@ -31,12 +31,11 @@ using exbsp_test::dot;
 using exbsp_test::norm;
 using exbsp_test::scale;
 using exbsp_test::sub;
+using exbsp_test::unit;
 
 [[maybe_unused]] const bool fixed_seed = exbsp_test::fixed_rc_seed();
 
 const double pi = 3.14159265358979323846;
-
-vec3d unit(const vec3d& a) { return scale(1.0 / norm(a), a); }
 
 double qdist(const quaternion& a, const quaternion& b) {
   return std::sqrt((a.w - b.w) * (a.w - b.w) + (a.x - b.x) * (a.x - b.x) +

@@ -141,6 +141,8 @@ inline double norm(const std::array<double, 3>& a) { return std::sqrt(dot(a, a))
 inline double dist(const std::array<double, 3>& a, const std::array<double, 3>& b) {
   return norm(sub(a, b));
 }
+/// a / |a|.
+inline std::array<double, 3> unit(const std::array<double, 3>& a) { return scale(1 / norm(a), a); }
 
 // --- vector drawings ---------------------------------------------------------------------------
 
