@@ -8,13 +8,11 @@
 #include <polyclipping/clipper.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <future>
 #include <map>
 #include <optional>
-#include <thread>
 
 #include <exbsp/core/errors.h>
 #include <exbsp/view/pipeline.h>

@@ -763,9 +763,6 @@ class t_junction_mender::impl {
   std::size_t cell_index(long long x, long long y) const {
     return static_cast<std::size_t>(cell_y(y) * nx_ + cell_x(x));
   }
-  static long long floor_div(long long v, long long d) {
-    return v >= 0 ? v / d : -((-v + d - 1) / d);
-  }
 
   long long nx_, ny_;
   std::vector<std::size_t> start_;  ///< cell c's points: points_[start_[c], start_[c + 1])

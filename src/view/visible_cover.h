@@ -19,6 +19,11 @@
 
 namespace exbsp::view::cover {
 
+/// floor(v / d) for d > 0.
+inline long long floor_div(long long v, long long d) {
+  return v >= 0 ? v / d : -((-v + d - 1) / d);
+}
+
 /// A bounding box on the grid.
 struct bbox_i {
   long long x0, y0, x1, y1;

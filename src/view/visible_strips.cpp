@@ -54,10 +54,7 @@ long long crossing_x(const cl::IntPoint& a, const cl::IntPoint& b, long long y) 
     num = -num;
     den = -den;
   }
-  const long long twice = 2 * num + den;  // floor((2 num + den) / (2 den)) = round(num / den)
-  const long long d2 = 2 * den;
-  const long long fl = twice >= 0 ? twice / d2 : -((-twice + d2 - 1) / d2);
-  return p.X + fl;
+  return p.X + floor_div(2 * num + den, 2 * den);  // = round(num / den), halves up
 }
 
 bool cut_to_band(const cl::Path& p, long long y0, long long y1, cl::Path& out) {
