@@ -32,6 +32,10 @@ PY
 
 "$exbsp" render "$here/teaching_view_volume.json" -o "$out/teaching_view_volume.png"
 echo "wrote images/teaching_view_volume.png"
+for space in world vrc sheared opening_45 normalised; do
+  "$exbsp" render "$here/teaching_space_$space.json" -o "$out/teaching_space_$space.png"
+  echo "wrote images/teaching_space_$space.png"
+done
 for name in teaching_cyclic teaching_near; do
   "$exbsp" render "$here/$name.json" -o "$out/$name.png"
   without "$here/$name.json" "$tmp/$name.json"

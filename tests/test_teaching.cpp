@@ -22,6 +22,7 @@
 
 #include <exbsp/core/errors.h>
 #include <exbsp/view/image.h>
+#include <exbsp/view/png_io.h>
 #include <exbsp/view/stages.h>
 #include <exbsp/view/standard_pipeline.h>
 #include "scene/render.h"
@@ -451,4 +452,202 @@ TEST(Teaching, TheCommandLineExitsTwoAndWritesNothingForABadKey) {
   EXPECT_EQ(WEXITSTATUS(status), 2);
   EXPECT_FALSE(fs::exists(out));
   EXPECT_NE(exbsp_test::read_file(err).find("/teaching/near_plane"), std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------
+// The scene drawn in the spaces of the PHIGS normalisation ("view_volume" "space"). The step
+// matrices themselves are checked against the model's geometry in test_viewing.cpp
+// (PhigsNormalisation); here: that meshes, lines and the volume are moved by them, and the cut
+// before the projective step.
+
+namespace {
+
+json phigs_observer(bool perspective) {
+  return {{"phigs",
+           {{"vrp", {0.3, 0.4, 0}},
+            {"vpn", {0, 0, 1}},
+            {"vup", {0, 1, 0}},
+            {"prp", {0.2, -0.1, 6}},
+            {"window", {-2, 2.5, -2, 2.5}},
+            {"front", 1.5},
+            {"back", -1},
+            {"projection", perspective ? "perspective" : "parallel"}}}};
+}
+
+/// The stacked squares seen from outside the normalised cube, drawn in `space`.
+json in_space(const std::string& space, bool perspective = true) {
+  json doc = stacked_squares();
+  doc["camera"] = {{"eye", {3, -4, 3}}, {"look_at", {0, 0, 0}}, {"up", {0, 0, 1}}};
+  doc["teaching"] = {
+      {"view_volume",
+       {{"camera", phigs_observer(perspective)}, {"space", space}, {"axis_length", 0.5}}}};
+  return doc;
+}
+
+view::mat4 steps_up_to(bool perspective, const std::string& space) {
+  const json o = phigs_observer(perspective)["phigs"];
+  view::phigs_view p;
+  p.vrp = {0.3, 0.4, 0};
+  p.prp = {0.2, -0.1, 6};
+  p.umin = p.vmin = -2;
+  p.umax = p.vmax = 2.5;
+  p.front = o["front"];
+  p.back = o["back"];
+  p.perspective = perspective;
+  view::mat4 m = view::mat4::identity();
+  for (const view::phigs_step& step : view::phigs_normalisation(p)) {
+    m = step.m * m;
+    if (step.space == space) break;
+  }
+  return m;
+}
+
+}  // namespace
+
+TEST(TeachingSpace, MeshesAndLinesMoveByTheNormalisationAndTheVolumeBecomesTheCube) {
+  for (const bool perspective : {true, false}) {
+    SCOPED_TRACE(perspective ? "perspective" : "parallel");
+    const json doc = in_space("normalised", perspective);
+    const scene::scene s = scene::parse_scene(doc, temp_dir() + "/s.json");
+    ASSERT_TRUE(s.teaching.space_matrix.has_value());
+    EXPECT_EQ(s.teaching.space_keep.has_value(), perspective);
+    const view::mat4 m = steps_up_to(perspective, "normalised");
+    // Every vertex of the squares (all in front of the cut) is the step product's image.
+    const scene::scene plain =
+        scene::parse_scene(stacked_squares(), temp_dir() + "/s.json");  // same meshes, world
+    const triangle_soup world = scene::load_geometry(plain).soup;
+    const triangle_soup moved = scene::load_geometry(s).soup;
+    ASSERT_EQ(moved.vertices.size(), world.vertices.size());
+    ASSERT_EQ(moved.triangles.size(), world.triangles.size());
+    for (std::size_t k = 0; k < world.vertices.size(); ++k) {
+      const view::point3 q = view::transform_point(
+          m, {world.vertices[k][0], world.vertices[k][1], world.vertices[k][2]});
+      EXPECT_NEAR(moved.vertices[k][0], q.x, 1e-12);
+      EXPECT_NEAR(moved.vertices[k][1], q.y, 1e-12);
+      EXPECT_NEAR(moved.vertices[k][2], q.z, 1e-12);
+    }
+    // The view volume's lines end at the cube's corners, seen by the scene's camera; a
+    // perspective volume has no tip left (its centre of projection went to infinity).
+    const test_camera scene_camera(doc["camera"], doc["projection"], 160, 120);
+    const view::frame f = rendered(s);
+    std::size_t volume_ends = 0;
+    for (const double x : {-1.0, 1.0})
+      for (const double y : {-1.0, 1.0})
+        for (const double z : {-1.0, 1.0}) {
+          const auto w = scene_camera.window({x, y, z});
+          double best = 1e300;
+          for (const view::screen_line& l : f.lines)
+            if (l.color == view::rgb8{60, 60, 60})
+              for (const view::window_point& q : {l.a, l.b})
+                best = std::min(best, std::hypot(q.x - w[0], q.y - w[1]));
+          EXPECT_LT(best, 1e-6) << "corner (" << x << ", " << y << ", " << z << ")";
+          ++volume_ends;
+        }
+    EXPECT_EQ(volume_ends, 8u);
+    // 2 rectangles + 4 side edges, no tip edges, and two frames (VRC, world) of 3 axes.
+    EXPECT_EQ(s.teaching.view_volume_lines, 2u + 4u + 3u + 3u);
+  }
+}
+
+TEST(TeachingSpace, AffineSpacesMoveCurvesByTheirControlPoints) {
+  json doc = in_space("sheared");
+  doc["curves"] = {{{"bezier", {{0, 0, 0}, {1, 2, 0.5}, {2, 0, 1}}}, {"color", {10, 20, 30}}}};
+  doc["lines"] = {{{"points", {{0, 0, 0}, {1, 1, 1}}}}};
+  const scene::scene s = scene::parse_scene(doc, temp_dir() + "/s.json");
+  const view::mat4 m = steps_up_to(true, "sheared");
+  ASSERT_GE(s.curves.size(), 2u);
+  const std::vector<std::array<double, 3>> bezier = {{0, 0, 0}, {1, 2, 0.5}, {2, 0, 1}};
+  ASSERT_EQ(s.curves[0].control_points.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const view::point3 q = view::transform_point(m, {bezier[k][0], bezier[k][1], bezier[k][2]});
+    EXPECT_NEAR(s.curves[0].control_points[k][0], q.x, 1e-12);
+    EXPECT_NEAR(s.curves[0].control_points[k][1], q.y, 1e-12);
+    EXPECT_NEAR(s.curves[0].control_points[k][2], q.z, 1e-12);
+  }
+  const view::point3 end = view::transform_point(m, {1, 1, 1});
+  EXPECT_NEAR(s.curves[1].control_points[1][2], end.z, 1e-12);
+  EXPECT_EQ(s.line_count, s.curves.size() - 1);
+}
+
+TEST(TeachingSpace, TheProjectiveStepCutsWhatWouldWrapThroughInfinity) {
+  // A quad from n = -1 to n = 9 crosses PRP's plane (n = 6): kept up to the plane halfway
+  // between PRP and the front plane (n = 3.75), whose image is z = -1 + 2 (1/2.25 - 1/7) /
+  // (1/4.5 - 1/7).
+  const std::string quad = temp_dir() + "/long_quad.off";
+  std::ofstream(quad) << "OFF\n4 1 0\n-1 -1 -1\n1 -1 -1\n1 1 9\n-1 1 9\n4 0 1 2 3\n";
+  json doc = in_space("normalised");
+  doc["meshes"] = {{{"file", quad}}};
+  doc["lines"] = {{{"points", {{0, 0, -1}, {0, 0, 9}}}}};
+  const scene::scene s = scene::parse_scene(doc, temp_dir() + "/s.json");
+  const triangle_soup moved = scene::load_geometry(s).soup;
+  const double z_cut = -1 + 2 * (1 / 2.25 - 1 / 7.0) / (1 / 4.5 - 1 / 7.0);
+  ASSERT_GT(moved.triangles.size(), 0u);
+  double highest = -1e300;
+  for (const auto& p : moved.vertices) {
+    ASSERT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+    highest = std::max(highest, p[2]);
+  }
+  EXPECT_NEAR(highest, z_cut, 1e-9);
+  // The line is cut there too: one run, ending at the cut's image.
+  ASSERT_EQ(s.line_count, 1u + s.teaching.view_volume_lines);
+  const std::vector<vec3d>& line = s.curves[s.curves.size() - s.line_count].control_points;
+  ASSERT_EQ(line.size(), 2u);
+  EXPECT_NEAR(std::max(line[0][2], line[1][2]), z_cut, 1e-9);
+  // And it renders.
+  EXPECT_FALSE(rendered(s).polygons.empty());
+}
+
+TEST(TeachingSpace, WorldIsTheDefaultAndBadSpacesNameTheKey) {
+  json doc = stacked_squares();
+  doc["teaching"] = {{"view_volume", {{"camera", phigs_observer(true)}}}};
+  const view::image plain = rendered(scene::parse_scene(doc, temp_dir() + "/s.json")).picture;
+  doc["teaching"]["view_volume"]["space"] = "world";
+  const scene::scene world = scene::parse_scene(doc, temp_dir() + "/s.json");
+  EXPECT_FALSE(world.teaching.space_matrix.has_value());
+  EXPECT_TRUE(same_pixels(rendered(world).picture, plain));
+
+  const json look_at = {{"eye", {2, -6, 3}}, {"look_at", {0, 0, 0}}, {"up", {0, 0, 1}}};
+  const json lens = {{"type", "perspective"}, {"fovy_deg", 30}, {"near", 1}, {"far", 5}};
+  const std::string key = "/teaching/view_volume/space";
+  const auto error_of = [&](json d) {
+    std::string message;
+    const std::string k =
+        exbsp_test::error_key([&] { scene::parse_scene(d, temp_dir() + "/s.json"); }, &message);
+    const std::size_t at = message.find(k + ": ");
+    return k + " | " + (at == std::string::npos ? message : message.substr(at + k.size() + 2));
+  };
+  json d = in_space("normalised");
+  d["teaching"]["view_volume"]["space"] = "ndc";
+  EXPECT_EQ(error_of(d).rfind(key, 0), 0u) << error_of(d);
+  d["teaching"]["view_volume"]["space"] = 3;
+  EXPECT_EQ(error_of(d).rfind(key, 0), 0u) << error_of(d);
+  d = in_space("sheared");
+  d["teaching"]["view_volume"]["camera"] = look_at;
+  d["teaching"]["view_volume"]["projection"] = lens;
+  EXPECT_NE(error_of(d).find(key + " | the normalisation steps are those of the PHIGS"),
+            std::string::npos)
+      << error_of(d);
+  d = in_space("opening_45", false);
+  EXPECT_NE(error_of(d).find("no 45 degree opening"), std::string::npos) << error_of(d);
+  d = in_space("normalised");
+  d["curves"] = {{{"bezier", {{0, 0, 0}, {1, 2, 0.5}, {2, 0, 1}}}}};
+  EXPECT_NE(error_of(d).find(key + " | the perspective normalised space is a projective"),
+            std::string::npos)
+      << error_of(d);
+  // A textured mesh: its coordinates would not interpolate linearly after a projective map.
+  const std::string obj = temp_dir() + "/textured.obj", png = temp_dir() + "/texture.png";
+  std::ofstream(obj) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
+  view::write_png(view::image(2, 2, {200, 30, 30}), png);
+  d = in_space("normalised");
+  d["meshes"] = {{{"file", obj}, {"texture", {{"png", png}}}}};
+  EXPECT_NE(error_of(d).find(key + " | the perspective normalised space is a projective map, "
+                                   "under which a texture"),
+            std::string::npos)
+      << error_of(d);
+  d["teaching"]["view_volume"]["space"] = "opening_45";
+  EXPECT_NO_THROW(scene::parse_scene(d, temp_dir() + "/s.json"));
+  // A Bezier curve in the parallel normalised space (affine) is fine.
+  d = in_space("normalised", false);
+  d["curves"] = {{{"bezier", {{0, 0, 0}, {1, 2, 0.5}, {2, 0, 1}}}}};
+  EXPECT_NO_THROW(scene::parse_scene(d, temp_dir() + "/s.json"));
 }

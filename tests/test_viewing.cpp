@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -346,6 +347,155 @@ TEST(Phigs, ParallelWithOffCentrePrpIsOblique) {
   EXPECT_FALSE(o.oblique);
   EXPECT_LT(relative_difference(o.mapping, from_glm(glm::ortho(-3.0, 4.0, -2.0, 2.5, -2.0, 6.0))),
             1e-14);
+}
+
+/// The course's normalised coordinates of a VRC point (u, v, n), from the PHIGS model's own
+/// geometry rather than the step matrices: project it onto the view plane (through PRP, or
+/// along DOP = CW - PRP), place the projection in the window ([-1, 1] across it), and map its
+/// depth so that the front plane is +1 and the back plane -1 (linear in n for a parallel
+/// view, in 1 / (pn - n), the distance to the centre of projection, for a perspective one).
+std::array<double, 3> normalised_of_vrc(const view::phigs_view& p, double u, double v, double n) {
+  const double pu = p.prp.x, pv = p.prp.y, pn = p.prp.z;
+  const double cu = (p.umin + p.umax) / 2, cv = (p.vmin + p.vmax) / 2;
+  double uu, vv, z;
+  if (p.perspective) {
+    const double t = pn / (pn - n);  // from PRP towards the point, to the plane n = 0
+    uu = pu + t * (u - pu);
+    vv = pv + t * (v - pv);
+    const double a = 1 / (pn - p.front), b = 1 / (pn - p.back);  // z linear in 1 / (pn - n)
+    z = -1 + 2 * (1 / (pn - n) - b) / (a - b);
+  } else {
+    const double t = n / pn;  // along DOP = (cu - pu, cv - pv, -pn) to the plane n = 0
+    uu = u + t * (cu - pu);
+    vv = v + t * (cv - pv);
+    z = -1 + 2 * (n - p.back) / (p.front - p.back);
+  }
+  return {2 * (uu - cu) / (p.umax - p.umin), 2 * (vv - cv) / (p.vmax - p.vmin), z};
+}
+
+TEST(PhigsNormalisation, EachStepHasTheNotesPropertyAndTheWholeIsTheViewMapping) {
+  for (const bool perspective : {true, false}) {
+    SCOPED_TRACE(perspective ? "perspective" : "parallel");
+    const view::phigs_view p = sample_phigs(perspective);
+    const std::vector<view::phigs_step> steps = view::phigs_normalisation(p);
+    std::vector<std::string> names, spaces;
+    for (const view::phigs_step& s : steps) {
+      names.push_back(s.name);
+      if (!s.space.empty()) spaces.push_back(s.space);
+    }
+    const std::vector<std::string> perspective_names = {"T(-VRP)", "R",    "T(-PRP)", "SHper",
+                                                        "Sper",    "Sfar", "Mpp"};
+    const std::vector<std::string> parallel_names = {"T(-VRP)", "R",    "T(-PRP)",
+                                                     "SHpar",   "Tpar", "Spar"};
+    const std::vector<std::string> perspective_spaces = {"vrc", "sheared", "opening_45",
+                                                         "normalised"};
+    const std::vector<std::string> parallel_spaces = {"vrc", "sheared", "normalised"};
+    EXPECT_EQ(names, perspective ? perspective_names : parallel_names);
+    EXPECT_EQ(spaces, perspective ? perspective_spaces : parallel_spaces);
+    // The product up to each named space, and points given in VRC.
+    const auto up_to = [&](const std::string& space) {
+      mat4 m = mat4::identity();
+      for (const view::phigs_step& s : steps) {
+        m = s.m * m;
+        if (s.space == space) return m;
+      }
+      ADD_FAILURE() << "no space " << space;
+      return m;
+    };
+    // VRC axes from VPN and VUP, the notes' formulas: n = VPN / |VPN|, u = VUP x n / |..|.
+    const auto unit3 = [](view::vector3 a) { return (1 / view::length(a)) * a; };
+    const view::vector3 n_hat = unit3(p.vpn), u_hat = unit3(view::cross(p.vup, n_hat));
+    const view::vector3 v_hat = view::cross(n_hat, u_hat);
+    const auto world = [&](double u, double v, double n) {
+      return p.vrp + (u * u_hat + v * v_hat + n * n_hat);
+    };
+    const auto in = [&](const std::string& space, double u, double v, double n) {
+      return view::transform_point(up_to(space), world(u, v, n));
+    };
+    const auto expect_at = [](const view::point3& q, double x, double y, double z,
+                              const char* what) {
+      EXPECT_NEAR(q.x, x, 1e-12) << what;
+      EXPECT_NEAR(q.y, y, 1e-12) << what;
+      EXPECT_NEAR(q.z, z, 1e-12) << what;
+    };
+    // VRC: the point (u, v, n) has coordinates (u, v, n).
+    expect_at(in("vrc", 0.7, -1.2, 2.5), 0.7, -1.2, 2.5, "VRC point");
+    // Sheared: PRP at the origin, the window's centre on the -z axis at depth pn.
+    const double pn = p.prp.z, cu = (p.umin + p.umax) / 2, cv = (p.vmin + p.vmax) / 2;
+    expect_at(in("sheared", p.prp.x, p.prp.y, p.prp.z), 0, 0, 0, "PRP");
+    expect_at(in("sheared", cu, cv, 0), 0, 0, -pn, "window centre");
+    if (perspective) {
+      // 45 degrees: the window's corners on x = +-z, y = +-z.
+      for (const double u : {p.umin, p.umax})
+        for (const double v : {p.vmin, p.vmax}) {
+          const view::point3 q = in("opening_45", u, v, 0);
+          EXPECT_NEAR(std::fabs(q.x), -q.z, 1e-12);
+          EXPECT_NEAR(std::fabs(q.y), -q.z, 1e-12);
+        }
+    }
+    // Normalised: the view volume's corners at (+-1, +-1, +-1), and every point where the
+    // model's own geometry puts it.
+    const double dop_u = cu - p.prp.x, dop_v = cv - p.prp.y;
+    for (const double plane : {p.front, p.back})
+      for (const double u : {p.umin, p.umax})
+        for (const double v : {p.vmin, p.vmax}) {
+          // The corner on that plane: on the projector through the window's corner.
+          const double t = perspective ? (pn - plane) / pn : -plane / pn;
+          const double cu_ = perspective ? p.prp.x + t * (u - p.prp.x) : u + t * dop_u;
+          const double cv_ = perspective ? p.prp.y + t * (v - p.prp.y) : v + t * dop_v;
+          const view::point3 q = in("normalised", cu_, cv_, plane);
+          expect_at(q, u == p.umin ? -1 : 1, v == p.vmin ? -1 : 1, plane == p.front ? 1 : -1,
+                    "view volume corner");
+        }
+    const view::phigs_matrices pm = view::phigs_view_matrices(p);
+    std::mt19937_64 rng(20261127);
+    std::uniform_real_distribution<double> coord(-5, 5), depth(p.back - 3, p.front + 0.5);
+    for (int i = 0; i < 200; ++i) {
+      const double u = coord(rng), v = coord(rng), n = depth(rng);
+      const view::point3 q = in("normalised", u, v, n);
+      const std::array<double, 3> e = normalised_of_vrc(p, u, v, n);
+      EXPECT_NEAR(q.x, e[0], 1e-9 * (1 + std::fabs(e[0])));
+      EXPECT_NEAR(q.y, e[1], 1e-9 * (1 + std::fabs(e[1])));
+      EXPECT_NEAR(q.z, e[2], 1e-9 * (1 + std::fabs(e[2])));
+      // The pipeline's OpenGL NDC: the same x and y, z turned round.
+      const view::point3 gl = view::transform_point(pm.mapping * pm.orientation, world(u, v, n));
+      EXPECT_NEAR(gl.x, q.x, 1e-9 * (1 + std::fabs(q.x)));
+      EXPECT_NEAR(gl.y, q.y, 1e-9 * (1 + std::fabs(q.y)));
+      EXPECT_NEAR(gl.z, -q.z, 1e-9 * (1 + std::fabs(q.z)));
+    }
+  }
+  view::phigs_view flat = sample_phigs(true);
+  flat.front = -1;
+  flat.prp.z = 0;
+  EXPECT_THROW(view::phigs_normalisation(flat), usage_error);
+}
+
+TEST(PhigsNormalisation, TheMatricesCommandPrintsEveryStep) {
+  json d = base_scene();
+  d.erase("projection");
+  d["camera"] = json::parse(
+      R"({"phigs": {"vrp": [1, 2, 0.5], "vpn": [0.3, -1, 0.8], "vup": [0, 0, 1],
+          "prp": [1.5, -0.5, 9], "window": [-3, 4, -2, 2.5], "front": 2, "back": -6,
+          "projection": "perspective"}})");
+  const scene::scene_matrices m = scene::matrices_of(parse(d));
+  const scene::matrix_chain* chain = nullptr;
+  for (const scene::matrix_chain& c : m.chains)
+    if (c.name == "phigs_normalisation") chain = &c;
+  ASSERT_NE(chain, nullptr);
+  EXPECT_EQ(chain->formula, "N = Mpp * Sfar * Sper * SHper * T(-PRP) * R * T(-VRP) * p");
+  ASSERT_EQ(chain->factors.size(), 7u);
+  EXPECT_EQ(chain->factors.front().name, "Mpp");
+  // Sper's diagonal: 2 pn / (umax - umin), 2 pn / (vmax - vmin).
+  EXPECT_DOUBLE_EQ(chain->factors[2].m.m[0], 2 * 9 / 7.0);
+  EXPECT_DOUBLE_EQ(chain->factors[2].m.m[5], 2 * 9 / 4.5);
+  const std::string text = scene::matrices_text(m);
+  for (const char* name : {"Mpp (", "Sfar (", "Sper (", "SHper (", "T(-PRP) (", "R (", "T(-VRP) ("})
+    EXPECT_NE(text.find(name), std::string::npos) << name;
+  EXPECT_NE(text.find("now in the opening_45 space"), std::string::npos);
+  const json doc = json::parse(scene::matrices_json(m));
+  bool found = false;
+  for (const json& c : doc["chains"]) found = found || c["name"] == "phigs_normalisation";
+  EXPECT_TRUE(found);
 }
 
 TEST(Phigs, SceneFormAndBadInput) {

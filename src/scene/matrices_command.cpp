@@ -41,9 +41,38 @@ rigid_parts parts_of(const mat4& mv) {
   return {{u, v, w}, {e.x, e.y, e.z}};
 }
 
-}  // namespace
+/// The PHIGS normalisation step by step (view::phigs_normalisation), the last step leftmost.
+matrix_chain phigs_chain(const view::phigs_view& p) {
+  std::vector<view::phigs_step> steps = view::phigs_normalisation(p);
+  std::vector<named_matrix> factors;
+  std::string formula;
+  for (auto it = steps.rbegin(); it != steps.rend(); ++it) {
+    factors.push_back(
+        {it->name, it->meaning + (it->space.empty() ? "" : "; now in the " + it->space + " space"),
+         it->m});
+    formula += it->name + " * ";
+  }
+  return chain("phigs_normalisation", "N = " + formula + "p",
+               "the normalised view volume, the cube [-1,1]^3 with the front plane at z = +1 and "
+               "the back plane at -1 (OpenGL's NDC with z negated), after / w",
+               std::move(factors));
+}
 
-scene_matrices matrices_of(const scene& s) {
+/// A teaching scene drawn in an intermediate space: the matrix that moved it there.
+void add_space_chain(const scene& s, scene_matrices& out) {
+  if (!s.teaching.space_matrix) return;
+  out.chains.push_back(
+      chain("teaching_space", "p_drawn = N_" + s.teaching.space + " * p",
+            "the " + s.teaching.space +
+                " space of the observed PHIGS camera (/teaching/view_volume), "
+                "where the scene is drawn",
+            {{"N_" + s.teaching.space,
+              "the observed camera's normalisation up to the " + s.teaching.space + " space",
+              *s.teaching.space_matrix}}));
+}
+
+/// The chains of the scene's own view.
+scene_matrices view_chains(const scene& s) {
   const view::view_setup v = make_view_setup(s);
   scene_matrices out;
   out.scene = s.path;
@@ -66,8 +95,10 @@ scene_matrices matrices_of(const scene& s) {
                                "clip coordinates (the view volume is -w <= x, y, z <= w)",
                                {{"M", "view mapping: VRC to clip coordinates", s.phigs->mapping},
                                 {"O", "view orientation: world to VRC", s.phigs->orientation}}));
+    out.chains.push_back(phigs_chain(*s.phigs_parameters));
     out.notes.push_back(
-        "viewing, normalisation: a PHIGS camera defines its own projection (see phigs)");
+        "viewing, normalisation: a PHIGS camera defines its own projection (see phigs and "
+        "phigs_normalisation)");
     return out;
   }
   if (s.projection_matrix) {
@@ -135,6 +166,14 @@ scene_matrices matrices_of(const scene& s) {
               course::rotation_of(camera.basis)},
              {"Ttrans", "translate the camera's position to the origin",
               course::translation_to_origin(camera.eye)}}));
+  return out;
+}
+
+}  // namespace
+
+scene_matrices matrices_of(const scene& s) {
+  scene_matrices out = view_chains(s);
+  add_space_chain(s, out);
   return out;
 }
 

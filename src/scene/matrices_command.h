@@ -20,9 +20,10 @@ struct named_matrix {
 
 /// A chain of matrices whose product takes a world point to the chain's target.
 struct matrix_chain {
-  std::string name;                   ///< "opengl", "viewing", "normalisation" or "phigs"
-  std::string formula;                ///< e.g. "M = Mvp * Morth * Mp * Mv"
-  std::string target;                 ///< where the product takes a world point
+  std::string name;     ///< "opengl", "viewing", "normalisation", "phigs", "phigs_normalisation"
+                        ///< or "teaching_space"
+  std::string formula;  ///< e.g. "M = Mvp * Morth * Mp * Mv"
+  std::string target;   ///< where the product takes a world point
   std::vector<named_matrix> factors;  ///< in the formula's order, left to right
   view::mat4 product;                 ///< the factors multiplied
 };

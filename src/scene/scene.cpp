@@ -598,19 +598,33 @@ scene_geometry load_geometry(const scene& s) {
     }
     const bool identity = m.transform.m == view::mat4::identity().m;
     // Where a vertex that is too large comes from: the transform, or the mesh file itself.
-    const std::string culprit =
-        identity ? m.key + "/file"
-                 : (m.transform_key.empty() ? m.key + "/transform" : m.transform_key);
-    for (std::size_t k = 0; k < part.vertices.size(); ++k) {
-      vec3d p = part.vertices[k];
-      if (!identity) {
-        const view::hpoint h = m.transform * view::to_point(p);
-        p = h.w == 1 ? vec3d{h.x, h.y, h.z} : vec3d{h.x / h.w, h.y / h.w, h.z / h.w};
+    std::string culprit = identity
+                              ? m.key + "/file"
+                              : (m.transform_key.empty() ? m.key + "/transform" : m.transform_key);
+    const auto move_vertices = [&](const view::mat4& t, const std::string& key) {
+      for (std::size_t k = 0; k < part.vertices.size(); ++k) {
+        const view::hpoint h = t * view::to_point(part.vertices[k]);
+        const vec3d p = h.w == 1 ? vec3d{h.x, h.y, h.z} : vec3d{h.x / h.w, h.y / h.w, h.z / h.w};
         if (!(h.w != 0) || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-          throw scene_error(s.path, culprit,
+          throw scene_error(s.path, key,
                             "sends vertex " + std::to_string(k) + " of " + m.path + " to infinity");
         part.vertices[k] = p;
       }
+    };
+    if (!identity) move_vertices(m.transform, culprit);
+    if (s.teaching.space_matrix) {
+      // "teaching" "view_volume" "space": the scene after the observed camera's normalisation
+      // up to that step; a projective step keeps the side of its plane that holds the scene,
+      // cut exactly, so that no triangle wraps through infinity.
+      if (s.teaching.space_keep) {
+        const std::array<double, 4>& k = *s.teaching.space_keep;
+        part = clip_soup(part, {k});
+      }
+      culprit = "/teaching/view_volume/space";
+      move_vertices(*s.teaching.space_matrix, culprit);
+    }
+    for (std::size_t k = 0; k < part.vertices.size(); ++k) {
+      const vec3d p = part.vertices[k];
       // Finite in the world but too large once viewed (e.g. scaled by 1e308): say so here,
       // naming the key, rather than as a NaN deep inside the clipper, which forms sums such
       // as w + z and interpolates between vertices (hence the headroom of 16).

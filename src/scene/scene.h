@@ -74,11 +74,15 @@
 // near and far rectangles, the four side edges, the edges from its centre of projection to the
 // near corners (perspective), and its reference frame: the origin of its eye coordinates (the
 // eye; PHIGS: the VRP) with its x, y, z (u, v, n) axes in red, green and blue (teaching.cpp).
+// Its "space": "world" (default) | "vrc" | "sheared" | "opening_45" | "normalised" draws the
+// whole scene (meshes, curves, lines, the view volume and frames) after the observed PHIGS
+// camera's normalisation up to that step (view::phigs_normalisation; teaching.cpp).
 //
 // Vector output: "svg": {"mode": "visible" | "painter", "edges": "none" | "visible" |
 // "visible+hidden", "crease_deg": (0, 180]} (view/vector_drawing.h; SVG and PDF), default
 // visible regions without edges.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -162,6 +166,14 @@ struct teaching_spec {
   view::visibility_order painter = view::visibility_order::bsp;    ///< "painter", "depth_key"
   view::near_plane_rule near_plane = view::near_plane_rule::clip;  ///< "near_plane"
   std::size_t view_volume_lines = 0;  ///< "view_volume": its lines, the last ones of `curves`
+  /// "view_volume" "space" other than "world": its name, the product of the observed PHIGS
+  /// camera's normalisation steps up to it (view::phigs_normalisation), applied to every mesh
+  /// after its own transform, and, for the perspective "normalised" space (a projective map),
+  /// the world half-space A x + B y + C z + D >= 0 each mesh is cut to first (the side of the
+  /// plane halfway between the centre of projection and the front plane that holds the scene).
+  std::string space = "world";
+  std::optional<view::mat4> space_matrix;
+  std::optional<std::array<double, 4>> space_keep;
 };
 
 /// The camera forms of docs/contract.md "Scenes" ("camera").
@@ -185,6 +197,7 @@ struct scene {
   /// then the equivalent gluLookAt camera (view::camera_of): its eye orders the BSP.
   std::optional<view::mat4> view_matrix;
   std::optional<view::phigs_matrices> phigs;  ///< phigs form: its projection replaces "projection"
+  std::optional<view::phigs_view> phigs_parameters;  ///< phigs form: the parameters as given
   /// "projection": {"type": "matrix"} (glLoadMatrix): the given eye-to-clip matrix; `projection`
   /// then holds the kind it amounts to (frustum when its centre of projection is a point,
   /// orthographic when it is at infinity) and its window and near and far distances.

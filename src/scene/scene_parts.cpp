@@ -261,6 +261,7 @@ void parse_phigs(const reader& r, const json& cam, scene& s) {
     r.fail(key + "/" + what.substr(0, colon), what.substr(colon + 2));
   }
   s.phigs = m;
+  s.phigs_parameters = v;
   s.view_matrix = m.model_view;
   s.camera = view::camera_of(m.model_view, v.perspective ? v.prp.z : 1.0);
   projection_spec& ps = s.projection;

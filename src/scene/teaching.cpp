@@ -16,6 +16,7 @@
 // far rectangles. All of it becomes "lines" (curve_spec polylines, Liang–Barsky), drawn by the
 // curves stage in the scene camera's BSP order like any other line, in PNG, SVG and PDF.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <optional>
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include <exbsp/core/errors.h>
+#include <exbsp/view/phigs.h>
 #include <exbsp/view/projection.h>
 #include "scene/json_reader.h"
 #include "scene/scene_parts.h"
@@ -46,9 +48,15 @@ std::string prefixed_keys(std::string text) {
   return text;
 }
 
+/// The observed camera: its view setup and, for a PHIGS camera, its parameters.
+struct observed_camera {
+  view::view_setup v;
+  std::optional<view::phigs_view> phigs;
+};
+
 /// The observed camera's view setup: "camera" and "projection" of `vv` parsed as a scene's,
 /// with the scene's viewport; errors and warnings name /teaching/view_volume/...
-view::view_setup observed_view(const reader& r, const json& vv, const scene& s) {
+observed_camera observed_view(const reader& r, const json& vv, const scene& s) {
   json sub = json::object();
   sub["camera"] = r.require(vv, view_volume_key, "camera");
   if (const json* p = r.optional(vv, "projection")) sub["projection"] = *p;
@@ -78,17 +86,142 @@ view::view_setup observed_view(const reader& r, const json& vv, const scene& s) 
     if (colon == std::string::npos) continue;
     r.warn(view_volume_key + line.substr(0, colon), prefixed_keys(line.substr(colon + 2)));
   }
-  return v;
+  return {v, observed.phigs_parameters};
 }
 
 /// A world point from homogeneous h (w != 0).
 vec3d euclidean(const view::hpoint& h) { return {h.x / h.w, h.y / h.w, h.z / h.w}; }
 
+/// The space a "view_volume" "space" names: the partial product of the observed PHIGS
+/// camera's normalisation, and the half-space kept before a projective one.
+struct drawing_space {
+  std::string name = "world";
+  view::mat4 m = view::mat4::identity();
+  std::optional<std::array<double, 4>> keep;  ///< world plane: keep A x + B y + C z + D >= 0
+
+  bool is_world() const { return name == "world"; }
+  bool projective() const { return keep.has_value(); }
+
+  double side(const vec3d& p) const {
+    const std::array<double, 4>& k = *keep;
+    return k[0] * p[0] + k[1] * p[1] + k[2] * p[2] + k[3];
+  }
+
+  /// `p` in this space; fails naming `key` when the map sends it to infinity or beyond the
+  /// doubles.
+  vec3d map(const reader& r, const std::string& key, const vec3d& p) const {
+    const view::hpoint h = m * view::point3{p[0], p[1], p[2]};
+    const vec3d q = euclidean(h);
+    if (!(h.w > 0) || !std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
+      r.fail(key, "the " + name + " space sends a point of the scene to infinity");
+    return q;
+  }
+
+  /// A polyline in this space: cut to the kept half-space first when the map is projective
+  /// (a line through the plane of the centre of projection would wrap through infinity).
+  std::vector<std::vector<vec3d>> map_polyline(const reader& r, const std::string& key,
+                                               const std::vector<vec3d>& points) const {
+    std::vector<std::vector<vec3d>> runs(1);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (!projective() || side(points[i]) >= 0) {
+        runs.back().push_back(points[i]);
+      } else if (!runs.back().empty()) {
+        runs.emplace_back();
+      }
+      if (!projective() || i + 1 == points.size()) continue;
+      const double a = side(points[i]), b = side(points[i + 1]);
+      if ((a >= 0) == (b >= 0)) continue;
+      // The crossing, in double: the lines are drawn, not built into the tree.
+      const double t = a / (a - b);
+      vec3d x;
+      for (int c = 0; c < 3; ++c) x[c] = points[i][c] + t * (points[i + 1][c] - points[i][c]);
+      runs.back().push_back(x);
+      if (a >= 0) runs.emplace_back();
+    }
+    std::vector<std::vector<vec3d>> out;
+    for (std::vector<vec3d>& run : runs) {
+      if (run.empty() || (run.size() == 1 && points.size() > 1)) continue;
+      for (vec3d& p : run) p = map(r, key, p);
+      out.push_back(std::move(run));
+    }
+    return out;
+  }
+};
+
+/// The space named by `vv`'s "space" (default world).
+drawing_space space_of(const reader& r, const json& vv, const observed_camera& observed) {
+  const std::string key = std::string(view_volume_key) + "/space";
+  drawing_space d;
+  const json* sp = r.optional(vv, "space");
+  if (!sp) return d;
+  if (!sp->is_string()) r.fail(key, std::string("must be a string (got ") + sp->type_name() + ")");
+  d.name = sp->get<std::string>();
+  const char* names[] = {"world", "vrc", "sheared", "opening_45", "normalised"};
+  if (std::find(std::begin(names), std::end(names), d.name) == std::end(names))
+    r.fail(key, "unknown space \"" + d.name +
+                    "\" (expected world, vrc, sheared, opening_45, normalised)");
+  if (d.is_world()) return d;
+  if (!observed.phigs)
+    r.fail(key,
+           "the normalisation steps are those of the PHIGS view reference model: give the "
+           "observed camera as {\"phigs\": {...}}");
+  const view::phigs_view& p = *observed.phigs;
+  if (d.name == "opening_45" && !p.perspective)
+    r.fail(key,
+           "a parallel view has no 45 degree opening (spaces: world, vrc, sheared, "
+           "normalised)");
+  std::vector<view::phigs_step> steps;
+  try {
+    steps = view::phigs_normalisation(p);
+  } catch (const usage_error& e) {
+    r.fail(std::string(view_volume_key) + "/camera/phigs", e.what());
+  }
+  for (const view::phigs_step& step : steps) {
+    d.m = step.m * d.m;
+    if (step.space == d.name) break;
+  }
+  if (d.name == "normalised" && p.perspective) {
+    // Keep n <= (pn + F) / 2 in VRC: n(x) = (x - VRP) . n_hat.
+    const view::camera_basis b = view::look_direction_basis(-p.vpn, p.vup);
+    const double h = (p.prp.z + p.front) / 2;
+    const double offset = b.w.x * p.vrp.x + b.w.y * p.vrp.y + b.w.z * p.vrp.z + h;
+    d.keep = std::array<double, 4>{-b.w.x, -b.w.y, -b.w.z, offset};
+  }
+  return d;
+}
+
+/// Moves the scene's curves and lines into `d` (before the view volume's own lines are added).
+void map_curves(const reader& r, const drawing_space& d, scene& s) {
+  const std::string key = std::string(view_volume_key) + "/space";
+  std::vector<view::curve_spec> curves, lines;
+  const std::size_t first_line = s.curves.size() - s.line_count;
+  for (std::size_t i = 0; i < s.curves.size(); ++i) {
+    view::curve_spec& c = s.curves[i];
+    std::vector<view::curve_spec>& out = i < first_line ? curves : lines;
+    if (!c.polyline && c.control_points.size() > 2 && d.projective())
+      r.fail(key,
+             "the perspective normalised space is a projective map: it turns a Bezier curve "
+             "into a rational one, which exbsp does not draw (draw the curves in an affine "
+             "space: vrc, sheared or opening_45)");
+    if (c.polyline || d.projective()) {  // a segment or a point is a polyline too
+      for (std::vector<vec3d>& run : d.map_polyline(r, key, c.control_points))
+        out.push_back({std::move(run), c.color, c.polyline, c.clipper});
+    } else {  // affine: Bezier curves are affinely invariant, map the control points
+      for (vec3d& p : c.control_points) p = d.map(r, key, p);
+      out.push_back(std::move(c));
+    }
+  }
+  s.line_count = lines.size();
+  s.curves = std::move(curves);
+  s.curves.insert(s.curves.end(), lines.begin(), lines.end());
+}
+
 /// The lines of the observed view volume and its reference frame (notation at the top).
 void add_view_volume(const reader& r, const json& doc, scene& s) {
   const json& vv = r.object(*r.optional(doc, "view_volume"), view_volume_key);
   const std::string at = view_volume_key;
-  r.reject_unknown(vv, at, "view_volume", {"camera", "projection", "color", "axes", "axis_length"});
+  r.reject_unknown(vv, at, "view_volume",
+                   {"camera", "projection", "color", "axes", "axis_length", "space"});
   view::rgb8 color{60, 60, 60};
   if (const json* c = r.optional(vv, "color")) color = r.color(*c, at + "/color");
   bool axes = true;
@@ -100,7 +233,22 @@ void add_view_volume(const reader& r, const json& doc, scene& s) {
   double axis_length = 0;
   if (const json* l = r.optional(vv, "axis_length"))
     axis_length = r.positive(*l, at + "/axis_length");
-  const view::view_setup v = observed_view(r, vv, s);
+  const observed_camera observed = observed_view(r, vv, s);
+  const view::view_setup& v = observed.v;
+  const drawing_space space = space_of(r, vv, observed);
+  if (!space.is_world()) {
+    if (space.projective())
+      for (const mesh_spec& m : s.meshes)
+        if (m.texture)
+          r.fail(at + "/space",
+                 "the perspective normalised space is a projective map, under which a texture's "
+                 "coordinates no longer interpolate linearly: remove the texture of " +
+                     m.key);
+    map_curves(r, space, s);
+    s.teaching.space = space.name;
+    s.teaching.space_matrix = space.m;
+    s.teaching.space_keep = space.keep;
+  }
 
   const view::mat4 pm = v.projection * v.model_view;
   const auto back = [&](double x, double y, double z, double w) {
@@ -122,10 +270,12 @@ void add_view_volume(const reader& r, const json& doc, scene& s) {
     near_face[k] = corner(xs[k], ys[k], -1);
     far_face[k] = corner(xs[k], ys[k], 1);
   }
-  const auto add = [&](std::vector<vec3d> points, view::rgb8 c) {
-    s.curves.push_back({std::move(points), c, true, view::segment_clipper::liang_barsky});
-    ++s.line_count;
-    ++s.teaching.view_volume_lines;
+  const auto add = [&](const std::vector<vec3d>& points, view::rgb8 c) {
+    for (std::vector<vec3d>& run : space.map_polyline(r, at + "/space", points)) {
+      s.curves.push_back({std::move(run), c, true, view::segment_clipper::liang_barsky});
+      ++s.line_count;
+      ++s.teaching.view_volume_lines;
+    }
   };
   add({near_face[0], near_face[1], near_face[2], near_face[3], near_face[0]}, color);
   add({far_face[0], far_face[1], far_face[2], far_face[3], far_face[0]}, color);
@@ -133,12 +283,17 @@ void add_view_volume(const reader& r, const json& doc, scene& s) {
   // The centre of projection: a point (perspective) closes the pyramid.
   const view::hpoint cop = back(0, 0, 1, 0);
   const double size = std::max({std::abs(cop.x), std::abs(cop.y), std::abs(cop.z)});
-  if (std::abs(cop.w) > 1e-9 * size) {
+  if (std::abs(cop.w) > 1e-9 * size && !space.projective()) {  // the map sends it to infinity
     const vec3d c = euclidean(cop);
     for (int k = 0; k < 4; ++k) add({c, near_face[k]}, color);
   }
   if (!axes) return;
-  const std::optional<view::hpoint> origin_h = view::solve(v.model_view, {0, 0, 0, 1});
+  // A PHIGS camera's frame is VRC: origin VRP, axes u, v, n (its perspective model_view puts
+  // the eye coordinates' origin at PRP instead).
+  const std::optional<view::hpoint> origin_h =
+      observed.phigs
+          ? view::hpoint{observed.phigs->vrp.x, observed.phigs->vrp.y, observed.phigs->vrp.z, 1}
+          : view::solve(v.model_view, {0, 0, 0, 1});
   if (!origin_h || !(origin_h->w != 0))
     r.fail(at + "/camera", "the observed camera's viewing matrix is singular");
   const vec3d origin = euclidean(*origin_h);
@@ -154,6 +309,15 @@ void add_view_volume(const reader& r, const json& doc, scene& s) {
                                    (f[2] - n[2]) * (f[2] - n[2]));
   }
   const view::rgb8 axis_colors[3] = {{220, 40, 40}, {30, 150, 30}, {40, 80, 230}};
+  if (!space.is_world()) {
+    // The world's frame too, in the same hues but muted: the notes' pictures show both frames
+    // keeping their relative position through every step.
+    const view::rgb8 world_colors[3] = {{200, 140, 140}, {130, 185, 130}, {140, 155, 215}};
+    for (int i = 0; i < 3; ++i)
+      add({{0, 0, 0},
+           {i == 0 ? axis_length : 0, i == 1 ? axis_length : 0, i == 2 ? axis_length : 0}},
+          world_colors[i]);
+  }
   for (int i = 0; i < 3; ++i) {
     const std::optional<view::hpoint> d =
         view::solve(v.model_view, {i == 0 ? 1.0 : 0.0, i == 1 ? 1.0 : 0.0, i == 2 ? 1.0 : 0.0, 0});

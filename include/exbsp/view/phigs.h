@@ -21,6 +21,9 @@
 // The product M * O is the whole viewing transform. For the pipeline it is split into a rigid
 // model_view (perspective: T(-PRP) * O, eye at the origin; parallel: O) and a projection.
 #pragma once
+#include <string>
+#include <vector>
+
 #include <exbsp/core/export.h>
 #include <exbsp/view/camera.h>
 #include <exbsp/view/matrix.h>
@@ -53,5 +56,35 @@ struct EXBSP_EXPORT phigs_matrices {
 /// "front", "back", "vpn") for non-finite input, a zero VPN, VUP parallel to VPN, an empty
 /// window, F <= B, or a PRP on the wrong side (pn <= F for perspective, pn <= 0 for parallel).
 EXBSP_EXPORT phigs_matrices phigs_view_matrices(const phigs_view& p);
+
+/// One step of the PHIGS normalisation: its name in the course's notation, what it does, its
+/// matrix, and the name of the space the scene is in after it ("" between named spaces).
+struct EXBSP_EXPORT phigs_step {
+  std::string name, meaning;
+  mat4 m = mat4::identity();
+  std::string space;
+};
+
+/// The course's normalisation of a PHIGS view, step by step (seed 004, "VRC - NDC"): world to
+/// the normalised view volume, the cube [-1,1]^3 with the front plane at z = +1 and the back
+/// plane at z = -1 (right-handed like VRC: OpenGL's NDC with z negated), after the division
+/// by w. dop = CW - PRP, CW = ((umin+umax)/2, (vmin+vmax)/2, 0), pn = PRP's n.
+///   perspective: N = Mpp * Sfar * Sper * SHper * T(-PRP) * R * T(-VRP)
+///     T(-VRP), R (rows u, v, n; space "vrc"), T(-PRP) (the centre of projection at the
+///     origin), SHper = [[1,0,-dop_u/dop_n,0],[0,1,-dop_v/dop_n,0],[0,0,1,0],[0,0,0,1]] (the
+///     centre line onto the -z axis; space "sheared"), Sper = diag(2 pn / (umax-umin),
+///     2 pn / (vmax-vmin), 1, 1) (the side planes at 45 degrees, x = +-z, y = +-z; space
+///     "opening_45"), Sfar = uniform scale by 1 / (pn - B) (the back plane at z = -1, the
+///     front plane at z_min = -(pn - F) / (pn - B)), Mpp = [[1,0,0,0],[0,1,0,0],
+///     [0,0,(1-z_min)/(1+z_min),-2 z_min/(1+z_min)],[0,0,-1,0]] (the truncated pyramid to the
+///     cube; the centre of projection goes to infinity; space "normalised").
+///   parallel: N = Spar * Tpar * SHpar * T(-PRP) * R * T(-VRP)
+///     the same first steps and shear (DOP onto -z; space "sheared"), Tpar = T(0, 0,
+///     pn - (F + B) / 2) (the volume's centre to the origin), Spar = diag(2 / (umax-umin),
+///     2 / (vmax-vmin), 2 / (F-B), 1) (space "normalised").
+/// The product equals the view mapping times the orientation (phigs_view_matrices) up to the
+/// sign of z and a positive factor. Throws usage_error as phigs_view_matrices does, and
+/// ("prp") when PRP lies on the view plane (pn = 0: the steps have no 45 degree opening).
+EXBSP_EXPORT std::vector<phigs_step> phigs_normalisation(const phigs_view& p);
 
 }  // namespace exbsp::view
