@@ -697,48 +697,52 @@ class t_junction_mender::impl {
   /// Inserts into p's edges the vertices lying less than one unit from their insides.
   void mend(cl::Path& p, t_junction_mender::scratch& s) const {
     cl::Path& mended = s.mended;
-    std::vector<std::size_t>& cells = s.cells;
+    cl::Path& near = s.candidates;
     std::vector<std::pair<double, cl::IntPoint>>& on_edge = s.on_edge;
     mended.clear();
+    // Candidates: the indexed points in the cells met by the polygon's box grown by two units
+    // (one for the one-unit neighbourhood, one for rounding). A point less than one unit from
+    // an edge's inside lies in it. The cells of one row are contiguous in points_, so a row
+    // of cells is one range (two reads of start_, whose millions of entries miss the cache).
+    // Most polygons are a few pixels wide: their candidates are a handful of points, gathered
+    // once for all their edges. A large polygon gathers per edge, from the rows of cells met by
+    // pieces of at most one cell of the edge.
+    const bbox_i box = bbox_of(p);
+    const long long px0 = cell_x(box.x0 - 2), px1 = cell_x(box.x1 + 2);
+    const long long py0 = cell_y(box.y0 - 2), py1 = cell_y(box.y1 + 2);
+    const bool per_polygon = (px1 - px0 + 1) * (py1 - py0 + 1) <= 36;
+    if (per_polygon) {
+      near.clear();
+      gather(px0, px1, py0, py1, near);
+    }
     for (std::size_t i = 0; i < p.size(); ++i) {
       const cl::IntPoint a = p[i], b = p[(i + 1) % p.size()];
       mended.push_back(a);
       const double dx = static_cast<double>(b.X - a.X), dy = static_cast<double>(b.Y - a.Y);
       const double len2 = dx * dx + dy * dy, len = std::sqrt(len2);
       on_edge.clear();
-      cells.clear();
-      // The cells met by the edge's one-unit neighbourhood: the edge in pieces of at most one
-      // cell, each piece's box grown by two units (one for the neighbourhood, one for the
-      // rounding of the piece's ends). A cell is a pixel (at 2 pixels, four times the points per
-      // cell cost more than the cells saved).
-      const long long pieces = static_cast<long long>(len / cell) + 1;
-      for (long long s = 0; s < pieces; ++s) {
-        const double t0 = static_cast<double>(s) / static_cast<double>(pieces),
-                     t1 = static_cast<double>(s + 1) / static_cast<double>(pieces);
-        const bool whole = pieces == 1;  // most edges: the piece is the edge
-        const long long x0 = whole ? a.X : a.X + std::llround(t0 * dx),
-                        x1 = whole ? b.X : a.X + std::llround(t1 * dx);
-        const long long y0 = whole ? a.Y : a.Y + std::llround(t0 * dy),
-                        y1 = whole ? b.Y : a.Y + std::llround(t1 * dy);
-        const long long cx0 = cell_x(std::min(x0, x1) - 2), cx1 = cell_x(std::max(x0, x1) + 2);
-        const long long cy0 = cell_y(std::min(y0, y1) - 2), cy1 = cell_y(std::max(y0, y1) + 2);
-        for (long long cy = cy0; cy <= cy1; ++cy)
-          for (long long cx = cx0; cx <= cx1; ++cx)
-            cells.push_back(static_cast<std::size_t>(cy * nx_ + cx));
-      }
-      if (pieces > 1) {
-        std::sort(cells.begin(), cells.end());
-        cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-      }
-      for (const std::size_t c : cells)
-        for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) {
-          const cl::IntPoint& v = points_[k];
-          const double vx = static_cast<double>(v.X - a.X), vy = static_cast<double>(v.Y - a.Y);
-          const double along = vx * dx + vy * dy;
-          if (along <= 0 || along >= len2) continue;
-          if (std::abs(vx * dy - vy * dx) >= len) continue;  // one unit or more off the line
-          on_edge.push_back({along, v});
+      const auto test = [&](const cl::IntPoint& v) {
+        const double vx = static_cast<double>(v.X - a.X), vy = static_cast<double>(v.Y - a.Y);
+        const double along = vx * dx + vy * dy;
+        if (along <= 0 || along >= len2) return;
+        if (std::abs(vx * dy - vy * dx) >= len) return;  // one unit or more off the line
+        on_edge.push_back({along, v});
+      };
+      if (per_polygon) {
+        for (const cl::IntPoint& v : near) test(v);
+      } else {
+        near.clear();
+        const long long pieces = static_cast<long long>(len / cell) + 1;
+        for (long long k = 0; k < pieces; ++k) {
+          const double t0 = static_cast<double>(k) / static_cast<double>(pieces),
+                       t1 = static_cast<double>(k + 1) / static_cast<double>(pieces);
+          const long long x0 = a.X + std::llround(t0 * dx), x1 = a.X + std::llround(t1 * dx);
+          const long long y0 = a.Y + std::llround(t0 * dy), y1 = a.Y + std::llround(t1 * dy);
+          gather(cell_x(std::min(x0, x1) - 2), cell_x(std::max(x0, x1) + 2),
+                 cell_y(std::min(y0, y1) - 2), cell_y(std::max(y0, y1) + 2), near);
         }
+        for (const cl::IntPoint& v : near) test(v);  // repeats sort next to each other
+      }
       std::sort(on_edge.begin(), on_edge.end(), [](const auto& x, const auto& y) {
         return x.first != y.first
                    ? x.first < y.first
@@ -762,6 +766,14 @@ class t_junction_mender::impl {
   }
   std::size_t cell_index(long long x, long long y) const {
     return static_cast<std::size_t>(cell_y(y) * nx_ + cell_x(x));
+  }
+  /// Appends the points of the cells [cx0, cx1] x [cy0, cy1] to `out`.
+  void gather(long long cx0, long long cx1, long long cy0, long long cy1, cl::Path& out) const {
+    for (long long cy = cy0; cy <= cy1; ++cy) {
+      const auto row = static_cast<std::size_t>(cy * nx_);
+      out.insert(out.end(), points_.begin() + static_cast<std::ptrdiff_t>(start_[row + cx0]),
+                 points_.begin() + static_cast<std::ptrdiff_t>(start_[row + cx1 + 1]));
+    }
   }
 
   long long nx_, ny_;

@@ -113,7 +113,7 @@ class t_junction_mender {
 
   /// Working memory of mend: one per thread mending at the same time.
   struct scratch {
-    std::vector<std::size_t> cells;
+    ClipperLib::Path candidates;
     std::vector<std::pair<double, ClipperLib::IntPoint>> on_edge;
     ClipperLib::Path mended;
   };
