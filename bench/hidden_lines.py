@@ -128,13 +128,24 @@ def main():
     with open(seam_md) as f:
         lines.append(f.read().strip())
     lines.append("")
+    peers_lead = "**Peers** (bench/hlr_peers.py"
     if peers_ok:
-        lines += ["**Peers** (bench/hlr_peers.py: Open CASCADE's hidden-line removal through FreeCAD, and exbsp, "
+        lines += [peers_lead + ": Open CASCADE's hidden-line removal through FreeCAD, and exbsp, "
                   "on the same meshes and parallel views, each judged by the ray-cast oracle of "
                   "tests/support/hidden_line_oracle.h):", ""]
         with open(peers_md) as f:
             lines.append(f.read().strip())
         lines.append("")
+    else:
+        # Without FreeCAD here, keep the peers table of the last run that had it (it says its own
+        # commit and machine) rather than dropping it.
+        with open(os.path.join(here, "RESULTS.md")) as f:
+            text = f.read()
+        if BEGIN in text and END in text:
+            old = text[text.index(BEGIN):text.index(END)]
+            if peers_lead in old:
+                lines += ["(The peers table below is from an earlier run: hlr_peers.py did not run this "
+                          "time.)", "", old[old.index(peers_lead):].strip(), ""]
     lines.append(END)
     section = "\n".join(lines)
     replace_results_section(BEGIN, END, section)

@@ -56,6 +56,7 @@ const exbsp::cli::command_row commands[] = {
 int main(int argc, char** argv) {
   // First, before any GMP number exists: out of memory in GMP throws, never aborts.
   exbsp::install_gmp_memory_functions();
+  exbsp::cli::fix_malloc_mmap_threshold();
   exbsp::cli::sanitize_omp_num_threads();
   exbsp::cli::start_thread_pool();
   CLI::App app{

@@ -8,6 +8,9 @@
 
 #include <omp.h>
 #include <sys/resource.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <charconv>
@@ -19,6 +22,12 @@
 #include <vector>
 
 namespace exbsp::cli {
+
+void fix_malloc_mmap_threshold() {
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, 128 * 1024);
+#endif
+}
 
 std::uint64_t available_memory_bytes() {
   std::uint64_t available = 0;
