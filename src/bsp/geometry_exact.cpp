@@ -124,10 +124,30 @@ void exact_geometry::grow_chunks(std::uint32_t end) {
   }
 }
 
+namespace {
+
+/// The entry of `id` in a store with slots (1 + index; 0: none), or nullptr.
+template <class T>
+const T* stored(const std::deque<T>& store, const std::vector<std::uint32_t>& slot,
+                std::uint32_t id) {
+  return id < slot.size() && slot[id] != 0 ? &store[slot[id] - 1] : nullptr;
+}
+
+/// Keeps `made` as the entry of `id` unless one is there already (the first one stays).
+template <class T>
+const T& keep(std::deque<T>& store, std::vector<std::uint32_t>& slot, std::uint32_t id, T&& made) {
+  if (const T* known = stored(store, slot, id)) return *known;
+  if (id >= slot.size()) slot.resize(std::max<std::size_t>(id + 1, slot.size() * 3 / 2), 0);
+  store.push_back(std::move(made));
+  slot[id] = static_cast<std::uint32_t>(store.size());
+  return store.back();
+}
+
+}  // namespace
+
 const exact_geometry::exact_value* exact_geometry::find_exact(std::uint32_t id) const {
   const std::lock_guard<std::mutex> lock(exact_mutex_);
-  const auto it = exact_values_.find(id);
-  return it == exact_values_.end() ? nullptr : &it->second;
+  return stored(exact_store_, exact_slot_, id);
 }
 
 void exact_geometry::claim_block(scratch& sc) {
@@ -187,8 +207,7 @@ bool exact_geometry::add_source(const triangle_soup& soup, std::uint32_t i, frag
 const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane) const {
   {
     const std::lock_guard<std::mutex> lock(exact_mutex_);
-    const auto it = exact_planes_.find(plane);
-    if (it != exact_planes_.end()) return it->second;
+    if (const exact_plane* known = stored(plane_store_, plane_slot_, plane)) return *known;
   }
   // The vertices as integers A, B, C over 2^s: with N = (B-A)x(C-A), the orientation is
   // sign(N.(x 2^s - A)) = sign((N 2^s).x - N.A), all integers.
@@ -209,13 +228,15 @@ const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane)
   for (mpz_class& c : made.n) mpz_mul_2exp(c.get_mpz_t(), c.get_mpz_t(), shift);
   check_gmp_memory();  // GMP ran out of memory above (gmp_memory.h): stop here, consistent
   const std::lock_guard<std::mutex> lock(exact_mutex_);
-  return exact_planes_.emplace(plane, std::move(made)).first->second;  // the first one stays
+  return keep(plane_store_, plane_slot_, plane, std::move(made));
 }
 
 void exact_geometry::forget_exact_values() {
   const std::lock_guard<std::mutex> lock(exact_mutex_);
-  decltype(exact_values_)().swap(exact_values_);  // swap: clear() keeps the bucket array
-  decltype(exact_planes_)().swap(exact_planes_);
+  decltype(exact_store_)().swap(exact_store_);  // swap: clear() keeps memory
+  decltype(exact_slot_)().swap(exact_slot_);
+  decltype(plane_store_)().swap(plane_store_);
+  decltype(plane_slot_)().swap(plane_slot_);
 }
 
 const exact_geometry::exact_value* exact_geometry::value_of(std::uint32_t id,
@@ -293,7 +314,7 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
     {
       // Another thread may have made the same value meanwhile: the first one stays.
       const std::lock_guard<std::mutex> lock(exact_mutex_);
-      exact_values_.emplace(id, std::move(made));
+      keep(exact_store_, exact_slot_, id, std::move(made));
     }
     stack.pop_back();
   }

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <atomic>
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -227,8 +228,11 @@ class exact_geometry {
   /// rather than 8 bytes in every point and triangle.
   const exact_value* find_exact(std::uint32_t id) const;
   mutable std::mutex exact_mutex_;
-  /// (Node-based maps: a value's address never changes, so references to it stay valid.)
-  mutable std::unordered_map<std::uint32_t, const exact_value> exact_values_;
+  /// Values in a deque (a value's address never changes, so references to it stay valid),
+  /// found by point id in exact_slot_ (1 + the value's index; 0: none). A node-based map cost
+  /// about 40 bytes more per value, and a 1M-triangle assembly memoises hundreds of thousands.
+  mutable std::deque<exact_value> exact_store_;
+  mutable std::vector<std::uint32_t> exact_slot_;
   /// A tree loaded from a file (read_fragments) may make exact values of at most this many
   /// bits in all, a budget from the file's size: nested split points double their values' size
   /// at each level, so a small forged file could otherwise ask for unbounded time and memory.
@@ -236,7 +240,8 @@ class exact_geometry {
   std::uint64_t exact_budget_bits_ = std::numeric_limits<std::uint64_t>::max();
   std::string exact_budget_file_;
   mutable std::atomic<std::uint64_t> exact_bits_{0};
-  mutable std::unordered_map<std::uint32_t, const exact_plane> exact_planes_;
+  mutable std::deque<exact_plane> plane_store_;    ///< as exact_store_, by triangle id:
+  mutable std::vector<std::uint32_t> plane_slot_;  ///< 1 + index into plane_store_; 0: none
   std::atomic<point**> chunk_table_{nullptr};
   std::vector<std::unique_ptr<point*[]>> chunk_tables_;  ///< every table made (the last in use)
   std::vector<std::unique_ptr<point[]>> chunks_;         ///< guarded by claim_mutex_
