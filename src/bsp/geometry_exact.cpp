@@ -373,17 +373,22 @@ void exact_geometry::approximate(std::uint32_t id) {
   const point& pq = at(x.q);
   const std::uint32_t plane = x.plane;
   // Certified approximation: x = p + t (q - p), t = |fp| / (|fp| + |fq|) in (0, 1), with
-  // |fp - vp| <= ep and |fq - vq| <= eq from the filter. t is monotone in |fp| and |fq|, so
-  // [t_lo, t_hi] below holds the true t; the rest is the spread of p and q and rounding.
+  // |fp - vp| <= ep and |fq - vq| <= eq from the filter. p and q lie strictly on opposite
+  // sides (the split's exact classification), so |fp| lies in [max(|vp| - ep, 0), |vp| + ep]
+  // whatever the sign of vp, and likewise |fq|. t is monotone in |fp| and |fq|, so [t_lo,
+  // t_hi] below holds the true t; the rest is the spread of p and q and rounding. An endpoint
+  // too close to the plane for its sign to be certified still gives a narrow [t_lo, t_hi]
+  // when the other one is far: t is then near 0 or 1 (on a 1M-triangle assembly about one
+  // constructed point in six is such, and each exact value made here stays memoised).
   double vp, ep, vq, eq;
   bool certified = false;
   const fast_plane_core fp = filter(plane);
-  if (fast_eval(fp, pp.c, pp.r, vp, ep) && fast_eval(fp, pq.c, pq.r, vq, eq) &&
-      std::fabs(vp) > ep && std::fabs(vq) > eq && (vp > 0) != (vq > 0)) {
+  if (fast_eval(fp, pp.c, pp.r, vp, ep) && fast_eval(fp, pq.c, pq.r, vq, eq)) {
     const double alpha = std::fabs(vp), beta = std::fabs(vq);
     const double t = alpha / (alpha + beta);
-    const double t_lo = (alpha - ep) / ((alpha - ep) + (beta + eq));
-    const double t_hi = (alpha + ep) / ((alpha + ep) + (beta - eq));
+    const double alpha_lo = std::max(alpha - ep, 0.0), beta_lo = std::max(beta - eq, 0.0);
+    const double t_lo = alpha_lo / (alpha_lo + (beta + eq));
+    const double t_hi = (alpha + ep) / ((alpha + ep) + beta_lo);
     const double dt = std::max(t_hi - t, t - t_lo) * (1 + 8 * u) + 16 * u;
     if (dt < 1e-3 && std::isfinite(dt)) {
       double r = 0;
