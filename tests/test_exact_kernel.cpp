@@ -127,6 +127,57 @@ TEST(ExactKernel, on_and_one_ulp_off_a_crossing_plane_the_exact_fallback_decides
   }
 }
 
+TEST(ExactKernel, a_split_next_to_an_endpoint_too_close_to_call_is_still_certified) {
+  // One vertex of the fragment lies within the filter's error bound of the cutting plane
+  // z = 0 (offsets from 1e-300 to 1e-12, above or below), the other two far on the other
+  // side: the split points next to it are approximated without their exact values
+  // (geometry_exact.cpp, approximate). Each split point's exact position (Gmpq) must lie
+  // within its certified radius of its centre, in every coordinate, and its side of planes a
+  // few ulps around it must be the exact one.
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> unit(0.05, 0.95), exponent(-300, -12);
+  const std::array<vec3d, 3> z0{{{-9, -9, 0}, {9, -9, 0}, {0, 9, 0}}};
+  int certified_points = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const double sign = trial % 2 == 0 ? 1 : -1;
+    const double near = sign * std::pow(10.0, exponent(rng));
+    std::array<vec3d, 3> t{{{unit(rng), unit(rng), near},
+                            {unit(rng), unit(rng), -sign * unit(rng)},
+                            {unit(rng), unit(rng), -sign * unit(rng)}}};
+    std::rotate(t.begin(), t.begin() + trial % 3, t.end());  // the near vertex anywhere
+    const vec3d c = t[(3 - trial % 3) % 3];                  // where it went
+    std::vector<std::array<vec3d, 3>> probes;
+    for (int k = -2; k <= 2; ++k) {
+      double x = c[0];
+      for (int i = 0; i < std::abs(k); ++i) x = std::nextafter(x, k > 0 ? 2.0 : -2.0);
+      probes.push_back({{{x, -5, -5}, {x, 5, -5}, {x, 0, 5}}});
+    }
+    for (const double z : {-1e-30, 1e-30}) probes.push_back({{{-9, -9, z}, {9, -9, z}, {0, 9, z}}});
+    std::vector<std::array<vec3d, 3>> triangles{t, z0};
+    triangles.insert(triangles.end(), probes.begin(), probes.end());
+    geometry_fixture g(soup_of(triangles));
+    for (const auto& piece : g.split(g.fragments[0], 1))
+      for (int k = 0; k < 3; ++k) {
+        const auto exact = g.geom.to_exact(piece)[static_cast<std::size_t>(k)];
+        const std::uint32_t id = piece.v[static_cast<std::size_t>(k)];
+        const vec3d& centre = g.geom.centre(id);
+        const double radius = g.geom.radius(id);
+        for (int i = 0; i < 3; ++i) {
+          const CGAL::Gmpq off = CGAL::Gmpq(exact[static_cast<std::size_t>(i)]) -
+                                 CGAL::Gmpq(centre[static_cast<std::size_t>(i)]);
+          EXPECT_LE(CGAL::abs(off), CGAL::Gmpq(radius))
+              << "trial " << trial << ", coordinate " << i << ": " << exact[i] << " vs centre "
+              << centre[i] << " radius " << radius;
+        }
+        certified_points += exact[2] == "0" && radius < 1e-10;
+        for (std::uint32_t j = 0; j < probes.size(); ++j)
+          EXPECT_EQ(g.geom.sign(2 + j, piece, k), reference_sign(probes[j], exact))
+              << "trial " << trial << ", probe " << j;
+      }
+  }
+  EXPECT_GT(certified_points, 0);
+}
+
 TEST(ExactKernel, the_filter_answers_far_planes_without_fallback) {
   const std::array<vec3d, 3> far{{{-9, -9, 7}, {9, -9, 7}, {0, 9, 7}}};
   geometry_fixture g(soup_of({fragment_triangle, cutter, far}));
