@@ -228,4 +228,26 @@ TEST(Traversal, WalkGivesTheOrderForEyesOnPlanesAndEveryKernel) {
   }
 }
 
+TEST(Traversal, EveryKernelShowsANodesPlaneAsItsInputTrianglesDoubles) {
+  // The points come from the kernel's own copy of the input (no per-node table): each
+  // kernel must give back exactly the input doubles, -0 included.
+  exbsp::triangle_soup soup = grid_soup(30, 5);
+  soup.vertices[0] = {-0.0, soup.vertices[0][1], soup.vertices[0][2]};
+  for (const std::string& name : exbsp::kernel_names()) {
+    exbsp::build_options o;
+    o.kernel = exbsp::parse_kernel(name);
+    const bsp tree = bsp::build(soup, o);
+    for (std::size_t k = 0; k < tree.node_count(); ++k) {
+      const bsp_node n = tree.node(k);
+      const exbsp::soup_triangle& t = soup.triangles[n.plane_face];
+      for (int c = 0; c < 3; ++c)
+        for (int i = 0; i < 3; ++i) {
+          const double want = soup.vertices[t.v[c]][i], got = n.plane[c][i];
+          EXPECT_TRUE(want == got && std::signbit(want) == std::signbit(got))
+              << name << " node " << k << " corner " << c << " coordinate " << i;
+        }
+    }
+  }
+}
+
 }  // namespace

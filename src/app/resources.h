@@ -36,7 +36,8 @@ void sanitize_omp_num_threads();
 /// Fixes glibc's mmap threshold at its initial 128 KiB. glibc raises the threshold each time a
 /// large block allocated by mmap is freed, so that the build's later large vectors (fragment
 /// lists, exact-point chunks) come from the heap, whose freed holes stay resident. `exbsp
-/// build` of bench/assembly.py's assemblies, side by side: 316,935 triangles peaked at 230 MB
+/// build --json` (peak_rss_bytes, the peak at the build's end) of bench/assembly.py's
+/// assemblies, side by side: 316,935 triangles peaked at 230 MB
 /// with the moving threshold and 184 MB with a fixed one; 1,000,622 triangles (3,515,359
 /// fragments) at 725 MB and 606 MB (206 and 172 B per fragment), the build times the same. A
 /// no-op without glibc; the library leaves the allocator alone (the command line's policy).

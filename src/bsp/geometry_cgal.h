@@ -99,7 +99,14 @@ class cgal_geometry {
 
   explicit cgal_geometry(const triangle_soup& soup) {
     sources_.resize(soup.triangles.size());
+    source_doubles_.resize(soup.triangles.size());
     fast_.resize(soup.triangles.size());
+  }
+
+  /// The three input points of triangle `plane`, the input's doubles (-0 included, which the
+  /// exact kernels' numbers do not keep).
+  const std::array<vec3d, 3>& source_points(std::uint32_t plane) const {
+    return source_doubles_[plane];
   }
 
   /// Records input triangle i of `soup`; returns false (and no fragment) when it is exactly
@@ -112,6 +119,7 @@ class cgal_geometry {
     for (int k = 0; k < 3; ++k) {
       const vec3d& v = soup.vertices[st.v[k]];
       sources_[i][k] = point(v[0], v[1], v[2]);
+      source_doubles_[i][static_cast<std::size_t>(k)] = v;
     }
     // Epick's collinear predicate is exact on double input: every kernel skips the same ones.
     using E = CGAL::Epick;
@@ -229,6 +237,7 @@ class cgal_geometry {
 
  private:
   std::vector<triangle> sources_;
+  std::vector<std::array<vec3d, 3>> source_doubles_;  ///< the same, as the input's doubles
   std::vector<fast_plane> fast_;
 };
 

@@ -94,6 +94,11 @@ class exact_geometry {
   int sign(std::uint32_t plane, const fast_plane_core& fp, const fragment& f, int k) const {
     return point_sign_of(plane, fp, f.v[k]);
   }
+  /// The three input points of triangle `plane` (its vertices' doubles).
+  std::array<vec3d, 3> source_points(std::uint32_t plane) const {
+    const std::array<std::uint32_t, 3>& s = sources_[plane];
+    return {at(s[0]).c, at(s[1]).c, at(s[2]).c};
+  }
   /// Whether point `id` is one of the vertices of input triangle `plane` (so lies in its
   /// plane): one 12-byte load.
   bool is_vertex_of(std::uint32_t plane, std::uint32_t id) const {

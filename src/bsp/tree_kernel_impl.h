@@ -43,14 +43,10 @@ class bsp_kernel_impl final : public bsp_impl {
                options.sampled_split_weight,
                options.keep_input ? soup : triangle_soup{}},
         has_input_(options.keep_input),
-        tree_(soup, options) {
-    init_planes(soup);
-  }
+        tree_(soup, options) {}
   /// A saved tree (tree_file.h).
   bsp_kernel_impl(tree_file::reader& in, tree_file::common_part&& common)
-      : input_(std::move(common)), tree_(input_, in) {
-    init_planes(input_.soup);
-  }
+      : input_(std::move(common)), tree_(input_, in) {}
   /// An insert into `old` (bsp::inserted): `soup` is old's input followed by the new
   /// triangles.
   bsp_kernel_impl(const bsp_kernel_impl& old, triangle_soup&& soup, const insert_options& options)
@@ -60,9 +56,7 @@ class bsp_kernel_impl final : public bsp_impl {
                old.input_.sampled_samples,
                old.input_.sampled_split_weight,
                std::move(soup)},
-        tree_(old.tree_, input_.soup, options, typename basic_bsp_tree<G>::inserting{}) {
-    init_planes(input_.soup);
-  }
+        tree_(old.tree_, input_.soup, options, typename basic_bsp_tree<G>::inserting{}) {}
   std::unique_ptr<bsp_impl> inserted(const triangle_soup& added,
                                      const insert_options& options) const override {
     require_input("insert");
@@ -141,7 +135,7 @@ class bsp_kernel_impl final : public bsp_impl {
     const auto& nd = tree_.nodes()[k];
     return {static_cast<std::uint32_t>(k),
             nd.plane_source,
-            planes_[k],
+            tree_.geometry().source_points(nd.plane_source),
             nd.first,
             nd.count,
             nd.negative,
@@ -163,14 +157,6 @@ class bsp_kernel_impl final : public bsp_impl {
   }
 
  private:
-  void init_planes(const triangle_soup& soup) {
-    planes_.reserve(tree_.nodes().size());
-    for (const auto& nd : tree_.nodes()) {
-      const soup_triangle& t = soup.triangles[nd.plane_source];
-      planes_.push_back({soup.vertices[t.v[0]], soup.vertices[t.v[1]], soup.vertices[t.v[2]]});
-    }
-  }
-
   /// usage_error unless the tree kept its input (build_options::keep_input).
   void require_input(const char* function) const {
     if (!has_input_)
@@ -182,7 +168,6 @@ class bsp_kernel_impl final : public bsp_impl {
   tree_file::common_part input_;  ///< the soup and options, for saving (its stats are unused)
   bool has_input_ = true;         ///< input_.soup is the input (build_options::keep_input)
   basic_bsp_tree<G> tree_;
-  std::vector<std::array<vec3d, 3>> planes_;  ///< per node: its plane's three input points
 };
 
 }  // namespace exbsp
