@@ -7,6 +7,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <random>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "bsp/geometry_exact.h"
+#include "bsp/packed_integers.h"
 #include "support/generators.h"
 #include "support/test_helpers.h"
 
@@ -437,6 +439,42 @@ TEST(ExactKernel, equals_epeck_and_gmpq_on_corpus_meshes) {
     expect_exact_equals(exbsp::kernel_id::epeck, soup, "sampled", 0, name);
   }
   EXBSP_NEED_CORPUS(missing.empty(), missing);
+}
+
+// The memoised values and planes are kept packed (four integers in one block of limbs): each
+// integer reads back as it was, whatever its sign and size, zeros and a single limb too, and
+// the block holds exactly the limbs in use.
+TEST(ExactKernel, packed_integers_read_back_as_they_were_stored) {
+  std::mt19937_64 rng(20261127);
+  gmp_randclass bits(gmp_randinit_default);
+  bits.seed(20261127);
+  for (int round = 0; round < 500; ++round) {
+    std::array<mpz_class, 4> v;
+    std::size_t limbs = 0;
+    for (mpz_class& z : v) {
+      switch (rng() % 5) {
+        case 0:
+          z = 0;
+          break;
+        case 1:
+          z = static_cast<long>(rng() % 1000) - 500;
+          break;
+        default:
+          z = bits.get_z_bits(static_cast<mp_bitcnt_t>(rng() % 2000));
+          break;
+      }
+      if (rng() % 2) z = -z;
+      limbs += mpz_size(z.get_mpz_t());
+    }
+    exbsp::detail::packed_integers packed(exbsp::detail::views_of(v[0], v[1], v[2], v[3]));
+    EXPECT_EQ(packed.limb_bytes(), limbs * sizeof(mp_limb_t));
+    const exbsp::detail::integer_views back = packed.views();
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(mpz_class(back[k]), v[static_cast<std::size_t>(k)]) << k;
+    // A moved packing keeps its limbs where they were (the kernel's stores move values in).
+    const exbsp::detail::packed_integers moved(std::move(packed));
+    for (int k = 0; k < 4; ++k)
+      EXPECT_EQ(mpz_cmp(moved.views()[k], v[static_cast<std::size_t>(k)].get_mpz_t()), 0);
+  }
 }
 
 TEST(ExactKernel, is_the_default_and_identical_for_1_and_2_threads) {

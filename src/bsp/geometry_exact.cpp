@@ -2,6 +2,7 @@
 // exbsp's exact geometry: point table, certified approximations, exact fallback.
 // Notation: see geometry_exact.h. u = 2^-53 (unit roundoff).
 #include "bsp/geometry_exact.h"
+#include "bsp/packed_integers.h"
 #include "bsp/parallel.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -23,16 +24,16 @@ namespace exbsp {
 /// fraction is not reduced (only common factors of two are removed): a gcd per operation
 /// was most of the exact fallback's time (pinion: GMP's gcd 12% of the build). Reduced
 /// rationals are made once per point, at output.
+/// Kept packed (bsp/packed_integers.h): X, Y, Z, W; views()[3] is w.
 struct exact_geometry::exact_value {
-  std::array<mpz_class, 3> x;
-  mpz_class w;
+  detail::packed_integers xw;
 };
 /// Plane of an input triangle (a, b, c) in integers: f(x) = n.x - d is a positive multiple of
 /// the orientation determinant (a, b, c, x) (plane_of: the vertices as integers over one
 /// power of two). So for a point X / w (w > 0), orientation(a, b, c, X / w) = sign(n.X - d w).
+/// Kept packed: views() are n[0], n[1], n[2], d.
 struct exact_geometry::exact_plane {
-  std::array<mpz_class, 3> n;
-  mpz_class d;
+  detail::packed_integers nd;
 };
 
 namespace {
@@ -220,13 +221,14 @@ const exact_geometry::exact_plane& exact_geometry::plane_of(std::uint32_t plane)
     e1[j] = v[3 + j] - v[j];
     e2[j] = v[6 + j] - v[j];
   }
-  exact_plane made;
-  made.n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-  made.n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-  made.n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-  made.d = made.n[0] * v[0] + made.n[1] * v[1] + made.n[2] * v[2];
-  for (mpz_class& c : made.n) mpz_mul_2exp(c.get_mpz_t(), c.get_mpz_t(), shift);
+  std::array<mpz_class, 3> n;
+  n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  const mpz_class d = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+  for (mpz_class& c : n) mpz_mul_2exp(c.get_mpz_t(), c.get_mpz_t(), shift);
   check_gmp_memory();  // GMP ran out of memory above (gmp_memory.h): stop here, consistent
+  exact_plane made{detail::packed_integers(detail::views_of(n[0], n[1], n[2], d))};
   const std::lock_guard<std::mutex> lock(exact_mutex_);
   return keep(plane_store_, plane_slot_, plane, std::move(made));
 }
@@ -242,19 +244,27 @@ void exact_geometry::forget_exact_values() {
 const exact_geometry::exact_value* exact_geometry::value_of(std::uint32_t id,
                                                             exact_value& vertex) const {
   if (id >= inputs_) return find_exact(id);
-  vertex.w = 1;
-  mpz_mul_2exp(vertex.w.get_mpz_t(), vertex.w.get_mpz_t(),
-               to_integers(&at(id).c, 1, vertex.x.data()));
+  std::array<mpz_class, 3> x;
+  mpz_class w = 1;
+  mpz_mul_2exp(w.get_mpz_t(), w.get_mpz_t(), to_integers(&at(id).c, 1, x.data()));
+  vertex.xw = detail::packed_integers(detail::views_of(x[0], x[1], x[2], w));
   return &vertex;
 }
 
 namespace {
 
 /// Bits of the integers of an exact value or plane (three coordinates and w or d).
-std::uint64_t bits_of(const std::array<mpz_class, 3>& x, const mpz_class& w) {
-  std::uint64_t b = mpz_sizeinbase(w.get_mpz_t(), 2);
-  for (const mpz_class& c : x) b += mpz_sizeinbase(c.get_mpz_t(), 2);
+std::uint64_t bits_of(const detail::integer_views& v) {
+  std::uint64_t b = 0;
+  for (int k = 0; k < 4; ++k) b += mpz_sizeinbase(v[k], 2);
   return b;
+}
+
+/// F = n . X - d w of a plane (n, d) and a point X / w: plane and point as views.
+void plane_at(mpz_ptr out, const detail::integer_views& pl, const detail::integer_views& x) {
+  mpz_mul(out, pl[3], x[3]);
+  mpz_neg(out, out);
+  for (int j = 0; j < 3; ++j) mpz_addmul(out, pl[j], x[j]);
 }
 
 }  // namespace
@@ -284,12 +294,11 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
     // q = Q / wq and Fp = n.P - d wp (= wp fp), Fq = n.Q - d wq, multiplying through by wp wq:
     // x = (Fp Q - Fq P) / (Fp wq - Fq wp). Fp and Fq have strictly opposite signs, so the
     // denominator is not zero; its sign is Fp's, made positive.
-    exact_value made;
-    const exact_plane& pl = plane_of(pt.plane);
+    const detail::integer_views pl = plane_of(pt.plane).nd.views();
+    const detail::integer_views P = ep->xw.views(), Q = eq->xw.views();
     if (exact_budget_bits_ != std::numeric_limits<std::uint64_t>::max()) {
       // The value's size is about the sum of its operands' (see below): refuse before making it.
-      const std::uint64_t estimate =
-          bits_of(pl.n, pl.d) + bits_of(ep->x, ep->w) + bits_of(eq->x, eq->w);
+      const std::uint64_t estimate = bits_of(pl) + bits_of(P) + bits_of(Q);
       if (exact_bits_.load(std::memory_order_relaxed) + estimate > exact_budget_bits_)
         throw input_error(
             exact_budget_file_, 0,
@@ -297,20 +306,25 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
                 std::to_string(exact_budget_bits_ / 8 / 1024 / 1024) +
                 " MB (the budget of a file of its size); exbsp writes no such file");
     }
-    const mpz_class Fp =
-        pl.n[0] * ep->x[0] + pl.n[1] * ep->x[1] + pl.n[2] * ep->x[2] - pl.d * ep->w;
-    const mpz_class Fq =
-        pl.n[0] * eq->x[0] + pl.n[1] * eq->x[1] + pl.n[2] * eq->x[2] - pl.d * eq->w;
-    for (int j = 0; j < 3; ++j) made.x[j] = Fp * eq->x[j] - Fq * ep->x[j];
-    made.w = Fp * eq->w - Fq * ep->w;
-    if (sgn(made.w) < 0) {
-      for (mpz_class& c : made.x) c = -c;
-      made.w = -made.w;
+    mpz_class Fp, Fq;
+    plane_at(Fp.get_mpz_t(), pl, P);
+    plane_at(Fq.get_mpz_t(), pl, Q);
+    std::array<mpz_class, 3> x;
+    mpz_class w;
+    for (int j = 0; j < 4; ++j) {
+      mpz_ptr out = j < 3 ? x[static_cast<std::size_t>(j)].get_mpz_t() : w.get_mpz_t();
+      mpz_mul(out, Fp.get_mpz_t(), Q[j]);
+      mpz_submul(out, Fq.get_mpz_t(), P[j]);
     }
-    remove_common_twos(made.x, made.w);
+    if (sgn(w) < 0) {
+      for (mpz_class& c : x) c = -c;
+      w = -w;
+    }
+    remove_common_twos(x, w);
     check_gmp_memory();
+    exact_value made{detail::packed_integers(detail::views_of(x[0], x[1], x[2], w))};
     if (exact_budget_bits_ != std::numeric_limits<std::uint64_t>::max())
-      exact_bits_.fetch_add(bits_of(made.x, made.w), std::memory_order_relaxed);
+      exact_bits_.fetch_add(bits_of(made.xw.views()), std::memory_order_relaxed);
     {
       // Another thread may have made the same value meanwhile: the first one stays.
       const std::lock_guard<std::mutex> lock(exact_mutex_);
@@ -322,17 +336,13 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
 }
 
 int exact_geometry::exact_sign(std::uint32_t plane, std::uint32_t x) const {
-  const exact_plane& pl = plane_of(plane);
-  const exact_value& v = exact_of(x);
+  const detail::integer_views pl = plane_of(plane).nd.views();
+  const detail::integer_views v = exact_of(x).xw.views();
   // sign(n . X - d w), w > 0: integers only.
-  mpz_class a = pl.d * v.w;
-  mpz_class t;
-  for (int j = 0; j < 3; ++j) {
-    mpz_mul(t.get_mpz_t(), pl.n[j].get_mpz_t(), v.x[j].get_mpz_t());
-    a -= t;
-  }
+  mpz_class f;
+  plane_at(f.get_mpz_t(), pl, v);
   check_gmp_memory();
-  return -sgn(a);
+  return sgn(f);
 }
 
 int exact_geometry::point_sign_slow(std::uint32_t plane, const fast_plane_core& fp, std::uint32_t x,
@@ -406,10 +416,10 @@ void exact_geometry::approximate(std::uint32_t id) {
   }
   if (!certified) {
     // Too close to call in doubles (or out of the filter's range): the exact value, rounded.
-    const exact_value& e = exact_of(id);
+    const detail::integer_views e = exact_of(id).xw.views();
     double r = 0;
     for (int k = 0; k < 3; ++k) {
-      x.c[k] = geom::quotient_to_double(e.x[k].get_mpz_t(), e.w.get_mpz_t());
+      x.c[k] = geom::quotient_to_double(e[k], e[3]);
       r = std::max(r, ulp_of(x.c[k]));
     }
     check_gmp_memory();
@@ -470,9 +480,10 @@ int exact_geometry::side_of_direction(std::uint32_t plane, const vec3d& d) const
     if (v > bound) return 1;
     if (v < -bound) return -1;
   }
-  const exact_plane& pl = plane_of(plane);
-  return -sign_of(mpq_class(pl.n[0]) * mpq_class(d[0]) + mpq_class(pl.n[1]) * mpq_class(d[1]) +
-                  mpq_class(pl.n[2]) * mpq_class(d[2]));
+  const detail::integer_views pl = plane_of(plane).nd.views();
+  mpq_class dot;
+  for (int j = 0; j < 3; ++j) dot += mpq_class(mpz_class(pl[j])) * mpq_class(d[j]);
+  return -sign_of(dot);
 }
 
 void exact_geometry::prepare_output(const std::vector<fragment>& fragments) const {
@@ -499,9 +510,8 @@ void exact_geometry::prepare_output(const std::vector<fragment>& fragments) cons
     for (long long i = 0; i < n; ++i)
       failure.run([&] {
         const std::uint32_t id = constructed[static_cast<std::size_t>(i)];
-        const exact_value& e = exact_of(id);
-        for (int k = 0; k < 3; ++k)
-          rounded_[id][k] = geom::quotient_to_double(e.x[k].get_mpz_t(), e.w.get_mpz_t());
+        const detail::integer_views e = exact_of(id).xw.views();
+        for (int k = 0; k < 3; ++k) rounded_[id][k] = geom::quotient_to_double(e[k], e[3]);
         check_gmp_memory();
       });
     failure.rethrow();
@@ -516,10 +526,11 @@ void exact_geometry::visit_exact(const fragment& f, const exact_visitor& visit) 
   exact_value vertex;
   mpq_class q;
   for (int k = 0; k < 3; ++k) {
-    const exact_value& e = f.v[k] < inputs_ ? *value_of(f.v[k], vertex) : exact_of(f.v[k]);
+    const detail::integer_views e =
+        (f.v[k] < inputs_ ? *value_of(f.v[k], vertex) : exact_of(f.v[k])).xw.views();
     for (int j = 0; j < 3; ++j) {
-      mpq_set_num(q.get_mpq_t(), e.x[j].get_mpz_t());
-      mpq_set_den(q.get_mpq_t(), e.w.get_mpz_t());
+      mpq_set_num(q.get_mpq_t(), e[j]);
+      mpq_set_den(q.get_mpq_t(), e[3]);
       q.canonicalize();  // the visitor gets reduced rationals
       check_gmp_memory();
       visit(k, j, q.get_mpq_t());
