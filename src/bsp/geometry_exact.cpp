@@ -241,14 +241,23 @@ void exact_geometry::forget_exact_values() {
   decltype(plane_slot_)().swap(plane_slot_);
 }
 
-const exact_geometry::exact_value* exact_geometry::value_of(std::uint32_t id,
-                                                            exact_value& vertex) const {
-  if (id >= inputs_) return find_exact(id);
+struct exact_geometry::vertex_value {
   std::array<mpz_class, 3> x;
-  mpz_class w = 1;
-  mpz_mul_2exp(w.get_mpz_t(), w.get_mpz_t(), to_integers(&at(id).c, 1, x.data()));
-  vertex.xw = detail::packed_integers(detail::views_of(x[0], x[1], x[2], w));
-  return &vertex;
+  mpz_class w;
+};
+
+bool exact_geometry::value_of(std::uint32_t id, vertex_value& vertex,
+                              detail::integer_views& out) const {
+  if (id >= inputs_) {
+    const exact_value* known = find_exact(id);
+    if (known) out = known->xw.views();
+    return known != nullptr;
+  }
+  vertex.w = 1;
+  mpz_mul_2exp(vertex.w.get_mpz_t(), vertex.w.get_mpz_t(),
+               to_integers(&at(id).c, 1, vertex.x.data()));
+  out = detail::views_of(vertex.x[0], vertex.x[1], vertex.x[2], vertex.w);
+  return true;
 }
 
 namespace {
@@ -275,7 +284,7 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
   // stack. Input vertices are not memoised: their doubles are their exact values.
   if (const exact_value* known = find_exact(x)) return *known;
   std::vector<std::uint32_t> stack{x};
-  exact_value vp, vq;
+  vertex_value vp, vq;
   while (!stack.empty()) {
     const std::uint32_t id = stack.back();
     if (find_exact(id)) {
@@ -283,11 +292,11 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
       continue;
     }
     const point& pt = at(id);
-    const exact_value* ep = value_of(pt.p, vp);
-    const exact_value* eq = value_of(pt.q, vq);
-    if (!ep || !eq) {
-      if (!ep) stack.push_back(pt.p);
-      if (!eq) stack.push_back(pt.q);
+    detail::integer_views P, Q;
+    const bool has_p = value_of(pt.p, vp, P), has_q = value_of(pt.q, vq, Q);
+    if (!has_p || !has_q) {
+      if (!has_p) stack.push_back(pt.p);
+      if (!has_q) stack.push_back(pt.q);
       continue;
     }
     // x = (fp q - fq p) / (fp - fq) with fp = f(p), fq = f(q) of the plane f. With p = P / wp,
@@ -295,7 +304,6 @@ const exact_geometry::exact_value& exact_geometry::exact_of(std::uint32_t x) con
     // x = (Fp Q - Fq P) / (Fp wq - Fq wp). Fp and Fq have strictly opposite signs, so the
     // denominator is not zero; its sign is Fp's, made positive.
     const detail::integer_views pl = plane_of(pt.plane).nd.views();
-    const detail::integer_views P = ep->xw.views(), Q = eq->xw.views();
     if (exact_budget_bits_ != std::numeric_limits<std::uint64_t>::max()) {
       // The value's size is about the sum of its operands' (see below): refuse before making it.
       const std::uint64_t estimate = bits_of(pl) + bits_of(P) + bits_of(Q);
@@ -482,7 +490,7 @@ int exact_geometry::side_of_direction(std::uint32_t plane, const vec3d& d) const
   }
   const detail::integer_views pl = plane_of(plane).nd.views();
   mpq_class dot;
-  for (int j = 0; j < 3; ++j) dot += mpq_class(mpz_class(pl[j])) * mpq_class(d[j]);
+  for (int j = 0; j < 3; ++j) dot += mpz_class(pl[j]) * mpq_class(d[j]);
   return -sign_of(dot);
 }
 
@@ -523,11 +531,11 @@ fragment_d exact_geometry::to_double(const fragment& f) const {
 }
 
 void exact_geometry::visit_exact(const fragment& f, const exact_visitor& visit) const {
-  exact_value vertex;
+  vertex_value vertex;
   mpq_class q;
   for (int k = 0; k < 3; ++k) {
-    const detail::integer_views e =
-        (f.v[k] < inputs_ ? *value_of(f.v[k], vertex) : exact_of(f.v[k])).xw.views();
+    detail::integer_views e;
+    if (!value_of(f.v[k], vertex, e)) e = exact_of(f.v[k]).xw.views();
     for (int j = 0; j < 3; ++j) {
       mpq_set_num(q.get_mpq_t(), e[j]);
       mpq_set_den(q.get_mpq_t(), e[3]);

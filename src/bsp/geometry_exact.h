@@ -42,6 +42,9 @@ namespace tree_file {
 class writer;
 class reader;
 }  // namespace tree_file
+namespace detail {
+struct integer_views;  // bsp/packed_integers.h
+}  // namespace detail
 
 class exact_geometry {
  public:
@@ -219,9 +222,11 @@ class exact_geometry {
   int exact_sign(std::uint32_t plane, std::uint32_t x) const;
   /// The memoised exact value of constructed point x (made on first use).
   const exact_value& exact_of(std::uint32_t x) const;
-  /// An input vertex's exact value, written into `vertex`, or a constructed point's memoised
-  /// value (nullptr until made).
-  const exact_value* value_of(std::uint32_t id, exact_value& vertex) const;
+  /// Working integers for an input vertex's exact value (reused from call to call).
+  struct vertex_value;
+  /// Views of point id's exact value into `out`: an input vertex's, written into `vertex`, or a
+  /// constructed point's memoised one (false until made).
+  bool value_of(std::uint32_t id, vertex_value& vertex, detail::integer_views& out) const;
   const exact_plane& plane_of(std::uint32_t plane) const;
   std::uint32_t construct(std::uint32_t plane, std::uint32_t p, std::uint32_t q, scratch& sc);
   /// Sets the certified centre and radius of constructed point id from its p, q and plane.
