@@ -64,6 +64,45 @@ TEST(HomogeneousDet, CrossingsOfDifferentFunctionsAtTheSameParameterCompareEqual
   EXPECT_DOUBLE_EQ(three.to_double(), 0.75);
 }
 
+TEST(HomogeneousDet, ProductsOfTheSameDeterminantsInOtherRowOrdersAreDecidedLikeGmp) {
+  const geom::rounding_guard guard;
+  // The shortcut for equal rows in another order must agree with the exact rational
+  // difference of products, computed here from each determinant's exact value, for every
+  // order of the rows (even and odd) and every pairing, including crossings of the plane
+  // through the eye and the shared side of two neighbouring triangles (equal parameters).
+  const hpoint eye{0.1, -3, 7.25}, u{1, 2, 0.5}, w{-1.5, 0.25, 3}, A{0.3, 0.7, -2}, B{2, -1, 4};
+  const std::array<hpoint, 4> ra{eye, u, w, A}, rb{eye, u, w, B};
+  std::array<int, 4> order{0, 1, 2, 3};
+  auto permuted = [&](const std::array<hpoint, 4>& r) {
+    return det_value(r[order[0]], r[order[1]], r[order[2]], r[order[3]]);
+  };
+  const det_value a(ra[0], ra[1], ra[2], ra[3]), b(rb[0], rb[1], rb[2], rb[3]);
+  int equal = 0, decided = 0;
+  do {
+    const det_value pa = permuted(ra), pb = permuted(rb);
+    EXPECT_EQ(pa.sign(), a.sign() * a.same_rows_sign(pa));
+    for (const auto& [p, q, r, s] : {std::array<const det_value*, 4>{&pa, &pb, &a, &b},
+                                     {&pa, &b, &a, &pb},
+                                     {&a, &pb, &pa, &b},
+                                     {&pb, &pa, &b, &a},
+                                     {&pa, &b, &a, &b}}) {
+      const mpq_class v = p->exact() * q->exact() - r->exact() * s->exact();
+      EXPECT_EQ(geom::sign_of_difference_of_products(*p, *q, *r, *s), sgn(v));
+      equal += sgn(v) == 0;
+      decided += 1;
+    }
+    const crossing x = crossing::between(a, b), y = crossing::between(pa, pb);
+    EXPECT_EQ(geom::compare(x, y), 0);
+  } while (std::next_permutation(order.begin(), order.end()));
+  EXPECT_EQ(decided, 24 * 5);
+  EXPECT_GT(equal, 0);
+  EXPECT_LT(equal, decided);  // pa b - a b = (u - 1) a b: not zero for the odd orders
+  // Rows that differ in one bit are not the same rows.
+  const det_value c(eye, u, w, hpoint{std::nextafter(A.x, 1.0), A.y, A.z});
+  EXPECT_EQ(a.same_rows_sign(c), 0);
+  EXPECT_EQ(det_value(eye, u, u, A).same_rows_sign(det_value(eye, u, u, A)), 0);
+}
+
 // ---- welding and feature edges -----------------------------------------------------------
 
 TEST(Weld, MinusZeroAndZeroAreOnePointAndNothingElseIsRounded) {

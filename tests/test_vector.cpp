@@ -526,6 +526,111 @@ TEST(VisibleRegions, PiecesSharingEdgesUniteByTheirBoundary) {
   EXPECT_FALSE(cover::union_by_shared_edges({&left, &right}, out));  // (1, 1) on one side only
 }
 
+// ---- tile areas (view/visible_cover.h) ----------------------------------------------------
+
+TEST(TileAreas, EachCellGetsTheAreaClipperFindsInsideItForEveryKindOfRing) {
+  // Oracle: Clipper's intersection of the rings (nonzero) with each cell's square, its area,
+  // signed as the rings turn; coordinates scaled by 2^20 for Clipper, whose cut points are
+  // rounded to its integer grid (an error of about a unit times the cut's length).
+  using ClipperLib::IntPoint;
+  using ClipperLib::Path;
+  using ClipperLib::Paths;
+  std::mt19937_64 rng(11);
+  const long long side = 400;
+  const int cols = 5, rows = 4;
+  const long long ox = -300, oy = 1200;
+  std::uniform_int_distribution<long long> pick(-2, 12);  // multiples of side/2: on the lines
+  std::uniform_int_distribution<long long> jitter(-700, 2700);
+  const long long scale = 1LL << 20;
+  auto scaled = [&](const Path& p) {
+    Path q;
+    for (const IntPoint& v : p) q.push_back({v.X * scale, v.Y * scale});
+    return q;
+  };
+  auto check = [&](const Paths& rings, const char* what, double sign = 1) {
+    std::vector<double> area, cover;
+    cover::cell_areas(rings, ox, oy, side, cols, rows, area, cover);
+    ASSERT_EQ(area.size(), static_cast<std::size_t>(cols * rows));
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < cols; ++c) {
+        const long long x0 = ox + c * side, y0 = oy + r * side;
+        ClipperLib::Clipper clipper;
+        for (const Path& ring : rings) clipper.AddPath(scaled(ring), ClipperLib::ptSubject, true);
+        clipper.AddPath(
+            scaled({{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}}),
+            ClipperLib::ptClip, true);
+        Paths in;
+        clipper.Execute(ClipperLib::ctIntersection, in, ClipperLib::pftNonZero,
+                        ClipperLib::pftNonZero);
+        double expected = 0;
+        for (const Path& p : in) expected += ClipperLib::Area(p);
+        expected *= sign / (static_cast<double>(scale) * static_cast<double>(scale));
+        EXPECT_NEAR(area[static_cast<std::size_t>(r * cols + c)], expected, 1e-3)
+            << what << " cell " << c << "," << r;
+      }
+  };
+  for (int i = 0; i < 300; ++i) {
+    // A convex polygon (counter-clockwise hull of random points, some on cell lines).
+    std::vector<IntPoint> pts;
+    for (int k = 0; k < 3 + i % 9; ++k) {
+      const bool on_lines = k % 2 == 0;
+      pts.push_back(on_lines ? IntPoint{ox + pick(rng) * side / 2, oy + pick(rng) * side / 2}
+                             : IntPoint{ox + jitter(rng), oy + jitter(rng)});
+    }
+    std::sort(pts.begin(), pts.end(), [](const IntPoint& a, const IntPoint& b) {
+      return a.X != b.X ? a.X < b.X : a.Y < b.Y;
+    });
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+    if (pts.size() < 3) continue;
+    auto turn = [](const IntPoint& a, const IntPoint& b, const IntPoint& q) {
+      return (b.X - a.X) * (q.Y - a.Y) - (b.Y - a.Y) * (q.X - a.X);
+    };
+    Path hull;
+    for (int pass = 0; pass < 2; ++pass) {
+      const std::size_t base = hull.size();
+      for (std::size_t k = 0; k < pts.size(); ++k) {
+        const IntPoint& q = pass == 0 ? pts[k] : pts[pts.size() - 1 - k];
+        while (hull.size() >= base + 2 && turn(hull[hull.size() - 2], hull.back(), q) <= 0)
+          hull.pop_back();
+        hull.push_back(q);
+      }
+      hull.pop_back();
+    }
+    if (hull.size() < 3) continue;
+    check({hull}, "convex");
+    // The same with a clockwise hole (a smaller copy of it around its first vertex's centroid
+    // side), and reversed (clockwise: negative areas).
+    Path reversed(hull.rbegin(), hull.rend());
+    check({reversed}, "clockwise", -1);
+    long long cx = 0, cy = 0;
+    for (const IntPoint& q : hull) {
+      cx += q.X;
+      cy += q.Y;
+    }
+    cx /= static_cast<long long>(hull.size());
+    cy /= static_cast<long long>(hull.size());
+    Path hole;
+    for (auto it = hull.rbegin(); it != hull.rend(); ++it)
+      hole.push_back({cx + (it->X - cx) / 2, cy + (it->Y - cy) / 2});
+    check({hull, hole}, "with a hole");
+  }
+  // A star (not convex) with spikes across several cells, and a rectangle along cell lines.
+  Path star;
+  for (int k = 0; k < 14; ++k) {
+    const double a = 2 * M_PI * k / 14, rad = k % 2 ? 500 : 1300;
+    star.push_back(
+        {ox + 1000 + std::llround(rad * std::cos(a)), oy + 800 + std::llround(rad * std::sin(a))});
+  }
+  check({star}, "star");
+  check({{{ox + side, oy},
+          {ox + 3 * side, oy},
+          {ox + 3 * side, oy + 2 * side},
+          {ox + side, oy + 2 * side}}},
+        "rectangle on the lines");
+  // Wholly outside the grid: nothing anywhere.
+  check({{{ox - 900, oy - 900}, {ox - 100, oy - 900}, {ox - 100, oy - 100}}}, "outside");
+}
+
 // ---- strips (view/visible_strips.h) -------------------------------------------------------
 
 TEST(Strips, CrossingPointsAreTheNearestGridPointAndTheSameFromBothEnds) {

@@ -92,10 +92,34 @@ double det_value::to_double() const {
   return 0.5 * (approx_.inf() + approx_.sup());
 }
 
+int det_value::same_rows_sign(const det_value& other) const {
+  int at[4];
+  for (int i = 0; i < 4; ++i) {
+    at[i] = -1;
+    for (int j = 0; j < 4 && at[i] < 0; ++j)
+      if (same_row(rows_[static_cast<std::size_t>(i)], other.rows_[static_cast<std::size_t>(j)]))
+        at[i] = j;
+    if (at[i] < 0) return 0;
+    for (int k = 0; k < i; ++k)
+      if (at[k] == at[i]) return 0;  // two equal rows
+  }
+  int inversions = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int k = i + 1; k < 4; ++k) inversions += at[i] > at[k];
+  return inversions % 2 == 0 ? 1 : -1;
+}
+
 int sign_of_difference_of_products(const det_value& p, const det_value& q, const det_value& r,
                                    const det_value& s) {
   const int filtered = sign_of(p.approx() * q.approx() - r.approx() * s.approx());
   if (filtered != 2) return filtered;
+  // The same determinants on both sides (the crossings of one plane through the eye and the
+  // shared side of two neighbouring triangles, met at every occluder's inner edge): with
+  // p = u r and q = v s (u, v = +-1), pq - rs = (uv - 1) rs, decided without GMP.
+  for (const auto& [a, b] : {std::pair<const det_value*, const det_value*>{&r, &s}, {&s, &r}}) {
+    const int u = p.same_rows_sign(*a), v = q.same_rows_sign(*b);
+    if (u != 0 && v != 0) return u * v == 1 ? 0 : -a->sign() * b->sign();
+  }
   const mpq_class v = p.exact() * q.exact() - r.exact() * s.exact();
   return sgn(v);
 }

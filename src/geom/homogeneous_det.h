@@ -50,6 +50,10 @@ class det_value {
   /// The exact value (computed once, on first use).
   EXBSP_EXPORT const mpq_class& exact() const;
   const interval& approx() const { return approx_; }
+  /// +1 or -1 when `other` has the rows of this one (bit for bit) in an even or odd order:
+  /// then its value is this one's times that sign, exactly. 0 otherwise, and when two rows of
+  /// this one are equal.
+  EXBSP_EXPORT int same_rows_sign(const det_value& other) const;
   /// A double near the value (the exact one rounded when it was computed).
   EXBSP_EXPORT double to_double() const;
 

@@ -206,9 +206,10 @@ struct snapped_polygons {
   std::vector<bbox_i> boxes;
 
   bool has_area(std::size_t k) const { return start[k + 1] > start[k]; }
-  cl::Path path(std::size_t k) const {
-    return {points.begin() + static_cast<std::ptrdiff_t>(start[k]),
-            points.begin() + static_cast<std::ptrdiff_t>(start[k + 1])};
+  /// Polygon k in `out` (its buffer reused).
+  void path(std::size_t k, cl::Path& out) const {
+    out.assign(points.begin() + static_cast<std::ptrdiff_t>(start[k]),
+               points.begin() + static_cast<std::ptrdiff_t>(start[k + 1]));
   }
 };
 
@@ -320,7 +321,7 @@ void walk_strip(const frame& f, const snapped_polygons& snapped, const t_junctio
     const bbox_i& b = snapped.boxes[k];
     if (b.y1 <= y0 || b.y0 >= y1) continue;  // no area in this strip
     if (cov.hides({b.x0, std::max(b.y0, y0), b.x1, std::min(b.y1, y1)})) continue;
-    poly = snapped.path(k);
+    snapped.path(k, poly);
     mender.mend(poly, scratch);
     cl::Path* p = &poly;
     if (b.y0 < y0 || b.y1 > y1) {

@@ -125,6 +125,96 @@ bool union_by_shared_edges(const std::vector<const cl::Path*>& rings, cl::Paths&
   return twice_out == twice;
 }
 
+void cell_areas(const cl::Paths& rings, long long ox, long long oy, long long side, int cols,
+                int rows, std::vector<double>& area, std::vector<double>& cover) {
+  const std::size_t n = static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows);
+  area.assign(n, 0.0);
+  // cover[r * (cols + 1) + c]: rise of the boundary in row r within column c (or right of
+  // every column, c = cols), which counts a full width in each column left of c.
+  cover.assign(static_cast<std::size_t>(cols + 1) * static_cast<std::size_t>(rows), 0.0);
+  const double w = static_cast<double>(side);
+  const double top = w * rows, right = w * cols;
+  // A piece of an edge within row r, from (xa, ya) to (xb, yb): split at the column lines.
+  auto add_in_row = [&](int r, double xa, double ya, double xb, double yb) {
+    double* row_area = area.data() + static_cast<std::size_t>(r) * cols;
+    double* row_cover = cover.data() + static_cast<std::size_t>(r) * (cols + 1);
+    auto add_in_column = [&](double x0, double y0, double x1, double y1) {
+      const double mid = 0.5 * (x0 + x1), dy = y1 - y0;
+      if (mid <= 0) return;  // left of every column: nothing of any cell lies left of it
+      if (mid >= right) {
+        row_cover[cols] += dy;
+        return;
+      }
+      const int c = std::min(cols - 1, static_cast<int>(mid / w));
+      row_area[c] += (mid - c * w) * dy;
+      row_cover[c] += dy;
+    };
+    if (xa == xb) {
+      add_in_column(xa, ya, xb, yb);
+      return;
+    }
+    // Column lines strictly between xa and xb, in the edge's direction.
+    const bool forward = xb > xa;
+    const double lo = std::min(xa, xb), hi = std::max(xa, xb);
+    int c = forward ? static_cast<int>(std::floor(lo / w)) + 1
+                    : static_cast<int>(std::ceil(hi / w)) - 1;
+    c = std::clamp(c, 0, cols);
+    double px = xa, py = ya;
+    for (;; c += forward ? 1 : -1) {
+      if (c < 0 || c > cols) break;
+      const double lx = c * w;
+      if (forward ? lx >= xb : lx <= xb) break;
+      if (forward ? lx <= px : lx >= px) continue;
+      const double ly = ya + (lx - xa) * (yb - ya) / (xb - xa);
+      add_in_column(px, py, lx, ly);
+      px = lx;
+      py = ly;
+    }
+    add_in_column(px, py, xb, yb);
+  };
+  for (const cl::Path& ring : rings)
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+      double xa = static_cast<double>(ring[j].X - ox), ya = static_cast<double>(ring[j].Y - oy);
+      double xb = static_cast<double>(ring[i].X - ox), yb = static_cast<double>(ring[i].Y - oy);
+      if (ya == yb) continue;  // no rise: adds nothing
+      // The edge's part in [0, top], then its pieces in each row, in its direction.
+      const double y_lo = std::max(0.0, std::min(ya, yb)), y_hi = std::min(top, std::max(ya, yb));
+      if (y_lo >= y_hi) continue;
+      auto x_at = [&](double y) { return xa + (y - ya) * (xb - xa) / (yb - ya); };
+      const bool up = yb > ya;
+      const double y_start = up ? y_lo : y_hi, y_end = up ? y_hi : y_lo;
+      double px = y_start == ya ? xa : x_at(y_start), py = y_start;
+      const double x_end = y_end == yb ? xb : x_at(y_end);
+      // The row the edge enters first: above y_lo going up, below y_hi going down.
+      int r =
+          up ? static_cast<int>(std::floor(y_lo / w)) : static_cast<int>(std::ceil(y_hi / w)) - 1;
+      r = std::clamp(r, 0, rows - 1);
+      for (;;) {
+        const double line = up ? (r + 1) * w : r * w;  // the row's far line in the edge's direction
+        const bool last = up ? y_end <= line : y_end >= line;
+        if (last) {
+          add_in_row(r, px, py, x_end, y_end);
+          break;
+        }
+        const double lx = x_at(line);
+        add_in_row(r, px, py, lx, line);
+        px = lx;
+        py = line;
+        r += up ? 1 : -1;
+        if (r < 0 || r >= rows) break;
+      }
+    }
+  for (int r = 0; r < rows; ++r) {
+    const double* row_cover = cover.data() + static_cast<std::size_t>(r) * (cols + 1);
+    double* row_area = area.data() + static_cast<std::size_t>(r) * cols;
+    double rise_right = row_cover[cols];
+    for (int c = cols - 1; c >= 0; --c) {
+      row_area[c] += w * rise_right;
+      rise_right += row_cover[c];
+    }
+  }
+}
+
 namespace {
 
 /// Polygons in doubles, relative to an origin on the grid, for overlap areas: Sutherland–
@@ -193,13 +283,6 @@ double area_in_box(const polygon_d& a, polygon_d& work, polygon_d& scratch, doub
   if (ay0 < y0) clip_half_plane(work, scratch, x0, y0, 1, 0);   // y >= y0
   if (ay1 > y1) clip_half_plane(work, scratch, x0, y1, -1, 0);  // y <= y1
   return work.empty() ? 0 : signed_area(work);
-}
-
-/// True when q is inside the convex counter-clockwise ring or on its boundary (exact).
-bool in_convex(const cl::Path& r, long long qx, long long qy) {
-  for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
-    if ((r[i].X - r[j].X) * (qy - r[j].Y) - (r[i].Y - r[j].Y) * (qx - r[j].X) < 0) return false;
-  return true;
 }
 
 /// The counter-clockwise simple ring cut into convex counter-clockwise triangles by ear
@@ -280,6 +363,29 @@ bool separated(const cl::Path& p, const cl::Paths& q) {
   return false;
 }
 
+/// separated(p, {q}) for convex counter-clockwise rings p and q with area (the common case: a
+/// fragment beside the pieces of its neighbours), at about half the cost: the ring through
+/// whose edge the line passes lies on the line's closed left side by convexity, so only the
+/// other ring is read, and the first of its vertices strictly left of the line rejects it.
+bool separated_convex(const cl::Path& p, const cl::Path& q) {
+  auto beyond_an_edge = [](const cl::Path& ring, const cl::Path& other) {
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+      const cl::IntPoint a = ring[j], b = ring[i];
+      const long long dx = b.X - a.X, dy = b.Y - a.Y;
+      if (dx == 0 && dy == 0) continue;
+      bool right = true;
+      for (const cl::IntPoint& v : other)
+        if (dx * (v.Y - a.Y) - dy * (v.X - a.X) > 0) {
+          right = false;
+          break;
+        }
+      if (right) return true;
+    }
+    return false;
+  };
+  return beyond_an_edge(p, q) || beyond_an_edge(q, p);
+}
+
 /// The winding number of the ring about q + (e, e^2) for every small enough e > 0 (Sunday's
 /// crossing rule; a zero cross product is decided by the nudge's first nonzero term: exact).
 int nudged_winding(const cl::Path& r, const cl::IntPoint& q) {
@@ -352,10 +458,13 @@ class tiled_coverage::impl {
     if (hides(bbox_of(p))) return no_piece;
     near_.clear();
     const bool convex = convex_ccw(p);
-    gather(bbox_of(p), [&](const cl::Paths& rings, bool square, const bbox_i& box) {
-      if (convex && box_beyond_an_edge(p, box)) return;  // separated (a cheaper first test)
-      if (!separated(p, rings)) near_.push_back({&rings, square});
-    });
+    gather(bbox_of(p),
+           [&](const cl::Paths& rings, bool square, bool convex_piece, const bbox_i& box) {
+             if (convex && box_beyond_an_edge(p, box)) return;  // separated (a cheaper first test)
+             const bool apart =
+                 convex && convex_piece ? separated_convex(p, rings[0]) : separated(p, rings);
+             if (!apart) near_.push_back({&rings, square});
+           });
     switch (near_.empty() ? outcome::visible : overlap_outcome(p)) {
       case outcome::visible: {
         cl::Paths whole(1);
@@ -411,7 +520,7 @@ class tiled_coverage::impl {
   /// The parts of the open polyline `line` outside the coverage.
   cl::Paths outside(const cl::Path& line) {
     cl::Paths clip;
-    gather(bbox_of(line), [&](const cl::Paths& rings, bool, const bbox_i&) {
+    gather(bbox_of(line), [&](const cl::Paths& rings, bool, bool, const bbox_i&) {
       clip.insert(clip.end(), rings.begin(), rings.end());
     });
     if (clip.empty()) return {line};
@@ -430,7 +539,7 @@ class tiled_coverage::impl {
   /// boundary of two pieces or two full tiles counts as covered, as it is.
   bool covers(const cl::IntPoint& q) {
     int winding = 0;
-    gather({q.X, q.Y, q.X, q.Y}, [&](const cl::Paths& rings, bool, const bbox_i&) {
+    gather({q.X, q.Y, q.X, q.Y}, [&](const cl::Paths& rings, bool, bool, const bbox_i&) {
       for (const cl::Path& r : rings) winding += nudged_winding(r, q);
     });
     return winding != 0;
@@ -439,6 +548,7 @@ class tiled_coverage::impl {
  private:
   struct piece {
     cl::Paths rings;  ///< outer rings counter-clockwise, holes clockwise
+    bool convex;      ///< one convex counter-clockwise ring
   };
   /// A piece as listed in a tile: its id and box (grid units fit 32 bits), so that the box
   /// test reads the tile's own memory.
@@ -490,19 +600,14 @@ class tiled_coverage::impl {
     const std::array<int, 4> range = tile_range(box);
     const int tx0 = range[0], ty0 = range[1], tx1 = range[2], ty1 = range[3];
     const double tile_area = static_cast<double>(tile_side) * static_cast<double>(tile_side);
-    const double side = static_cast<double>(tile_side);
-    // A convex piece over many tiles: the tiles whose four corners it holds are inside it
-    // (their whole area counts), found from one test per tile corner.
     const bool convex = rings.size() == 1 && convex_ccw(rings[0]);
-    const int cw = tx1 - tx0 + 2;
-    corner_in_.clear();
-    if (convex && (tx1 - tx0 + 1) * (ty1 - ty0 + 1) > 4)
-      for (int cy = ty0; cy <= ty1 + 1; ++cy)
-        for (int cx = tx0; cx <= tx1 + 1; ++cx)
-          corner_in_.push_back(in_convex(rings[0], cx * tile_side, (cy + row0_) * tile_side));
-    auto corner = [&](int cx, int cy) {
-      return corner_in_[static_cast<std::size_t>((cy - ty0) * cw + (cx - tx0))];
-    };
+    // A piece in one tile adds its area there; one over several tiles adds its part in each,
+    // all found in one pass over its edges (cell_areas).
+    const long long ox = tx0 * tile_side, oy = (ty0 + row0_) * tile_side;
+    const bool in_one =
+        box.x0 >= ox && box.x1 <= ox + tile_side && box.y0 >= oy && box.y1 <= oy + tile_side;
+    const int cols = tx1 - tx0 + 1;
+    if (!in_one) cell_areas(rings, ox, oy, tile_side, cols, ty1 - ty0 + 1, cell_area_, cell_cover_);
     for (int ty = ty0; ty <= ty1; ++ty)
       for (int tx = tx0; tx <= tx1; ++tx) {
         tile& t = tiles_[index(tx, ty)];
@@ -511,23 +616,11 @@ class tiled_coverage::impl {
         t.pieces.push_back({static_cast<std::int32_t>(box.x0), static_cast<std::int32_t>(box.y0),
                             static_cast<std::int32_t>(box.x1), static_cast<std::int32_t>(box.y1),
                             id});
-        const long long x0 = tx * tile_side, y0 = (ty + row0_) * tile_side;
-        const bool inside =
-            box.x0 >= x0 && box.x1 <= x0 + tile_side && box.y0 >= y0 && box.y1 <= y0 + tile_side;
-        if (!corner_in_.empty() && corner(tx, ty) && corner(tx + 1, ty) && corner(tx, ty + 1) &&
-            corner(tx + 1, ty + 1)) {
-          t.area += tile_area;
-        } else {
-          for (const cl::Path& r : rings) {
-            if (inside) {
-              t.area += 0.5 * twice_area_from(r, static_cast<double>(x0), static_cast<double>(y0));
-            } else {
-              poly_.clear();
-              for (const cl::IntPoint& q : r)
-                poly_.push_back({static_cast<double>(q.X - x0), static_cast<double>(q.Y - y0)});
-              t.area += area_in_box(poly_, work_, scratch_, 0, 0, side, side);
-            }
-          }
+        if (!in_one) {
+          t.area += cell_area_[static_cast<std::size_t>((ty - ty0) * cols + (tx - tx0))];
+        } else if (tx == tx0 && ty == ty0) {
+          for (const cl::Path& r : rings)
+            t.area += 0.5 * twice_area_from(r, static_cast<double>(ox), static_cast<double>(oy));
         }
         // Pieces are disjoint, so the sum never exceeds the tile but by rounding; a shortfall
         // under half a square unit is no gap any region could be seen through.
@@ -538,13 +631,13 @@ class tiled_coverage::impl {
           t.square = {square(tx, ty)};
         }
       }
-    pieces_.push_back({std::move(rings)});
+    pieces_.push_back({std::move(rings), convex});
     stamp_.push_back(0);
     return id;
   }
 
-  /// Calls visit(rings, is_square, its box) for each piece near `box` (each once) and for the
-  /// square of each full tile `box` meets.
+  /// Calls visit(rings, is_square, is_convex, its box) for each piece near `box` (each once)
+  /// and for the square of each full tile `box` meets (convex).
   template <class Visit>
   void gather(const bbox_i& box, Visit visit) {
     ++query_;
@@ -555,7 +648,7 @@ class tiled_coverage::impl {
         const tile& t = tiles_[index(tx, ty)];
         if (t.full) {
           const cl::Path& sq = t.square[0];
-          visit(t.square, true, bbox_i{sq[0].X, sq[0].Y, sq[2].X, sq[2].Y});
+          visit(t.square, true, true, bbox_i{sq[0].X, sq[0].Y, sq[2].X, sq[2].Y});
           continue;
         }
         for (const listed& l : t.pieces) {
@@ -565,7 +658,8 @@ class tiled_coverage::impl {
                     : l.x1 <= box.x0 || l.x0 >= box.x1 || l.y1 <= box.y0 || l.y0 >= box.y1;
           if (apart || stamp_[l.id] == query_) continue;
           stamp_[l.id] = query_;
-          visit(pieces_[l.id].rings, false, bbox_i{l.x0, l.y0, l.x1, l.y1});
+          const piece& pc = pieces_[l.id];
+          visit(pc.rings, false, pc.convex, bbox_i{l.x0, l.y0, l.x1, l.y1});
         }
       }
   }
@@ -629,7 +723,7 @@ class tiled_coverage::impl {
   std::vector<candidate> near_;
   std::vector<cl::Path> windows_;
   polygon_d poly_, work_, scratch_;
-  std::vector<char> corner_in_;
+  std::vector<double> cell_area_, cell_cover_;  ///< insert's cell_areas
 
   int nx_, ny_;
   int row0_;  ///< the first tile row held (tile_range and the tiles' corners count from it)

@@ -58,6 +58,16 @@ ClipperLib::Path without_straight_vertices(const ClipperLib::Path& r);
 bool union_by_shared_edges(const std::vector<const ClipperLib::Path*>& rings,
                            ClipperLib::Paths& out);
 
+/// The signed area (counter-clockwise positive, holes clockwise negative) of the rings inside
+/// each square cell of side `side` of the grid of cols x rows cells whose lower left corner is
+/// (ox, oy): area[r * cols + c] for cell (c, r). One pass over the edges, as exact-area
+/// rasterizers do: the area of a region in a cell is the integral over the cell's rows of
+/// the clamped abscissa of the boundary, x clamped to the cell's columns, which each edge adds
+/// to the cells it crosses and, as a full width times its rise, to the cells left of it.
+/// `cover` is working memory. Doubles: exact to far below one square unit for grid points.
+void cell_areas(const ClipperLib::Paths& rings, long long ox, long long oy, long long side,
+                int cols, int rows, std::vector<double>& area, std::vector<double>& cover);
+
 /// Screen coverage as disjoint pieces (each the part of a polygon that the earlier ones left
 /// visible), indexed by 4-pixel tiles (visible_cover.cpp explains the tests).
 class tiled_coverage {
