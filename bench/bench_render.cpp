@@ -25,6 +25,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -89,6 +91,14 @@ view::view_setup orbit_view(const view::view_setup& v, std::size_t k, std::size_
 #if EXBSP_HAVE_OSMESA
 /// OSMesa z-buffer rendering of the input triangles; fills `out` and returns the image.
 /// With orbit > 0, also draws the orbit's cameras and reports "orbit_fps".
+/// CPU seconds of every thread of this process so far (user + system).
+double process_cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * t.tv_usec; };
+  return seconds(u.ru_utime) + seconds(u.ru_stime);
+}
+
 std::vector<unsigned char> render_osmesa(const view::frame& f, std::size_t frames,
                                          std::size_t orbit, json& out) {
   const int w = f.view.vp.width, h = f.view.vp.height;
@@ -242,8 +252,10 @@ int main(int argc, char** argv) {
       if (f.picture.data() != fast.data())
         throw std::runtime_error("raster: front to back and back to front differ");
       t0 = clock_type::now();
+      const double cpu0 = process_cpu_seconds();
       view::svg_stage(f);
       stage_times["svg"].push_back(seconds_since(t0));
+      stage_times["svg cpu"].push_back(process_cpu_seconds() - cpu0);
       const view::vector_phase_seconds& v = f.vector_seconds;
       for (const auto& [name, s] : {std::pair<const char*, double>{"snap", v.snap},
                                     {"coverage", v.coverage},

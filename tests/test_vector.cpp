@@ -526,6 +526,66 @@ TEST(VisibleRegions, PiecesSharingEdgesUniteByTheirBoundary) {
   EXPECT_FALSE(cover::union_by_shared_edges({&left, &right}, out));  // (1, 1) on one side only
 }
 
+TEST(VisibleRegions, NonConvexPiecesAndPiecesWithHolesUniteByTheirBoundaryToo) {
+  using ClipperLib::Path;
+  using ClipperLib::Paths;
+  // A 4 x 4 square with a 2 x 2 hole (its ring counter-clockwise, the hole clockwise), the
+  // hole filled by an L-shaped piece and the square that completes the L: one ring, 16.
+  // (The hole's ring has the points where the L and the notch meet its sides, as mended
+  // pieces do; without them those sides are T-junctions, and the union is refused.)
+  const Path frame{{0, 0}, {4, 0}, {4, 4}, {0, 4}},
+      hole{{1, 1}, {1, 3}, {2, 3}, {3, 3}, {3, 2}, {3, 1}};
+  const Path ell{{1, 1}, {3, 1}, {3, 2}, {2, 2}, {2, 3}, {1, 3}},
+      notch{{2, 2}, {3, 2}, {3, 3}, {2, 3}};
+  Paths out;
+  const Path unmended_hole{{1, 1}, {1, 3}, {3, 3}, {3, 1}};
+  EXPECT_FALSE(cover::union_by_shared_edges({&frame, &unmended_hole, &ell, &notch}, out));
+  ASSERT_TRUE(cover::union_by_shared_edges({&frame, &hole, &ell, &notch}, out));
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].size(), 4u);
+  EXPECT_DOUBLE_EQ(ClipperLib::Area(out[0]), 16.0);
+  // Without the notch: the square with a unit hole, clockwise.
+  ASSERT_TRUE(cover::union_by_shared_edges({&frame, &hole, &ell}, out));
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_DOUBLE_EQ(ClipperLib::Area(out[0]) + ClipperLib::Area(out[1]), 15.0);
+  const double hole_area = std::min(ClipperLib::Area(out[0]), ClipperLib::Area(out[1]));
+  EXPECT_DOUBLE_EQ(hole_area, -1.0);
+  // The union agrees with Clipper's, point for point as sets of vertices and in area.
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths({frame, hole, ell}, ClipperLib::ptSubject, true);
+  Paths expected;
+  clipper.Execute(ClipperLib::ctUnion, expected, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  auto corners = [](const Paths& ps) {
+    std::set<std::pair<long long, long long>> c;
+    for (const Path& p : ps)
+      for (const auto& q : p) c.insert({q.X, q.Y});
+    return c;
+  };
+  EXPECT_EQ(corners(out), corners(expected));
+  // One ring touching itself at a vertex (two squares meeting at a corner, one piece): refused,
+  // so that Clipper decides.
+  const Path bow{{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}, {1, 2}, {1, 1}, {0, 1}};
+  EXPECT_FALSE(cover::union_by_shared_edges({&bow}, out));
+}
+
+TEST(Grid, SnappingRoundsLikeLlroundEverywhereIncludingHalvesAndTheirNeighbours) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> wide(-3e6, 3e6), narrow(-2, 2);
+  std::vector<double> values = {0.0,    -0.0,   0.005,   -0.005, 0.004999999999999999,    1e300,
+                                -1e300, 0x1p61, -0x1p61, 0x1p62, 4503599627370495.5 / 100};
+  for (int i = 0; i < 200000; ++i) values.push_back(i % 2 ? wide(rng) : narrow(rng));
+  for (long long k = -3000; k <= 3000; ++k) {  // halves of the grid and their neighbours
+    const double half = (static_cast<double>(k) + 0.5) / static_cast<double>(view::grid_per_pixel);
+    values.push_back(half);
+    values.push_back(std::nextafter(half, 1e9));
+    values.push_back(std::nextafter(half, -1e9));
+  }
+  for (const double v : values) {
+    const double s = v * static_cast<double>(view::grid_per_pixel);
+    EXPECT_EQ(view::to_grid(v), std::llround(s)) << v;
+  }
+}
+
 // ---- tile areas (view/visible_cover.h) ----------------------------------------------------
 
 TEST(TileAreas, EachCellGetsTheAreaClipperFindsInsideItForEveryKindOfRing) {

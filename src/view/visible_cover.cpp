@@ -675,23 +675,26 @@ class tiled_coverage::impl {
   /// into a full square) within half a square unit of p's: hidden. Otherwise (a partial
   /// overlap, or no convex windows) Clipper decides.
   outcome overlap_outcome(const cl::Path& p) {
-    windows_.clear();
-    if (convex_ccw(p)) {
-      windows_.push_back(p);
-    } else {
+    // The windows: p itself when convex (not copied), or its ear triangles.
+    const cl::Path* window_list = &p;
+    std::size_t window_count = 1;
+    const double area = cl::Area(p);
+    if (!convex_ccw(p)) {
       if (!ear_triangles(p, windows_)) return outcome::unknown;
       long long twice = 0;
       for (const cl::Path& w : windows_)
         twice += (w[1].X - w[0].X) * (w[2].Y - w[0].Y) - (w[1].Y - w[0].Y) * (w[2].X - w[0].X);
-      if (static_cast<double>(twice) != 2 * cl::Area(p)) return outcome::unknown;
+      if (static_cast<double>(twice) != 2 * area) return outcome::unknown;
+      window_list = windows_.data();
+      window_count = windows_.size();
     }
     const long long ox = p[0].X, oy = p[0].Y;
     double covered = 0, largest = 0;
     for (const candidate& c : near_) {
       double overlap = 0, in_squares = 0;
-      for (const cl::Path& w : windows_)
+      for (std::size_t k = 0; k < window_count; ++k)
         for (const cl::Path& r : *c.rings) {
-          clip_by_convex(r, w, ox, oy, poly_, scratch_);
+          clip_by_convex(r, window_list[k], ox, oy, poly_, scratch_);
           if (poly_.empty()) continue;
           overlap += signed_area(poly_);
           if (c.square) continue;
@@ -706,8 +709,11 @@ class tiled_coverage::impl {
         }
       largest = std::max(largest, overlap);
       covered += overlap - in_squares;
+      // What is left of the candidates only adds cover (each term is an area outside the
+      // squares): once p is covered, it is hidden whatever they hold.
+      if (covered >= area - 0.5 && largest >= min_overlap * std::min(1.0, area))
+        return outcome::hidden;
     }
-    const double area = cl::Area(p);
     if (largest < min_overlap * std::min(1.0, area)) return outcome::visible;
     if (covered >= area - 0.5) return outcome::hidden;
     return outcome::unknown;

@@ -49,12 +49,12 @@ bool convex_ccw(const ClipperLib::Path& r);
 /// The ring without its vertices collinear with their neighbours (exact integer test).
 ClipperLib::Path without_straight_vertices(const ClipperLib::Path& r);
 
-/// The union of disjoint counter-clockwise rings that meet only along shared edges (the
-/// same grid points, walked in opposite directions): the directed edges left after cancelling
-/// each one against its reverse, chained into rings (holes clockwise), their straight vertices
-/// dropped. False, with `out` unspecified, when the edges left do not chain into rings one
-/// way only (rings touching at a vertex, or edges that do not match exactly): then a general
-/// Boolean is needed.
+/// The union of disjoint regions (outer rings counter-clockwise, holes clockwise) that meet
+/// only along shared edges (the same grid points, walked in opposite directions): the directed
+/// edges left after cancelling each one against its reverse, chained into rings (holes
+/// clockwise), their straight vertices dropped. False, with `out` unspecified, when the edges left
+/// do not chain into rings one way only (rings touching at a vertex, or edges that do not match
+/// exactly): then a general Boolean is needed.
 bool union_by_shared_edges(const std::vector<const ClipperLib::Path*>& rings,
                            ClipperLib::Paths& out);
 
