@@ -170,6 +170,37 @@ TEST(FeatureEdges, ASilhouetteSeparatesAFrontFaceFromOneThatIsNot) {
   EXPECT_EQ(silhouettes, 1u);
 }
 
+TEST(FeatureEdges, AKeptEdgeGraphServesEveryViewAndIsRemadeWhenTheSoupChangesByOneUlp) {
+  // Oracle: the edges found from scratch for each viewer (the graph made again each time).
+  triangle_soup s = unit_cube();
+  add_quad(s, {0, 0, 1}, {1, 0, 1}, {1.5, 0, 1.2}, {0.5, 0, 1.2});  // a fin: boundary + creases
+  geom::edge_graph_cache cache;
+  const std::shared_ptr<const geom::edge_graph> first = cache.get(s, 30);
+  const hpoint viewers[] = {{3, 2.5, 4}, {0.5, -7, 1}, {-2, 0.5, 0.5}, {0, 0, 1, 0}, {1, -1, 1, 0}};
+  for (const hpoint& e : viewers) {
+    const std::shared_ptr<const geom::edge_graph> g = cache.get(s, 30);
+    EXPECT_EQ(g, first);  // kept
+    const geom::view_features kept = geom::find_feature_edges(*g, s, e);
+    const geom::view_features fresh = geom::find_feature_edges(s, e, 30);
+    ASSERT_EQ(kept.edges.size(), fresh.edges.size());
+    for (std::size_t i = 0; i < kept.edges.size(); ++i) {
+      EXPECT_EQ(kept.edges[i].a, fresh.edges[i].a);
+      EXPECT_EQ(kept.edges[i].b, fresh.edges[i].b);
+      EXPECT_EQ(kept.edges[i].kind, fresh.edges[i].kind);
+    }
+    EXPECT_EQ(kept.facing, fresh.facing);
+    EXPECT_EQ(kept.feature_sides, fresh.feature_sides);
+  }
+  EXPECT_NE(cache.get(s, 45), first);  // another crease angle
+  const std::shared_ptr<const geom::edge_graph> at45 = cache.get(s, 45);
+  s.vertices[0][0] = std::nextafter(s.vertices[0][0], 1.0);
+  EXPECT_NE(cache.get(s, 45), at45);  // one coordinate one ulp off
+  s.triangles[0].face += 1;
+  const std::shared_ptr<const geom::edge_graph> refaced = cache.get(s, 45);
+  EXPECT_EQ(refaced->edges.size(), geom::edge_graph_of(s, 45).edges.size());
+  EXPECT_EQ(cache.get(s, 45), refaced);
+}
+
 // ---- runs ---------------------------------------------------------------------------------
 
 /// A parallel (orthographic) frame looking from `eye` towards `at` (direction at - eye).

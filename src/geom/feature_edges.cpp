@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "geom/weld.h"
 
@@ -26,48 +27,40 @@ int facing(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint& viewer)
   return -det_value(point_of(a), point_of(b), point_of(c), viewer).sign();
 }
 
-view_features find_feature_edges(const triangle_soup& s, const hpoint& viewer, double crease_deg) {
+edge_graph edge_graph_of(const triangle_soup& s, double crease_deg) {
   const welded_ids welded = weld(s.vertices);
   const std::vector<std::uint32_t>& id = welded.id;
-  view_features out;
+  edge_graph g;
+  g.crease_deg = crease_deg;
   const std::size_t n = s.triangles.size();
-  out.facing.assign(n, 0);
-  out.feature_sides.assign(n, 0);
+  g.degenerate.assign(n, 0);
   std::vector<vec3d> normal(n);
-  struct half {
+  struct keyed {
     std::uint64_t key;
-    std::uint32_t tri;
-    std::uint32_t side;
+    edge_graph::half h;
   };
-  std::vector<half> halves;
+  std::vector<keyed> halves;
   halves.reserve(3 * n);
-  {
-    const rounding_guard guard;
-    for (std::size_t t = 0; t < n; ++t) {
-      const auto& v = s.triangles[t].v;
-      const vec3d &a = s.vertices[v[0]], &b = s.vertices[v[1]], &c = s.vertices[v[2]];
-      const det_value plane_with_e(point_of(a), point_of(b), point_of(c), viewer);
-      out.facing[t] = static_cast<std::int8_t>(-plane_with_e.sign());
-    }
-  }
   for (std::size_t t = 0; t < n; ++t) {
     const auto& v = s.triangles[t].v;
     normal[t] =
         cross(sub(s.vertices[v[1]], s.vertices[v[0]]), sub(s.vertices[v[2]], s.vertices[v[0]]));
     if (id[v[0]] == id[v[1]] || id[v[1]] == id[v[2]] || id[v[2]] == id[v[0]] ||
         dot(normal[t], normal[t]) == 0) {
-      out.facing[t] = 0;
+      g.degenerate[t] = 1;
       continue;  // degenerate: no plane, not drawn
     }
     for (std::uint32_t k = 0; k < 3; ++k) {
       std::uint64_t p = id[v[k]], q = id[v[(k + 1) % 3]];
       if (p > q) std::swap(p, q);
-      halves.push_back({p << 32 | q, static_cast<std::uint32_t>(t), k});
+      halves.push_back({p << 32 | q, {static_cast<std::uint32_t>(t), k}});
     }
   }
-  std::sort(halves.begin(), halves.end(), [](const half& x, const half& y) {
-    return x.key != y.key ? x.key < y.key : x.tri < y.tri;
+  std::sort(halves.begin(), halves.end(), [](const keyed& x, const keyed& y) {
+    return x.key != y.key ? x.key < y.key : x.h.tri < y.h.tri;
   });
+  g.halves.reserve(halves.size());
+  for (const keyed& k : halves) g.halves.push_back(k.h);
   const double cos_crease = std::cos(crease_deg * M_PI / 180.0);
   std::vector<std::uint32_t> tris;
   for (std::size_t i = 0; i < halves.size();) {
@@ -76,47 +69,103 @@ view_features find_feature_edges(const triangle_soup& s, const hpoint& viewer, d
     // Distinct faces around the edge (two triangles of one face: a fan diagonal).
     tris.clear();
     for (std::size_t k = i; k < j; ++k) {
-      const std::uint32_t t = halves[k].tri;
+      const std::uint32_t t = halves[k].h.tri;
       if (std::none_of(tris.begin(), tris.end(),
                        [&](std::uint32_t u) { return s.triangles[u].face == s.triangles[t].face; }))
         tris.push_back(t);
     }
     const std::size_t uses = j - i;
-    feature_edge e;
-    bool draw = false;
+    edge_graph::edge e;
+    bool kept = true;
     if (uses >= 3) {
-      draw = true;
       e.kind = feature_kind::non_manifold;
     } else if (tris.size() == 1) {
-      draw = uses == 1;  // boundary; two triangles of one face: a fan diagonal
+      kept = uses == 1;  // boundary; two triangles of one face: a fan diagonal
       e.kind = feature_kind::boundary;
     } else {
       const vec3d& n0 = normal[tris[0]];
       const vec3d& n1 = normal[tris[1]];
-      if (dot(n0, n1) < cos_crease * std::sqrt(dot(n0, n0) * dot(n1, n1))) {
-        draw = true;
-        e.kind = feature_kind::crease;
-      } else if ((out.facing[tris[0]] > 0) != (out.facing[tris[1]] > 0)) {
-        draw = true;
-        e.kind = feature_kind::silhouette;
-      }
+      e.kind = dot(n0, n1) < cos_crease * std::sqrt(dot(n0, n0) * dot(n1, n1))
+                   ? feature_kind::crease
+                   : feature_kind::silhouette;
     }
-    if (draw) {
-      const half& h = halves[i];
+    if (kept) {
+      const edge_graph::half& h = halves[i].h;
       const auto& tv = s.triangles[h.tri].v;
+      e.first = static_cast<std::uint32_t>(i);
+      e.end = static_cast<std::uint32_t>(j);
       e.a = tv[h.side];
       e.b = tv[(h.side + 1) % 3];
       e.tris[0] = tris[0];
       e.tris[1] = tris.size() > 1 ? tris[1] : tris[0];
-      e.faces[0] = s.triangles[e.tris[0]].face;
-      e.faces[1] = s.triangles[e.tris[1]].face;
-      out.edges.push_back(e);
-      for (std::size_t k = i; k < j; ++k)
-        out.feature_sides[halves[k].tri] |= static_cast<std::uint8_t>(1u << halves[k].side);
+      g.edges.push_back(e);
     }
     i = j;
   }
+  return g;
+}
+
+view_features find_feature_edges(const edge_graph& g, const triangle_soup& s,
+                                 const hpoint& viewer) {
+  view_features out;
+  const std::size_t n = s.triangles.size();
+  out.facing.assign(n, 0);
+  out.feature_sides.assign(n, 0);
+  {
+    const rounding_guard guard;
+    for (std::size_t t = 0; t < n; ++t) {
+      if (g.degenerate[t]) continue;
+      const auto& v = s.triangles[t].v;
+      const vec3d &a = s.vertices[v[0]], &b = s.vertices[v[1]], &c = s.vertices[v[2]];
+      const det_value plane_with_e(point_of(a), point_of(b), point_of(c), viewer);
+      out.facing[t] = static_cast<std::int8_t>(-plane_with_e.sign());
+    }
+  }
+  for (const edge_graph::edge& ge : g.edges) {
+    // A smooth edge between two faces is drawn where one faces the viewer and the other not.
+    if (ge.kind == feature_kind::silhouette &&
+        (out.facing[ge.tris[0]] > 0) == (out.facing[ge.tris[1]] > 0))
+      continue;
+    feature_edge e;
+    e.a = ge.a;
+    e.b = ge.b;
+    e.tris[0] = ge.tris[0];
+    e.tris[1] = ge.tris[1];
+    e.faces[0] = s.triangles[e.tris[0]].face;
+    e.faces[1] = s.triangles[e.tris[1]].face;
+    e.kind = ge.kind;
+    out.edges.push_back(e);
+    for (std::uint32_t k = ge.first; k < ge.end; ++k)
+      out.feature_sides[g.halves[k].tri] |= static_cast<std::uint8_t>(1u << g.halves[k].side);
+  }
   return out;
+}
+
+view_features find_feature_edges(const triangle_soup& s, const hpoint& viewer, double crease_deg) {
+  return find_feature_edges(edge_graph_of(s, crease_deg), s, viewer);
+}
+
+// The byte comparison below needs types without padding.
+static_assert(sizeof(vec3d) == 3 * sizeof(double));
+static_assert(sizeof(soup_triangle) == 4 * sizeof(std::uint32_t));
+
+std::shared_ptr<const edge_graph> edge_graph_cache::get(const triangle_soup& soup,
+                                                        double crease_deg) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  // Byte for byte: a vertex's -0.0 and 0.0 differ here (a new graph, the same edges).
+  const bool same =
+      graph_ && graph_->crease_deg == crease_deg && vertices_.size() == soup.vertices.size() &&
+      triangles_.size() == soup.triangles.size() &&
+      (vertices_.empty() || std::memcmp(vertices_.data(), soup.vertices.data(),
+                                        vertices_.size() * sizeof(vec3d)) == 0) &&
+      (triangles_.empty() || std::memcmp(triangles_.data(), soup.triangles.data(),
+                                         triangles_.size() * sizeof(soup_triangle)) == 0);
+  if (!same) {
+    graph_ = std::make_shared<const edge_graph>(edge_graph_of(soup, crease_deg));
+    vertices_ = soup.vertices;
+    triangles_ = soup.triangles;
+  }
+  return graph_;
 }
 
 }  // namespace exbsp::geom

@@ -17,6 +17,8 @@
 // triangles (no plane) are left out.
 #pragma once
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include <exbsp/core/export.h>
@@ -47,8 +49,50 @@ struct view_features {
 /// Exact facing of triangle (a, b, c) for viewer E (notation): 1, -1 or 0.
 EXBSP_EXPORT int facing(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint& viewer);
 
+/// What of the feature edges does not depend on the viewer: the soup's edges with the
+/// triangles around each, and whether each is drawn in every view (boundary, non-manifold,
+/// crease) or only where it is a silhouette. Made once per soup and crease angle
+/// (edge_graph_of), read for each viewer by find_feature_edges.
+struct edge_graph {
+  /// A triangle side: triangle `tri`'s side (v[side], v[side + 1 mod 3]).
+  struct half {
+    std::uint32_t tri, side;
+  };
+  /// An edge that may be drawn: its halves are halves[first, end).
+  struct edge {
+    std::uint32_t first = 0, end = 0;
+    std::uint32_t a = 0, b = 0;      ///< soup vertex indices (as the first triangle has them)
+    std::uint32_t tris[2] = {0, 0};  ///< its first two triangles of distinct faces
+    feature_kind kind = feature_kind::boundary;  ///< silhouette: drawn only as one
+  };
+  double crease_deg = 0;
+  std::vector<std::uint8_t> degenerate;  ///< per triangle: no plane (never facing, no sides)
+  std::vector<half> halves;
+  std::vector<edge> edges;  ///< in order of their welded vertex pairs (fan diagonals left out)
+};
+
+/// The edge graph of `soup`. Precondition: 0 < crease_deg <= 180.
+EXBSP_EXPORT edge_graph edge_graph_of(const triangle_soup& soup, double crease_deg);
+
+/// The feature edges of `soup` for `viewer`, from its edge graph.
+EXBSP_EXPORT view_features find_feature_edges(const edge_graph& graph, const triangle_soup& soup,
+                                              const hpoint& viewer);
+
 /// The feature edges of `soup` for `viewer`. Precondition: 0 < crease_deg <= 180.
 EXBSP_EXPORT view_features find_feature_edges(const triangle_soup& soup, const hpoint& viewer,
                                               double crease_deg);
+
+/// An edge graph kept for the views of one soup: made again only when the soup (compared byte
+/// for byte) or the crease angle differs from the one it was made from. Thread-safe.
+class edge_graph_cache {
+ public:
+  EXBSP_EXPORT std::shared_ptr<const edge_graph> get(const triangle_soup& soup, double crease_deg);
+
+ private:
+  std::mutex mutex_;
+  std::vector<vec3d> vertices_;
+  std::vector<soup_triangle> triangles_;
+  std::shared_ptr<const edge_graph> graph_;
+};
 
 }  // namespace exbsp::geom

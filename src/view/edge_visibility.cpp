@@ -226,10 +226,18 @@ bool hidden_by(const triangle_soup& s, const geom::view_features& features, std:
 
 }  // namespace
 
+std::shared_ptr<geom::edge_graph_cache> new_edge_graph_cache() {
+  return std::make_shared<geom::edge_graph_cache>();
+}
+
 edge_visibility visible_runs(const frame& f, double crease_deg) {
   edge_visibility out;
   const geom::hpoint eye = viewer_of(f);
-  out.features = geom::find_feature_edges(f.soup, eye, crease_deg);
+  const std::shared_ptr<const geom::edge_graph> graph =
+      f.edge_graphs
+          ? f.edge_graphs->get(f.soup, crease_deg)
+          : std::make_shared<const geom::edge_graph>(geom::edge_graph_of(f.soup, crease_deg));
+  out.features = geom::find_feature_edges(*graph, f.soup, eye);
   const geom::view_features& features = out.features;
   const triangle_soup& s = f.soup;
   occluder_grid grid(f, features);

@@ -36,7 +36,14 @@
 #include <exbsp/view/view_setup.h>
 #include <exbsp/view/viewport.h>
 
+namespace exbsp::geom {
+class edge_graph_cache;  // src/geom/feature_edges.h
+}  // namespace exbsp::geom
+
 namespace exbsp::view {
+
+/// A new, empty cache of the soup's edge graph (frame::edge_graphs).
+EXBSP_EXPORT std::shared_ptr<geom::edge_graph_cache> new_edge_graph_cache();
 
 /// How the painter (paint.h) walks the polygons: the reference back-to-front walk, or
 /// front-to-back with a coverage mask. Both give the same image.
@@ -95,6 +102,10 @@ struct frame {
   /// "transform+clip": cut polygons at the near plane (default) or drop them (teaching view).
   near_plane_rule near_plane = near_plane_rule::clip;
   vector_phase_seconds vector_seconds;  ///< svg / pdf stage (visible regions): phase times
+  /// The feature edges' view-independent part (the soup's edges and the triangles around each),
+  /// kept across views by the svg, pdf and edges stages: made again only when the soup or the
+  /// crease angle is not the one it was made from. Copies of a frame share it (thread-safe).
+  std::shared_ptr<geom::edge_graph_cache> edge_graphs = new_edge_graph_cache();
   /// Called with each stage's name as it starts (pipeline::run), e.g. for a progress line;
   /// may be empty.
   std::function<void(const std::string&)> on_stage;
