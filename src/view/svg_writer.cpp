@@ -3,11 +3,14 @@
 // shortest text that reads back as the same double.
 #include "view/svg_writer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <utility>
 
 #include "core/atomic_file.h"
 #include "core/svg_text.h"
+#include "view/workers.h"
 
 namespace exbsp::view {
 
@@ -24,16 +27,100 @@ std::string hex_color(rgb8 c) { return svg::hex_color(c.r, c.g, c.b); }
 
 /// A grid value as pixels: v / 100 with at most two decimals ("12", "12.5", "-0.25").
 void append_grid(std::string& out, long long v) {
+  char buf[32];
+  char* end = buf;
   if (v < 0) {
-    out += '-';
+    *end++ = '-';
     v = -v;
   }
-  out += std::to_string(v / grid_per_pixel);
-  long long frac = v % grid_per_pixel;
-  if (frac == 0) return;
-  out += '.';
-  out += static_cast<char>('0' + frac / 10);
-  if (frac % 10 != 0) out += static_cast<char>('0' + frac % 10);
+  end = std::to_chars(end, buf + sizeof buf, v / grid_per_pixel).ptr;
+  const long long frac = v % grid_per_pixel;
+  if (frac != 0) {
+    *end++ = '.';
+    *end++ = static_cast<char>('0' + frac / 10);
+    if (frac % 10 != 0) *end++ = static_cast<char>('0' + frac % 10);
+  }
+  out.append(buf, end);
+}
+
+}  // namespace
+
+namespace {
+
+/// The group (<g>) a path of a drawing is drawn in: its id and attributes.
+std::pair<std::string, std::string> group_of(const vector_path& p, const char* dash) {
+  switch (p.kind) {
+    case vector_path::kind_type::underlay:
+      return {"underlay", ""};
+    case vector_path::kind_type::region:
+      return {"mesh-" + std::to_string(p.mesh), ""};
+    case vector_path::kind_type::hidden_edge:
+    case vector_path::kind_type::visible_edge: {
+      const bool hidden = p.kind == vector_path::kind_type::hidden_edge;
+      char width[32];
+      std::snprintf(width, sizeof width, "%g", hidden ? hidden_edge_width : visible_edge_width);
+      return {
+          hidden ? "hidden-edges" : "visible-edges",
+          std::string(" fill=\"none\" stroke-width=\"") + width + "\"" +
+              (hidden ? std::string(" stroke-dasharray=\"") + dash + "\" stroke-linecap=\"butt\""
+                      : std::string(" stroke-linecap=\"round\" stroke-linejoin=\"round\""))};
+    }
+    case vector_path::kind_type::curve:
+    case vector_path::kind_type::point:
+      return {"curves", " fill=\"none\" stroke-width=\"1\" stroke-linecap=\"butt\""};
+  }
+  return {"", ""};
+}
+
+/// The element of path p (without its group).
+void append_path(std::string& out, const vector_path& p, long long y_top) {
+  const std::string color = hex_color(p.color);
+  auto point = [&](const grid_point& q) {
+    append_grid(out, q.x);
+    out += ' ';
+    append_grid(out, y_top - q.y);
+  };
+  auto rings = [&](bool closed) {
+    bool first = true;
+    for (const std::vector<grid_point>& ring : p.rings) {
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        out += k == 0 ? (first ? "M" : " M") : " L";
+        point(ring[k]);
+      }
+      if (closed) out += " Z";
+      first = false;
+    }
+  };
+  switch (p.kind) {
+    case vector_path::kind_type::underlay:
+      out += "<path fill=\"" + color + "\" d=\"";
+      rings(true);
+      out += "\"/>\n";
+      break;
+    case vector_path::kind_type::region:
+      out += "<path data-face=\"" + std::to_string(p.face) + "\" fill=\"" + color + "\" d=\"";
+      rings(true);
+      out += "\"/>\n";
+      break;
+    case vector_path::kind_type::hidden_edge:
+    case vector_path::kind_type::visible_edge:
+      out += "<path data-mesh=\"" + std::to_string(p.mesh) + "\" stroke=\"" + color + "\" d=\"";
+      rings(false);
+      out += "\"/>\n";
+      break;
+    case vector_path::kind_type::curve:
+      out += "<path data-curve=\"" + std::to_string(p.face) + "\" stroke=\"" + color + "\" d=\"";
+      rings(false);
+      out += "\"/>\n";
+      break;
+    case vector_path::kind_type::point:
+      out += "<rect data-curve=\"" + std::to_string(p.face) + "\" x=\"";
+      append_grid(out, p.rings[0][0].x - grid_per_pixel / 2);
+      out += "\" y=\"";
+      append_grid(out, y_top - p.rings[0][0].y - grid_per_pixel / 2);
+      out += "\" width=\"1\" height=\"1\" fill=\"" + color + "\"/>\n";
+      break;
+  }
 }
 
 }  // namespace
@@ -46,78 +133,31 @@ std::string svg_document(const vector_drawing& d) {
   out += svg::open_root(w, h, "version=\"1.1\"");
   out += "<rect x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h + "\" fill=\"" +
          hex_color(d.background) + "\"/>\n";
-  auto point = [&](const grid_point& q) {
-    append_grid(out, q.x);
-    out += ' ';
-    append_grid(out, y_top - q.y);
-  };
-  auto rings = [&](const vector_path& p, bool closed) {
-    bool first = true;
-    for (const std::vector<grid_point>& ring : p.rings) {
-      for (std::size_t k = 0; k < ring.size(); ++k) {
-        out += k == 0 ? (first ? "M" : " M") : " L";
-        point(ring[k]);
-      }
-      if (closed) out += " Z";
-      first = false;
-    }
-  };
-  std::string group;  // the open group's id
-  auto open_group = [&](const std::string& id, const std::string& attributes) {
-    if (group == id) return;
-    if (!group.empty()) out += "</g>\n";
-    group = id;
-    out += "<g id=\"" + id + "\"" + attributes + ">\n";
-  };
   char dash[64];
   std::snprintf(dash, sizeof dash, "%g %g", hidden_edge_dash[0], hidden_edge_dash[1]);
-  for (const vector_path& p : d.paths) {
-    const std::string mesh = std::to_string(p.mesh), color = hex_color(p.color);
-    switch (p.kind) {
-      case vector_path::kind_type::underlay:
-        open_group("underlay", "");
-        out += "<path fill=\"" + color + "\" d=\"";
-        rings(p, true);
-        out += "\"/>\n";
-        break;
-      case vector_path::kind_type::region:
-        open_group("mesh-" + mesh, "");
-        out += "<path data-face=\"" + std::to_string(p.face) + "\" fill=\"" + color + "\" d=\"";
-        rings(p, true);
-        out += "\"/>\n";
-        break;
-      case vector_path::kind_type::hidden_edge:
-      case vector_path::kind_type::visible_edge: {
-        const bool hidden = p.kind == vector_path::kind_type::hidden_edge;
-        char width[32];
-        std::snprintf(width, sizeof width, "%g", hidden ? hidden_edge_width : visible_edge_width);
-        open_group(
-            hidden ? "hidden-edges" : "visible-edges",
-            std::string(" fill=\"none\" stroke-width=\"") + width + "\"" +
-                (hidden ? std::string(" stroke-dasharray=\"") + dash + "\" stroke-linecap=\"butt\""
-                        : std::string(" stroke-linecap=\"round\" stroke-linejoin=\"round\"")));
-        out += "<path data-mesh=\"" + mesh + "\" stroke=\"" + color + "\" d=\"";
-        rings(p, false);
-        out += "\"/>\n";
-        break;
+  // A path's group depends on the path alone, so blocks of paths are written on the workers,
+  // each opening a group where its path's differs from the one before, and joined in order.
+  const std::vector<vector_path>& paths = d.paths;
+  constexpr std::size_t block = 2048;
+  std::vector<std::string> parts((paths.size() + block - 1) / block);
+  parallel_for(parts.size(), hardware_workers(), [&](std::size_t b, unsigned) {
+    std::string& part = parts[b];
+    std::string previous = b == 0 ? std::string() : group_of(paths[b * block - 1], dash).first;
+    for (std::size_t i = b * block; i < std::min(paths.size(), (b + 1) * block); ++i) {
+      auto [id, attributes] = group_of(paths[i], dash);
+      if (id != previous) {
+        if (!previous.empty()) part += "</g>\n";
+        part += "<g id=\"" + id + "\"" + attributes + ">\n";
+        previous = std::move(id);
       }
-      case vector_path::kind_type::curve:
-        open_group("curves", " fill=\"none\" stroke-width=\"1\" stroke-linecap=\"butt\"");
-        out += "<path data-curve=\"" + std::to_string(p.face) + "\" stroke=\"" + color + "\" d=\"";
-        rings(p, false);
-        out += "\"/>\n";
-        break;
-      case vector_path::kind_type::point:
-        open_group("curves", " fill=\"none\" stroke-width=\"1\" stroke-linecap=\"butt\"");
-        out += "<rect data-curve=\"" + std::to_string(p.face) + "\" x=\"";
-        append_grid(out, p.rings[0][0].x - grid_per_pixel / 2);
-        out += "\" y=\"";
-        append_grid(out, y_top - p.rings[0][0].y - grid_per_pixel / 2);
-        out += "\" width=\"1\" height=\"1\" fill=\"" + color + "\"/>\n";
-        break;
+      append_path(part, paths[i], y_top);
     }
-  }
-  if (!group.empty()) out += "</g>\n";
+  });
+  std::size_t size = out.size() + 16;
+  for (const std::string& part : parts) size += part.size();
+  out.reserve(size);
+  for (const std::string& part : parts) out += part;
+  if (!paths.empty()) out += "</g>\n";
   out += "</svg>\n";
   return d.placed() ? place_svg(out, d.height, d.placement) : out;
 }

@@ -222,14 +222,13 @@ struct snapped_polygons {
   }
 };
 
-/// Snaps every polygon of the frame (snapped_polygons).
-snapped_polygons snap(const frame& f) {
-  snapped_polygons s;
-  s.start.reserve(f.polygons.size() + 1);
-  s.boxes.resize(f.polygons.size());
+/// Snaps the polygons [k0, k1) of the frame into s (polygon k0 + i is s's polygon i).
+void snap_range(const frame& f, std::size_t k0, std::size_t k1, snapped_polygons& s) {
+  s.start.reserve(k1 - k0 + 1);
+  s.boxes.resize(k1 - k0);
   s.start.push_back(0);
   cl::Path poly;  // polygon k for Clipper's area, one buffer for all
-  for (std::size_t k = 0; k < f.polygons.size(); ++k) {
+  for (std::size_t k = k0; k < k1; ++k) {
     const std::size_t first = s.points.size();
     for (const window_point& w : f.polygons[k].v) {
       const cl::IntPoint q = grid_of(f.view.vp, w);
@@ -243,9 +242,34 @@ snapped_polygons snap(const frame& f) {
     } else {
       if (area < 0)
         std::reverse(s.points.begin() + static_cast<std::ptrdiff_t>(first), s.points.end());
-      s.boxes[k] = cover::bbox_of(poly);
+      s.boxes[k - k0] = cover::bbox_of(poly);
     }
     s.start.push_back(s.points.size());
+  }
+}
+
+/// Snaps every polygon of the frame (snapped_polygons): in a fixed number of blocks of
+/// consecutive polygons, snapped on the workers and joined in order (the same arrays whatever
+/// the number of workers).
+snapped_polygons snap(const frame& f, unsigned workers) {
+  constexpr std::size_t blocks = 16;
+  const std::size_t n = f.polygons.size();
+  std::vector<snapped_polygons> part(blocks);
+  parallel_for(blocks, workers, [&](std::size_t b, unsigned) {
+    snap_range(f, n * b / blocks, n * (b + 1) / blocks, part[b]);
+  });
+  snapped_polygons s;
+  std::size_t points = 0;
+  for (const snapped_polygons& p : part) points += p.points.size();
+  s.points.reserve(points);
+  s.start.reserve(n + 1);
+  s.boxes.reserve(n);
+  s.start.push_back(0);
+  for (const snapped_polygons& p : part) {
+    const std::size_t base = s.points.size();
+    s.points.insert(s.points.end(), p.points.begin(), p.points.end());
+    for (std::size_t i = 1; i < p.start.size(); ++i) s.start.push_back(base + p.start[i]);
+    s.boxes.insert(s.boxes.end(), p.boxes.begin(), p.boxes.end());
   }
   return s;
 }
@@ -378,7 +402,7 @@ vector_drawing visible_drawing(const frame& f) {
   // Snap every polygon to the grid (counter-clockwise), then index the points for mending
   // T-junctions. (Split over the cores this was no faster: the edges' thread runs meanwhile.)
   const unsigned workers = hardware_workers();  // strips, regions, underlay groups: in slots
-  const snapped_polygons snapped = snap(f);
+  const snapped_polygons snapped = snap(f, workers);
   const t_junction_mender mender(snapped.points, width, height);
   d.seconds.snap = since(t0);
   t0 = clock::now();
@@ -521,15 +545,25 @@ vector_drawing visible_drawing(const frame& f) {
   // only (row runs of squares: inside the union of its regions, but for rounding slivers),
   // and its regions lying wholly in them join no union.
   constexpr long long underlay_side = 64 * grid_per_pixel;
+  // The underlays to draw, in order: their regions, colour and mesh (full tiles), then their
+  // groups; all groups' unions are taken in one pass over the workers (one pass per underlay
+  // started threads thousands of times on a lit mesh, whose colours are many).
+  struct underlay_job {
+    const std::vector<std::size_t>* members;  ///< its regions
+    rgb8 color;
+    std::optional<std::uint32_t> mesh;
+    std::vector<std::vector<std::size_t>> groups;  ///< regions, per square, in the squares' order
+  };
+  std::vector<underlay_job> jobs;
   auto add_underlay = [&](const std::vector<std::size_t>& members, rgb8 color,
                           std::optional<std::uint32_t> mesh) {
-    vector_path u;
-    u.kind = vector_path::kind_type::underlay;
-    u.color = color;
-    if (mesh)
-      for (const cl::Path& r : coverage.full_tiles_of(*mesh)) u.rings.push_back(to_ring(r));
+    jobs.push_back({&members, color, mesh, {}});
+  };
+  // A job's groups (independent of the other jobs: found on the workers).
+  auto group_job = [&](underlay_job& job) {
+    const std::optional<std::uint32_t>& mesh = job.mesh;
     std::map<std::pair<long long, long long>, std::vector<std::size_t>> groups;
-    for (std::size_t k : members) {
+    for (std::size_t k : *job.members) {
       if (mesh) {
         bbox_i b{regions[k].rings[0][0].x, regions[k].rings[0][0].y, regions[k].rings[0][0].x,
                  regions[k].rings[0][0].y};
@@ -542,32 +576,7 @@ vector_drawing visible_drawing(const frame& f) {
       const grid_point& q = regions[k].rings[0][0];
       groups[{q.x / underlay_side, q.y / underlay_side}].push_back(k);
     }
-    // The groups' unions are independent: over the workers, into slots in the map's order.
-    std::vector<const std::vector<std::size_t>*> group_list;
-    for (const auto& entry : groups) group_list.push_back(&entry.second);
-    std::vector<std::vector<std::vector<grid_point>>> unions(group_list.size());
-    parallel_for(group_list.size(), workers, [&](std::size_t g, unsigned w) {
-      cl::Clipper& clipper = work[w].clipper;
-      cl::Paths& merged = work[w].merged;
-      clipper.Clear();
-      for (std::size_t k : *group_list[g])
-        for (const auto& ring : regions[k].rings) {
-          cl::Path p;
-          p.reserve(ring.size());
-          for (const grid_point& q : ring) p.push_back({q.x, q.y});
-          clipper.AddPath(p, cl::ptSubject, true);
-        }
-      merged.clear();
-      clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
-      for (cl::Path& ring : merged) {
-        remove_spikes(ring, strip_lines);
-        if (ring.size() >= 3) unions[g].push_back(to_ring(ring));
-      }
-    });
-    for (auto& rings : unions)
-      u.rings.insert(u.rings.end(), std::make_move_iterator(rings.begin()),
-                     std::make_move_iterator(rings.end()));
-    if (!u.rings.empty()) d.paths.push_back(std::move(u));
+    for (auto& entry : groups) job.groups.push_back(std::move(entry.second));
   };
   // First one per mesh of two or more regions, in their mean colour weighted by area: under
   // a seam between two lit faces of a part shows a colour near both, not the background.
@@ -577,11 +586,11 @@ vector_drawing visible_drawing(const frame& f) {
   for (const auto& [mesh, members] : by_mesh) {
     if (members.size() < 2) continue;
     double sum[3] = {0, 0, 0}, total = 0;
+    cl::Path p;  // one buffer for every ring's area
     for (std::size_t k : members) {
       double area = 0;
       for (const auto& ring : regions[k].rings) {
-        cl::Path p;
-        p.reserve(ring.size());
+        p.clear();
         for (const grid_point& q : ring) p.push_back({q.x, q.y});
         area += cl::Area(p);
       }
@@ -600,18 +609,84 @@ vector_drawing visible_drawing(const frame& f) {
   }
   // Then one per colour used by two or more regions: where faces of one colour meet, the
   // seam shows exactly that colour.
-  std::map<std::array<std::uint8_t, 3>, std::vector<std::size_t>> by_color;
-  for (std::size_t k = 0; k < regions.size(); ++k)
-    by_color[{regions[k].color.r, regions[k].color.g, regions[k].color.b}].push_back(k);
-  for (const auto& entry : by_color) {
-    const std::vector<std::size_t>& members = entry.second;  // read by the lambda below
+  // The regions of each colour, in the order of (r, g, b) and of the regions: sorted pairs of
+  // the colour packed in one integer and the region (a std::map of colours cost 8 ms here on
+  // bunny00, its nodes and lists allocated one by one).
+  std::vector<std::pair<std::uint32_t, std::size_t>> keyed(regions.size());
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    const rgb8& c = regions[k].color;
+    keyed[k] = {static_cast<std::uint32_t>(c.r) << 16 | static_cast<std::uint32_t>(c.g) << 8 | c.b,
+                k};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::vector<std::size_t>> by_color;  // colours of two or more regions
+  for (std::size_t i = 0; i < keyed.size();) {
+    std::size_t j = i;
+    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+    if (j - i >= 2) {
+      by_color.emplace_back();
+      for (std::size_t k = i; k < j; ++k) by_color.back().push_back(keyed[k].second);
+    }
+    i = j;
+  }
+  for (const std::vector<std::size_t>& members : by_color) {
     const rgb8 color = regions[members[0]].color;
     const bool drawn = std::any_of(done.begin(), done.end(), [&](const auto& u) {
       return u.second == color && u.first == members;
     });
-    if (members.size() >= 2 && !drawn) add_underlay(members, color, std::nullopt);
+    if (!drawn) add_underlay(members, color, std::nullopt);
   }
-  d.paths.insert(d.paths.end(), regions.begin(), regions.end());
+  parallel_for(jobs.size(), workers, [&](std::size_t j, unsigned) { group_job(jobs[j]); });
+  // Every group's union, over the workers, into slots in the jobs' order.
+  std::vector<const std::vector<std::size_t>*> group_list;
+  for (const underlay_job& job : jobs)
+    for (const std::vector<std::size_t>& g : job.groups) group_list.push_back(&g);
+  std::vector<std::vector<std::vector<grid_point>>> unions(group_list.size());
+  parallel_for(group_list.size(), workers, [&](std::size_t g, unsigned w) {
+    cl::Clipper& clipper = work[w].clipper;
+    cl::Paths& merged = work[w].merged;
+    clipper.Clear();
+    for (std::size_t k : *group_list[g])
+      for (const auto& ring : regions[k].rings) {
+        cl::Path p;
+        p.reserve(ring.size());
+        for (const grid_point& q : ring) p.push_back({q.x, q.y});
+        clipper.AddPath(p, cl::ptSubject, true);
+      }
+    merged.clear();
+    clipper.Execute(cl::ctUnion, merged, cl::pftNonZero, cl::pftNonZero);
+    for (cl::Path& ring : merged) {
+      remove_spikes(ring, strip_lines);
+      if (ring.size() >= 3) unions[g].push_back(to_ring(ring));
+    }
+  });
+  std::size_t next_group = 0;
+  for (const underlay_job& job : jobs) {
+    vector_path u;
+    u.kind = vector_path::kind_type::underlay;
+    u.color = job.color;
+    if (job.mesh)
+      for (const cl::Path& r : coverage.full_tiles_of(*job.mesh)) u.rings.push_back(to_ring(r));
+    for (std::size_t g = 0; g < job.groups.size(); ++g, ++next_group)
+      u.rings.insert(u.rings.end(), std::make_move_iterator(unions[next_group].begin()),
+                     std::make_move_iterator(unions[next_group].end()));
+    if (!u.rings.empty()) d.paths.push_back(std::move(u));
+  }
+  d.paths.insert(d.paths.end(), std::make_move_iterator(regions.begin()),
+                 std::make_move_iterator(regions.end()));
+  // The coverage's pieces and the faces' lists of them are many small blocks: freed on the
+  // workers (freed on return, one after the other, they cost a twentieth of the stage).
+  constexpr std::size_t face_blocks = 8;
+  parallel_for(coverage.size() + face_blocks, workers, [&](std::size_t i, unsigned) {
+    if (i < coverage.size()) {
+      coverage.release(i);
+      return;
+    }
+    const std::size_t b = i - coverage.size();
+    for (std::size_t k = faces.size() * b / face_blocks; k < faces.size() * (b + 1) / face_blocks;
+         ++k)
+      faces[k].pieces = {};
+  });
   d.seconds.underlays = since(t0);
   if (edges.valid()) {
     t0 = clock::now();

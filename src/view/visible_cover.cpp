@@ -325,65 +325,91 @@ bool ear_triangles(const cl::Path& ring, std::vector<cl::Path>& out) {
   return true;
 }
 
-/// True when a line through an edge of one of the point sets has all of `p` on one closed
-/// side and all of `q` on the other: then the interiors of any polygons with these vertices
-/// are disjoint (each lies in the convex hull of its vertices). Integer cross products, exact.
-bool separated(const cl::Path& p, const cl::Paths& q) {
-  auto try_edges = [&](const cl::Path& ring) {
+/// The lines through the edges of a polygon p, each with the range [lo, hi] of the sides (cross
+/// products) of p's own vertices: what separated() reads of p, found once for all the pieces p
+/// is tested against. Lines crossing p (lo < 0 < hi), of zero-length edges, or with all of p on
+/// them separate nothing and are left out. For a convex counter-clockwise p with area every
+/// line has p on its closed left, some vertex strictly: lo = 0 < hi, without reading p.
+struct edge_lines {
+  struct line {
+    cl::IntPoint a;
+    long long dx, dy, lo, hi;
+  };
+  std::vector<line> lines;
+
+  void set(const cl::Path& p, bool convex) {
+    lines.clear();
+    for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
+      const cl::IntPoint a = p[j], b = p[i];
+      const long long dx = b.X - a.X, dy = b.Y - a.Y;
+      if (dx == 0 && dy == 0) continue;
+      long long lo = 0, hi = 1;
+      if (!convex) {
+        hi = 0;
+        for (const cl::IntPoint& v : p) {
+          const long long c = dx * (v.Y - a.Y) - dy * (v.X - a.X);
+          lo = std::min(lo, c);
+          hi = std::max(hi, c);
+        }
+        if ((lo < 0 && hi > 0) || (lo == 0 && hi == 0)) continue;
+      }
+      lines.push_back({a, dx, dy, lo, hi});
+    }
+  }
+};
+
+/// True when a line through an edge of p (its lines: pl) or of a ring of q has all of p on one
+/// closed side and all of q on the other: then the interiors of any polygons with these
+/// vertices are disjoint (each lies in the convex hull of its vertices). Integer cross
+/// products, exact. q_convex: q is one convex counter-clockwise ring with area, so it lies on
+/// the closed left of each of its own edges and only p's side needs reading there.
+bool separated(const edge_lines& pl, const cl::Path& p, const cl::Paths& q, bool q_convex) {
+  for (const edge_lines::line& l : pl.lines) {
+    bool apart = true;
+    for (const cl::Path& r : q) {
+      for (const cl::IntPoint& v : r) {
+        const long long c = l.dx * (v.Y - l.a.Y) - l.dy * (v.X - l.a.X);
+        if ((l.hi > 0 && c > 0) || (l.lo < 0 && c < 0)) {
+          apart = false;
+          break;
+        }
+      }
+      if (!apart) break;
+    }
+    if (apart) return true;
+  }
+  for (const cl::Path& ring : q)
     for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
       const cl::IntPoint a = ring[j], b = ring[i];
       const long long dx = b.X - a.X, dy = b.Y - a.Y;
       if (dx == 0 && dy == 0) continue;
       auto side = [&](const cl::IntPoint& v) { return dx * (v.Y - a.Y) - dy * (v.X - a.X); };
+      if (q_convex) {  // q on the closed left: p must lie on the closed right (p has area)
+        if (std::all_of(p.begin(), p.end(), [&](const cl::IntPoint& v) { return side(v) <= 0; }))
+          return true;
+        continue;
+      }
       long long p_min = 0, p_max = 0;
       for (const cl::IntPoint& v : p) {
         const long long c = side(v);
         p_min = std::min(p_min, c);
         p_max = std::max(p_max, c);
       }
-      if (p_min < 0 && p_max > 0) continue;
-      bool ok = true;
+      if ((p_min < 0 && p_max > 0) || (p_min == 0 && p_max == 0)) continue;
+      bool apart = true;
       for (const cl::Path& r : q) {
         for (const cl::IntPoint& v : r) {
           const long long c = side(v);
-          if ((p_max > 0 && c > 0) || (p_min < 0 && c < 0) || (p_max == 0 && p_min == 0)) {
-            ok = false;
+          if ((p_max > 0 && c > 0) || (p_min < 0 && c < 0)) {
+            apart = false;
             break;
           }
         }
-        if (!ok) break;
+        if (!apart) break;
       }
-      if (ok) return true;
+      if (apart) return true;
     }
-    return false;
-  };
-  if (try_edges(p)) return true;
-  for (const cl::Path& r : q)
-    if (try_edges(r)) return true;
   return false;
-}
-
-/// separated(p, {q}) for convex counter-clockwise rings p and q with area (the common case: a
-/// fragment beside the pieces of its neighbours), at about half the cost: the ring through
-/// whose edge the line passes lies on the line's closed left side by convexity, so only the
-/// other ring is read, and the first of its vertices strictly left of the line rejects it.
-bool separated_convex(const cl::Path& p, const cl::Path& q) {
-  auto beyond_an_edge = [](const cl::Path& ring, const cl::Path& other) {
-    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-      const cl::IntPoint a = ring[j], b = ring[i];
-      const long long dx = b.X - a.X, dy = b.Y - a.Y;
-      if (dx == 0 && dy == 0) continue;
-      bool right = true;
-      for (const cl::IntPoint& v : other)
-        if (dx * (v.Y - a.Y) - dy * (v.X - a.X) > 0) {
-          right = false;
-          break;
-        }
-      if (right) return true;
-    }
-    return false;
-  };
-  return beyond_an_edge(p, q) || beyond_an_edge(q, p);
 }
 
 /// The winding number of the ring about q + (e, e^2) for every small enough e > 0 (Sunday's
@@ -458,12 +484,11 @@ class tiled_coverage::impl {
     if (hides(bbox_of(p))) return no_piece;
     near_.clear();
     const bool convex = convex_ccw(p);
+    lines_.set(p, convex);
     gather(bbox_of(p),
            [&](const cl::Paths& rings, bool square, bool convex_piece, const bbox_i& box) {
              if (convex && box_beyond_an_edge(p, box)) return;  // separated (a cheaper first test)
-             const bool apart =
-                 convex && convex_piece ? separated_convex(p, rings[0]) : separated(p, rings);
-             if (!apart) near_.push_back({&rings, square});
+             if (!separated(lines_, p, rings, convex_piece)) near_.push_back({&rings, square});
            });
     switch (near_.empty() ? outcome::visible : overlap_outcome(p)) {
       case outcome::visible: {
@@ -727,6 +752,7 @@ class tiled_coverage::impl {
     bool square;
   };
   std::vector<candidate> near_;
+  edge_lines lines_;  ///< add's polygon's
   std::vector<cl::Path> windows_;
   polygon_d poly_, work_, scratch_;
   std::vector<double> cell_area_, cell_cover_;  ///< insert's cell_areas
@@ -781,11 +807,15 @@ class t_junction_mender::impl {
     for (std::size_t c = 0; c + 1 < start_.size(); ++c) {
       const auto first = points_.begin() + static_cast<std::ptrdiff_t>(start_[c]);
       const auto last = points_.begin() + static_cast<std::ptrdiff_t>(start_[c + 1]);
+      start_[c] = out;
+      if (last - first <= 1) {  // most cells hold none or one point: nothing to sort
+        if (last != first) points_[out++] = *first;
+        continue;
+      }
       std::sort(first, last, [](const cl::IntPoint& a, const cl::IntPoint& b) {
         return a.X != b.X ? a.X < b.X : a.Y < b.Y;
       });
       const auto end = std::unique(first, last);
-      start_[c] = out;
       out = static_cast<std::size_t>(
           std::copy(first, end, points_.begin() + static_cast<std::ptrdiff_t>(out)) -
           points_.begin());

@@ -65,6 +65,8 @@ class striped_coverage {
   const ClipperLib::Paths& rings(piece_ref r) const {
     return strips_[r.strip].coverage->rings(r.id);
   }
+  /// Frees strip s (its coverage and pieces): nothing of it may be read after.
+  void release(std::size_t s) { strips_[s].coverage.reset(); }
   /// Rectangles tiling the full tiles whose pieces all belong to `mesh` (tiled_coverage's).
   ClipperLib::Paths full_tiles_of(std::uint32_t mesh) const;
   /// True when every tile the box meets is full of pieces of `mesh` only.
