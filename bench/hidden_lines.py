@@ -4,7 +4,7 @@
 (between the markers <!-- hidden-lines:begin --> and <!-- hidden-lines:end -->, appended when
 they are missing) and keeps the raw output in bench/out/hidden_lines/.
 
-    /usr/bin/python3 bench/hidden_lines.py [--build-dir build] [--frames 3] [--no-peers]
+    /usr/bin/python3 bench/hidden_lines.py [--build-dir build] [--frames 5] [--no-peers]
 
 It measures, side by side in one run on this machine:
   1. cost: bench_render (exact build, then per frame the PNG stages and the SVG stage with
@@ -64,7 +64,7 @@ def cost_rows(build, frames, out):
         png_all = s["order"] + s["transform+clip"] + s.get("raster all cores", s["raster"])
         svg = s["order"] + s["transform+clip"] + s["svg"] + s["svg write"]
         rows.append((mesh, r["triangles"], r["fragments"], png, svg, r["svg_bytes"],
-                     r.get("svg_phase_seconds_median", {}), s["svg"], png_all))
+                     r.get("svg_phase_seconds_median", {}), s["svg"], png_all, s.get("svg cpu")))
         print(f"hidden_lines: {mesh}: PNG frame {fmt_s(png)}, SVG frame {fmt_s(svg)} "
               f"({svg / png:.1f}x), {r['svg_bytes'] / 1000:.0f} KB", flush=True)
     return rows
@@ -73,7 +73,7 @@ def cost_rows(build, frames, out):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build-dir", default=os.path.join(root, "build"))
-    ap.add_argument("--frames", type=int, default=3)
+    ap.add_argument("--frames", type=int, default=5)
     ap.add_argument("--no-peers", action="store_true")
     args = ap.parse_args()
     out = os.path.join(here, "out/hidden_lines")
@@ -109,17 +109,20 @@ def main():
     lines.append("| mesh | triangles | fragments | PNG frame | PNG frame, all cores | SVG frame | "
                  "SVG / PNG | SVG / PNG all cores | SVG size |")
     lines.append("|---|---|---|---|---|---|---|---|---|")
-    for mesh, tris, frags, png, svg, size, _, _, png_all in cost:
+    for mesh, tris, frags, png, svg, size, _, _, png_all, _ in cost:
         lines.append(f"| {mesh} | {tris:,} | {frags:,} | {fmt_s(png)} | {fmt_s(png_all)} | {fmt_s(svg)} | "
                      f"{svg / png:.1f}× | {svg / png_all:.1f}× | {size / 1000:.0f} KB |".replace(",", " "))
     phase_names = ["snap", "coverage", "regions", "underlays", "edges (own thread)", "edges wait"]
     lines += ["", "The goal is an SVG frame at most 5× the PNG frame. Where the svg stage's time goes "
               "(median seconds; the edges run on a second thread while the coverage is made, so the stage "
-              "waits only for what is left of them; the rest of the stage is the SVG text):", "",
-              "| mesh | svg stage | " + " | ".join(phase_names) + " |",
-              "|---|---|" + "---|" * len(phase_names)]
-    for mesh, _, _, _, _, _, phases, stage, _ in cost:
-        lines.append(f"| {mesh} | {fmt_s(stage)} | " +
+              "waits only for what is left of them; the rest of the stage is the SVG text; svg CPU: the "
+              "stage's CPU time over all its threads, from getrusage; the feature edges' view-independent "
+              "part, the soup's edge graph, is made in the first frame and kept for the next views, as "
+              "the tree is):", "",
+              "| mesh | svg stage | svg CPU | " + " | ".join(phase_names) + " |",
+              "|---|---|---|" + "---|" * len(phase_names)]
+    for mesh, _, _, _, _, _, phases, stage, _, cpu in cost:
+        lines.append(f"| {mesh} | {fmt_s(stage)} | {fmt_s(cpu) if cpu is not None else '–'} | " +
                      " | ".join(fmt_s(phases[n]) if n in phases else "–" for n in phase_names) + " |")
     lines += ["",
               "**Seams** (bench/seams.py: exbsp's SVG rasterized by librsvg and Chromium against its own PNG, "

@@ -91,27 +91,24 @@ void append_path(std::string& out, const vector_path& p, long long y_top) {
       first = false;
     }
   };
+  auto path = [&](const std::string& attributes, bool closed) {
+    out += "<path " + attributes + " d=\"";
+    rings(closed);
+    out += "\"/>\n";
+  };
   switch (p.kind) {
     case vector_path::kind_type::underlay:
-      out += "<path fill=\"" + color + "\" d=\"";
-      rings(true);
-      out += "\"/>\n";
+      path("fill=\"" + color + "\"", true);
       break;
     case vector_path::kind_type::region:
-      out += "<path data-face=\"" + std::to_string(p.face) + "\" fill=\"" + color + "\" d=\"";
-      rings(true);
-      out += "\"/>\n";
+      path("data-face=\"" + std::to_string(p.face) + "\" fill=\"" + color + "\"", true);
       break;
     case vector_path::kind_type::hidden_edge:
     case vector_path::kind_type::visible_edge:
-      out += "<path data-mesh=\"" + std::to_string(p.mesh) + "\" stroke=\"" + color + "\" d=\"";
-      rings(false);
-      out += "\"/>\n";
+      path("data-mesh=\"" + std::to_string(p.mesh) + "\" stroke=\"" + color + "\"", false);
       break;
     case vector_path::kind_type::curve:
-      out += "<path data-curve=\"" + std::to_string(p.face) + "\" stroke=\"" + color + "\" d=\"";
-      rings(false);
-      out += "\"/>\n";
+      path("data-curve=\"" + std::to_string(p.face) + "\" stroke=\"" + color + "\"", false);
       break;
     case vector_path::kind_type::point:
       out += "<rect data-curve=\"" + std::to_string(p.face) + "\" x=\"";
