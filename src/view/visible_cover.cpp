@@ -358,15 +358,26 @@ struct edge_lines {
   }
 };
 
+/// A ring's points, wherever they are kept.
+struct ring_view {
+  const cl::IntPoint* data = nullptr;
+  std::size_t count = 0;
+  const cl::IntPoint* begin() const { return data; }
+  const cl::IntPoint* end() const { return data + count; }
+  std::size_t size() const { return count; }
+  const cl::IntPoint& operator[](std::size_t i) const { return data[i]; }
+};
+
 /// True when a line through an edge of p (its lines: pl) or of a ring of q has all of p on one
 /// closed side and all of q on the other: then the interiors of any polygons with these
 /// vertices are disjoint (each lies in the convex hull of its vertices). Integer cross
 /// products, exact. q_convex: q is one convex counter-clockwise ring with area, so it lies on
 /// the closed left of each of its own edges and only p's side needs reading there.
-bool separated(const edge_lines& pl, const cl::Path& p, const cl::Paths& q, bool q_convex) {
+bool separated(const edge_lines& pl, const cl::Path& p, const std::vector<ring_view>& q,
+               bool q_convex) {
   for (const edge_lines::line& l : pl.lines) {
     bool apart = true;
-    for (const cl::Path& r : q) {
+    for (const ring_view& r : q) {
       for (const cl::IntPoint& v : r) {
         const long long c = l.dx * (v.Y - l.a.Y) - l.dy * (v.X - l.a.X);
         if ((l.hi > 0 && c > 0) || (l.lo < 0 && c < 0)) {
@@ -378,7 +389,7 @@ bool separated(const edge_lines& pl, const cl::Path& p, const cl::Paths& q, bool
     }
     if (apart) return true;
   }
-  for (const cl::Path& ring : q)
+  for (const ring_view& ring : q)
     for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
       const cl::IntPoint a = ring[j], b = ring[i];
       const long long dx = b.X - a.X, dy = b.Y - a.Y;
@@ -397,7 +408,7 @@ bool separated(const edge_lines& pl, const cl::Path& p, const cl::Paths& q, bool
       }
       if ((p_min < 0 && p_max > 0) || (p_min == 0 && p_max == 0)) continue;
       bool apart = true;
-      for (const cl::Path& r : q) {
+      for (const ring_view& r : q) {
         for (const cl::IntPoint& v : r) {
           const long long c = side(v);
           if ((p_max > 0 && c > 0) || (p_min < 0 && c < 0)) {
@@ -485,11 +496,11 @@ class tiled_coverage::impl {
     near_.clear();
     const bool convex = convex_ccw(p);
     lines_.set(p, convex);
-    gather(bbox_of(p),
-           [&](const cl::Paths& rings, bool square, bool convex_piece, const bbox_i& box) {
-             if (convex && box_beyond_an_edge(p, box)) return;  // separated (a cheaper first test)
-             if (!separated(lines_, p, rings, convex_piece)) near_.push_back({&rings, square});
-           });
+    gather(bbox_of(p), [&](const cl::Paths& rings, bool square, bool convex_piece,
+                           const bbox_i& box, const std::vector<ring_view>& points) {
+      if (convex && box_beyond_an_edge(p, box)) return;  // separated (a cheaper first test)
+      if (!separated(lines_, p, points, convex_piece)) near_.push_back({&rings, square});
+    });
     switch (near_.empty() ? outcome::visible : overlap_outcome(p)) {
       case outcome::visible: {
         cl::Paths whole(1);
@@ -545,9 +556,10 @@ class tiled_coverage::impl {
   /// The parts of the open polyline `line` outside the coverage.
   cl::Paths outside(const cl::Path& line) {
     cl::Paths clip;
-    gather(bbox_of(line), [&](const cl::Paths& rings, bool, bool, const bbox_i&) {
-      clip.insert(clip.end(), rings.begin(), rings.end());
-    });
+    gather(bbox_of(line),
+           [&](const cl::Paths& rings, bool, bool, const bbox_i&, const std::vector<ring_view>&) {
+             clip.insert(clip.end(), rings.begin(), rings.end());
+           });
     if (clip.empty()) return {line};
     clipper_.Clear();
     clipper_.AddPath(line, cl::ptSubject, false);
@@ -564,22 +576,25 @@ class tiled_coverage::impl {
   /// boundary of two pieces or two full tiles counts as covered, as it is.
   bool covers(const cl::IntPoint& q) {
     int winding = 0;
-    gather({q.X, q.Y, q.X, q.Y}, [&](const cl::Paths& rings, bool, bool, const bbox_i&) {
-      for (const cl::Path& r : rings) winding += nudged_winding(r, q);
-    });
+    gather({q.X, q.Y, q.X, q.Y},
+           [&](const cl::Paths& rings, bool, bool, const bbox_i&, const std::vector<ring_view>&) {
+             for (const cl::Path& r : rings) winding += nudged_winding(r, q);
+           });
     return winding != 0;
   }
 
  private:
   struct piece {
     cl::Paths rings;  ///< outer rings counter-clockwise, holes clockwise
-    bool convex;      ///< one convex counter-clockwise ring
   };
   /// A piece as listed in a tile: its id and box (grid units fit 32 bits), so that the box
   /// test reads the tile's own memory.
   struct listed {
     std::int32_t x0, y0, x1, y1;
     std::uint32_t id;
+    std::uint32_t flat;   ///< its one ring's first point in flat_ (count > 0)
+    std::uint16_t count;  ///< its one ring's points in flat_; 0: read its rings
+    bool convex;          ///< one convex counter-clockwise ring
   };
   struct tile {
     std::vector<listed> pieces;
@@ -626,6 +641,15 @@ class tiled_coverage::impl {
     const int tx0 = range[0], ty0 = range[1], tx1 = range[2], ty1 = range[3];
     const double tile_area = static_cast<double>(tile_side) * static_cast<double>(tile_side);
     const bool convex = rings.size() == 1 && convex_ccw(rings[0]);
+    // A piece of one ring is also copied to flat_, read by the tiles' lists directly (one
+    // memory read where the rings are three, each likely a cache miss).
+    const auto flat = static_cast<std::uint32_t>(flat_.size());
+    std::uint16_t count = 0;
+    if (rings.size() == 1 && rings[0].size() <= 0xffff &&
+        flat_.size() + rings[0].size() <= 0xffffffffu) {
+      count = static_cast<std::uint16_t>(rings[0].size());
+      flat_.insert(flat_.end(), rings[0].begin(), rings[0].end());
+    }
     // A piece in one tile adds its area there; one over several tiles adds its part in each,
     // all found in one pass over its edges (cell_areas).
     const long long ox = tx0 * tile_side, oy = (ty0 + row0_) * tile_side;
@@ -640,7 +664,7 @@ class tiled_coverage::impl {
         t.mesh = t.mesh == -1 || t.mesh == mesh ? mesh : -2;
         t.pieces.push_back({static_cast<std::int32_t>(box.x0), static_cast<std::int32_t>(box.y0),
                             static_cast<std::int32_t>(box.x1), static_cast<std::int32_t>(box.y1),
-                            id});
+                            id, flat, count, convex});
         if (!in_one) {
           t.area += cell_area_[static_cast<std::size_t>((ty - ty0) * cols + (tx - tx0))];
         } else if (tx == tx0 && ty == ty0) {
@@ -656,13 +680,13 @@ class tiled_coverage::impl {
           t.square = {square(tx, ty)};
         }
       }
-    pieces_.push_back({std::move(rings), convex});
+    pieces_.push_back({std::move(rings)});
     stamp_.push_back(0);
     return id;
   }
 
-  /// Calls visit(rings, is_square, is_convex, its box) for each piece near `box` (each once)
-  /// and for the square of each full tile `box` meets (convex).
+  /// Calls visit(rings, is_square, is_convex, its box, its rings' points) for each piece near
+  /// `box` (each once) and for the square of each full tile `box` meets (convex).
   template <class Visit>
   void gather(const bbox_i& box, Visit visit) {
     ++query_;
@@ -673,7 +697,8 @@ class tiled_coverage::impl {
         const tile& t = tiles_[index(tx, ty)];
         if (t.full) {
           const cl::Path& sq = t.square[0];
-          visit(t.square, true, true, bbox_i{sq[0].X, sq[0].Y, sq[2].X, sq[2].Y});
+          views_.assign(1, ring_view{sq.data(), sq.size()});
+          visit(t.square, true, true, bbox_i{sq[0].X, sq[0].Y, sq[2].X, sq[2].Y}, views_);
           continue;
         }
         for (const listed& l : t.pieces) {
@@ -683,8 +708,14 @@ class tiled_coverage::impl {
                     : l.x1 <= box.x0 || l.x0 >= box.x1 || l.y1 <= box.y0 || l.y0 >= box.y1;
           if (apart || stamp_[l.id] == query_) continue;
           stamp_[l.id] = query_;
-          const piece& pc = pieces_[l.id];
-          visit(pc.rings, false, pc.convex, bbox_i{l.x0, l.y0, l.x1, l.y1});
+          const cl::Paths& rings = pieces_[l.id].rings;  // read only when needed
+          views_.clear();
+          if (l.count > 0) {
+            views_.push_back({flat_.data() + l.flat, l.count});
+          } else {
+            for (const cl::Path& r : rings) views_.push_back({r.data(), r.size()});
+          }
+          visit(rings, false, l.convex, bbox_i{l.x0, l.y0, l.x1, l.y1}, views_);
         }
       }
   }
@@ -762,6 +793,8 @@ class tiled_coverage::impl {
   std::vector<tile> tiles_;
   std::vector<piece> pieces_;
   std::vector<std::uint32_t> stamp_;
+  std::vector<cl::IntPoint> flat_;  ///< the points of the pieces of one ring (listed::flat)
+  std::vector<ring_view> views_;    ///< gather's, for the piece it visits
   std::uint32_t query_ = 0;
   cl::Clipper clipper_;
 };
