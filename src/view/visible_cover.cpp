@@ -230,14 +230,20 @@ using polygon_d = std::vector<point_d>;
 void clip_half_plane(polygon_d& a, polygon_d& scratch, double px, double py, double dx, double dy) {
   if (a.empty() || (dx == 0 && dy == 0)) return;
   auto f = [&](const point_d& q) { return dx * (q.y - py) - dy * (q.x - px); };
+  // Nothing to cut when every vertex is on the kept side (most calls): a is left as it is.
+  double fj = f(a.back());
+  bool all_in = fj >= 0;
+  for (std::size_t i = 0; i + 1 < a.size() && all_in; ++i) all_in = f(a[i]) >= 0;
+  if (all_in) return;
   scratch.clear();
   for (std::size_t i = 0, j = a.size() - 1; i < a.size(); j = i++) {
-    const double fj = f(a[j]), fi = f(a[i]);
+    const double fi = f(a[i]);  // each vertex's value once (fj is the previous one's)
     if ((fi >= 0) != (fj >= 0)) {
       const double t = fj / (fj - fi);
       scratch.push_back({a[j].x + (a[i].x - a[j].x) * t, a[j].y + (a[i].y - a[j].y) * t});
     }
     if (fi >= 0) scratch.push_back(a[i]);
+    fj = fi;
   }
   a.swap(scratch);
 }
@@ -877,6 +883,14 @@ class t_junction_mender::impl {
     if (per_polygon) {
       near.clear();
       gather(px0, px1, py0, py1, near);
+      // Only points less than one unit from the polygon can be less than one unit from an
+      // edge: those in its box grown by one (about half the cells' points), tested per edge.
+      near.erase(std::remove_if(near.begin(), near.end(),
+                                [&](const cl::IntPoint& v) {
+                                  return v.X < box.x0 - 1 || v.X > box.x1 + 1 || v.Y < box.y0 - 1 ||
+                                         v.Y > box.y1 + 1;
+                                }),
+                 near.end());
     }
     for (std::size_t i = 0; i < p.size(); ++i) {
       const cl::IntPoint a = p[i], b = p[(i + 1) % p.size()];
