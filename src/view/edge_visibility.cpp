@@ -43,6 +43,7 @@ class occluder_grid {
     soup_ = &s;
     std::vector<std::array<int, 4>> range(s.triangles.size(), {0, -1, 0, -1});
     screened_.assign(s.triangles.size(), 0);
+    side_margin_.assign(3 * s.triangles.size(), 0.0);
     std::vector<std::uint32_t> count(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
       if (features.facing[t] == 0) continue;  // edge-on or degenerate: hides nothing
@@ -66,6 +67,12 @@ class occluder_grid {
       // Images this far out are kept without the image test (their rounding is not small).
       const double far = std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
       screened_[t] = far < max_screened;
+      for (int k = 0; k < 3; ++k) {
+        const window_point& u = win[v[k]];
+        const window_point& w = win[v[(k + 1) % 3]];
+        side_margin_[3 * t + static_cast<std::size_t>(k)] =
+            margin * std::hypot(w.x - u.x, w.y - u.y);
+      }
       for (int cy = r[2]; cy <= r[3]; ++cy)
         for (int cx = r[0]; cx <= r[1]; ++cx) ++count[index(cx, cy) + 1];
     }
@@ -89,6 +96,7 @@ class occluder_grid {
     for (std::uint32_t t : everywhere_) take(t, out);
     seg_a_ = a;
     seg_b_ = b;
+    seg_len_ = std::hypot(b.x - a.x, b.y - a.y);
     seg_screened_ =
         std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)}) < max_screened;
     const double y0 = std::min(a.y, b.y), y1 = std::max(a.y, b.y);
@@ -148,7 +156,7 @@ class occluder_grid {
     auto side = [](const window_point& u, const window_point& w, const window_point& q) {
       return (w.x - u.x) * (q.y - u.y) - (w.y - u.y) * (q.x - u.x);
     };
-    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    const double len = seg_len_;
     if (len > 0) {
       const double s0 = side(a, b, p[0]), s1 = side(a, b, p[1]), s2 = side(a, b, p[2]);
       const double m = margin * len;
@@ -159,7 +167,7 @@ class occluder_grid {
     for (int k = 0; k < 3; ++k) {
       const window_point& u = p[k];
       const window_point& w = p[(k + 1) % 3];
-      const double m = margin * std::hypot(w.x - u.x, w.y - u.y);
+      const double m = side_margin_[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(k)];
       // Outside the side u -> w: the side away from the third corner.
       const double sa = turn > 0 ? -side(u, w, a) : side(u, w, a);
       const double sb = turn > 0 ? -side(u, w, b) : side(u, w, b);
@@ -177,6 +185,9 @@ class occluder_grid {
   std::vector<window_point> win_;
   std::vector<char> screened_;  ///< per triangle: its image is small enough for image_apart
   window_point seg_a_, seg_b_;
+  double seg_len_ = 0;  ///< the segment's image length
+  /// margin times the image length of side k of triangle t, at 3 t + k (screened triangles).
+  std::vector<double> side_margin_;
   bool seg_screened_ = false;
   double cell_ = 8;
   int nx_ = 1, ny_ = 1;
