@@ -88,9 +88,6 @@ view::view_setup orbit_view(const view::view_setup& v, std::size_t k, std::size_
   return o;
 }
 
-#if EXBSP_HAVE_OSMESA
-/// OSMesa z-buffer rendering of the input triangles; fills `out` and returns the image.
-/// With orbit > 0, also draws the orbit's cameras and reports "orbit_fps".
 /// CPU seconds of every thread of this process so far (user + system).
 double process_cpu_seconds() {
   rusage u{};
@@ -99,6 +96,9 @@ double process_cpu_seconds() {
   return seconds(u.ru_utime) + seconds(u.ru_stime);
 }
 
+#if EXBSP_HAVE_OSMESA
+/// OSMesa z-buffer rendering of the input triangles; fills `out` and returns the image.
+/// With orbit > 0, also draws the orbit's cameras and reports "orbit_fps".
 std::vector<unsigned char> render_osmesa(const view::frame& f, std::size_t frames,
                                          std::size_t orbit, json& out) {
   const int w = f.view.vp.width, h = f.view.vp.height;

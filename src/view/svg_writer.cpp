@@ -43,10 +43,6 @@ void append_grid(std::string& out, long long v) {
   out.append(buf, end);
 }
 
-}  // namespace
-
-namespace {
-
 /// The group (<g>) a path of a drawing is drawn in: its id and attributes.
 std::pair<std::string, std::string> group_of(const vector_path& p, const char* dash) {
   switch (p.kind) {

@@ -118,6 +118,12 @@ std::vector<grid_point> to_ring(const cl::Path& p) {
   return r;
 }
 
+/// A drawing's ring as a Clipper path, in `out` (its buffer reused).
+void to_path(const std::vector<grid_point>& ring, cl::Path& out) {
+  out.clear();
+  for (const grid_point& q : ring) out.push_back({q.x, q.y});
+}
+
 /// Mean width 2 |area| / perimeter of a closed ring, in grid units.
 double mean_width(const cl::Path& p) {
   double perimeter = 0;
@@ -399,8 +405,9 @@ vector_drawing visible_drawing(const frame& f) {
   std::uint32_t face_end = 0;
   for (const screen_polygon& p : f.polygons) face_end = std::max(face_end, p.face + 1);
   std::vector<face_accumulator> faces(face_end);
-  // Snap every polygon to the grid (counter-clockwise), then index the points for mending
-  // T-junctions. (Split over the cores this was no faster: the edges' thread runs meanwhile.)
+  // Snap every polygon to the grid (counter-clockwise), in blocks over the workers, then index
+  // the points for mending T-junctions (on this thread: built in bands over the workers it was
+  // no faster on 2 cores, the edges' thread running meanwhile).
   const unsigned workers = hardware_workers();  // strips, regions, underlay groups: in slots
   const snapped_polygons snapped = snap(f, workers);
   const t_junction_mender mender(snapped.points, width, height);
@@ -555,10 +562,6 @@ vector_drawing visible_drawing(const frame& f) {
     std::vector<std::vector<std::size_t>> groups;  ///< regions, per square, in the squares' order
   };
   std::vector<underlay_job> jobs;
-  auto add_underlay = [&](const std::vector<std::size_t>& members, rgb8 color,
-                          std::optional<std::uint32_t> mesh) {
-    jobs.push_back({&members, color, mesh, {}});
-  };
   // A job's groups (independent of the other jobs: found on the workers).
   auto group_job = [&](underlay_job& job) {
     const std::optional<std::uint32_t>& mesh = job.mesh;
@@ -590,8 +593,7 @@ vector_drawing visible_drawing(const frame& f) {
     for (std::size_t k : members) {
       double area = 0;
       for (const auto& ring : regions[k].rings) {
-        p.clear();
-        for (const grid_point& q : ring) p.push_back({q.x, q.y});
+        to_path(ring, p);
         area += cl::Area(p);
       }
       area = std::abs(area);
@@ -604,7 +606,7 @@ vector_drawing visible_drawing(const frame& f) {
     if (!(total > 0)) continue;
     auto mean = [&](double v) { return static_cast<std::uint8_t>(std::lround(v / total)); };
     const rgb8 color{mean(sum[0]), mean(sum[1]), mean(sum[2])};
-    add_underlay(members, color, mesh);
+    jobs.push_back({&members, color, mesh, {}});
     done.push_back({members, color});
   }
   // Then one per colour used by two or more regions: where faces of one colour meet, the
@@ -634,7 +636,7 @@ vector_drawing visible_drawing(const frame& f) {
     const bool drawn = std::any_of(done.begin(), done.end(), [&](const auto& u) {
       return u.second == color && u.first == members;
     });
-    if (!drawn) add_underlay(members, color, std::nullopt);
+    if (!drawn) jobs.push_back({&members, color, std::nullopt, {}});
   }
   parallel_for(jobs.size(), workers, [&](std::size_t j, unsigned) { group_job(jobs[j]); });
   // Every group's union, over the workers, into slots in the jobs' order.
@@ -646,11 +648,10 @@ vector_drawing visible_drawing(const frame& f) {
     cl::Clipper& clipper = work[w].clipper;
     cl::Paths& merged = work[w].merged;
     clipper.Clear();
+    cl::Path p;
     for (std::size_t k : *group_list[g])
       for (const auto& ring : regions[k].rings) {
-        cl::Path p;
-        p.reserve(ring.size());
-        for (const grid_point& q : ring) p.push_back({q.x, q.y});
+        to_path(ring, p);
         clipper.AddPath(p, cl::ptSubject, true);
       }
     merged.clear();
