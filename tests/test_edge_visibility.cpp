@@ -12,6 +12,7 @@
 #include <exbsp/view/projection.h>
 #include "geom/feature_edges.h"
 #include "geom/homogeneous_det.h"
+#include "geom/soup_cache.h"
 #include "geom/weld.h"
 #include "support/test_helpers.h"
 #include "view/edge_visibility.h"
@@ -174,11 +175,11 @@ TEST(FeatureEdges, AKeptEdgeGraphServesEveryViewAndIsRemadeWhenTheSoupChangesByO
   // Oracle: the edges found from scratch for each viewer (the graph made again each time).
   triangle_soup s = unit_cube();
   add_quad(s, {0, 0, 1}, {1, 0, 1}, {1.5, 0, 1.2}, {0.5, 0, 1.2});  // a fin: boundary + creases
-  geom::edge_graph_cache cache;
-  const std::shared_ptr<const geom::edge_graph> first = cache.get(s, 30);
+  geom::soup_cache cache;
+  const std::shared_ptr<const geom::edge_graph> first = cache.edge_graph_for(s, 30);
   const hpoint viewers[] = {{3, 2.5, 4}, {0.5, -7, 1}, {-2, 0.5, 0.5}, {0, 0, 1, 0}, {1, -1, 1, 0}};
   for (const hpoint& e : viewers) {
-    const std::shared_ptr<const geom::edge_graph> g = cache.get(s, 30);
+    const std::shared_ptr<const geom::edge_graph> g = cache.edge_graph_for(s, 30);
     EXPECT_EQ(g, first);  // kept
     const geom::view_features kept = geom::find_feature_edges(*g, s, e);
     const geom::view_features fresh = geom::find_feature_edges(s, e, 30);
@@ -191,14 +192,32 @@ TEST(FeatureEdges, AKeptEdgeGraphServesEveryViewAndIsRemadeWhenTheSoupChangesByO
     EXPECT_EQ(kept.facing, fresh.facing);
     EXPECT_EQ(kept.feature_sides, fresh.feature_sides);
   }
-  EXPECT_NE(cache.get(s, 45), first);  // another crease angle
-  const std::shared_ptr<const geom::edge_graph> at45 = cache.get(s, 45);
+  EXPECT_NE(cache.edge_graph_for(s, 45), first);  // another crease angle
+  const std::shared_ptr<const geom::edge_graph> at45 = cache.edge_graph_for(s, 45);
   s.vertices[0][0] = std::nextafter(s.vertices[0][0], 1.0);
-  EXPECT_NE(cache.get(s, 45), at45);  // one coordinate one ulp off
+  EXPECT_NE(cache.edge_graph_for(s, 45), at45);  // one coordinate one ulp off
   s.triangles[0].face += 1;
-  const std::shared_ptr<const geom::edge_graph> refaced = cache.get(s, 45);
+  const std::shared_ptr<const geom::edge_graph> refaced = cache.edge_graph_for(s, 45);
   EXPECT_EQ(refaced->edges.size(), geom::edge_graph_of(s, 45).edges.size());
-  EXPECT_EQ(cache.get(s, 45), refaced);
+  EXPECT_EQ(cache.edge_graph_for(s, 45), refaced);
+}
+
+TEST(FeatureEdges, TheKeptProductsOfASoupAreMadeAgainEachOnItsOwnKey) {
+  // The closed-mesh verdicts and the edge graph share the soup's copy but not their keys.
+  triangle_soup s = unit_cube();
+  geom::soup_cache cache;
+  const auto graph = cache.edge_graph_for(s, 30);
+  const auto closed = cache.outward_closed_for(s, {});
+  EXPECT_EQ(*closed, (std::vector<std::uint8_t>{1}));
+  EXPECT_EQ(cache.outward_closed_for(s, {}), closed);         // kept
+  EXPECT_EQ(cache.edge_graph_for(s, 30), graph);              // kept across the other product
+  const auto split = cache.outward_closed_for(s, {0, 3, 6});  // two meshes of three faces
+  EXPECT_NE(split, closed);
+  EXPECT_EQ(*split, (std::vector<std::uint8_t>{0, 0}));  // each half is open
+  EXPECT_EQ(cache.edge_graph_for(s, 30), graph);
+  std::swap(s.triangles[0].v[1], s.triangles[0].v[2]);  // one triangle turned: not closed
+  EXPECT_EQ(*cache.outward_closed_for(s, {}), (std::vector<std::uint8_t>{0}));
+  EXPECT_NE(cache.edge_graph_for(s, 30), graph);
 }
 
 // ---- runs ---------------------------------------------------------------------------------

@@ -427,6 +427,22 @@ TEST(VisibleRegions, MatchThePngAtPixelCentresOnEveryScene) {
   }
 }
 
+/// A perspective frame of `soup` seen from its box's centre + (0.9, 0.7, 1.1) x its diagonal
+/// (the eye), towards the centre, 40 degrees, at width x height.
+frame corner_frame(triangle_soup soup, std::vector<rgb8> colors, int width, int height) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (const auto& v : soup.vertices)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], v[i]);
+      hi[i] = std::max(hi[i], v[i]);
+    }
+  const double diag = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  const point3 centre{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+  const point3 eye{centre.x + 0.9 * diag, centre.y + 0.7 * diag, centre.z + 1.1 * diag};
+  return perspective_frame(std::move(soup), std::move(colors), {eye, centre, {0, 1, 0}}, width,
+                           height, 40, 0.3 * diag, 5 * diag);
+}
+
 TEST(VisibleRegions, OfARealMeshMatchThePngAndTheirUnderlayCoversExactlyThem) {
   // fandisk, split by its tree into ~2x as many fragments as faces (T-junctions everywhere),
   // each face its own colour: every pixel centre must show the face the painter's PNG shows
@@ -440,17 +456,7 @@ TEST(VisibleRegions, OfARealMeshMatchThePngAndTheirUnderlayCoversExactlyThem) {
     colors.push_back({static_cast<std::uint8_t>(k * 37 % 251),
                       static_cast<std::uint8_t>(k * 91 % 241),
                       static_cast<std::uint8_t>(k * 53 % 239)});
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (const auto& v : soup.vertices)
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], v[i]);
-      hi[i] = std::max(hi[i], v[i]);
-    }
-  const double diag = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-  const point3 centre{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
-  const point3 eye{centre.x + 0.9 * diag, centre.y + 0.7 * diag, centre.z + 1.1 * diag};
-  frame f = perspective_frame(std::move(soup), colors, {eye, centre, {0, 1, 0}}, 400, 300, 40,
-                              0.3 * diag, 5 * diag);
+  frame f = corner_frame(std::move(soup), colors, 400, 300);
   run(f, {}, output_kind::png);
   const image png = f.picture;
   const vector_drawing d = visible_drawing(f);
@@ -566,6 +572,130 @@ TEST(VisibleRegions, NonConvexPiecesAndPiecesWithHolesUniteByTheirBoundaryToo) {
   // so that Clipper decides.
   const Path bow{{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}, {1, 2}, {1, 1}, {0, 1}};
   EXPECT_FALSE(cover::union_by_shared_edges({&bow}, out));
+}
+
+// ---- back faces of outward-closed meshes (view/hidden_back_faces.h) -------------------------
+
+/// Colours by face id, distinct for the first hundreds of faces.
+std::vector<rgb8> face_colours(std::uint32_t faces) {
+  std::vector<rgb8> c;
+  for (std::uint32_t k = 0; k < faces; ++k)
+    c.push_back({static_cast<std::uint8_t>(40 + k * 37 % 211),
+                 static_cast<std::uint8_t>(30 + k * 91 % 221),
+                 static_cast<std::uint8_t>(20 + k * 53 % 231)});
+  return c;
+}
+
+/// The drawing of `f` (its PNG run) with back faces left out where allowed, the drawing with
+/// none left out (every mesh marked as not whole), and the PNG.
+struct drawn_twice {
+  vector_drawing culled, full;
+  image png;
+};
+
+drawn_twice draw_twice(frame& f) {
+  run(f, {}, output_kind::png);
+  drawn_twice out{visible_drawing(f), {}, f.picture};
+  frame g = f;
+  std::fill(g.meshes_whole.begin(), g.meshes_whole.end(), 0);
+  out.full = visible_drawing(g);
+  EXPECT_EQ(out.full.back_faces_left_out, 0u);
+  return out;
+}
+
+TEST(BackFaces, OfAnOutwardClosedMeshAreLeftOutAndNoPixelCentreChanges) {
+  // Oracle: the same drawing with nothing left out, and the painter's PNG. Faces facing away
+  // from the eye by the test's own measure (double, far from zero) never have a region.
+  const std::string path = exbsp_test::corpus_dir() + "fandisk.off";
+  EXBSP_NEED_CORPUS(std::filesystem::exists(path), path);
+  triangle_soup soup = read_mesh(path);
+  const std::uint32_t faces = soup.face_count;
+  frame f = corner_frame(std::move(soup), face_colours(faces), 400, 300);
+  const point3 eye = f.view.cam.eye;
+  const drawn_twice d = draw_twice(f);
+  EXPECT_GT(d.culled.back_faces_left_out, 1000u);
+  const sampled culled = sample_regions(d.culled), full = sample_regions(d.full);
+  EXPECT_GE(equal_fraction(culled.picture, full.picture), 0.9999);
+  EXPECT_GE(equal_fraction(culled.picture, d.png), 0.995);
+  std::vector<int> away(faces, 1);  // 1: every triangle of the face clearly faces away
+  for (const soup_triangle& t : f.soup.triangles) {
+    const vec3d &a = f.soup.vertices[t.v[0]], &b = f.soup.vertices[t.v[1]],
+                &c = f.soup.vertices[t.v[2]];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                         u[0] * v[1] - u[1] * v[0]};
+    const double e[3] = {eye.x - a[0], eye.y - a[1], eye.z - a[2]};
+    const double dot = n[0] * e[0] + n[1] * e[1] + n[2] * e[2];
+    const double scale = std::hypot(n[0], n[1], n[2]) * std::hypot(e[0], e[1], e[2]);
+    if (!(dot < -1e-9 * scale)) away[t.face] = 0;
+  }
+  std::size_t away_faces = 0;
+  for (int a : away) away_faces += a;
+  EXPECT_GT(away_faces, 1000u);
+  for (const vector_path* r : regions_of(d.culled)) EXPECT_EQ(away[r->face], 0) << r->face;
+}
+
+TEST(BackFaces, OfAnInsideOutBoxAreItsVisibleFacesAndStay) {
+  // Turned inward, the box's faces towards the eye face away from it: they are what the eye
+  // sees, and the certificate refuses the box (negative volume). Leaving them out would show
+  // the far faces instead.
+  triangle_soup s;
+  exbsp_test::add_box(s, {-1, -1, -1}, {1, 1, 1});
+  for (soup_triangle& t : s.triangles) std::swap(t.v[1], t.v[2]);
+  frame f = perspective_frame(std::move(s), face_colours(6), {{3, 2.5, 4}, {0, 0, 0}, {0, 1, 0}},
+                              160, 120, 45, 0.5, 50);
+  const drawn_twice d = draw_twice(f);
+  EXPECT_EQ(d.culled.back_faces_left_out, 0u);
+  EXPECT_GE(equal_fraction(sample_regions(d.culled).picture, d.png), 0.995);
+  EXPECT_EQ(regions_of(d.culled).size(), 3u);
+}
+
+TEST(BackFaces, AreDrawnWhenTheEyeIsInsideOrTheNearPlaneCutsTheMesh) {
+  // An outward box seen from inside: every face faces away and every face is seen. Then from
+  // outside, with the near plane through the box: its far faces show through the cut.
+  for (const bool inside : {true, false}) {
+    triangle_soup s;
+    exbsp_test::add_box(s, {-1, -1, -1}, {1, 1, 1});
+    const camera cam = inside ? camera{{0.1, 0.2, 0.3}, {0.1, 0.2, -1}, {0, 1, 0}}
+                              : camera{{0.2, 0.3, 5}, {0, 0, 0}, {0, 1, 0}};
+    frame f = perspective_frame(std::move(s), face_colours(6), cam, 160, 120, inside ? 100 : 45,
+                                inside ? 0.1 : 4.6, 50);
+    const drawn_twice d = draw_twice(f);
+    EXPECT_EQ(d.culled.back_faces_left_out, 0u) << inside;
+    ASSERT_FALSE(f.meshes_whole.empty());
+    EXPECT_EQ(f.meshes_whole[0], 0) << inside;
+    const sampled got = sample_regions(d.culled);
+    EXPECT_GE(equal_fraction(got.picture, d.png), 0.995) << inside;
+    // The far face (z = -1, facing away from both eyes) covers pixel centres.
+    const rgb8 far = face_colours(6)[0];
+    std::size_t far_pixels = 0;
+    for (int j = 0; j < got.picture.height(); ++j)
+      for (int i = 0; i < got.picture.width(); ++i) far_pixels += got.picture.pixel(i, j) == far;
+    EXPECT_GT(far_pixels, 100u) << inside;
+  }
+}
+
+TEST(BackFaces, AreLeftOutOnlyForTheMeshesCertifiedClosed) {
+  // Mesh 0: a closed box; mesh 1: a box without its +x side, seen into its open side, whose
+  // inner faces (facing away) are visible.
+  triangle_soup s;
+  exbsp_test::add_box(s, {-3, -1, -1}, {-1, 1, 1});
+  exbsp_test::add_box(s, {1, -1, -1}, {3, 1, 1});
+  s.triangles.resize(s.triangles.size() - 2);  // mesh 1's +x quad (face 11) left out
+  frame f = perspective_frame(std::move(s), face_colours(12), {{9, 1.5, 4}, {0, 0, 0}, {0, 1, 0}},
+                              200, 120, 50, 0.5, 50);
+  f.mesh_face_offsets = {0, 6, 12};
+  const drawn_twice d = draw_twice(f);
+  EXPECT_GT(d.culled.back_faces_left_out, 0u);
+  EXPECT_GE(equal_fraction(sample_regions(d.culled).picture, d.png), 0.995);
+  std::set<std::uint32_t> shown;
+  for (const vector_path* r : regions_of(d.culled)) shown.insert(r->face);
+  for (const std::uint32_t face : shown)
+    if (face < 6) {
+      EXPECT_TRUE(face == 1 || face == 3 || face == 5) << face;  // +z, +y, +x
+    }
+  EXPECT_TRUE(shown.count(6) || shown.count(8) || shown.count(10));  // an inner face of mesh 1
 }
 
 TEST(Grid, SnappingRoundsLikeLlroundEverywhereIncludingHalvesAndTheirNeighbours) {

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "geom/weld.h"
 
@@ -143,29 +142,6 @@ view_features find_feature_edges(const edge_graph& g, const triangle_soup& s,
 
 view_features find_feature_edges(const triangle_soup& s, const hpoint& viewer, double crease_deg) {
   return find_feature_edges(edge_graph_of(s, crease_deg), s, viewer);
-}
-
-// The byte comparison below needs types without padding.
-static_assert(sizeof(vec3d) == 3 * sizeof(double));
-static_assert(sizeof(soup_triangle) == 4 * sizeof(std::uint32_t));
-
-std::shared_ptr<const edge_graph> edge_graph_cache::get(const triangle_soup& soup,
-                                                        double crease_deg) {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  // Byte for byte: a vertex's -0.0 and 0.0 differ here (a new graph, the same edges).
-  const bool same =
-      graph_ && graph_->crease_deg == crease_deg && vertices_.size() == soup.vertices.size() &&
-      triangles_.size() == soup.triangles.size() &&
-      (vertices_.empty() || std::memcmp(vertices_.data(), soup.vertices.data(),
-                                        vertices_.size() * sizeof(vec3d)) == 0) &&
-      (triangles_.empty() || std::memcmp(triangles_.data(), soup.triangles.data(),
-                                         triangles_.size() * sizeof(soup_triangle)) == 0);
-  if (!same) {
-    graph_ = std::make_shared<const edge_graph>(edge_graph_of(soup, crease_deg));
-    vertices_ = soup.vertices;
-    triangles_ = soup.triangles;
-  }
-  return graph_;
 }
 
 }  // namespace exbsp::geom

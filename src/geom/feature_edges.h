@@ -17,8 +17,6 @@
 // triangles (no plane) are left out.
 #pragma once
 #include <cstdint>
-#include <memory>
-#include <mutex>
 #include <vector>
 
 #include <exbsp/core/export.h>
@@ -81,18 +79,5 @@ EXBSP_EXPORT view_features find_feature_edges(const edge_graph& graph, const tri
 /// The feature edges of `soup` for `viewer`. Precondition: 0 < crease_deg <= 180.
 EXBSP_EXPORT view_features find_feature_edges(const triangle_soup& soup, const hpoint& viewer,
                                               double crease_deg);
-
-/// An edge graph kept for the views of one soup: made again only when the soup (compared byte
-/// for byte) or the crease angle differs from the one it was made from. Thread-safe.
-class edge_graph_cache {
- public:
-  EXBSP_EXPORT std::shared_ptr<const edge_graph> get(const triangle_soup& soup, double crease_deg);
-
- private:
-  std::mutex mutex_;
-  std::vector<vec3d> vertices_;
-  std::vector<soup_triangle> triangles_;
-  std::shared_ptr<const edge_graph> graph_;
-};
 
 }  // namespace exbsp::geom

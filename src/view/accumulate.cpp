@@ -18,6 +18,7 @@ void accumulate_views(frame& f, const pipeline& per_view, std::size_t count,
   const view_setup centre = f.view;
   std::vector<std::uint32_t> order = std::move(f.order);
   std::vector<screen_polygon> polygons = std::move(f.polygons);
+  std::vector<std::uint8_t> meshes_whole = std::move(f.meshes_whole);
   std::vector<screen_line> lines = std::move(f.lines);
   std::vector<rgb8> colors = std::move(f.fragment_colors);
   std::vector<std::array<rgb8, 3>> corner_colors = std::move(f.corner_colors);
@@ -38,6 +39,7 @@ void accumulate_views(frame& f, const pipeline& per_view, std::size_t count,
   f.view = centre;
   f.order = std::move(order);
   f.polygons = std::move(polygons);
+  f.meshes_whole = std::move(meshes_whole);
   f.lines = std::move(lines);
   f.fragment_colors = std::move(colors);
   f.corner_colors = std::move(corner_colors);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <exbsp/view/pipeline.h>
+#include "geom/soup_cache.h"
 #include "view/clip_stage.h"
 
 namespace exbsp::view {
@@ -237,16 +238,14 @@ bool hidden_by(const triangle_soup& s, const geom::view_features& features, std:
 
 }  // namespace
 
-std::shared_ptr<geom::edge_graph_cache> new_edge_graph_cache() {
-  return std::make_shared<geom::edge_graph_cache>();
-}
+std::shared_ptr<geom::soup_cache> new_soup_cache() { return std::make_shared<geom::soup_cache>(); }
 
 edge_visibility visible_runs(const frame& f, double crease_deg) {
   edge_visibility out;
   const geom::hpoint eye = viewer_of(f);
   const std::shared_ptr<const geom::edge_graph> graph =
-      f.edge_graphs
-          ? f.edge_graphs->get(f.soup, crease_deg)
+      f.soup_products
+          ? f.soup_products->edge_graph_for(f.soup, crease_deg)
           : std::make_shared<const geom::edge_graph>(geom::edge_graph_of(f.soup, crease_deg));
   out.features = geom::find_feature_edges(*graph, f.soup, eye);
   const geom::view_features& features = out.features;

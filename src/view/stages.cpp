@@ -182,6 +182,15 @@ std::string transform_clip_stage(frame& f) {
       if (mesh >= dropped_mesh.size()) dropped_mesh.resize(mesh + 1, false);
       dropped_mesh[mesh] = true;
     }
+  // A mesh stays whole unless a fragment of it meets the near plane or worse (pipeline.h).
+  const std::size_t meshes = f.mesh_face_offsets.size() < 2 ? 1 : f.mesh_face_offsets.size() - 1;
+  f.meshes_whole.assign(meshes, 1);
+  const auto cut = [&](std::uint32_t face) {
+    const std::uint32_t mesh = f.mesh_of(face);
+    if (mesh < meshes) f.meshes_whole[mesh] = 0;
+  };
+  constexpr unsigned not_whole =
+      in_front_of_near | clipped_point::w_not_positive | clipped_point::not_finite;
   std::vector<hpoint> in(3), out;
   for (std::uint32_t idx : f.order) {
     const fragment_d& fr = f.fragments.at(idx);
@@ -189,11 +198,13 @@ std::string transform_clip_stage(frame& f) {
     // place in the picture; it is counted (the caller reports it), never passed on.
     if (!fr.finite()) {
       ++f.non_finite;
+      cut(fr.face);
       continue;
     }
     clipped_point corner[3];
     corners_of(idx, corner);
     const unsigned any = corner[0].code | corner[1].code | corner[2].code;
+    if ((any & not_whole) != 0) cut(fr.face);
     const unsigned all = corner[0].code & corner[1].code & corner[2].code;
     if (drop && (any & clipped_point::not_finite) == 0 && (all & 63) == 0) {
       const std::uint32_t mesh = f.mesh_of(fr.face);
@@ -258,7 +269,10 @@ std::string drawing_note(const vector_drawing& d, std::size_t bytes) {
   return std::to_string(c.regions) + " regions (" + std::to_string(c.rings) + " rings), " +
          std::to_string(c.visible_edges) + " visible and " + std::to_string(c.hidden_edges) +
          " hidden edge pieces, " + std::to_string(c.curves) + " curve paths, " +
-         std::to_string(bytes) + " bytes";
+         std::to_string(bytes) + " bytes" +
+         (d.back_faces_left_out ? ", " + std::to_string(d.back_faces_left_out) +
+                                      " back faces of closed meshes left out"
+                                : std::string());
 }
 
 }  // namespace

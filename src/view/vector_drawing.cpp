@@ -12,12 +12,16 @@
 #include <cmath>
 #include <future>
 #include <map>
+#include <memory>
 #include <optional>
 
 #include <exbsp/core/errors.h>
 #include <exbsp/view/pipeline.h>
+#include "geom/closed_shells.h"
+#include "geom/soup_cache.h"
 #include "view/clip_stage.h"
 #include "view/edge_paths.h"
+#include "view/hidden_back_faces.h"
 #include "view/visible_cover.h"
 #include "view/visible_strips.h"
 #include "view/workers.h"
@@ -334,7 +338,8 @@ struct strip_walk {
 /// when it crosses a strip line) loses what the ones before it cover there; the lines of each
 /// slot are clipped when the walk reaches it.
 void walk_strip(const frame& f, const snapped_polygons& snapped, const t_junction_mender& mender,
-                striped_coverage& coverage, std::size_t s, strip_walk& out) {
+                const std::vector<std::uint8_t>& hidden_face, striped_coverage& coverage,
+                std::size_t s, strip_walk& out) {
   tiled_coverage& cov = coverage.strip(s);
   const long long y0 = coverage.y0(s), y1 = coverage.y1(s);
   const viewport& vp = f.view.vp;
@@ -356,7 +361,7 @@ void walk_strip(const frame& f, const snapped_polygons& snapped, const t_junctio
   for (std::size_t k = f.polygons.size(); k-- > 0;) {
     // Lines of slot k + 1 lie behind polygons k + 1 .. n - 1: clip them now.
     while (next_line > 0 && f.lines[next_line - 1].slot > k) clip_line(--next_line);
-    if (!snapped.has_area(k)) continue;
+    if (!snapped.has_area(k) || left_out(hidden_face, f.polygons[k])) continue;
     const bbox_i& b = snapped.boxes[k];
     if (b.y1 <= y0 || b.y0 >= y1) continue;  // no area in this strip
     if (cov.hides({b.x0, std::max(b.y0, y0), b.x1, std::min(b.y1, y1)})) continue;
@@ -390,6 +395,15 @@ vector_drawing visible_drawing(const frame& f) {
   auto since = [](clock::time_point t0) {
     return std::chrono::duration<double>(clock::now() - t0).count();
   };
+  // Which meshes are outward closed (kept across views; made on a third thread meanwhile when
+  // the soup is new): their back faces are left out of the walk (hidden_back_faces.h).
+  std::future<std::shared_ptr<const std::vector<std::uint8_t>>> closed;
+  if (may_leave_out_back_faces(f))
+    closed = std::async(std::launch::async, [&f] {
+      return f.soup_products ? f.soup_products->outward_closed_for(f.soup, f.mesh_face_offsets)
+                             : std::make_shared<const std::vector<std::uint8_t>>(
+                                   geom::outward_closed_meshes(f.soup, f.mesh_face_offsets));
+    });
   std::future<std::vector<vector_path>> edges;
   if (opt.edges != vector_options::edges_kind::none)
     edges = std::async(std::launch::async, [&f, &d, since] {
@@ -411,12 +425,20 @@ vector_drawing visible_drawing(const frame& f) {
   const unsigned workers = hardware_workers();  // strips, regions, underlay groups: in slots
   const snapped_polygons snapped = snap(f, workers);
   const t_junction_mender mender(snapped.points, width, height);
+  const std::vector<std::uint8_t> hidden_face =
+      closed.valid() ? hidden_back_faces(f, *closed.get(), workers) : std::vector<std::uint8_t>();
   d.seconds.snap = since(t0);
   t0 = clock::now();
   // The walk, front to back, in strips (visible_strips.h) that the workers take in turn.
   std::vector<long long> centres;
-  for (std::size_t k = 0; k < f.polygons.size(); ++k)
-    if (snapped.has_area(k)) centres.push_back((snapped.boxes[k].y0 + snapped.boxes[k].y1) / 2);
+  for (std::size_t k = 0; k < f.polygons.size(); ++k) {
+    if (!snapped.has_area(k)) continue;
+    if (left_out(hidden_face, f.polygons[k])) {
+      ++d.back_faces_left_out;
+      continue;
+    }
+    centres.push_back((snapped.boxes[k].y0 + snapped.boxes[k].y1) / 2);
+  }
   std::vector<long long> avoid;  // the lines' points and horizontal segments
   for (const screen_line& l : f.lines) {
     const cl::IntPoint a = grid_of(vp, l.a), b = grid_of(vp, l.b);
@@ -427,7 +449,7 @@ vector_drawing visible_drawing(const frame& f) {
   centres = {};
   std::vector<strip_walk> walks(coverage.size());
   parallel_for(coverage.size(), workers, [&](std::size_t s, unsigned) {
-    walk_strip(f, snapped, mender, coverage, s, walks[s]);
+    walk_strip(f, snapped, mender, hidden_face, coverage, s, walks[s]);
   });
   // Each face's pieces (strip by strip, each strip in walk order) and its colour: that of the
   // fragment showing most of it, over all strips (a sliver fragment's normal, from its rounded

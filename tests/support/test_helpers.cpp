@@ -68,6 +68,18 @@ std::uint32_t add_quad(exbsp::triangle_soup& s, const exbsp::vec3d& a, const exb
   return face;
 }
 
+void add_box(exbsp::triangle_soup& s, const exbsp::vec3d& lo, const exbsp::vec3d& hi) {
+  const auto P = [&](int x, int y, int z) {
+    return exbsp::vec3d{x ? hi[0] : lo[0], y ? hi[1] : lo[1], z ? hi[2] : lo[2]};
+  };
+  add_quad(s, P(0, 0, 0), P(0, 1, 0), P(1, 1, 0), P(1, 0, 0));  // z = lo, normal -z
+  add_quad(s, P(0, 0, 1), P(1, 0, 1), P(1, 1, 1), P(0, 1, 1));  // z = hi, +z
+  add_quad(s, P(0, 0, 0), P(1, 0, 0), P(1, 0, 1), P(0, 0, 1));  // y = lo, -y
+  add_quad(s, P(0, 1, 0), P(0, 1, 1), P(1, 1, 1), P(1, 1, 0));  // y = hi, +y
+  add_quad(s, P(0, 0, 0), P(0, 0, 1), P(0, 1, 1), P(0, 1, 0));  // x = lo, -x
+  add_quad(s, P(1, 0, 0), P(1, 1, 0), P(1, 1, 1), P(1, 0, 1));  // x = hi, +x
+}
+
 exbsp::view::frame perspective_frame(exbsp::triangle_soup soup,
                                      std::vector<exbsp::view::rgb8> colors,
                                      const exbsp::view::camera& cam, int width, int height,

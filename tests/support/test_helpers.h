@@ -88,6 +88,10 @@ std::set<std::tuple<int, int, int>> colours_of(const exbsp::view::image& img);
 std::uint32_t add_quad(exbsp::triangle_soup& s, const exbsp::vec3d& a, const exbsp::vec3d& b,
                        const exbsp::vec3d& c, const exbsp::vec3d& d);
 
+/// Appends box [lo, hi] as six quads (add_quad) turned outward ((b - a) x (c - a) of each
+/// points away from the box: -z, +z, -y, +y, -x, +x in that order).
+void add_box(exbsp::triangle_soup& s, const exbsp::vec3d& lo, const exbsp::vec3d& hi);
+
 /// A frame of `soup` (colours by face id, white background) seen from `cam` through
 /// gluPerspective(fovy, width / height, near_dist, far_dist) on a width x height viewport.
 exbsp::view::frame perspective_frame(exbsp::triangle_soup soup,

@@ -37,13 +37,13 @@
 #include <exbsp/view/viewport.h>
 
 namespace exbsp::geom {
-class edge_graph_cache;  // src/geom/feature_edges.h
+class soup_cache;  // src/geom/soup_cache.h
 }  // namespace exbsp::geom
 
 namespace exbsp::view {
 
-/// A new, empty cache of the soup's edge graph (frame::edge_graphs).
-EXBSP_EXPORT std::shared_ptr<geom::edge_graph_cache> new_edge_graph_cache();
+/// A new, empty cache of what the views of one soup share (frame::soup_products).
+EXBSP_EXPORT std::shared_ptr<geom::soup_cache> new_soup_cache();
 
 /// How the painter (paint.h) walks the polygons: the reference back-to-front walk, or
 /// front-to-back with a coverage mask. Both give the same image.
@@ -102,10 +102,13 @@ struct frame {
   /// "transform+clip": cut polygons at the near plane (default) or drop them (teaching view).
   near_plane_rule near_plane = near_plane_rule::clip;
   vector_phase_seconds vector_seconds;  ///< svg / pdf stage (visible regions): phase times
-  /// The feature edges' view-independent part (the soup's edges and the triangles around each),
-  /// kept across views by the svg, pdf and edges stages: made again only when the soup or the
-  /// crease angle is not the one it was made from. Copies of a frame share it (thread-safe).
-  std::shared_ptr<geom::edge_graph_cache> edge_graphs = new_edge_graph_cache();
+  /// What does not depend on the view, kept across views by the svg, pdf and edges stages: the
+  /// feature edges' graph (the soup's edges and the triangles around each) and which meshes are
+  /// outward closed (the vector drawing then leaves out their back faces, which no viewer
+  /// outside them sees). Each is made again only when the soup or its own parameter (crease
+  /// angle, mesh_face_offsets) is not the one it was made from. Copies of a frame share it
+  /// (thread-safe).
+  std::shared_ptr<geom::soup_cache> soup_products = new_soup_cache();
   /// Called with each stage's name as it starts (pipeline::run), e.g. for a progress line;
   /// may be empty.
   std::function<void(const std::string&)> on_stage;
@@ -118,9 +121,12 @@ struct frame {
       fragment_points;  ///< "build": corner k of fragment i is points[fragment_points[i][k]]
   std::vector<std::uint32_t> order;      ///< "order": fragment indices, back to front
   std::vector<screen_polygon> polygons;  ///< "transform+clip": visible polygons, back to front
-  image picture;                         ///< "raster"
-  std::string svg;                       ///< "svg": the SVG document
-  std::string pdf;                       ///< "pdf": the PDF document
+  /// "transform+clip": per mesh (mesh_of), 1 when no fragment of it had a corner in front of
+  /// the near plane, at w <= 0 or not finite: nothing of it was cut or left out there.
+  std::vector<std::uint8_t> meshes_whole;
+  image picture;    ///< "raster"
+  std::string svg;  ///< "svg": the SVG document
+  std::string pdf;  ///< "pdf": the PDF document
   std::vector<rgb8>
       fragment_colors;  ///< "lighting": colour by fragment index (empty: face colours)
   /// "lighting" with smooth shading: the colours at the three corners of fragment i (empty:
