@@ -159,9 +159,9 @@ TEST(ClosedShells, SeparateShellsEachCountAndTouchingAtAVertexIsAllowed) {
 }
 
 TEST(ClosedShells, MeshesAreJudgedOneByOneAsTheFrameAssignsFaces) {
-  triangle_soup s = box();                               // mesh 0: faces 0..5
+  triangle_soup s = box();                                  // mesh 0: faces 0..5
   add_quad(s, {5, 0, 0}, {6, 0, 0}, {6, 1, 0}, {5, 1, 0});  // mesh 1: face 6, open
-  add_box(s, {8, 0, 0}, {9, 1, 1});                     // mesh 2: faces 7..12
+  add_box(s, {8, 0, 0}, {9, 1, 1});                         // mesh 2: faces 7..12
   EXPECT_EQ(geom::outward_closed_meshes(s, {0, 6, 7, 13}), (std::vector<std::uint8_t>{1, 0, 1}));
   EXPECT_EQ(geom::outward_closed_meshes(s, {}), (std::vector<std::uint8_t>{0}));
   // Two boxes that clash, in separate meshes: each is certified on its own.
@@ -177,11 +177,31 @@ TEST(ClosedShells, TheCorpusAgreesWithPolygonMeshProcessing) {
   using mesh = CGAL::Surface_mesh<K::Point_3>;
   namespace PMP = CGAL::Polygon_mesh_processing;
   int compared = 0, certified = 0;
-  for (const char* name : {"cube", "joint", "pinion", "couplingdown", "fandisk", "bunny00",
-                           "refined_elephant", "cross", "anchor_dense", "rotor", "spool",
-                           "blade", "turbine", "elephant", "tripod", "blobby_3cc", "open_cube",
-                           "elephant-with-holes", "eight", "knot1", "double-torus-example",
-                           "cube-meshed", "tetra_intersected_by_triangle", "fold", "mech-holes-shark"}) {
+  for (const char* name : {"cube",
+                           "joint",
+                           "pinion",
+                           "couplingdown",
+                           "fandisk",
+                           "bunny00",
+                           "refined_elephant",
+                           "cross",
+                           "anchor_dense",
+                           "rotor",
+                           "spool",
+                           "blade",
+                           "turbine",
+                           "elephant",
+                           "tripod",
+                           "blobby_3cc",
+                           "open_cube",
+                           "elephant-with-holes",
+                           "eight",
+                           "knot1",
+                           "double-torus-example",
+                           "cube-meshed",
+                           "tetra_intersected_by_triangle",
+                           "fold",
+                           "mech-holes-shark"}) {
     const std::string path = exbsp_test::corpus_dir() + name + ".off";
     mesh m;
     if (!PMP::IO::read_polygon_mesh(path, m)) continue;  // missing or not a polygon mesh

@@ -209,9 +209,9 @@ bool self_intersecting(const welded_mesh& m) {
         const std::uint32_t i = entries[x].second, j = entries[y].second;
         const tri_box &a = boxes[i], &b = boxes[j];
         if (!boxes_meet(a, b)) continue;
-        const std::uint64_t home = key_of(cell_of(std::max(a.lo[0], b.lo[0]), 0),
-                                          cell_of(std::max(a.lo[1], b.lo[1]), 1),
-                                          cell_of(std::max(a.lo[2], b.lo[2]), 2));
+        const std::uint64_t home =
+            key_of(cell_of(std::max(a.lo[0], b.lo[0]), 0), cell_of(std::max(a.lo[1], b.lo[1]), 1),
+                   cell_of(std::max(a.lo[2], b.lo[2]), 2));
         if (home == entries[first].first && meet_beyond_shared(m, i, j)) return true;
       }
     first = last;
@@ -224,7 +224,7 @@ bool self_intersecting(const welded_mesh& m) {
                             box_point(boxes[t].hi[0], boxes[t].hi[1], boxes[t].hi[2])),
                   static_cast<std::uint32_t>(t)};
   const bgi::rtree<std::pair<rtree_box, std::uint32_t>, bgi::rstar<16>> tree(indexed.begin(),
-                                                                              indexed.end());
+                                                                             indexed.end());
   std::vector<std::uint8_t> is_large(n, 0);
   for (std::uint32_t t : large) is_large[t] = 1;
   std::vector<std::pair<rtree_box, std::uint32_t>> near;

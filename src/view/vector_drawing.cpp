@@ -420,13 +420,26 @@ vector_drawing visible_drawing(const frame& f) {
   for (const screen_polygon& p : f.polygons) face_end = std::max(face_end, p.face + 1);
   std::vector<face_accumulator> faces(face_end);
   // Snap every polygon to the grid (counter-clockwise), in blocks over the workers, then index
-  // the points for mending T-junctions (on this thread: built in bands over the workers it was
-  // no faster on 2 cores, the edges' thread running meanwhile).
+  // the points of the polygons the walk takes (not the back faces left out: they are drawn
+  // nowhere, no crack can open towards them) for mending T-junctions (on this thread: built in
+  // bands over the workers it was no faster on 2 cores, the edges' thread running meanwhile).
   const unsigned workers = hardware_workers();  // strips, regions, underlay groups: in slots
   const snapped_polygons snapped = snap(f, workers);
-  const t_junction_mender mender(snapped.points, width, height);
   const std::vector<std::uint8_t> hidden_face =
       closed.valid() ? hidden_back_faces(f, *closed.get(), workers) : std::vector<std::uint8_t>();
+  std::vector<cl::IntPoint> walked_points;
+  if (!hidden_face.empty()) {
+    walked_points.reserve(snapped.points.size());
+    for (std::size_t k = 0; k < f.polygons.size(); ++k)
+      if (!left_out(hidden_face, f.polygons[k]))
+        walked_points.insert(
+            walked_points.end(),
+            snapped.points.begin() + static_cast<std::ptrdiff_t>(snapped.start[k]),
+            snapped.points.begin() + static_cast<std::ptrdiff_t>(snapped.start[k + 1]));
+  }
+  const t_junction_mender mender(hidden_face.empty() ? snapped.points : walked_points, width,
+                                 height);
+  walked_points = {};
   d.seconds.snap = since(t0);
   t0 = clock::now();
   // The walk, front to back, in strips (visible_strips.h) that the workers take in turn.
