@@ -67,10 +67,6 @@ welded_mesh weld_mesh(const triangle_soup& soup, const std::vector<std::uint32_t
   return m;
 }
 
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return static_cast<std::uint64_t>(a) << 32 | b;
-}
-
 /// True when triangles i and j meet beyond their shared welded vertices and edges.
 bool meet_beyond_shared(const welded_mesh& m, std::size_t i, std::size_t j) {
   const auto& a = m.tris[i];
@@ -121,6 +117,84 @@ bool meet_beyond_shared(const welded_mesh& m, std::size_t i, std::size_t j) {
                             kernel::Triangle_3(P(b[0]), P(b[1]), P(b[2])));
 }
 
+/// Per vertex: 1 when its star is certified embedded: its triangles form one cycle around it
+/// (each (p, a, b) followed by the one starting (p, b, ...)), and dropping one coordinate (that
+/// of the first triangle's largest normal component, a choice only) maps every one of them to
+/// a counter-clockwise triangle while the cycle winds exactly once around p. The projected
+/// triangles then tile the angle around p once, so two of them meet only in p or in their
+/// shared side, and so do the triangles themselves (a projection of a triangle with area is
+/// one to one). Every test is exact: orient2d on the input doubles, comparisons of coordinates.
+std::vector<std::uint8_t> embedded_stars(const welded_mesh& m) {
+  const std::size_t nv = m.points.size();
+  std::vector<std::uint32_t> start(nv + 1, 0);  // the star of v: corners [start[v], start[v+1])
+  for (const auto& t : m.tris)
+    for (std::uint32_t v : t) ++start[v + 1];
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> fan(start.back());  // (a, b) of (p, a, b)
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+  for (const auto& t : m.tris)
+    for (int k = 0; k < 3; ++k) fan[next[t[k]]++] = {t[(k + 1) % 3], t[(k + 2) % 3]};
+  using point2 = kernel::Point_2;
+  std::vector<std::uint8_t> ok(nv, 0);
+  std::vector<std::uint32_t> cycle;
+  for (std::size_t v = 0; v < nv; ++v) {
+    const std::uint32_t first = start[v], deg = start[v + 1] - first;
+    if (deg < 3) continue;
+    cycle.clear();
+    cycle.push_back(fan[first].first);
+    std::uint32_t b = fan[first].second;
+    while (b != cycle.front() && cycle.size() <= deg) {
+      cycle.push_back(b);
+      std::uint32_t found = deg;
+      for (std::uint32_t i = 0; i < deg; ++i)
+        if (fan[first + i].first == b) found = i;
+      if (found == deg) break;
+      b = fan[first + found].second;
+    }
+    if (b != cycle.front() || cycle.size() != deg) continue;  // pinched or open: not one cycle
+    const point3& p = m.points[v];
+    const point3& qa = m.points[cycle[0]];
+    const point3& qb = m.points[cycle[1]];
+    const double n[3] = {(qa.y() - p.y()) * (qb.z() - p.z()) - (qa.z() - p.z()) * (qb.y() - p.y()),
+                         (qa.z() - p.z()) * (qb.x() - p.x()) - (qa.x() - p.x()) * (qb.z() - p.z()),
+                         (qa.x() - p.x()) * (qb.y() - p.y()) - (qa.y() - p.y()) * (qb.x() - p.x())};
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+      if (std::abs(n[a]) > std::abs(n[axis])) axis = a;
+    const double flip = n[axis] < 0 ? -1 : 1;    // negating a double is exact
+    const auto project = [&](const point3& q) {  // (u, v) cyclic after the dropped axis
+      const double c[3] = {q.x(), q.y(), q.z()};
+      return point2(flip * c[(axis + 1) % 3], c[(axis + 2) % 3]);
+    };
+    const point2 pp = project(p);
+    const auto upper = [&](const point2& q) {  // the half-plane of angles [0, pi) around pp
+      return q.y() > pp.y() || (q.y() == pp.y() && q.x() > pp.x());
+    };
+    bool turning = true;
+    int wraps = 0;
+    point2 prev = project(m.points[cycle.back()]);
+    for (std::uint32_t i = 0; i < deg && turning; ++i) {
+      const point2 q = project(m.points[cycle[i]]);
+      turning = CGAL::orientation(pp, prev, q) == CGAL::LEFT_TURN;
+      wraps += !upper(prev) && upper(q);  // a turn in (0, pi) from below crosses angle 0
+      prev = q;
+    }
+    ok[v] = turning && wraps == 1;
+  }
+  return ok;
+}
+
+/// True when triangles i and j lie in one certified star (embedded_stars): they meet only in
+/// their shared vertex or side, no test needed.
+bool certified_apart(const welded_mesh& m, const std::vector<std::uint8_t>& star_ok, std::size_t i,
+                     std::size_t j) {
+  const auto& a = m.tris[i];
+  const auto& b = m.tris[j];
+  for (std::uint32_t v : a)
+    if (star_ok[v] && (v == b[0] || v == b[1] || v == b[2])) return true;
+  return false;
+}
+
 /// A triangle's bounding box.
 struct tri_box {
   double lo[3], hi[3];
@@ -134,9 +208,11 @@ bool boxes_meet(const tri_box& a, const tri_box& b) {  // closed boxes: touching
 
 /// Some pair of triangles meets beyond its shared vertices and edges. Candidate pairs are those
 /// whose boxes meet: found in a uniform grid of cells twice the median triangle's size (each
-/// pair tested once, in the cell holding the low corner of the boxes' common part); triangles
-/// wider than two cells are paired with every other through a Boost.Geometry R-tree instead.
+/// pair tested once, in the cell holding the low corner of the boxes' common part; pairs in one
+/// certified star skipped); triangles over more than 64 cells are paired with every other
+/// through a Boost.Geometry R-tree instead.
 bool self_intersecting(const welded_mesh& m) {
+  const std::vector<std::uint8_t> star_ok = embedded_stars(m);
   const std::size_t n = m.tris.size();
   std::vector<tri_box> boxes(n);
   tri_box all{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
@@ -180,42 +256,49 @@ bool self_intersecting(const welded_mesh& m) {
     return (cx * static_cast<std::uint64_t>(dims[1]) + cy) * static_cast<std::uint64_t>(dims[2]) +
            cz;
   };
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;  // (cell, triangle)
-  entries.reserve(n * 3);
+  // Triangles over at most 64 cells are filed in each (a counting sort by cell); wider ones
+  // (few: the large faces of CAD parts) go to the R-tree below.
+  const auto cells_total = static_cast<std::size_t>(dims[0] * dims[1] * dims[2]);
+  std::vector<std::uint32_t> start(cells_total + 1, 0), lo_cell(n * 3), hi_cell(n * 3);
   std::vector<std::uint32_t> large;
+  std::vector<std::uint8_t> is_large(n, 0);
   for (std::size_t t = 0; t < n; ++t) {
-    std::uint64_t c0[3], c1[3];
-    bool wide = false;
+    std::uint64_t span = 1;
     for (int a = 0; a < 3; ++a) {
-      c0[a] = cell_of(boxes[t].lo[a], a);
-      c1[a] = cell_of(boxes[t].hi[a], a);
-      wide = wide || c1[a] - c0[a] > 1;
+      lo_cell[t * 3 + a] = static_cast<std::uint32_t>(cell_of(boxes[t].lo[a], a));
+      hi_cell[t * 3 + a] = static_cast<std::uint32_t>(cell_of(boxes[t].hi[a], a));
+      span *= hi_cell[t * 3 + a] - lo_cell[t * 3 + a] + 1;
     }
-    if (wide) {
+    if (span > 64) {
       large.push_back(static_cast<std::uint32_t>(t));
-      continue;
+      is_large[t] = 1;
     }
-    for (std::uint64_t x = c0[0]; x <= c1[0]; ++x)
-      for (std::uint64_t y = c0[1]; y <= c1[1]; ++y)
-        for (std::uint64_t z = c0[2]; z <= c1[2]; ++z)
-          entries.push_back({key_of(x, y, z), static_cast<std::uint32_t>(t)});
   }
-  std::sort(entries.begin(), entries.end());
-  for (std::size_t first = 0; first < entries.size();) {
-    std::size_t last = first + 1;
-    while (last < entries.size() && entries[last].first == entries[first].first) ++last;
-    for (std::size_t x = first; x < last; ++x)
-      for (std::size_t y = x + 1; y < last; ++y) {
-        const std::uint32_t i = entries[x].second, j = entries[y].second;
+  const auto each_cell = [&](std::size_t t, auto&& visit) {
+    for (std::uint64_t x = lo_cell[t * 3]; x <= hi_cell[t * 3]; ++x)
+      for (std::uint64_t y = lo_cell[t * 3 + 1]; y <= hi_cell[t * 3 + 1]; ++y)
+        for (std::uint64_t z = lo_cell[t * 3 + 2]; z <= hi_cell[t * 3 + 2]; ++z)
+          visit(key_of(x, y, z));
+  };
+  for (std::size_t t = 0; t < n; ++t)
+    if (!is_large[t]) each_cell(t, [&](std::uint64_t c) { ++start[c + 1]; });
+  for (std::size_t c = 0; c < cells_total; ++c) start[c + 1] += start[c];
+  std::vector<std::uint32_t> filed(start.back()), fill(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < n; ++t)
+    if (!is_large[t])
+      each_cell(t, [&](std::uint64_t c) { filed[fill[c]++] = static_cast<std::uint32_t>(t); });
+  for (std::size_t c = 0; c < cells_total; ++c)
+    for (std::uint32_t x = start[c]; x < start[c + 1]; ++x)
+      for (std::uint32_t y = x + 1; y < start[c + 1]; ++y) {
+        const std::uint32_t i = filed[x], j = filed[y];
+        if (certified_apart(m, star_ok, i, j)) continue;  // cheapest first
         const tri_box &a = boxes[i], &b = boxes[j];
         if (!boxes_meet(a, b)) continue;
         const std::uint64_t home =
             key_of(cell_of(std::max(a.lo[0], b.lo[0]), 0), cell_of(std::max(a.lo[1], b.lo[1]), 1),
                    cell_of(std::max(a.lo[2], b.lo[2]), 2));
-        if (home == entries[first].first && meet_beyond_shared(m, i, j)) return true;
+        if (home == c && meet_beyond_shared(m, i, j)) return true;
       }
-    first = last;
-  }
   if (large.empty()) return false;
   using rtree_box = bg::model::box<box_point>;
   std::vector<std::pair<rtree_box, std::uint32_t>> indexed(n);
@@ -225,8 +308,6 @@ bool self_intersecting(const welded_mesh& m) {
                   static_cast<std::uint32_t>(t)};
   const bgi::rtree<std::pair<rtree_box, std::uint32_t>, bgi::rstar<16>> tree(indexed.begin(),
                                                                              indexed.end());
-  std::vector<std::uint8_t> is_large(n, 0);
-  for (std::uint32_t t : large) is_large[t] = 1;
   std::vector<std::pair<rtree_box, std::uint32_t>> near;
   for (std::uint32_t i : large) {
     near.clear();
@@ -234,7 +315,7 @@ bool self_intersecting(const welded_mesh& m) {
     for (const auto& hit : near) {
       const std::uint32_t j = hit.second;
       if (j == i || (is_large[j] && j < i)) continue;  // two large ones: once
-      if (meet_beyond_shared(m, i, j)) return true;
+      if (!certified_apart(m, star_ok, i, j) && meet_beyond_shared(m, i, j)) return true;
     }
   }
   return false;
@@ -245,29 +326,37 @@ bool self_intersecting(const welded_mesh& m) {
 /// - 1, connected through shared edges).
 bool closed_components(const welded_mesh& m, std::vector<std::uint32_t>& label,
                        std::uint32_t& count) {
-  // (undirected edge, triangle << 1 | direction): one sort serves both questions.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> sides;
-  sides.reserve(m.tris.size() * 3);
+  // Each side (u, v) filed under min(u, v) as (max(u, v), triangle << 1 | direction): a
+  // counting sort by vertex, then each vertex's few sides sorted; one pass serves both questions.
+  const std::size_t nv = m.points.size();
+  std::vector<std::uint32_t> start(nv + 1, 0);
+  for (const auto& t : m.tris)
+    for (int k = 0; k < 3; ++k) ++start[std::min(t[k], t[(k + 1) % 3]) + 1];
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> sides(start.back());
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
   for (std::size_t t = 0; t < m.tris.size(); ++t)
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t u = m.tris[t][k], v = m.tris[t][(k + 1) % 3];
-      sides.push_back({edge_key(std::min(u, v), std::max(u, v)),
-                       static_cast<std::uint32_t>(t << 1 | (u < v ? 1u : 0u))});
+      sides[fill[std::min(u, v)]++] = {std::max(u, v),
+                                       static_cast<std::uint32_t>(t << 1 | (u < v ? 1u : 0u))};
     }
-  std::sort(sides.begin(), sides.end());
+  for (std::size_t v = 0; v < nv; ++v)
+    std::sort(sides.begin() + start[v], sides.begin() + start[v + 1]);
   std::vector<std::uint32_t> parent(m.tris.size());
   std::iota(parent.begin(), parent.end(), 0u);
   const auto find = [&](std::uint32_t x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  for (std::size_t e = 0; e < sides.size(); e += 2) {
-    if (e + 1 >= sides.size() || sides[e].first != sides[e + 1].first ||
-        (e + 2 < sides.size() && sides[e + 2].first == sides[e].first) ||
-        (sides[e].second & 1u) == (sides[e + 1].second & 1u))
-      return false;
-    parent[find(sides[e].second >> 1)] = find(sides[e + 1].second >> 1);
-  }
+  for (std::size_t v = 0; v < nv; ++v)  // within one vertex's sides: pairs of the same edge
+    for (std::size_t e = start[v]; e < start[v + 1]; e += 2) {
+      if (e + 1 >= start[v + 1] || sides[e].first != sides[e + 1].first ||
+          (e + 2 < start[v + 1] && sides[e + 2].first == sides[e].first) ||
+          (sides[e].second & 1u) == (sides[e + 1].second & 1u))
+        return false;
+      parent[find(sides[e].second >> 1)] = find(sides[e + 1].second >> 1);
+    }
   label.assign(m.tris.size(), 0);
   std::vector<std::uint32_t> id(m.tris.size(), std::numeric_limits<std::uint32_t>::max());
   count = 0;
