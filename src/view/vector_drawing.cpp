@@ -233,13 +233,18 @@ struct snapped_polygons {
 };
 
 /// Snaps the polygons [k0, k1) of the frame into s (polygon k0 + i is s's polygon i).
-void snap_range(const frame& f, std::size_t k0, std::size_t k1, snapped_polygons& s) {
+void snap_range(const frame& f, const std::vector<std::uint8_t>& hidden_face, std::size_t k0,
+                std::size_t k1, snapped_polygons& s) {
   s.start.reserve(k1 - k0 + 1);
   s.boxes.resize(k1 - k0);
   s.start.push_back(0);
   cl::Path poly;  // polygon k for Clipper's area, one buffer for all
   for (std::size_t k = k0; k < k1; ++k) {
     const std::size_t first = s.points.size();
+    if (left_out(hidden_face, f.polygons[k])) {  // a back face left out: walked nowhere
+      s.start.push_back(first);
+      continue;
+    }
     for (const window_point& w : f.polygons[k].v) {
       const cl::IntPoint q = grid_of(f.view.vp, w);
       if (s.points.size() == first || !(s.points.back() == q)) s.points.push_back(q);
@@ -261,12 +266,13 @@ void snap_range(const frame& f, std::size_t k0, std::size_t k1, snapped_polygons
 /// Snaps every polygon of the frame (snapped_polygons): in a fixed number of blocks of
 /// consecutive polygons, snapped on the workers and joined in order (the same arrays whatever
 /// the number of workers).
-snapped_polygons snap(const frame& f, unsigned workers) {
+snapped_polygons snap(const frame& f, const std::vector<std::uint8_t>& hidden_face,
+                      unsigned workers) {
   constexpr std::size_t blocks = 16;
   const std::size_t n = f.polygons.size();
   std::vector<snapped_polygons> part(blocks);
   parallel_for(blocks, workers, [&](std::size_t b, unsigned) {
-    snap_range(f, n * b / blocks, n * (b + 1) / blocks, part[b]);
+    snap_range(f, hidden_face, n * b / blocks, n * (b + 1) / blocks, part[b]);
   });
   snapped_polygons s;
   std::size_t points = 0;
@@ -338,8 +344,7 @@ struct strip_walk {
 /// when it crosses a strip line) loses what the ones before it cover there; the lines of each
 /// slot are clipped when the walk reaches it.
 void walk_strip(const frame& f, const snapped_polygons& snapped, const t_junction_mender& mender,
-                const std::vector<std::uint8_t>& hidden_face, striped_coverage& coverage,
-                std::size_t s, strip_walk& out) {
+                striped_coverage& coverage, std::size_t s, strip_walk& out) {
   tiled_coverage& cov = coverage.strip(s);
   const long long y0 = coverage.y0(s), y1 = coverage.y1(s);
   const viewport& vp = f.view.vp;
@@ -361,7 +366,7 @@ void walk_strip(const frame& f, const snapped_polygons& snapped, const t_junctio
   for (std::size_t k = f.polygons.size(); k-- > 0;) {
     // Lines of slot k + 1 lie behind polygons k + 1 .. n - 1: clip them now.
     while (next_line > 0 && f.lines[next_line - 1].slot > k) clip_line(--next_line);
-    if (!snapped.has_area(k) || left_out(hidden_face, f.polygons[k])) continue;
+    if (!snapped.has_area(k)) continue;  // edge-on, or a back face left out
     const bbox_i& b = snapped.boxes[k];
     if (b.y1 <= y0 || b.y0 >= y1) continue;  // no area in this strip
     if (cov.hides({b.x0, std::max(b.y0, y0), b.x1, std::min(b.y1, y1)})) continue;
@@ -420,37 +425,21 @@ vector_drawing visible_drawing(const frame& f) {
   for (const screen_polygon& p : f.polygons) face_end = std::max(face_end, p.face + 1);
   std::vector<face_accumulator> faces(face_end);
   // Snap every polygon to the grid (counter-clockwise), in blocks over the workers, then index
-  // the points of the polygons the walk takes (not the back faces left out: they are drawn
-  // nowhere, no crack can open towards them) for mending T-junctions (on this thread: built in
-  // bands over the workers it was no faster on 2 cores, the edges' thread running meanwhile).
+  // the points for mending T-junctions (on this thread: built in bands over the workers it was
+  // no faster on 2 cores, the edges' thread running meanwhile). Back faces left out are not
+  // snapped: they are drawn nowhere, so no crack can open towards their points either.
   const unsigned workers = hardware_workers();  // strips, regions, underlay groups: in slots
-  const snapped_polygons snapped = snap(f, workers);
   const std::vector<std::uint8_t> hidden_face =
       closed.valid() ? hidden_back_faces(f, *closed.get(), workers) : std::vector<std::uint8_t>();
-  std::vector<cl::IntPoint> walked_points;
-  if (!hidden_face.empty()) {
-    walked_points.reserve(snapped.points.size());
-    for (std::size_t k = 0; k < f.polygons.size(); ++k)
-      if (!left_out(hidden_face, f.polygons[k]))
-        walked_points.insert(
-            walked_points.end(),
-            snapped.points.begin() + static_cast<std::ptrdiff_t>(snapped.start[k]),
-            snapped.points.begin() + static_cast<std::ptrdiff_t>(snapped.start[k + 1]));
-  }
-  const t_junction_mender mender(hidden_face.empty() ? snapped.points : walked_points, width,
-                                 height);
-  walked_points = {};
+  const snapped_polygons snapped = snap(f, hidden_face, workers);
+  const t_junction_mender mender(snapped.points, width, height);
   d.seconds.snap = since(t0);
   t0 = clock::now();
   // The walk, front to back, in strips (visible_strips.h) that the workers take in turn.
   std::vector<long long> centres;
   for (std::size_t k = 0; k < f.polygons.size(); ++k) {
-    if (!snapped.has_area(k)) continue;
-    if (left_out(hidden_face, f.polygons[k])) {
-      ++d.back_faces_left_out;
-      continue;
-    }
-    centres.push_back((snapped.boxes[k].y0 + snapped.boxes[k].y1) / 2);
+    d.back_faces_left_out += left_out(hidden_face, f.polygons[k]);
+    if (snapped.has_area(k)) centres.push_back((snapped.boxes[k].y0 + snapped.boxes[k].y1) / 2);
   }
   std::vector<long long> avoid;  // the lines' points and horizontal segments
   for (const screen_line& l : f.lines) {
@@ -462,7 +451,7 @@ vector_drawing visible_drawing(const frame& f) {
   centres = {};
   std::vector<strip_walk> walks(coverage.size());
   parallel_for(coverage.size(), workers, [&](std::size_t s, unsigned) {
-    walk_strip(f, snapped, mender, hidden_face, coverage, s, walks[s]);
+    walk_strip(f, snapped, mender, coverage, s, walks[s]);
   });
   // Each face's pieces (strip by strip, each strip in walk order) and its colour: that of the
   // fragment showing most of it, over all strips (a sliver fragment's normal, from its rounded

@@ -137,8 +137,8 @@ struct vector_drawing {
   std::vector<vector_path> paths;
   drawing_placement placement;   ///< set from the frame's view (view_setup::needs_placement)
   vector_phase_seconds seconds;  ///< visible_drawing: its phases' times (not output)
-  /// visible_drawing: polygons (with area on the grid) of outward-closed meshes facing away
-  /// from the viewer, left out as never visible (not output; view/hidden_back_faces.h).
+  /// visible_drawing: polygons of outward-closed meshes facing away from the viewer, left out
+  /// as never visible (not output; view/hidden_back_faces.h).
   std::size_t back_faces_left_out = 0;
 
   /// True when the image is larger than the drawing or the drawing is not at its origin.
