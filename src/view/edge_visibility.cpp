@@ -68,11 +68,13 @@ class occluder_grid {
       // Images this far out are kept without the image test (their rounding is not small).
       const double far = std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
       screened_[t] = far < max_screened;
-      for (int k = 0; k < 3; ++k) {
+      // Read only for screened triangles, whose sides are shorter than 2 max_screened: their
+      // squares cannot overflow, so a plain root does (std::hypot's guard costs a libm call).
+      for (int k = 0; k < 3 && screened_[t]; ++k) {
         const window_point& u = win[v[k]];
         const window_point& w = win[v[(k + 1) % 3]];
-        side_margin_[3 * t + static_cast<std::size_t>(k)] =
-            margin * std::hypot(w.x - u.x, w.y - u.y);
+        const double dx = w.x - u.x, dy = w.y - u.y;
+        side_margin_[3 * t + static_cast<std::size_t>(k)] = margin * std::sqrt(dx * dx + dy * dy);
       }
       for (int cy = r[2]; cy <= r[3]; ++cy)
         for (int cx = r[0]; cx <= r[1]; ++cx) ++count[index(cx, cy) + 1];
