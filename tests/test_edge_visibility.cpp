@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include <exbsp/view/camera.h>
 #include <exbsp/view/pipeline.h>
@@ -153,6 +154,66 @@ TEST(FeatureEdges, FacingIsExactForAFaceSeenEdgeOn) {
       EXPECT_EQ(v.facing[t], 0);
     }
   }
+}
+
+/// The facing of (a, b, c) for viewer e, in exact rationals (the test's own oracle).
+int rational_facing(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint& e) {
+  mpq_class u[3], v[3], w[3];
+  const double ev[3] = {e.x, e.y, e.z};
+  for (int k = 0; k < 3; ++k) {
+    u[k] = mpq_class(b[k]) - mpq_class(a[k]);
+    v[k] = mpq_class(c[k]) - mpq_class(a[k]);
+    w[k] = e.w ? mpq_class(ev[k]) - mpq_class(a[k]) : mpq_class(ev[k]);
+  }
+  const mpq_class d = w[0] * (u[1] * v[2] - u[2] * v[1]) + w[1] * (u[2] * v[0] - u[0] * v[2]) +
+                      w[2] * (u[0] * v[1] - u[1] * v[0]);
+  return sgn(d);
+}
+
+TEST(FeatureEdges, FilteredFacingAgreesWithRationalsOnAndOneUlpOffThePlane) {
+  // Viewers exactly in the triangle's plane (points a + s (b - a) + t (c - a) with dyadic s, t
+  // on integer corners; directions b - a), then one ulp off it in each coordinate; at the
+  // origin, near 1e8 (where the rounded determinant cannot decide), at 1e-300 (underflow) and
+  // 1e150 (overflow); and random ones.
+  std::mt19937_64 rng(20261128);
+  std::uniform_int_distribution<int> coord(-50, 50);
+  std::uniform_real_distribution<double> any(-10, 10);
+  int compared = 0, zeros = 0;
+  for (int round = 0; round < 400; ++round) {
+    for (const double scale : {1.0, 1e-300, 1e150}) {
+      for (const double shift : {0.0, 1e8}) {
+        if (scale != 1.0 && shift != 0.0) continue;
+        vec3d p[3];
+        for (vec3d& q : p)
+          for (double& x : q) x = shift + scale * coord(rng);
+        const double s = coord(rng) / 4.0, t = coord(rng) / 4.0;
+        hpoint on{p[0][0] + s * (p[1][0] - p[0][0]) + t * (p[2][0] - p[0][0]),
+                  p[0][1] + s * (p[1][1] - p[0][1]) + t * (p[2][1] - p[0][1]),
+                  p[0][2] + s * (p[1][2] - p[0][2]) + t * (p[2][2] - p[0][2]), 1};
+        const hpoint along{p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2], 0};
+        std::vector<hpoint> viewers{
+            on, along, {any(rng), any(rng), any(rng), 1}, {any(rng), any(rng), any(rng), 0}};
+        for (const hpoint& base : {on, along})
+          for (int k = 0; k < 3; ++k)
+            for (const double dir : {-1.0, 1.0}) {
+              hpoint e = base;
+              double& x = k == 0 ? e.x : k == 1 ? e.y : e.z;
+              x = std::nextafter(x, dir * HUGE_VAL);
+              viewers.push_back(e);
+            }
+        for (const hpoint& e : viewers) {
+          if (e.w == 0 && e.x == 0 && e.y == 0 && e.z == 0) continue;
+          const int exact = rational_facing(p[0], p[1], p[2], e);
+          EXPECT_EQ(geom::facing_filtered(p[0], p[1], p[2], e), exact);
+          EXPECT_EQ(geom::facing(p[0], p[1], p[2], e), exact);
+          ++compared;
+          zeros += exact == 0;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 10000);
+  EXPECT_GT(zeros, 500);  // the on-plane viewers really are on the plane
 }
 
 TEST(FeatureEdges, ASilhouetteSeparatesAFrontFaceFromOneThatIsNot) {

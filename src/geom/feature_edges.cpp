@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geom/weld.h"
 
@@ -24,6 +25,37 @@ int facing(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint& viewer)
   // D(a, b, c, E) = -orientation(a, b, c, E) (homogeneous_det.cpp).
   const rounding_guard guard;
   return -det_value(point_of(a), point_of(b), point_of(c), viewer).sign();
+}
+
+int facing_filtered(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint& viewer) {
+  // facing = sign((b - a) x (c - a) . V), V = E - a (w = 1) or the direction E (w = 0): the
+  // triple product of rows r0 = b - a, r1 = c - a, r2 = V. Each row is rounded once (relative
+  // error u per coordinate, moving the determinant by at most about 3u x its permanent P), and
+  // the evaluation adds about 5u P: a bound of 32u P decides the sign; near underflow or
+  // overflow, or within the bound, the exact facing().
+  double r[3][3];
+  for (int k = 0; k < 3; ++k) {
+    r[0][k] = b[k] - a[k];
+    r[1][k] = c[k] - a[k];
+  }
+  r[2][0] = viewer.w ? viewer.x - a[0] : viewer.x;
+  r[2][1] = viewer.w ? viewer.y - a[1] : viewer.y;
+  r[2][2] = viewer.w ? viewer.z - a[2] : viewer.z;
+  const double m0 = r[1][1] * r[2][2] - r[1][2] * r[2][1];
+  const double m1 = r[1][2] * r[2][0] - r[1][0] * r[2][2];
+  const double m2 = r[1][0] * r[2][1] - r[1][1] * r[2][0];
+  const double det = r[0][0] * m0 + r[0][1] * m1 + r[0][2] * m2;
+  const double permanent =
+      std::abs(r[0][0]) * (std::abs(r[1][1] * r[2][2]) + std::abs(r[1][2] * r[2][1])) +
+      std::abs(r[0][1]) * (std::abs(r[1][2] * r[2][0]) + std::abs(r[1][0] * r[2][2])) +
+      std::abs(r[0][2]) * (std::abs(r[1][0] * r[2][1]) + std::abs(r[1][1] * r[2][0]));
+  constexpr double u = std::numeric_limits<double>::epsilon() / 2;
+  const double bound = 32 * u * permanent;
+  if (std::isfinite(det) && std::isfinite(bound) && permanent > 1e-250) {
+    if (det > bound) return 1;
+    if (det < -bound) return -1;
+  }
+  return facing(a, b, c, viewer);
 }
 
 edge_graph edge_graph_of(const triangle_soup& s, double crease_deg) {
@@ -110,15 +142,11 @@ view_features find_feature_edges(const edge_graph& g, const triangle_soup& s,
   const std::size_t n = s.triangles.size();
   out.facing.assign(n, 0);
   out.feature_sides.assign(n, 0);
-  {
-    const rounding_guard guard;
-    for (std::size_t t = 0; t < n; ++t) {
-      if (g.degenerate[t]) continue;
-      const auto& v = s.triangles[t].v;
-      const vec3d &a = s.vertices[v[0]], &b = s.vertices[v[1]], &c = s.vertices[v[2]];
-      const det_value plane_with_e(point_of(a), point_of(b), point_of(c), viewer);
-      out.facing[t] = static_cast<std::int8_t>(-plane_with_e.sign());
-    }
+  for (std::size_t t = 0; t < n; ++t) {
+    if (g.degenerate[t]) continue;
+    const auto& v = s.triangles[t].v;
+    out.facing[t] = static_cast<std::int8_t>(
+        facing_filtered(s.vertices[v[0]], s.vertices[v[1]], s.vertices[v[2]], viewer));
   }
   for (const edge_graph::edge& ge : g.edges) {
     // A smooth edge between two faces is drawn where one faces the viewer and the other not.

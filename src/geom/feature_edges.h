@@ -47,6 +47,12 @@ struct view_features {
 /// Exact facing of triangle (a, b, c) for viewer E (notation): 1, -1 or 0.
 EXBSP_EXPORT int facing(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint& viewer);
 
+/// facing(), the same result, cheaper: the determinant in double with a bound on its rounding,
+/// and facing() only when the bound does not decide the sign. Call it with the rounding mode to
+/// nearest (outside a rounding_guard).
+EXBSP_EXPORT int facing_filtered(const vec3d& a, const vec3d& b, const vec3d& c,
+                                 const hpoint& viewer);
+
 /// What of the feature edges does not depend on the viewer: the soup's edges with the
 /// triangles around each, and whether each is drawn in every view (boundary, non-manifold,
 /// crease) or only where it is a silhouette. Made once per soup and crease angle

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "geom/homogeneous_det.h"
+#include "geom/feature_edges.h"
 #include "view/edge_visibility.h"
 #include "view/workers.h"
 
@@ -34,16 +34,12 @@ std::vector<std::uint8_t> hidden_back_faces(const frame& f,
   const geom::hpoint viewer = viewer_of(f);
   constexpr std::size_t block = 4096;
   parallel_for((n + block - 1) / block, workers, [&](std::size_t b, unsigned) {
-    const geom::rounding_guard guard;
     for (std::size_t t = b * block; t < std::min(n, (b + 1) * block); ++t) {
       const soup_triangle& tri = s.triangles[t];
       const std::uint32_t mesh = f.mesh_of(tri.face);
       if (mesh >= candidate.size() || !candidate[mesh]) continue;
-      // D(a, b, c, E) = -orientation(a, b, c, E): positive when E is behind the plane.
-      away[t] = geom::det_value(geom::point_of(s.vertices[tri.v[0]]),
-                                geom::point_of(s.vertices[tri.v[1]]),
-                                geom::point_of(s.vertices[tri.v[2]]), viewer)
-                    .sign() > 0;
+      away[t] = geom::facing_filtered(s.vertices[tri.v[0]], s.vertices[tri.v[1]],
+                                      s.vertices[tri.v[2]], viewer) < 0;
     }
   });
   std::uint32_t faces = 0;
