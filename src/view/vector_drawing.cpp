@@ -400,8 +400,8 @@ vector_drawing visible_drawing(const frame& f) {
   auto since = [](clock::time_point t0) {
     return std::chrono::duration<double>(clock::now() - t0).count();
   };
-  // Which meshes are outward closed (kept across views; made on a third thread meanwhile when
-  // the soup is new): their back faces are left out of the walk (hidden_back_faces.h).
+  // Which meshes are outward closed (kept across views; for a new soup made on a third thread,
+  // the edges' thread starting meanwhile): their back faces are left out (hidden_back_faces.h).
   std::future<std::shared_ptr<const std::vector<std::uint8_t>>> closed;
   if (may_leave_out_back_faces(f))
     closed = std::async(std::launch::async, [&f] {
@@ -424,7 +424,7 @@ vector_drawing visible_drawing(const frame& f) {
   std::uint32_t face_end = 0;
   for (const screen_polygon& p : f.polygons) face_end = std::max(face_end, p.face + 1);
   std::vector<face_accumulator> faces(face_end);
-  // Snap every polygon to the grid (counter-clockwise), in blocks over the workers, then index
+  // Snap the polygons to the grid (counter-clockwise), in blocks over the workers, then index
   // the points for mending T-junctions (on this thread: built in bands over the workers it was
   // no faster on 2 cores, the edges' thread running meanwhile). Back faces left out are not
   // snapped: they are drawn nowhere, so no crack can open towards their points either.
