@@ -24,8 +24,8 @@
 #include <boost/geometry/geometries/box.hpp>
 #include <boost/geometry/geometries/point.hpp>
 #include <boost/geometry/index/rtree.hpp>
-#include <gmpxx.h>
 
+#include "geom/homogeneous_det.h"
 #include "geom/weld.h"
 
 namespace exbsp::geom {
@@ -382,16 +382,10 @@ int volume_sign(const welded_mesh& m, const std::vector<std::uint32_t>& tris) {
       r[k][1] = p.y() - o.y();
       r[k][2] = p.z() - o.z();
     }
-    const double d = r[0][0] * (r[1][1] * r[2][2] - r[1][2] * r[2][1]) -
-                     r[0][1] * (r[1][0] * r[2][2] - r[1][2] * r[2][0]) +
-                     r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0]);
-    const double permanent =
-        std::abs(r[0][0]) * (std::abs(r[1][1] * r[2][2]) + std::abs(r[1][2] * r[2][1])) +
-        std::abs(r[0][1]) * (std::abs(r[1][0] * r[2][2]) + std::abs(r[1][2] * r[2][0])) +
-        std::abs(r[0][2]) * (std::abs(r[1][0] * r[2][1]) + std::abs(r[1][1] * r[2][0]));
-    sum += d;
-    magnitude += permanent;
-    terms += std::abs(d);
+    const rounded_det3 d = det3_in_double(r);
+    sum += d.value;
+    magnitude += d.permanent;
+    terms += std::abs(d.value);
   }
   // u = 2^-53. Per term: the translated coordinates are within u (relative) of the true ones,
   // which moves the determinant by at most about 3u x its permanent; computing it costs about
@@ -404,19 +398,16 @@ int volume_sign(const welded_mesh& m, const std::vector<std::uint32_t>& tris) {
     if (sum > bound) return 1;
     if (sum < -bound) return -1;
   }
-  mpq_class exact = 0;  // about the origin: every product of doubles is exact in rationals
-  for (std::uint32_t t : tris) {
-    mpq_class c[3][3];
-    for (int k = 0; k < 3; ++k) {
-      const point3& p = m.points[m.tris[t][k]];
-      c[k][0] = p.x();
-      c[k][1] = p.y();
-      c[k][2] = p.z();
-    }
-    exact += c[0][0] * (c[1][1] * c[2][2] - c[1][2] * c[2][1]) -
-             c[0][1] * (c[1][0] * c[2][2] - c[1][2] * c[2][0]) +
-             c[0][2] * (c[1][0] * c[2][1] - c[1][1] * c[2][0]);
-  }
+  // Exactly, about the origin: D(a, b, c, O) = det [a; b; c] (homogeneous_det.h), summed.
+  const rounding_guard guard;
+  const hpoint origin{0, 0, 0, 1};
+  const auto row = [&](std::uint32_t v) {
+    const point3& p = m.points[v];
+    return hpoint{p.x(), p.y(), p.z(), 1};
+  };
+  mpq_class exact = 0;
+  for (std::uint32_t t : tris)
+    exact += det_value(row(m.tris[t][0]), row(m.tris[t][1]), row(m.tris[t][2]), origin).exact();
   return sgn(exact);
 }
 
@@ -455,17 +446,11 @@ shell_verdict shell_verdict_of(const triangle_soup& soup,
 
 std::vector<std::uint8_t> outward_closed_meshes(
     const triangle_soup& soup, const std::vector<std::uint32_t>& mesh_face_offsets) {
-  const std::size_t meshes = mesh_face_offsets.size() < 2 ? 1 : mesh_face_offsets.size() - 1;
+  const std::size_t meshes = mesh_count(mesh_face_offsets);
   std::vector<std::vector<std::uint32_t>> members(meshes);
   for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-    // The mesh as frame::mesh_of has it (faces past the last offset: no mesh here).
-    std::size_t k = 0;
-    if (!mesh_face_offsets.empty()) {
-      const auto it = std::upper_bound(mesh_face_offsets.begin(), mesh_face_offsets.end(),
-                                       soup.triangles[t].face);
-      k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, it - mesh_face_offsets.begin() - 1));
-    }
-    if (k < meshes) members[k].push_back(static_cast<std::uint32_t>(t));
+    const std::uint32_t k = mesh_of_face(mesh_face_offsets, soup.triangles[t].face);
+    if (k < meshes) members[k].push_back(static_cast<std::uint32_t>(t));  // past the end: none
   }
   const welded_ids welded = weld(soup.vertices);
   std::vector<std::uint32_t> local(welded.count, std::numeric_limits<std::uint32_t>::max());

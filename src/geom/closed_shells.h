@@ -43,9 +43,8 @@ enum class shell_verdict : std::uint8_t {
 EXBSP_EXPORT shell_verdict shell_verdict_of(const triangle_soup& soup,
                                             const std::vector<std::uint32_t>& triangles);
 
-/// Per mesh k of `soup` (the triangles whose face id is in [mesh_face_offsets[k],
-/// mesh_face_offsets[k + 1]); one mesh of every triangle when mesh_face_offsets is empty):
-/// 1 when it is outward closed, 0 otherwise.
+/// Per mesh k < mesh_count(mesh_face_offsets) of `soup` (its triangles: those whose face id
+/// mesh_of_face assigns to k, as frame::mesh_of does): 1 when it is outward closed, 0 otherwise.
 EXBSP_EXPORT std::vector<std::uint8_t> outward_closed_meshes(
     const triangle_soup& soup, const std::vector<std::uint32_t>& mesh_face_offsets);
 

@@ -41,19 +41,12 @@ int facing_filtered(const vec3d& a, const vec3d& b, const vec3d& c, const hpoint
   r[2][0] = viewer.w ? viewer.x - a[0] : viewer.x;
   r[2][1] = viewer.w ? viewer.y - a[1] : viewer.y;
   r[2][2] = viewer.w ? viewer.z - a[2] : viewer.z;
-  const double m0 = r[1][1] * r[2][2] - r[1][2] * r[2][1];
-  const double m1 = r[1][2] * r[2][0] - r[1][0] * r[2][2];
-  const double m2 = r[1][0] * r[2][1] - r[1][1] * r[2][0];
-  const double det = r[0][0] * m0 + r[0][1] * m1 + r[0][2] * m2;
-  const double permanent =
-      std::abs(r[0][0]) * (std::abs(r[1][1] * r[2][2]) + std::abs(r[1][2] * r[2][1])) +
-      std::abs(r[0][1]) * (std::abs(r[1][2] * r[2][0]) + std::abs(r[1][0] * r[2][2])) +
-      std::abs(r[0][2]) * (std::abs(r[1][0] * r[2][1]) + std::abs(r[1][1] * r[2][0]));
+  const rounded_det3 d = det3_in_double(r);
   constexpr double u = std::numeric_limits<double>::epsilon() / 2;
-  const double bound = 32 * u * permanent;
-  if (std::isfinite(det) && std::isfinite(bound) && permanent > 1e-250) {
-    if (det > bound) return 1;
-    if (det < -bound) return -1;
+  const double bound = 32 * u * d.permanent;
+  if (std::isfinite(d.value) && std::isfinite(bound) && d.permanent > 1e-250) {
+    if (d.value > bound) return 1;
+    if (d.value < -bound) return -1;
   }
   return facing(a, b, c, viewer);
 }

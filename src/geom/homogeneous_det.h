@@ -17,6 +17,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <cmath>
 #include <memory>
 
 #include <exbsp/core/export.h>
@@ -30,6 +31,24 @@ struct hpoint {
 };
 
 inline hpoint point_of(const std::array<double, 3>& p) { return {p[0], p[1], p[2], 1}; }
+
+/// det [r0; r1; r2] = r0 . (r1 x r2) of three double rows, evaluated in double (rounding to
+/// nearest, so outside a rounding_guard), and its permanent (the sum of the absolute values of
+/// its six products): the evaluation errs by about 5u x the permanent (u = 2^-53), which lets a
+/// caller decide the sign in double and fall back to det_value when the bound does not.
+struct rounded_det3 {
+  double value = 0, permanent = 0;
+};
+inline rounded_det3 det3_in_double(const double (&r)[3][3]) {
+  rounded_det3 d;
+  d.value = r[0][0] * (r[1][1] * r[2][2] - r[1][2] * r[2][1]) +
+            r[0][1] * (r[1][2] * r[2][0] - r[1][0] * r[2][2]) +
+            r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0]);
+  d.permanent = std::abs(r[0][0]) * (std::abs(r[1][1] * r[2][2]) + std::abs(r[1][2] * r[2][1])) +
+                std::abs(r[0][1]) * (std::abs(r[1][2] * r[2][0]) + std::abs(r[1][0] * r[2][2])) +
+                std::abs(r[0][2]) * (std::abs(r[1][0] * r[2][1]) + std::abs(r[1][1] * r[2][0]));
+  return d;
+}
 
 /// The interval type of this file: valid only while a rounding_guard is alive.
 using interval = CGAL::Interval_nt_advanced;

@@ -183,7 +183,7 @@ std::string transform_clip_stage(frame& f) {
       dropped_mesh[mesh] = true;
     }
   // A mesh stays whole unless a fragment of it meets the near plane or worse (pipeline.h).
-  const std::size_t meshes = f.mesh_face_offsets.size() < 2 ? 1 : f.mesh_face_offsets.size() - 1;
+  const std::size_t meshes = mesh_count(f.mesh_face_offsets);
   f.meshes_whole.assign(meshes, 1);
   const auto cut = [&](std::uint32_t face) {
     const std::uint32_t mesh = f.mesh_of(face);

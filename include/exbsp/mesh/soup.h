@@ -3,7 +3,9 @@
 // Vertices are the IEEE doubles read from the file; polygons are fan-triangulated from
 // their first vertex and every triangle keeps the 0-based index of its source face.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -51,5 +53,22 @@ struct EXBSP_EXPORT triangle_soup {
   /// them, the result has them ((0, 0) at the corners of the side that has none).
   void append(const triangle_soup& other);
 };
+
+/// Meshes appended into one soup (triangle_soup::append), mesh k's face ids starting at
+/// first_face[k] (view::frame::mesh_face_offsets): the mesh of face id `face`. Mesh 0 when
+/// first_face is empty; a face before first_face[0] is in mesh 0, one past the last entry
+/// gets first_face.size() - 1, which is no mesh of mesh_count's.
+inline std::uint32_t mesh_of_face(const std::vector<std::uint32_t>& first_face,
+                                  std::uint32_t face) {
+  if (first_face.empty()) return 0;
+  const auto it = std::upper_bound(first_face.begin(), first_face.end(), face);
+  return static_cast<std::uint32_t>(std::max<std::ptrdiff_t>(0, it - first_face.begin() - 1));
+}
+
+/// The number of meshes `first_face` describes (mesh_of_face): one when it has fewer than two
+/// entries.
+inline std::size_t mesh_count(const std::vector<std::uint32_t>& first_face) {
+  return first_face.size() < 2 ? 1 : first_face.size() - 1;
+}
 
 }  // namespace exbsp

@@ -166,12 +166,7 @@ struct frame {
                        [](const std::shared_ptr<const texture>& t) { return t != nullptr; });
   }
   /// Mesh index of a face id (mesh_face_offsets: first face of mesh k; mesh 0 when empty).
-  std::uint32_t mesh_of(std::uint32_t face) const {
-    if (mesh_face_offsets.empty()) return 0;
-    const auto it = std::upper_bound(mesh_face_offsets.begin(), mesh_face_offsets.end(), face);
-    return static_cast<std::uint32_t>(
-        std::max<std::ptrdiff_t>(0, it - mesh_face_offsets.begin() - 1));
-  }
+  std::uint32_t mesh_of(std::uint32_t face) const { return mesh_of_face(mesh_face_offsets, face); }
 };
 
 /// One stage: a name and a function that updates the frame and returns a short note
