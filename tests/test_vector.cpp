@@ -427,6 +427,15 @@ TEST(VisibleRegions, MatchThePngAtPixelCentresOnEveryScene) {
   }
 }
 
+/// Colours by face id, distinct for the first hundreds of faces.
+std::vector<rgb8> face_colours(std::uint32_t faces) {
+  std::vector<rgb8> c;
+  for (std::uint32_t k = 0; k < faces; ++k)
+    c.push_back({static_cast<std::uint8_t>(k * 37 % 251), static_cast<std::uint8_t>(k * 91 % 241),
+                 static_cast<std::uint8_t>(k * 53 % 239)});
+  return c;
+}
+
 /// A perspective frame of `soup` seen from its box's centre + (0.9, 0.7, 1.1) x its diagonal
 /// (the eye), towards the centre, 40 degrees, at width x height.
 frame corner_frame(triangle_soup soup, std::vector<rgb8> colors, int width, int height) {
@@ -451,12 +460,8 @@ TEST(VisibleRegions, OfARealMeshMatchThePngAndTheirUnderlayCoversExactlyThem) {
   const std::string path = exbsp_test::corpus_dir() + "fandisk.off";
   EXBSP_NEED_CORPUS(std::filesystem::exists(path), path);
   triangle_soup soup = read_mesh(path);
-  std::vector<rgb8> colors;
-  for (std::uint32_t k = 0; k < soup.face_count; ++k)
-    colors.push_back({static_cast<std::uint8_t>(k * 37 % 251),
-                      static_cast<std::uint8_t>(k * 91 % 241),
-                      static_cast<std::uint8_t>(k * 53 % 239)});
-  frame f = corner_frame(std::move(soup), colors, 400, 300);
+  const std::uint32_t faces = soup.face_count;
+  frame f = corner_frame(std::move(soup), face_colours(faces), 400, 300);
   run(f, {}, output_kind::png);
   const image png = f.picture;
   const vector_drawing d = visible_drawing(f);
@@ -575,16 +580,6 @@ TEST(VisibleRegions, NonConvexPiecesAndPiecesWithHolesUniteByTheirBoundaryToo) {
 }
 
 // ---- back faces of outward-closed meshes (view/hidden_back_faces.h) -------------------------
-
-/// Colours by face id, distinct for the first hundreds of faces.
-std::vector<rgb8> face_colours(std::uint32_t faces) {
-  std::vector<rgb8> c;
-  for (std::uint32_t k = 0; k < faces; ++k)
-    c.push_back({static_cast<std::uint8_t>(40 + k * 37 % 211),
-                 static_cast<std::uint8_t>(30 + k * 91 % 221),
-                 static_cast<std::uint8_t>(20 + k * 53 % 231)});
-  return c;
-}
 
 /// The drawing of `f` (its PNG run) with back faces left out where allowed, the drawing with
 /// none left out (every mesh marked as not whole), and the PNG.
