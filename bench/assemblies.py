@@ -234,7 +234,8 @@ def main():
                          (a["triangles"] * math.log(a["triangles"]))) / span
         lines += ["", f"Growth of the build time from {num(a['triangles'])} to {num(b['triangles'])} "
                   f"triangles: n^{exponent:.2f} (n log n over that range: n^{nlogn:.2f}); of the "
-                  f"fragments: n^{math.log(b['fragments'] / a['fragments']) / span:.2f}."]
+                  f"fragments: n^{math.log(b['fragments'] / a['fragments']) / span:.2f}. Where the "
+                  "fragments are born, and what placement costs: section 10 (bench/fragment_births.py)."]
     lines += ["", "![build time, frame time, fragments and memory per fragment against the input size]"
               "(plots/assemblies.png)", ""]
     if dask:

@@ -8,6 +8,7 @@ Kernels: `exact` is the default (docs/contract.md "Command line"); the goals and
 Epeck (CGAL's lazy exact kernel, the same tree) beside it."""
 import json
 import os
+import re
 
 import common
 import perf_profile
@@ -763,13 +764,13 @@ def write(path, meta, cfg, data, plot_rel, command):
     text = "\n".join(head) + "\n" + acc_text + "\n" + heur_text + "\n" + section_render(data["render"], plot_rel) + \
         "\n" + micro_text + "\n" + section_profile(data.get("profile")) + "\n\n" + \
         section_peers(acc, data.get("peers", []), data.get("node", ""), plot_rel) + "\n\n" + "\n".join(METHOD_NOTES)
-    # Section 7 (the hidden-line drawing) is written by bench/hidden_lines.py between its markers:
-    # kept as it stands when the rest is regenerated.
-    begin, end = "<!-- hidden-lines:begin -->", "<!-- hidden-lines:end -->"
+    # Sections 7 and later (the hidden-line drawing, drawing sets, assemblies, fragment births)
+    # are written by their own scripts between <!-- name:begin --> and <!-- name:end -->: kept as
+    # they stand, in their order, when the rest is regenerated.
     if os.path.exists(path):
         with open(path) as f:
             old = f.read()
-        if begin in old and end in old:
-            text = text.rstrip("\n") + "\n\n" + old[old.index(begin):old.index(end) + len(end)] + "\n"
+        for m in re.finditer(r"<!-- ([a-z0-9-]+):begin -->.*?<!-- \1:end -->", old, re.S):
+            text = text.rstrip("\n") + "\n\n" + m.group(0) + "\n"
     with open(path, "w") as f:
         f.write(text)

@@ -9,6 +9,7 @@ import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
+import fragment_births  # noqa: E402
 import perf_profile  # noqa: E402
 import report  # noqa: E402
 
@@ -174,12 +175,18 @@ class Goals(unittest.TestCase):
 
 
 class WholeReport(unittest.TestCase):
-    def test_write_and_plot(self):
+    @staticmethod
+    def inputs():
+        """(meta, data) of a small report."""
         meta = {"quick": True, "minutes": 1, "cpu": "cpu", "nproc": "2", "memory_gib": 1, "kernel": "Linux",
                 "compiler": "c++", "cgal": "5.5", "load_start": [1, 1, 1], "load_end": [2, 2, 2], "commit": "abc",
                 "dirty": False, "date": "today"}
         data = {"accuracy": ACCURACY, "soup": Heuristics().rows(), "sticks": [], "corpus": [], "render": [],
                 "micro": None, "profile": {}, "stacked": STACKED, "peers": PEERS, "node": "v18"}
+        return meta, data
+
+    def test_write_and_plot(self):
+        meta, data = self.inputs()
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, "RESULTS.md")
             report.write(path, meta, CFG, data, "plots", "bench/run.py --quick")
@@ -197,6 +204,54 @@ class WholeReport(unittest.TestCase):
             self.assertEqual(sorted(os.listdir(os.path.join(d, "plots"))),
                              ["accuracy_defects.png", "accuracy_ratio.png", "heuristics_corpus.png",
                               "heuristics_soup.png", "peers.png"])
+
+    def test_sections_of_other_scripts_are_kept(self):
+        meta, data = self.inputs()
+        blocks = ["<!-- hidden-lines:begin -->\n## 7. lines\n<!-- hidden-lines:end -->",
+                  "<!-- assemblies:begin -->\n## 9. big\n<!-- assemblies:end -->",
+                  "<!-- births:begin -->\n## 10. births\n<!-- births:end -->"]
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "RESULTS.md")
+            with open(path, "w") as f:
+                f.write("old text\n\n" + "\n\nbetween\n\n".join(blocks) + "\n")
+            report.write(path, meta, CFG, data, "plots", "bench/run.py --quick")
+            with open(path) as f:
+                text = f.read()
+        self.assertNotIn("old text", text)
+        self.assertNotIn("between", text)
+        at = [text.index(b) for b in blocks]
+        self.assertEqual(at, sorted(at))
+        self.assertEqual(text.count("<!-- births:begin -->"), 1)
+
+
+class Births(unittest.TestCase):
+    """bench/fragment_births.py's exact plane classes and its location of split events."""
+
+    def test_plane_classes_are_exact(self):
+        import numpy as np
+        v = np.array([[0.1, 0.2, 0.3], [1.1, 0.2, 0.3], [1.1, 1.2, 0.3], [0.1, 1.2, 0.3],
+                      [0.1, 0.2, np.nextafter(0.3, 1.0)], [2.0, 2.0, 2.0], [3.0, 3.0, 3.0]])
+        t = [(0, 1, 2), (0, 2, 3), (2, 1, 0), (4, 1, 2), (1, 5, 6), (5, 6, 5)]
+        c = fragment_births.plane_classes(v, t)
+        self.assertEqual(c[0], c[1])  # the two halves of a square
+        self.assertEqual(c[0], c[2])  # either orientation
+        self.assertNotEqual(c[0], c[3])  # one corner one ulp above the square's plane
+        self.assertEqual(len({c[3], c[4], c[5]}), 3)  # a slanted plane, a degenerate triangle
+
+    def test_located_events_and_their_causes(self):
+        # faces 0..9; parts: faces 0-7 part 0, 8-9 part 1; file planes: 1, 2 and 4 are one plane.
+        part_of = [0] * 8 + [1] * 2
+        plane_key = [(p, c) for p, c in zip(part_of, [10, 11, 11, 13, 11, 15, 16, 17, 18, 19])]
+        paths = [
+            (0, [(8, 1)]), (0, [(8, -1)]),  # another part's plane: parts meet, depth 1
+            (1, [(8, 1), (2, 1)]), (1, [(8, 1), (2, -1)]),  # its file plane: coplanar, depth 2
+            (3, [(8, 1), (2, 1), (4, 1)]), (3, [(8, 1), (2, 1), (4, -1)]),  # plane 2 again: depth 3
+            (6, [(7, -1)]), (6, [(7, 1)]), (6, [(7, 1)]),  # own shape at depth 1, one event
+            (5, [(7, 1), (9, -1)]), (5, [(7, 1), (9, -1)]),  # two pieces never parted: none
+        ]
+        events = fragment_births.located_events(paths, plane_key, part_of)
+        self.assertEqual(dict(events), {("parts meet", 1): 1, ("placement: coplanar", 2): 1,
+                                        ("placement: plane again", 3): 1, ("own shape", 1): 1})
 
 
 if __name__ == "__main__":
