@@ -646,6 +646,11 @@ TEST_F(Hostile, the_default_fragment_budget_is_shown_and_can_be_lifted) {
   EXPECT_EQ(h.status, 0);
   EXPECT_TRUE(contains(h.out, "--max-fragments")) << h.out;
   EXPECT_TRUE(contains(h.out, "default: half the available memory")) << h.out;
+  EXPECT_TRUE(contains(h.out, "at 640 bytes per fragment for exact")) << h.out;
+  // build makes no frame and no document: its own, smaller figure (src/bsp/kernels.cpp).
+  const result b = run("build --help");
+  EXPECT_EQ(b.status, 0);
+  EXPECT_TRUE(contains(b.out, "at 256 bytes per fragment for exact")) << b.out;
   write_file(dir / "sticks.off", sticks_off(6));
   const result small = run("build sticks.off --heuristic naive --max-fragments 30");
   EXPECT_EQ(small.status, 3);

@@ -75,9 +75,13 @@ void expect_wired(const kernel_row& row) {
   for (const std::string& n : kernel_names()) named = named || n == row.name;
   EXPECT_TRUE(named) << "kernel_names() lacks it";
   EXPECT_GT(row.bytes_per_fragment, 0u);
+  // A build alone needs at most what a command that also draws or writes the tree needs.
+  EXPECT_GT(row.build_bytes_per_fragment, 0u);
+  EXPECT_LE(row.build_bytes_per_fragment, row.bytes_per_fragment);
   EXPECT_FALSE(row.description.empty());
   EXPECT_NE(cli::kernel_help().find(row.name + " (" + row.description + ")"), std::string::npos);
   EXPECT_NE(cli::max_fragments_help().find(row.name), std::string::npos);
+  EXPECT_NE(cli::max_fragments_help(cli::fragment_use::build).find(row.name), std::string::npos);
 
   build_options options;
   options.kernel = row.id;
@@ -131,7 +135,7 @@ TEST(KernelTable, saved_trees_keep_their_published_kernel_codes) {
 }
 
 TEST(KernelTable, a_kernel_added_in_a_test_file_works_end_to_end) {
-  add_kernel({static_cast<kernel_id>(100), "test-double", false, 100, 640,
+  add_kernel({static_cast<kernel_id>(100), "test-double", false, 100, 640, 512,
               "the double geometry under another id", make_bsp_test_double,
               tree_file::load_test_double});
   const kernel_row& row = kernel_row_of(static_cast<kernel_id>(100));
@@ -149,6 +153,13 @@ TEST(KernelTable, a_kernel_added_in_a_test_file_works_end_to_end) {
   EXPECT_THROW(add_kernel(again), usage_error);
   again.name = "test-double-2";
   EXPECT_THROW(add_kernel(again), usage_error);  // file code 100 is taken
+  // Without its bytes per fragment the default --max-fragments would divide by zero.
+  again.file_code = 102;
+  again.build_bytes_per_fragment = 0;
+  EXPECT_THROW(add_kernel(again), usage_error);
+  again.build_bytes_per_fragment = 512;
+  again.bytes_per_fragment = 0;
+  EXPECT_THROW(add_kernel(again), usage_error);
 }
 
 TEST(KernelTable, unknown_kernels_are_usage_errors) {

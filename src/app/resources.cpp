@@ -48,21 +48,28 @@ std::uint64_t available_memory_bytes() {
   return available;
 }
 
-std::size_t default_fragment_budget(kernel_id kernel) {
+namespace {
+std::uint64_t bytes_per_fragment(const kernel_row& r, fragment_use use) {
+  return use == fragment_use::build ? r.build_bytes_per_fragment : r.bytes_per_fragment;
+}
+}  // namespace
+
+std::size_t default_fragment_budget(kernel_id kernel, fragment_use use) {
   const std::uint64_t bytes = available_memory_bytes();
   if (bytes == 0) return 0;
   return static_cast<std::size_t>(
-      std::max<std::uint64_t>(bytes / 2 / kernel_row_of(kernel).bytes_per_fragment, 10000));
+      std::max<std::uint64_t>(bytes / 2 / bytes_per_fragment(kernel_row_of(kernel), use), 10000));
 }
 
-std::string max_fragments_help() {
+std::string max_fragments_help(fragment_use use) {
   // "640 bytes per fragment for exact, epick and double, 1300 for epeck and gmpq": the
   // kernels grouped by their row's bytes per fragment, in table order.
   std::vector<std::pair<std::uint64_t, std::vector<std::string>>> groups;
   for (const kernel_row& r : kernel_table()) {
-    auto g = std::find_if(groups.begin(), groups.end(),
-                          [&](const auto& x) { return x.first == r.bytes_per_fragment; });
-    if (g == groups.end()) g = groups.insert(groups.end(), {r.bytes_per_fragment, {}});
+    const std::uint64_t b = bytes_per_fragment(r, use);
+    auto g =
+        std::find_if(groups.begin(), groups.end(), [&](const auto& x) { return x.first == b; });
+    if (g == groups.end()) g = groups.insert(groups.end(), {b, {}});
     g->second.push_back(r.name);
   }
   std::string text =

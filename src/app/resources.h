@@ -16,13 +16,19 @@ namespace exbsp::cli {
 /// lower (0 when neither is known).
 std::uint64_t available_memory_bytes();
 
-/// The default --max-fragments: half the available memory at the kernel's bytes per fragment
-/// (kernel_info: the other half for the input, the output and the allocator's slack), at least
-/// 10,000; 0 (no limit) when the available memory is unknown.
-std::size_t default_fragment_budget(kernel_id kernel);
+/// What a command does with its tree, for its memory per fragment: `build` only builds (and
+/// saves); the others also make a frame, a document or a drawing of it.
+enum class fragment_use { build, command };
 
-/// The --max-fragments help text, shared by build, order and render (from the kernel table).
-std::string max_fragments_help();
+/// The default --max-fragments: half the available memory at the kernel's bytes per fragment
+/// (kernel_row::bytes_per_fragment, or build_bytes_per_fragment for fragment_use::build: the
+/// other half for the input, the output and the allocator's slack), at least 10,000; 0 (no
+/// limit) when the available memory is unknown.
+std::size_t default_fragment_budget(kernel_id kernel, fragment_use use = fragment_use::command);
+
+/// The --max-fragments help text of build (fragment_use::build) or of order and render (from
+/// the kernel table).
+std::string max_fragments_help(fragment_use use = fragment_use::command);
 
 /// The most threads --threads accepts (the library's limit: 4 per hardware thread, at most
 /// 1024; libgomp crashes or fails on team sizes in the tens of thousands).

@@ -22,18 +22,22 @@ namespace {
 // double-based inexact kernels): the whole command's peak resident set per fragment on
 // refined_elephant (254,565 fragments), measured with /usr/bin/time (2026-11-24): build 218
 // bytes, order 358 (its document is streamed, not held), render 620; the budget is the largest,
-// rounded up.
+// rounded up. `exbsp build` alone has its own figure: exact 256 (its peak resident set per
+// fragment, 2026-11-28: 131 bytes on the 1M-triangle assembly of bench/assembly.py, 130 at
+// 300k, 218 on refined_elephant), so that a 10M-triangle assembly (35M fragments, about 5 GB)
+// is not refused on a 24 GB machine; the other kernels keep their command figure (epick 293,
+// double 265 measured at 300k: within it).
 named_table<kernel_row>& table() {
   static named_table<kernel_row> rows({
-      {kernel_id::exact, "exact", true, 1, 640, "exbsp's own exact points, default", make_bsp_exact,
-       tree_file::load_exact},
-      {kernel_id::epeck, "epeck", true, 2, 1300, "CGAL lazy exact", make_bsp_epeck,
+      {kernel_id::exact, "exact", true, 1, 640, 256, "exbsp's own exact points, default",
+       make_bsp_exact, tree_file::load_exact},
+      {kernel_id::epeck, "epeck", true, 2, 1300, 1300, "CGAL lazy exact", make_bsp_epeck,
        tree_file::load_epeck},
-      {kernel_id::gmpq, "gmpq", true, 3, 1300, "plain exact rationals", make_bsp_gmpq,
+      {kernel_id::gmpq, "gmpq", true, 3, 1300, 1300, "plain exact rationals", make_bsp_gmpq,
        tree_file::load_gmpq},
-      {kernel_id::epick, "epick", false, 4, 640, "exact predicates, rounded splits", make_bsp_epick,
-       tree_file::load_epick},
-      {kernel_id::double_, "double", false, 5, 640, "plain double", make_bsp_double,
+      {kernel_id::epick, "epick", false, 4, 640, 640, "exact predicates, rounded splits",
+       make_bsp_epick, tree_file::load_epick},
+      {kernel_id::double_, "double", false, 5, 640, 640, "plain double", make_bsp_double,
        tree_file::load_double},
   });
   return rows;
@@ -58,6 +62,10 @@ const kernel_row* kernel_row_of_file_code(std::uint32_t code) {
 void add_kernel(kernel_row row) {
   if (row.name.empty() || !row.make || !row.load)
     throw usage_error("add_kernel: a kernel needs a name, a build and a load function");
+  if (row.bytes_per_fragment == 0 || row.build_bytes_per_fragment == 0)
+    throw usage_error(
+        "add_kernel: kernel '" + row.name +
+        "' needs its bytes per fragment (the default --max-fragments divides by them)");
   for (const kernel_row& r : table().rows())
     if (r.id == row.id || r.name == row.name || r.file_code == row.file_code)
       throw usage_error("add_kernel: kernel '" + row.name +

@@ -24,6 +24,8 @@ struct kernel_row {
   /// Bytes one fragment costs in a command, tree nodes, lists and the process's slack included
   /// (the command line's default --max-fragments: resources.h).
   std::uint64_t bytes_per_fragment;
+  /// The same for `exbsp build` alone (no frame, no document): what a build and its saving cost.
+  std::uint64_t build_bytes_per_fragment;
   std::string description;  ///< one phrase for --help: what the number type is
   std::unique_ptr<bsp_impl> (*make)(const triangle_soup&, const build_options&);
   std::unique_ptr<bsp_impl> (*load)(tree_file::reader&, tree_file::common_part&&);

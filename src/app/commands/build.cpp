@@ -16,6 +16,7 @@ namespace {
 class build_subcommand final : public command {
  public:
   explicit build_subcommand(CLI::App& subcommand) : command(subcommand) {
+    o_.build_only = true;  // no frame or document: the build's own memory per fragment
     add_build_options(sub, o_);
     sub->add_option("--save", o_.save,
                     "write the tree to a saved-tree file T.exbsp, for order and build")

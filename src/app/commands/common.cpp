@@ -76,6 +76,12 @@ void add_format_option(CLI::App* cmd, std::string& format) {
       ->check(CLI::IsMember({"off", "obj", "ply", "stl"}));
 }
 
+namespace {
+fragment_use use_of(const build_cli& o) {
+  return o.build_only ? fragment_use::build : fragment_use::command;
+}
+}  // namespace
+
 void add_build_options(CLI::App* cmd, build_cli& o) {
   o.command = cmd;
   cmd->add_option("MESH", o.mesh,
@@ -93,7 +99,8 @@ void add_build_options(CLI::App* cmd, build_cli& o) {
   cmd->add_option("--seed", o.seed, "seed of the randomised heuristics")
       ->check(not_negative())
       ->capture_default_str();
-  cmd->add_option("--max-fragments", o.max_fragments, max_fragments_help())->check(not_negative());
+  cmd->add_option("--max-fragments", o.max_fragments, max_fragments_help(use_of(o)))
+      ->check(not_negative());
   cmd->add_option("--threads", o.threads, "threads for candidate evaluation (0: all cores)")
       ->check(CLI::Range(0u, max_threads()));
 }
@@ -196,7 +203,7 @@ bsp build_tree(const build_cli& o, progress_line& progress, double* load_seconds
   options.heuristic = o.heuristic;
   options.seed = o.seed;
   options.max_fragments =
-      o.max_fragments ? *o.max_fragments : default_fragment_budget(options.kernel);
+      o.max_fragments ? *o.max_fragments : default_fragment_budget(options.kernel, use_of(o));
   options.threads = o.threads;
   options.keep_input = !o.save.empty();  // the copy of the input serves saving only
   options.progress = [&progress](const build_progress& p) { progress(p); };

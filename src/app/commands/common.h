@@ -31,7 +31,10 @@ struct build_cli {
   std::uint64_t seed = 0;
   std::optional<std::size_t> max_fragments;  ///< absent: default_fragment_budget(kernel)
   unsigned threads = 0;
-  std::string save;                   ///< build --save: write the tree here
+  std::string save;  ///< build --save: write the tree here
+  /// `exbsp build` (set before add_build_options): the tree is only built and saved, so the
+  /// default --max-fragments uses the build's own bytes per fragment (resources.h).
+  bool build_only = false;
   const CLI::App* command = nullptr;  ///< to tell options given on the command line from defaults
 };
 
