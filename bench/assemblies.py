@@ -5,13 +5,15 @@ bench/RESULTS.md (between <!-- assemblies:begin --> and <!-- assemblies:end -->)
 bench/plots/assemblies.png; raw output in bench/out/assemblies/.
 
     /usr/bin/python3 bench/assemblies.py [--build-dir build] [--sizes 100000,300000,1000000,3000000]
-                                         [--dask-size 1000000] [--workers 1,2,4]
+                                         [--dask-size 1000000] [--workers 1,2,4] [--huge 10000000]
 
 Side by side in one run on this machine:
   1. per size: an assembly of bench/assembly.py (seed 1, density 1.1); `exbsp build --json`
      (exact kernel, default heuristic, all cores) under /usr/bin/time: fragments, build time,
      peak RSS; `exbsp build --save`: the saved tree's size; bench_render: the PNG frame at
      1024 x 768 (order + transform and clip + raster);
+  1b. the --huge assembly (10M triangles) built by `exbsp build` with its default memory budget:
+     whether it builds on this machine, its time and peak RSS;
   2. the distributed build of the --dask-size assembly (exbsp.build_distributed) on a Dask
      LocalCluster of 1, 2 and 4 worker processes (one thread each), against the local build in
      the same process: wall time, bytes shipped per fragment, and that the tree is byte-identical
@@ -94,6 +96,28 @@ def size_rows(args, out):
     return rows
 
 
+def huge_row(args, out):
+    """The --huge assembly built with `exbsp build` and its default --max-fragments (no frame,
+    no saved tree): does it build on this machine, in what time and memory."""
+    import assembly
+    mesh = os.path.join(out, f"assembly-{args.huge}.off")
+    if not os.path.exists(mesh):
+        v, t, chosen = assembly.make_assembly(args.huge, seed=1, density=1.1)
+        assembly.write_off(mesh, v, t)
+        log(f"{mesh}: {len(chosen)} parts, {len(t)} triangles")
+        del v, t
+    exbsp = os.path.join(args.build_dir, "src/app/exbsp")
+    p = subprocess.run(["/usr/bin/time", "-v", exbsp, "build", mesh, "--json"], capture_output=True,
+                       text=True)
+    rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", p.stderr)
+    row = dict(status=p.returncode, rss=int(rss.group(1)) * 1024 if rss else 0,
+               error=p.stderr.strip().splitlines()[0] if p.returncode else "")
+    if p.returncode == 0:
+        row.update(json.loads(p.stdout))
+    log(f"huge {args.huge}: {row}")
+    return row
+
+
 def dask_rows(args, out):
     """Local build and distributed builds of one assembly, in this process."""
     sys.path.insert(0, os.path.join(args.build_dir, "src/python"))
@@ -159,6 +183,45 @@ def heuristic_rows(args, out):
     return rows
 
 
+def goal_lines(rows, huge, dask):
+    """Issue 27's goals against this run: a table."""
+    if not rows:
+        return []
+    one = min(rows, key=lambda r: abs(math.log(r["triangles"] / 1e6)))
+    out = ["", "**Goals** (issue 27) against this run:", "", "| goal | measured | status |", "|---|---|---|"]
+
+    def row(goal, measured, met, why=""):
+        out.append(f"| {goal} | {measured} | {'met' if met else 'not met' + why} |")
+    per = one["fragments"] / one["triangles"]
+    why = " (section 10: placement)"
+    row(f"≤ 2.0 fragments per triangle at {num(one['triangles'])} triangles", f"{per:.2f}", per <= 2.0, why)
+    row(f"build of {num(one['triangles'])} triangles in ≤ 10 s ({os.cpu_count()} cores)",
+        fmt_s(one["build"]), one["build"] <= 10, why)
+    if len(rows) >= 2:
+        a, b = rows[0], rows[-1]
+        span = math.log(b["triangles"] / a["triangles"])
+        exponent = math.log(b["build"] / a["build"]) / span
+        nlogn = math.log(b["triangles"] * math.log(b["triangles"]) /
+                         (a["triangles"] * math.log(a["triangles"]))) / span
+        row(f"build time growth close to n log n, {num(a['triangles'])} to {num(b['triangles'])}",
+            f"n^{exponent:.2f} (n log n: n^{nlogn:.2f})", exponent <= nlogn + 0.05)
+    row(f"peak RSS ≤ 150 B per fragment at {num(one['triangles'])} triangles",
+        f"{one['rss'] / one['fragments']:.0f} B", one["rss"] / one["fragments"] <= 150)
+    if huge:
+        ok = huge["status"] == 0
+        row(f"{num(huge.get('input_triangles', 0) or 0)} triangles build, or are refused up front"
+            if ok else "10M triangles build, or are refused up front",
+            f"built in {fmt_s(huge['build_seconds'])}, {huge['rss'] / 1e9:.1f} GB" if ok
+            else f"exit status {huge['status']}", ok or huge["status"] == 3)
+    if dask:
+        drows = [r for r in dask[0] if "shipped" in r]
+        same = all(r["same"] for r in drows)
+        row("a tree built on a Dask LocalCluster equals the local one byte for byte",
+            ", ".join(f"{r['workers']} worker{'s' if r['workers'] != 1 else ''}: "
+                      f"{'equal' if r['same'] else 'DIFFERENT'}" for r in drows), same)
+    return out
+
+
 def plot(rows, path):
     ensure_matplotlib()
     import matplotlib
@@ -193,6 +256,8 @@ def main():
     ap.add_argument("--dask-size", type=int, default=1000000)
     ap.add_argument("--workers", default="1,2,4")
     ap.add_argument("--no-dask", action="store_true")
+    ap.add_argument("--huge", type=int, default=10000000,
+                    help="an assembly this large built with the default memory budget (0: none)")
     args = ap.parse_args()
     args.sizes = [int(s) for s in args.sizes.split(",")]
     args.workers = [int(s) for s in args.workers.split(",")]
@@ -204,6 +269,7 @@ def main():
     model = next((ln.split(":", 1)[1].strip() for ln in open("/proc/cpuinfo")
                   if ln.startswith("model name")), "?")
     rows = size_rows(args, out)
+    huge = huge_row(args, out) if args.huge else None
     dask = None if args.no_dask else dask_rows(args, out)
     prof = profile_rows(args, out)
     heur = heuristic_rows(args, out)
@@ -236,6 +302,18 @@ def main():
                   f"triangles: n^{exponent:.2f} (n log n over that range: n^{nlogn:.2f}); of the "
                   f"fragments: n^{math.log(b['fragments'] / a['fragments']) / span:.2f}. Where the "
                   "fragments are born, and what placement costs: section 10 (bench/fragment_births.py)."]
+    if huge:
+        mem_total = next(int(ln.split()[1]) * 1024 for ln in open("/proc/meminfo")
+                         if ln.startswith("MemTotal:"))
+        lines += ["", f"**{num(args.huge)} triangles** (the same generator), `exbsp build` with its default "
+                  f"`--max-fragments` on this {mem_total / 2 ** 30:.0f} GiB machine: "]
+        if huge["status"] == 0:
+            lines[-1] += (f"built: {num(huge['fragments'])} fragments "
+                          f"({huge['fragments'] / huge['input_triangles']:.2f} per triangle) in "
+                          f"{fmt_s(huge['build_seconds'])}, peak RSS {huge['rss'] / 1e9:.1f} GB "
+                          f"({huge['rss'] / huge['fragments']:.0f} B per fragment), depth {huge['depth']}.")
+        else:
+            lines[-1] += f"exit status {huge['status']}: {huge['error']}"
     lines += ["", "![build time, frame time, fragments and memory per fragment against the input size]"
               "(plots/assemblies.png)", ""]
     if dask:
@@ -271,6 +349,7 @@ def main():
                   "so that every build makes the same tree, and a larger frontier for very large inputs "
                   "would be a build option of its own (same tree locally and distributed, another tree "
                   "than the default)."]
+    lines += goal_lines(rows, huge, dask)
     if "rows" in prof:
         lines += ["", f"**Where the build's time goes** (perf, `exbsp build` of the {num(args.dask_size)}-triangle "
                   "assembly, all cores; self time by bench/perf_profile.py's categories, then the top "
