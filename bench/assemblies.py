@@ -183,6 +183,17 @@ def heuristic_rows(args, out):
     return rows
 
 
+def growth(rows):
+    """(first row, last row, exponent of the build time, of n log n, of the fragments) between
+    the smallest and the largest size: y grows as n^exponent."""
+    a, b = rows[0], rows[-1]
+    span = math.log(b["triangles"] / a["triangles"])
+    nlogn = math.log(b["triangles"] * math.log(b["triangles"]) /
+                     (a["triangles"] * math.log(a["triangles"]))) / span
+    return (a, b, math.log(b["build"] / a["build"]) / span, nlogn,
+            math.log(b["fragments"] / a["fragments"]) / span)
+
+
 def goal_lines(rows, huge, dask):
     """Issue 27's goals against this run: a table."""
     if not rows:
@@ -198,11 +209,7 @@ def goal_lines(rows, huge, dask):
     row(f"build of {num(one['triangles'])} triangles in ≤ 10 s ({os.cpu_count()} cores)",
         fmt_s(one["build"]), one["build"] <= 10, why)
     if len(rows) >= 2:
-        a, b = rows[0], rows[-1]
-        span = math.log(b["triangles"] / a["triangles"])
-        exponent = math.log(b["build"] / a["build"]) / span
-        nlogn = math.log(b["triangles"] * math.log(b["triangles"]) /
-                         (a["triangles"] * math.log(a["triangles"]))) / span
+        a, b, exponent, nlogn, _ = growth(rows)
         row(f"build time growth close to n log n, {num(a['triangles'])} to {num(b['triangles'])}",
             f"n^{exponent:.2f} (n log n: n^{nlogn:.2f})", exponent <= nlogn + 0.05)
     row(f"peak RSS ≤ 150 B per fragment at {num(one['triangles'])} triangles",
@@ -293,14 +300,10 @@ def main():
                      f"{r['depth']} | {r['saved'] / 1e6:.0f} MB | {r['saved'] / r['fragments']:.1f} | "
                      f"{fmt_s(r['frame'])} |")
     if len(rows) >= 2:
-        a, b = rows[0], rows[-1]
-        span = math.log(b["triangles"] / a["triangles"])
-        exponent = math.log(b["build"] / a["build"]) / span
-        nlogn = math.log(b["triangles"] * math.log(b["triangles"]) /
-                         (a["triangles"] * math.log(a["triangles"]))) / span
+        a, b, exponent, nlogn, fragments = growth(rows)
         lines += ["", f"Growth of the build time from {num(a['triangles'])} to {num(b['triangles'])} "
                   f"triangles: n^{exponent:.2f} (n log n over that range: n^{nlogn:.2f}); of the "
-                  f"fragments: n^{math.log(b['fragments'] / a['fragments']) / span:.2f}. Where the "
+                  f"fragments: n^{fragments:.2f}. Where the "
                   "fragments are born, and what placement costs: section 10 (bench/fragment_births.py)."]
     if huge:
         mem_total = next(int(ln.split()[1]) * 1024 for ln in open("/proc/meminfo")

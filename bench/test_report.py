@@ -228,9 +228,9 @@ class Births(unittest.TestCase):
     """bench/fragment_births.py's exact plane classes and its location of split events."""
 
     def test_plane_classes_are_exact(self):
-        import numpy as np
-        v = np.array([[0.1, 0.2, 0.3], [1.1, 0.2, 0.3], [1.1, 1.2, 0.3], [0.1, 1.2, 0.3],
-                      [0.1, 0.2, np.nextafter(0.3, 1.0)], [2.0, 2.0, 2.0], [3.0, 3.0, 3.0]])
+        import math
+        v = [[0.1, 0.2, 0.3], [1.1, 0.2, 0.3], [1.1, 1.2, 0.3], [0.1, 1.2, 0.3],
+             [0.1, 0.2, math.nextafter(0.3, 1.0)], [2.0, 2.0, 2.0], [3.0, 3.0, 3.0]]
         t = [(0, 1, 2), (0, 2, 3), (2, 1, 0), (4, 1, 2), (1, 5, 6), (5, 6, 5)]
         c = fragment_births.plane_classes(v, t)
         self.assertEqual(c[0], c[1])  # the two halves of a square

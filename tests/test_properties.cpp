@@ -15,6 +15,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <numeric>
 
@@ -480,6 +481,102 @@ RC_GTEST_PROP(Facade, bsp_build_matches_the_kernel_tree_stats_faces_ancestors_an
   }
   const vec3d eye{1.5, -2.25, 3.125};
   RC_ASSERT(tree.order_from_eye(eye) == direct.order_from_eye(EP(eye[0], eye[1], eye[2])));
+}
+
+// --- Exact motions: the tree depends on orientation signs only --------------------------------
+// bench/RESULTS.md section 10 argues that an assembly whose parts were placed in exact
+// arithmetic would cost what its parts cost as filed, because every choice of the build is made
+// on exact orientation signs. These properties check that premise on the product kernel: a
+// motion that is exact on doubles and keeps orientations (axes turned cyclically, two axes'
+// signs flipped, a power-of-two scale) gives the same tree, fragment for fragment, and the same
+// orders for the moved viewpoints.
+
+/// An orientation-preserving motion that is exact on doubles in the normal range.
+struct exact_motion {
+  int turns = 0;  ///< cyclic turns of the axes: (x, y, z) -> (y, z, x)
+  int keep = -1;  ///< -1: no flip; else every axis but this one changes sign
+  int k = 0;      ///< scale by 2^k
+  vec3d operator()(const vec3d& p) const {
+    vec3d q = p;
+    for (int t = 0; t < turns; ++t) q = {q[1], q[2], q[0]};
+    if (keep >= 0)
+      for (int a = 0; a < 3; ++a)
+        if (a != keep) q[a] = -q[a];
+    for (double& c : q) c = std::ldexp(c, k);
+    return q;
+  }
+  /// Whether scaling x by 2^k is exact and stays normal (or zero).
+  bool exact_for(double x) const { return x == 0 || std::isnormal(std::ldexp(x, k)); }
+};
+
+std::string motion_text(const exact_motion& m) {
+  return "turns " + std::to_string(m.turns) + ", keep " + std::to_string(m.keep) + ", 2^" +
+         std::to_string(m.k);
+}
+
+/// Empty when the exact tree of `soup` and that of the moved soup agree: statistics, every
+/// fragment's face and (where the scale keeps them exact) corners, and the orders for moved eyes
+/// and directions; else what differs.
+std::string moved_tree_differs(const exbsp::triangle_soup& soup, const exact_motion& m,
+                               const std::vector<vec3d>& eyes, const std::string& heuristic) {
+  exbsp::triangle_soup moved = soup;
+  for (vec3d& p : moved.vertices) p = m(p);
+  exbsp::build_options o;
+  o.heuristic = heuristic;
+  const exbsp::bsp a = exbsp::bsp::build(soup, o), b = exbsp::bsp::build(moved, o);
+  const exbsp::build_stats &sa = a.stats(), &sb = b.stats();
+  if (sa.fragments != sb.fragments || sa.splits != sb.splits || sa.nodes != sb.nodes ||
+      sa.depth != sb.depth || sa.degenerate_input != sb.degenerate_input)
+    return "stats differ: " + std::to_string(sa.fragments) + "/" + std::to_string(sa.nodes) +
+           " fragments/nodes against " + std::to_string(sb.fragments) + "/" +
+           std::to_string(sb.nodes);
+  for (std::size_t i = 0; i < a.fragment_count(); ++i) {
+    const exbsp::fragment_d fa = a.fragment(i), fb = b.fragment(i);
+    if (fa.face != fb.face) return "fragment " + std::to_string(i) + ": another face";
+    bool exact = true;
+    for (const vec3d& p : fa.v)
+      for (double c : p) exact = exact && m.exact_for(c);
+    for (int j = 0; exact && j < 3; ++j)
+      if (m(fa.v[j]) != fb.v[j]) return "fragment " + std::to_string(i) + ": another corner";
+  }
+  for (const vec3d& e : eyes) {
+    if (a.order_from_eye(e) != b.order_from_eye(m(e))) return "order from an eye differs";
+    if (a.order_for_direction(e) != b.order_for_direction(m(e)))
+      return "order for a direction differs";
+  }
+  return "";
+}
+
+RC_GTEST_PROP(ExactMotions, small_soups_build_the_same_tree_after_an_exact_rigid_motion, ()) {
+  const soup_case c = *any_small_soup();
+  exact_motion m;
+  m.turns = *rc::gen::inRange(0, 3);
+  m.keep = *rc::gen::inRange(-1, 3);
+  m.k = *rc::gen::inRange(-3, 4);
+  const exbsp::triangle_soup soup = c.soup();
+  for (const vec3d& p : soup.vertices)
+    for (double x : p)
+      if (!m.exact_for(x)) m.k = 0;  // the scale would round (scale-disparity soups)
+  const std::vector<vec3d> eyes{{0.3, -0.7, 2.9}, {-4.25, 1.5, 0.125}, {10, 20, -30}};
+  const std::string h = *rc::gen::elementOf(heuristics());
+  const std::string why = moved_tree_differs(soup, m, eyes, h);
+  if (!why.empty()) RC_FAIL(c.kind + " / " + h + " / " + motion_text(m) + ": " + why);
+}
+
+TEST(ExactMotions, flat_faced_cad_parts_build_the_same_tree_after_exact_rigid_motions) {
+  // blade: nearly every triangle shares its plane with others (placed by a rounded rotation it
+  // stores 5x the fragments, bench/RESULTS.md section 10); fandisk: flat and curved faces.
+  for (const char* name : {"blade.off", "fandisk.off"}) {
+    const soup_case* mesh = cad_mesh(name);
+    EXBSP_NEED_CORPUS(mesh, std::string("data/meshes/") + name);
+    const exbsp::triangle_soup soup = mesh->soup();
+    for (const exact_motion m :
+         {exact_motion{1, -1, 0}, exact_motion{2, 1, -3}, exact_motion{0, 2, 5}}) {
+      const std::string why =
+          moved_tree_differs(soup, m, {{100, -200, 300}, {-0.5, 0.25, 7}}, "sampled");
+      EXPECT_TRUE(why.empty()) << name << " / " << motion_text(m) << ": " << why;
+    }
+  }
 }
 
 // --- Real CAD meshes --------------------------------------------------------------------------
