@@ -6,7 +6,9 @@ bench/plots/fragment_births.png; raw output in bench/out/births/.
 
     /usr/bin/python3 bench/fragment_births.py [--build-dir build] [--sizes 100000,300000,1000000]
 
-Exact kernel, default heuristic, all cores; assemblies of bench/assembly.py (seed 1, density 1.1).
+Exact kernel, default heuristic; assemblies of bench/assembly.py (seed 1, density 1.1). The
+decomposition's and the corpus's builds run on one thread (small parts built one by one and one
+large build then compare fairly), the others on all cores.
   1. Decomposition, per size: the fragments per triangle of the parts as their files hold them
      (built one by one), of the same parts placed (scaled, rotated, translated as in the
      assembly) but built one by one, and of the assembly built as one soup. The first step is
@@ -26,6 +28,7 @@ with a tolerance; the tree's own code is not used for it.
 """
 import argparse
 import datetime
+import json
 import os
 import subprocess
 import sys
@@ -273,6 +276,10 @@ def main():
     reach = heuristic_reach(exbsp, assembly)
     events, located, splits, tris, frags = split_events(exbsp, assembly, library, classes, sizes[0])
     log(f"events: {located} located of {splits} splits")
+    with open(os.path.join(out, "births.json"), "w") as f:
+        json.dump({"commit": commit, "decomposition": dec, "parts": parts, "sampled": reach,
+                   "events": [[c, list(b), k] for (c, b), k in sorted(events.items())],
+                   "located": located, "splits": splits}, f, indent=1)
     plot(events, dec, os.path.join(here, "plots/fragment_births.png"))
 
     lines = [BEGIN, "## 10. Where an assembly's fragments are born (bench/fragment_births.py)", "",
