@@ -229,7 +229,7 @@ def goal_lines(rows, huge, dask):
     return out
 
 
-def plot(rows, path):
+def plot(rows, path, huge=None):
     ensure_matplotlib()
     import matplotlib
     matplotlib.use("Agg")
@@ -240,10 +240,17 @@ def plot(rows, path):
     ax[0].loglog(n, [r["frame"] for r in rows], "s-", label="PNG frame 1024×768")
     ref = rows[0]["build"] / (n[0] * math.log(n[0]))
     ax[0].loglog(n, [ref * x * math.log(x) for x in n], "k--", lw=0.8, label="n log n")
+    if huge and huge["status"] == 0:  # built alone (no saved tree, no frame): its own marker
+        h = huge["input_triangles"]
+        ax[0].loglog([h], [huge["build_seconds"]], "D", color="C0", mfc="none",
+                     label=f"build of {h / 1e6:.0f}M, default budget")
+        ax[0].loglog([n[-1], h], [ref * x * math.log(x) for x in (n[-1], h)], "k--", lw=0.8)
+        ax[1].semilogx([h], [huge["fragments"] / h], "D", color="C0", mfc="none")
+        ax[1].semilogx([h], [huge["rss"] / huge["fragments"] / 100], "D", color="C1", mfc="none")
     ax[0].axhline(10, color="r", lw=0.8, ls=":", label="goal: 1M in 10 s")
     ax[0].set_xlabel("input triangles")
     ax[0].set_ylabel("seconds")
-    ax[0].legend()
+    ax[0].legend(fontsize=8, loc="upper left")
     ax[1].semilogx(n, [r["fragments"] / r["triangles"] for r in rows], "o-", label="fragments / triangle")
     ax[1].semilogx(n, [r["rss"] / r["fragments"] / 100 for r in rows], "s-",
                    label="peak RSS / fragment (100 B)")
@@ -280,7 +287,7 @@ def main():
     dask = None if args.no_dask else dask_rows(args, out)
     prof = profile_rows(args, out)
     heur = heuristic_rows(args, out)
-    plot(rows, os.path.join(here, "plots/assemblies.png"))
+    plot(rows, os.path.join(here, "plots/assemblies.png"), huge)
     load_after = os.getloadavg()[0]
 
     lines = [BEGIN, "## 9. Assemblies of millions of triangles (bench/assemblies.py)", "",
