@@ -34,7 +34,7 @@ import time
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(here)
 sys.path.insert(0, here)
-from common import ensure_matplotlib, replace_results_section  # noqa: E402
+from common import cpu_model, ensure_matplotlib, replace_results_section, short_commit  # noqa: E402
 import perf_profile  # noqa: E402
 
 BEGIN, END = "<!-- assemblies:begin -->", "<!-- assemblies:end -->"
@@ -278,10 +278,7 @@ def main():
     out = os.path.join(here, "out/assemblies")
     os.makedirs(out, exist_ok=True)
     load_before = os.getloadavg()[0]
-    commit = subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], capture_output=True,
-                            text=True).stdout.strip()
-    model = next((ln.split(":", 1)[1].strip() for ln in open("/proc/cpuinfo")
-                  if ln.startswith("model name")), "?")
+    commit, model = short_commit(), cpu_model()
     rows = size_rows(args, out)
     huge = huge_row(args, out) if args.huge else None
     dask = None if args.no_dask else dask_rows(args, out)

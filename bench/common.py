@@ -39,6 +39,20 @@ def capture(cmd):
         return ""
 
 
+def short_commit():
+    """The repository's HEAD as `git rev-parse --short` prints it ("" outside a checkout)."""
+    return capture(["git", "-C", REPO, "rev-parse", "--short", "HEAD"])
+
+
+def cpu_model():
+    """The first "model name" of /proc/cpuinfo, or "?"."""
+    try:
+        with open("/proc/cpuinfo") as f:
+            return next((ln.split(":", 1)[1].strip() for ln in f if ln.startswith("model name")), "?")
+    except OSError:
+        return "?"
+
+
 def mesh_path(name):
     return os.path.join(MESHES, name + ".off")
 

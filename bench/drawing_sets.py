@@ -18,7 +18,6 @@ import json
 import os
 import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -26,7 +25,7 @@ import time
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(here)
 sys.path.insert(0, here)
-from common import CAD, available, mesh_path, replace_results_section  # noqa: E402
+from common import CAD, available, mesh_path, replace_results_section, short_commit  # noqa: E402
 from hidden_lines import machine  # noqa: E402
 
 BEGIN, END = "<!-- drawing-sets:begin -->", "<!-- drawing-sets:end -->"
@@ -63,8 +62,7 @@ def main():
     # some parts): the four views only.
     options = dict(formats=("pdf", "dxf"), views=["front", "top", "left", "iso"], lines_only=False,
                    date="2026-01-01", force=True, progress=None)
-    commit = subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], capture_output=True,
-                            text=True).stdout.strip()
+    commit = short_commit()
     load_before = os.getloadavg()[0]
     # Per-sheet cost, one worker.
     per_sheet = []

@@ -30,7 +30,6 @@ import argparse
 import datetime
 import json
 import os
-import subprocess
 import sys
 import time
 from collections import Counter
@@ -40,7 +39,8 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(here)
 sys.path.insert(0, here)
 from assemblies import fmt_s, num  # noqa: E402  (section 9's number formats)
-from common import ensure_matplotlib, replace_results_section  # noqa: E402
+from common import (CAD, cpu_model, ensure_matplotlib, geometric_mean, mesh_path,  # noqa: E402
+                    replace_results_section, short_commit)
 
 BEGIN, END = "<!-- births:begin -->", "<!-- births:end -->"
 CAUSES = ("placement: coplanar", "placement: plane again", "own shape", "parts meet")
@@ -93,17 +93,24 @@ def sub_mesh(v, t):
     return v[used], np.searchsorted(used, t)
 
 
-def timed(exbsp, v, t):
-    """(fragments, splits, seconds) of exbsp.build(v, t) on one thread (one-by-one builds of small
-    parts and one large build compare fairly)."""
+def timed_tree(exbsp, v, t):
+    """(tree, seconds) of exbsp.build(v, t) on one thread (one-by-one builds of small parts and
+    one large build compare fairly; the tree is the same on any number of threads)."""
     t0 = time.perf_counter()
     tree = exbsp.build(v, t, threads=1)
-    return len(tree), tree.stats["splits"], time.perf_counter() - t0
+    return tree, time.perf_counter() - t0
+
+
+def timed(exbsp, v, t):
+    """(fragments, splits, seconds) of timed_tree."""
+    tree, seconds = timed_tree(exbsp, v, t)
+    return len(tree), tree.stats["splits"], seconds
 
 
 def decomposition(exbsp, assembly, library, n):
     """Fragments, splits and build seconds of the parts of the assembly of n triangles as filed,
-    placed but each alone, and assembled (one soup)."""
+    placed but each alone, and assembled (one soup); and (assembled tree, triangles, parts
+    chosen), for split_events."""
     v, t, chosen = assembly.make_assembly(n, seed=1, density=1.1)
     filed = {name: timed(exbsp, *library[name]) for name in set(chosen)}
     row = dict(triangles=len(t), parts=len(chosen))
@@ -114,8 +121,9 @@ def decomposition(exbsp, assembly, library, n):
         alone = [a + b for a, b in zip(alone, timed(exbsp, *sub_mesh(v, t[base:base + k])))]
         base += k
     row["alone"] = alone
-    row["assembled"] = list(timed(exbsp, v, t))
-    return row
+    tree, seconds = timed_tree(exbsp, v, t)
+    row["assembled"] = [len(tree), tree.stats["splits"], seconds]
+    return row, (tree, t, chosen)
 
 
 def part_rows(exbsp, assembly, library, classes):
@@ -169,13 +177,12 @@ def located_events(paths, plane_key, part_of):
     return events
 
 
-def split_events(exbsp, assembly, library, classes, n):
+def split_events(assembled, library, classes):
     """(events by cause and depth band, located events, stats splits, triangles, fragments) of
-    the assembly of n triangles."""
+    an assembly: decomposition's (tree, triangles, parts chosen)."""
     import numpy as np
-    v, t, chosen = assembly.make_assembly(n, seed=1, density=1.1)
+    tree, t, chosen = assembled
     starts = np.cumsum([0] + [len(library[c][1]) for c in chosen])
-    tree = exbsp.build(v, t)
     faces = tree.fragments()[1]
     pieces = np.bincount(faces, minlength=len(t))
     part_of = np.repeat(np.arange(len(chosen)), np.diff(starts))
@@ -188,15 +195,12 @@ def split_events(exbsp, assembly, library, classes, n):
 
 
 SAMPLED = ((16, 512, 8), (64, 4096, 8), (256, 4096, 8))
-CAD = ("fandisk", "rotor", "pinion", "anchor_dense", "blade", "turbine", "couplingdown",
-       "ALSTOM_TEST4", "b9_mesh", "spool", "part", "joint")
 
 
 def heuristic_reach(exbsp, assembly):
     """Per sampled setting (candidates, samples, split weight): the geometric mean of fragments
     per triangle over the CAD corpus as filed, and the summed build time (one thread)."""
-    import numpy as np
-    meshes = [assembly.read_off(os.path.join(root, "data", "meshes", m + ".off")) for m in CAD]
+    meshes = [assembly.read_off(mesh_path(m)) for m in CAD]
     rows = []
     for sampled in SAMPLED:
         ratios, seconds = [], 0.0
@@ -205,7 +209,7 @@ def heuristic_reach(exbsp, assembly):
             tree = exbsp.build(v, t, sampled=sampled, threads=1)
             seconds += time.perf_counter() - t0
             ratios.append(len(tree) / len(t))
-        rows.append((sampled, float(np.exp(np.mean(np.log(ratios)))), seconds))
+        rows.append((sampled, geometric_mean(ratios), seconds))
         log(f"sampled {sampled}: geometric mean {rows[-1][1]:.3f}, {seconds:.2f} s")
     return rows
 
@@ -256,25 +260,24 @@ def main():
     import assembly
     out = os.path.join(here, "out/births")
     os.makedirs(out, exist_ok=True)
-    commit = subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], capture_output=True,
-                            text=True).stdout.strip()
-    model = next((ln.split(":", 1)[1].strip() for ln in open("/proc/cpuinfo")
-                  if ln.startswith("model name")), "?")
+    commit, model = short_commit(), cpu_model()
     library = {}
     for name in assembly.PARTS:
-        path = os.path.join(root, "data", "meshes", name + ".off")
+        path = mesh_path(name)
         if not os.path.exists(path):
             sys.exit(f"births: {path} missing (scripts/setup extracts the CGAL corpus)")
         library[name] = assembly.read_off(path)
     classes = {name: plane_classes(v, t) for name, (v, t) in library.items()}
     log("exact plane classes of the parts made")
-    dec = []
+    dec, assembled = [], None
     for n in sizes:
-        dec.append(decomposition(exbsp, assembly, library, n))
-        log(f"decomposition {n}: {dec[-1]}")
+        row, made = decomposition(exbsp, assembly, library, n)
+        dec.append(row)
+        assembled = assembled or made  # the smallest assembly's tree, for its split events
+        log(f"decomposition {n}: {row}")
     parts = part_rows(exbsp, assembly, library, classes)
     reach = heuristic_reach(exbsp, assembly)
-    events, located, splits, tris, frags = split_events(exbsp, assembly, library, classes, sizes[0])
+    events, located, splits, tris, frags = split_events(assembled, library, classes)
     log(f"events: {located} located of {splits} splits")
     with open(os.path.join(out, "births.json"), "w") as f:
         json.dump({"commit": commit, "decomposition": dec, "parts": parts, "sampled": reach,

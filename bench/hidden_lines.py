@@ -26,7 +26,7 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(here)
 sys.path.insert(0, here)
-from common import replace_results_section  # noqa: E402
+from common import cpu_model, replace_results_section, short_commit  # noqa: E402
 
 BEGIN, END = "<!-- hidden-lines:begin -->", "<!-- hidden-lines:end -->"
 
@@ -36,13 +36,7 @@ def fmt_s(x):
 
 
 def machine():
-    model = "?"
-    with open("/proc/cpuinfo") as f:
-        for line in f:
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    return f"{os.cpu_count()} cores, {model}"
+    return f"{os.cpu_count()} cores, {cpu_model()}"
 
 
 def cost_rows(build, frames, out):
@@ -80,8 +74,7 @@ def main():
     out = os.path.join(here, "out/hidden_lines")
     os.makedirs(out, exist_ok=True)
     load_before = os.getloadavg()[0]
-    commit = subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], capture_output=True,
-                            text=True).stdout.strip()
+    commit = short_commit()
     cost = cost_rows(args.build_dir, args.frames, out)
     seam_md = os.path.join(out, "seams.md")
     subprocess.run([sys.executable, os.path.join(here, "seams.py"), "--exbsp",
